@@ -1,0 +1,54 @@
+#pragma once
+// The colony engine: iterations x ants, classic transition rule, tabu lists, ants built in
+// parallel with TBB and bit-identical for any thread count.
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "aco/parameters.hpp"
+#include "aco/strategies.hpp"
+
+namespace aco {
+
+struct ColonySettings {
+  int ants = 50;
+  int iterations = 100;
+  double alpha = 1.0;
+  double beta = 7.0;
+  std::uint64_t seed = 1;
+  int stagnation = 0;  // stop after this many iterations without improvement; 0 = run them all
+};
+
+// The colony's own parameter table (ants, iterations, alpha, beta, seed, stagnation).
+std::span<const ParamSpec> colony_parameters();
+ColonySettings colony_settings(const ParameterValues& values);
+
+// Borrowed strategies; init, heuristic, update and deadlock are all required.
+struct Pipeline {
+  PheromoneInit* init = nullptr;
+  Heuristic* heuristic = nullptr;
+  PheromoneUpdate* update = nullptr;
+  DeadlockPolicy* deadlock = nullptr;
+};
+
+struct ColonyResult {
+  static constexpr double none = std::numeric_limits<double>::infinity();
+  bool solved = false;
+  std::vector<NodeId> path;  // best path found, start to goal
+  double length = none;
+  int iterations = 0;      // iterations run
+  int best_iteration = 0;  // first iteration (1-based) whose best reached the final length; 0 if unsolved
+  std::vector<double> best_so_far;     // per iteration (none until an ant arrives)
+  std::vector<double> iteration_best;  // per iteration (none if no ant arrived)
+  std::vector<int> arrived;            // per iteration: ants that reached the goal
+  std::uint64_t ant_steps = 0;         // moves made by all ants, backtracking included
+  std::vector<double> pheromone;       // final tau per edge
+};
+
+// Runs the colony in the calling thread's TBB arena. Throws Error if a strategy produces a
+// non-finite or negative pheromone or heuristic value.
+ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
+                        const ColonySettings& settings);
+
+}  // namespace aco

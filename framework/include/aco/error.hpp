@@ -1,0 +1,16 @@
+#pragma once
+// One exception type for every user-facing failure: bad maps, bad options, bad plugins.
+// Hosts print what() and exit non-zero; nothing in the framework aborts on bad input.
+#include <boost/config.hpp>
+#include <stdexcept>
+#include <string>
+
+namespace aco {
+
+class BOOST_SYMBOL_VISIBLE Error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+  ~Error() override;
+};
+
+}  // namespace aco

@@ -1,0 +1,67 @@
+#pragma once
+// The compact graph the colony runs on: CSR neighbour arrays with Euclidean step costs.
+// Node id = y * width + x for every cell; blocked cells simply have no edges.
+#include <Eigen/Core>
+#include <boost/config.hpp>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "aco/map.hpp"
+
+namespace aco {
+
+using NodeId = std::int32_t;
+using EdgeId = std::int32_t;
+
+enum class Neighbourhood { four = 4, eight = 8, sixteen = 16 };
+
+struct GraphOptions {
+  Neighbourhood neighbourhood = Neighbourhood::eight;
+  // Off: a diagonal step needs both side cells free (Moving AI rule).
+  // On: only the target cell must be free (the rule of the papers' MATLAB code).
+  bool corner_cutting = false;
+};
+
+std::string describe(const GraphOptions& options);  // "8-neighbourhood, no corner cutting"
+
+struct BOOST_SYMBOL_VISIBLE Graph {
+  const Map* map = nullptr;
+  GraphOptions options;
+  int width = 0;
+  int height = 0;
+  std::vector<EdgeId> offsets;   // edges of node n: [offsets[n], offsets[n+1])
+  std::vector<NodeId> targets;   // per edge
+  std::vector<double> costs;     // per edge, Euclidean length between cell positions
+  std::vector<EdgeId> reverse;   // per edge: the edge target->source (every move here is reversible)
+  std::vector<Eigen::Vector3d> positions;  // per node
+
+  int num_nodes() const { return width * height; }
+  int num_edges() const { return static_cast<int>(targets.size()); }
+  EdgeId edges_begin(NodeId n) const { return offsets[n]; }
+  EdgeId edges_end(NodeId n) const { return offsets[n + 1]; }
+  int degree(NodeId n) const { return offsets[n + 1] - offsets[n]; }
+  EdgeId source_edge_count() const { return offsets.back(); }
+  NodeId source(EdgeId e) const { return targets[reverse[e]]; }
+
+  NodeId node(Cell c) const { return c.y * width + c.x; }
+  Cell cell(NodeId n) const { return {n % width, n / width}; }
+  bool passable(NodeId n) const { return map->passable(cell(n)); }
+  // Edge from a to b, or -1 if they are not neighbours.
+  EdgeId find_edge(NodeId a, NodeId b) const;
+  double distance(NodeId a, NodeId b) const { return (positions[a] - positions[b]).norm(); }
+};
+
+// Builds the graph of a map. Knight moves (16-neighbourhood) need the two cells their
+// segment crosses to be free, with or without corner cutting: the segment passes through
+// the middle of the edge those two cells share, never through a corner.
+Graph build_graph(const Map& map, const GraphOptions& options);
+
+// Whether goal can be reached from start at all (breadth-first search).
+bool reachable(const Graph& graph, NodeId start, NodeId goal);
+
+// Length of a node path (sum of step costs); throws if two consecutive nodes are not neighbours.
+double path_length(const Graph& graph, std::span<const NodeId> path);
+
+}  // namespace aco

@@ -1,0 +1,71 @@
+#pragma once
+// What a plugin library exports. A plugin is one class implementing one strategy interface,
+// plus one line:
+//
+//   ACO_PLUGIN(update, ant_system, AntSystemUpdate, "1.0", "Ant System: ...", kParams)
+//
+// The class needs a constructor taking `const aco::ParameterValues&`. The macro exports, under
+// the Boost.DLL alias aco_plugin__<kind>__<name>, a plain-data descriptor: the host reads its
+// ABI version before it touches any C++ type, and lists plugins from the alias names alone,
+// without loading them.
+#include <boost/dll/alias.hpp>
+#include <cstdint>
+#include <span>
+#include <type_traits>
+
+#include "aco/parameters.hpp"
+#include "aco/strategies.hpp"
+
+namespace aco {
+
+// Bump on any change to the strategy interfaces, Context, Ant, Iteration, ParameterValues or
+// the descriptor below.
+inline constexpr std::uint32_t kPluginAbiVersion = 1;
+inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
+inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
+
+struct PluginDescriptor {
+  // magic and abi_version are the first two fields in every ABI version.
+  std::uint32_t magic;
+  std::uint32_t abi_version;
+  std::uint32_t compiler_abi;  // __GXX_ABI_VERSION of the compiler that built the plugin
+  const char* kind;
+  const char* name;
+  const char* version;
+  const char* summary;
+  const ParamSpec* params;
+  std::size_t param_count;
+  Strategy* (*create)(const ParameterValues& values);
+
+  std::span<const ParamSpec> parameters() const { return {params, param_count}; }
+};
+
+inline constexpr std::span<const ParamSpec> no_parameters{};
+
+// The slots, by the identifier used in ACO_PLUGIN.
+namespace slot {
+struct init { using interface = PheromoneInit; };
+struct heuristic { using interface = Heuristic; };
+struct update { using interface = PheromoneUpdate; };
+struct deadlock { using interface = DeadlockPolicy; };
+struct smoother { using interface = Smoother; };
+}  // namespace slot
+
+}  // namespace aco
+
+// Tests build one plugin with another value to check that the host refuses it.
+#ifndef ACO_PLUGIN_ABI_VERSION
+#define ACO_PLUGIN_ABI_VERSION ::aco::kPluginAbiVersion
+#endif
+
+#define ACO_PLUGIN(KIND, NAME, CLASS, VERSION, SUMMARY, PARAMS)                                           \
+  namespace {                                                                                             \
+  static_assert(std::is_base_of_v<::aco::slot::KIND::interface, CLASS>,                                   \
+                #CLASS " does not implement the interface of slot '" #KIND "'");                          \
+  ::aco::Strategy* aco_plugin_create(const ::aco::ParameterValues& values) { return new CLASS(values); } \
+  const ::std::span<const ::aco::ParamSpec> aco_plugin_params{PARAMS};                                    \
+  const ::aco::PluginDescriptor aco_plugin_descriptor{                                                    \
+      ::aco::kPluginMagic, ACO_PLUGIN_ABI_VERSION, __GXX_ABI_VERSION, #KIND, #NAME, VERSION, SUMMARY,      \
+      aco_plugin_params.data(), aco_plugin_params.size(), &aco_plugin_create};                            \
+  }                                                                                                       \
+  BOOST_DLL_ALIAS(aco_plugin_descriptor, aco_plugin__##KIND##__##NAME)

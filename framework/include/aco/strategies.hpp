@@ -1,0 +1,105 @@
+#pragma once
+// The strategy interfaces a colony is composed of. Each is small: one pure virtual, plus
+// optional hooks with harmless defaults. Plugins implement them; see plugin.hpp.
+#include <Eigen/Core>
+#include <boost/config.hpp>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "aco/graph.hpp"
+
+namespace aco {
+
+// What every strategy sees of the run in progress.
+struct Context {
+  const Graph* graph = nullptr;
+  NodeId start = 0;
+  NodeId goal = 0;
+  int ants = 0;
+  int max_iterations = 0;
+  double alpha = 1.0;
+  double beta = 1.0;
+  std::uint64_t seed = 0;
+  int iteration = 0;  // the current iteration, 0-based
+};
+
+// One ant's walk in one iteration.
+struct Ant {
+  std::vector<NodeId> nodes;  // start first; the goal last when the ant arrived
+  std::vector<EdgeId> edges;  // edges[i] leads from nodes[i] to nodes[i+1]
+  double length = 0.0;        // sum of the step costs of `edges`
+  bool arrived = false;
+};
+
+// The ants of a finished iteration, in ant order.
+struct Iteration {
+  std::span<const Ant> ants;
+  const Ant* best = nullptr;         // shortest arrived ant of this iteration, or null
+  const Ant* best_so_far = nullptr;  // shortest path of the run so far (this iteration included), or null
+};
+
+class BOOST_SYMBOL_VISIBLE Strategy {
+ public:
+  virtual ~Strategy();
+};
+
+// Slot "init": the pheromone of every edge before the first iteration.
+class BOOST_SYMBOL_VISIBLE PheromoneInit : public Strategy {
+ public:
+  ~PheromoneInit() override;
+  // Values must be positive and finite.
+  virtual void initialize(const Context& context, std::span<double> tau) = 0;
+};
+
+// Slot "heuristic": the desirability eta of every edge.
+class BOOST_SYMBOL_VISIBLE Heuristic : public Strategy {
+ public:
+  ~Heuristic() override;
+  // Fills eta (>= 0, finite) for every edge. Called once per run, or before every
+  // iteration when varies_by_iteration() is true. The engine raises it to beta itself.
+  virtual void compute(const Context& context, std::span<double> eta) = 0;
+  virtual bool varies_by_iteration() const { return false; }
+
+  // A heuristic that depends on the ant's own walk (its heading, say) returns true here; the
+  // engine then calls step_factors() once per step with all candidate edges, never once per
+  // candidate. factors[i] multiplies candidate i's tau^alpha * eta^beta. Must be thread-safe.
+  virtual bool uses_walk() const { return false; }
+  virtual void step_factors(const Context& context, std::span<const NodeId> walk,
+                            std::span<const EdgeId> candidates, std::span<double> factors) const;
+};
+
+// Slot "update": pheromone evaporation and deposit after every iteration.
+class BOOST_SYMBOL_VISIBLE PheromoneUpdate : public Strategy {
+ public:
+  ~PheromoneUpdate() override;
+  virtual void update(const Context& context, const Iteration& iteration, std::span<double> tau) = 0;
+  // Called once after the init plugin set the pheromone. An update rule that fixes the
+  // pheromone scale (ACS's tau0) may rescale the field here, keeping the init plugin's shape.
+  virtual void start(const Context& context, std::span<double> tau);
+  // Probability q0 that an ant takes the best candidate instead of spinning the roulette
+  // (Ant Colony System's pseudo-random proportional rule). 0 = classic rule.
+  virtual double exploitation() const { return 0.0; }
+};
+
+// Slot "deadlock": what happens to an ant that is not at the goal and has nowhere to go.
+class BOOST_SYMBOL_VISIBLE DeadlockPolicy : public Strategy {
+ public:
+  ~DeadlockPolicy() override;
+  // Called from construction threads (must be thread-safe). Returns how many nodes the ant
+  // steps back before it continues (the nodes it leaves stay tabu), or 0 to let it die.
+  virtual int on_stuck(const Context& context, std::span<const NodeId> walk) const = 0;
+  // Called once per iteration, before the pheromone update, with all ants in ant order. May
+  // change the pheromone and forbid nodes (forbidden[n] = 1) for the rest of the run.
+  virtual void after_iteration(const Context& context, const Iteration& iteration, std::span<double> tau,
+                               std::vector<std::uint8_t>& forbidden);
+};
+
+// Slot "smoother": turns the best grid path into the final waypoints.
+class BOOST_SYMBOL_VISIBLE Smoother : public Strategy {
+ public:
+  ~Smoother() override;
+  virtual std::vector<Eigen::Vector3d> smooth(const Context& context, std::span<const NodeId> path) const = 0;
+};
+
+}  // namespace aco

@@ -1,0 +1,135 @@
+#include "aco/graph.hpp"
+
+#include <array>
+#include <deque>
+
+#include "aco/error.hpp"
+
+namespace aco {
+namespace {
+
+struct Move {
+  int dx;
+  int dy;
+};
+
+// King moves first (straight, then diagonal), then knight moves; the order fixes edge ids and
+// so, with the seed, every run's random choices.
+constexpr std::array<Move, 16> kMoves = {{{1, 0},
+                                          {0, 1},
+                                          {-1, 0},
+                                          {0, -1},
+                                          {1, 1},
+                                          {-1, 1},
+                                          {-1, -1},
+                                          {1, -1},
+                                          {2, 1},
+                                          {1, 2},
+                                          {-1, 2},
+                                          {-2, 1},
+                                          {-2, -1},
+                                          {-1, -2},
+                                          {1, -2},
+                                          {2, -1}}};
+
+// The cells a move's segment passes through besides its two ends, and whether touching
+// them only at a corner (diagonal moves) is what they guard.
+bool move_clear(const Map& map, Cell from, Move m, bool corner_cutting) {
+  const int adx = m.dx < 0 ? -m.dx : m.dx;
+  const int ady = m.dy < 0 ? -m.dy : m.dy;
+  if (adx + ady == 1) return true;
+  if (adx == 1 && ady == 1) {
+    if (corner_cutting) return true;
+    return map.passable({from.x + m.dx, from.y}) && map.passable({from.x, from.y + m.dy});
+  }
+  // Knight move: the segment crosses the two cells beside its midpoint.
+  const int sx = m.dx > 0 ? 1 : -1;
+  const int sy = m.dy > 0 ? 1 : -1;
+  if (adx == 2) return map.passable({from.x + sx, from.y}) && map.passable({from.x + sx, from.y + sy});
+  return map.passable({from.x, from.y + sy}) && map.passable({from.x + sx, from.y + sy});
+}
+
+}  // namespace
+
+std::string describe(const GraphOptions& options) {
+  return std::to_string(static_cast<int>(options.neighbourhood)) + "-neighbourhood, " +
+         (options.corner_cutting ? "corner cutting" : "no corner cutting");
+}
+
+EdgeId Graph::find_edge(NodeId a, NodeId b) const {
+  for (EdgeId e = edges_begin(a); e < edges_end(a); ++e)
+    if (targets[e] == b) return e;
+  return -1;
+}
+
+Graph build_graph(const Map& map, const GraphOptions& options) {
+  Graph g;
+  g.map = &map;
+  g.options = options;
+  g.width = map.width();
+  g.height = map.height();
+  const int moves = static_cast<int>(options.neighbourhood);
+  const int n = g.num_nodes();
+  g.offsets.assign(n + 1, 0);
+  g.positions.resize(n);
+  for (NodeId id = 0; id < n; ++id) {
+    const Cell c = g.cell(id);
+    g.positions[id] = map.position(c);
+    if (map.passable(c)) {
+      for (int k = 0; k < moves; ++k) {
+        const Cell to{c.x + kMoves[k].dx, c.y + kMoves[k].dy};
+        if (!map.passable(to) || !move_clear(map, c, kMoves[k], options.corner_cutting) || !map.step_allowed(c, to))
+          continue;
+        g.targets.push_back(g.node(to));
+      }
+    }
+    g.offsets[id + 1] = static_cast<EdgeId>(g.targets.size());
+  }
+  g.costs.resize(g.targets.size());
+  g.reverse.assign(g.targets.size(), -1);
+  for (NodeId id = 0; id < n; ++id) {
+    for (EdgeId e = g.edges_begin(id); e < g.edges_end(id); ++e) {
+      g.costs[e] = g.distance(id, g.targets[e]);
+      g.reverse[e] = g.find_edge(g.targets[e], id);
+      // A terrain's step_allowed() may be asymmetric (uphill vs downhill); the engine needs
+      // reversible edges for node-based pheromone, so say so instead of failing later.
+      if (g.reverse[e] < 0)
+        throw Error(map.name() + ": the step " + to_string(g.cell(id)) + " -> " + to_string(g.cell(g.targets[e])) +
+                    " is allowed but its reverse is not");
+    }
+  }
+  return g;
+}
+
+bool reachable(const Graph& graph, NodeId start, NodeId goal) {
+  std::vector<std::uint8_t> seen(graph.num_nodes(), 0);
+  std::deque<NodeId> queue{start};
+  seen[start] = 1;
+  while (!queue.empty()) {
+    const NodeId n = queue.front();
+    queue.pop_front();
+    if (n == goal) return true;
+    for (EdgeId e = graph.edges_begin(n); e < graph.edges_end(n); ++e) {
+      const NodeId m = graph.targets[e];
+      if (!seen[m]) {
+        seen[m] = 1;
+        queue.push_back(m);
+      }
+    }
+  }
+  return false;
+}
+
+double path_length(const Graph& graph, std::span<const NodeId> path) {
+  double length = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const EdgeId e = graph.find_edge(path[i - 1], path[i]);
+    if (e < 0)
+      throw Error("path step " + to_string(graph.cell(path[i - 1])) + " -> " + to_string(graph.cell(path[i])) +
+                  " is not an edge of the graph");
+    length += graph.costs[e];
+  }
+  return length;
+}
+
+}  // namespace aco

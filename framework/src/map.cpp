@@ -1,0 +1,27 @@
+#include "aco/map.hpp"
+
+#include "aco/error.hpp"
+
+namespace aco {
+
+Error::~Error() = default;
+Map::~Map() = default;
+
+std::string to_string(Cell c) {
+  std::string text = "(";
+  text.append(std::to_string(c.x)).append(",").append(std::to_string(c.y)).append(")");
+  return text;
+}
+
+Eigen::Vector3d Map::position(Cell c) const { return {double(c.x), double(c.y), 0.0}; }
+
+bool Map::step_allowed(Cell, Cell) const { return true; }
+
+OccupancyGrid::OccupancyGrid(int width, int height, std::string name)
+    : width_(width), height_(height), name_(std::move(name)) {
+  if (width <= 0 || height <= 0)
+    throw Error(name_ + ": map size " + std::to_string(width) + "x" + std::to_string(height) + " is empty");
+  blocked_.assign(static_cast<std::size_t>(width) * height, 0);
+}
+
+}  // namespace aco

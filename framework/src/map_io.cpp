@@ -1,0 +1,294 @@
+#include "aco/map_io.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cctype>
+#include <charconv>
+#include <fstream>
+#include <sstream>
+
+#include "aco/error.hpp"
+
+namespace aco {
+namespace {
+
+// Reads lines and remembers the line number, for messages like "arena.map:7: ...".
+class LineReader {
+ public:
+  LineReader(std::istream& in, std::string name) : in_(in), name_(std::move(name)) {}
+  bool next(std::string& line) {
+    if (!std::getline(in_, line)) return false;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    ++number_;
+    return true;
+  }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw Error(name_ + ":" + std::to_string(number_) + ": " + what);
+  }
+  const std::string& name() const { return name_; }
+
+ private:
+  std::istream& in_;
+  std::string name_;
+  int number_ = 0;
+};
+
+std::vector<std::string> split_whitespace(const std::string& line) {
+  std::istringstream s(line);
+  std::vector<std::string> words;
+  for (std::string w; s >> w;) words.push_back(w);
+  return words;
+}
+
+bool is_blank(const std::string& line) { return line.find_first_not_of(" \t") == std::string::npos; }
+
+template <class Number>
+bool parse_number(const std::string& text, Number& value) {
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+int parse_dimension(const LineReader& reader, const std::string& text, const std::string& what) {
+  int value = 0;
+  if (!parse_number(text, value) || value <= 0 || value > 100000)
+    reader.fail(what + " '" + text + "' is not a whole number between 1 and 100000");
+  return value;
+}
+
+std::ifstream open(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error(file.string() + ": cannot open file");
+  return in;
+}
+
+}  // namespace
+
+OccupancyGrid read_movingai_map(std::istream& in, const std::string& name) {
+  LineReader reader(in, name);
+  std::string line;
+  int width = 0, height = 0;
+  bool typed = false;
+  // Header: "type", "height", "width" in any order, ended by "map".
+  for (;;) {
+    if (!reader.next(line)) reader.fail("truncated header: expected 'type', 'height', 'width' and 'map' lines");
+    const auto words = split_whitespace(line);
+    if (words.empty()) continue;
+    if (words[0] == "map" && words.size() == 1) break;
+    if (words.size() != 2) reader.fail("bad header line '" + line + "': expected 'type octile', 'height H', 'width W' or 'map'");
+    if (words[0] == "type") typed = true;
+    else if (words[0] == "height") height = parse_dimension(reader, words[1], "height");
+    else if (words[0] == "width") width = parse_dimension(reader, words[1], "width");
+    else reader.fail("bad header line '" + line + "': expected 'type octile', 'height H', 'width W' or 'map'");
+  }
+  if (!typed || width == 0 || height == 0) reader.fail("header lacks a 'type', 'height' or 'width' line before 'map'");
+  OccupancyGrid grid(width, height, name);
+  for (int y = 0; y < height; ++y) {
+    if (!reader.next(line))
+      reader.fail("truncated map: expected " + std::to_string(height) + " rows, found " + std::to_string(y));
+    if (static_cast<int>(line.size()) != width)
+      reader.fail("row " + std::to_string(y) + " has " + std::to_string(line.size()) + " characters, expected " +
+                  std::to_string(width));
+    for (int x = 0; x < width; ++x) {
+      switch (line[x]) {
+        case '.': case 'G': case 'S': break;
+        case '@': case 'O': case 'T': case 'W': grid.set_blocked({x, y}, true); break;
+        default:
+          reader.fail("unknown character '" + std::string(1, line[x]) + "' at column " + std::to_string(x) +
+                      " (passable: . G S; blocked: @ O T W)");
+      }
+    }
+  }
+  while (reader.next(line))
+    if (!is_blank(line)) reader.fail("unexpected text after the " + std::to_string(height) + " map rows");
+  return grid;
+}
+
+OccupancyGrid read_matrix_map(std::istream& in, const std::string& name) {
+  LineReader reader(in, name);
+  std::vector<std::vector<std::uint8_t>> rows;
+  std::string line;
+  bool ended = false;  // a blank line after rows ends the matrix; only blank lines may follow
+  while (reader.next(line)) {
+    if (is_blank(line)) {
+      ended = !rows.empty();
+      continue;
+    }
+    if (ended) reader.fail("matrix rows continue after a blank line");
+    std::vector<std::uint8_t> row;
+    for (const auto& word : split_whitespace(line)) {
+      int value = 0;
+      if (!parse_number(word, value)) reader.fail("'" + word + "' is not a number; expected 0 (free) or 1 (blocked)");
+      if (value != 0 && value != 1) reader.fail("value " + word + " is neither 0 (free) nor 1 (blocked)");
+      row.push_back(static_cast<std::uint8_t>(value));
+    }
+    if (!rows.empty() && row.size() != rows.front().size())
+      reader.fail("row has " + std::to_string(row.size()) + " values, the first row has " +
+                  std::to_string(rows.front().size()));
+    rows.push_back(std::move(row));
+  }
+  if (rows.empty()) throw Error(name + ": no matrix rows (expected lines of 0/1 values)");
+  OccupancyGrid grid(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), name);
+  for (int y = 0; y < grid.height(); ++y)
+    for (int x = 0; x < grid.width(); ++x) grid.set_blocked({x, y}, rows[y][x] != 0);
+  return grid;
+}
+
+GreyImage load_pgm(const std::filesystem::path& file) {
+  std::ifstream in = open(file);
+  const std::string name = file.string();
+  // Header tokens, skipping '#' comments.
+  auto token = [&]() {
+    std::string t;
+    char c;
+    while (in.get(c)) {
+      if (c == '#') {
+        std::string skip;
+        std::getline(in, skip);
+      } else if (std::isspace(static_cast<unsigned char>(c))) {
+        if (!t.empty()) return t;
+      } else {
+        t += c;
+      }
+    }
+    return t;
+  };
+  const std::string magic = token();
+  if (magic != "P5" && magic != "P2") throw Error(name + ": not a PGM image (magic '" + magic + "', expected P5 or P2)");
+  GreyImage image;
+  const std::string w = token(), h = token(), m = token();
+  if (!parse_number(w, image.width) || !parse_number(h, image.height) || !parse_number(m, image.maxval) ||
+      image.width <= 0 || image.height <= 0 || image.maxval <= 0 || image.maxval > 65535)
+    throw Error(name + ": bad PGM header (width '" + w + "', height '" + h + "', maxval '" + m + "')");
+  const std::size_t count = static_cast<std::size_t>(image.width) * image.height;
+  image.pixels.resize(count);
+  if (magic == "P5") {
+    const int bytes = image.maxval > 255 ? 2 : 1;
+    std::vector<unsigned char> raw(count * bytes);
+    in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(raw.size()));
+    if (static_cast<std::size_t>(in.gcount()) != raw.size())
+      throw Error(name + ": truncated PGM data (" + std::to_string(in.gcount()) + " of " + std::to_string(raw.size()) +
+                  " bytes)");
+    for (std::size_t i = 0; i < count; ++i)
+      image.pixels[i] = bytes == 1 ? raw[i] : (raw[2 * i] << 8) | raw[2 * i + 1];  // 16-bit PGM is big-endian
+  } else {
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::string t = token();
+      if (t.empty()) throw Error(name + ": truncated PGM data (" + std::to_string(i) + " of " + std::to_string(count) + " values)");
+      if (!parse_number(t, image.pixels[i])) throw Error(name + ": PGM value '" + t + "' is not a number");
+    }
+  }
+  for (int v : image.pixels)
+    if (v < 0 || v > image.maxval) throw Error(name + ": PGM value " + std::to_string(v) + " exceeds maxval");
+  return image;
+}
+
+OccupancyGrid load_ros_map(const std::filesystem::path& yaml_file) {
+  const std::string name = yaml_file.string();
+  YAML::Node doc;
+  try {
+    doc = YAML::LoadFile(name);
+  } catch (const YAML::BadFile&) {
+    throw Error(name + ": cannot open file");
+  } catch (const YAML::Exception& e) {
+    throw Error(name + ":" + std::to_string(e.mark.line + 1) + ": invalid YAML: " + e.msg);
+  }
+  if (!doc.IsMap()) throw Error(name + ": expected a YAML mapping with keys image, resolution, origin, ...");
+  auto get = [&](const char* key, auto fallback, bool required) {
+    using T = decltype(fallback);
+    const YAML::Node node = doc[key];
+    if (!node) {
+      if (required) throw Error(name + ": missing key '" + key + "'");
+      return fallback;
+    }
+    try {
+      return node.as<T>();
+    } catch (const YAML::Exception&) {
+      throw Error(name + ":" + std::to_string(node.Mark().line + 1) + ": key '" + key + "' has a value of the wrong type");
+    }
+  };
+  const auto image_name = get("image", std::string(), true);
+  const double resolution = get("resolution", 0.0, true);
+  const auto origin = get("origin", std::vector<double>(), true);
+  const int negate = get("negate", 0, false);
+  const double occupied = get("occupied_thresh", 0.65, false);
+  const double free = get("free_thresh", 0.196, false);
+  const auto mode = get("mode", std::string("trinary"), false);
+  if (!(resolution > 0)) throw Error(name + ": resolution must be positive");
+  if (origin.size() != 3) throw Error(name + ": origin must be a list of three numbers [x, y, yaw]");
+  if (negate != 0 && negate != 1) throw Error(name + ": negate must be 0 or 1");
+  if (!(free >= 0 && free <= occupied && occupied <= 1))
+    throw Error(name + ": thresholds must satisfy 0 <= free_thresh <= occupied_thresh <= 1");
+  if (mode != "trinary" && mode != "scale" && mode != "raw")
+    throw Error(name + ": mode '" + mode + "' is not one of trinary, scale, raw");
+
+  std::filesystem::path image_file = image_name;
+  if (image_file.is_relative()) image_file = yaml_file.parent_path() / image_file;
+  if (image_file.extension() != ".pgm")
+    throw Error(name + ": image '" + image_name + "' is not a .pgm file (only PGM images are supported)");
+  const GreyImage image = load_pgm(image_file);
+  OccupancyGrid grid(image.width, image.height, name);
+  grid.set_geometry({resolution, {origin[0], origin[1], origin[2]}});
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const int v = image.pixels[static_cast<std::size_t>(y) * image.width + x];
+      // map_server: p = occupancy probability; cells between the thresholds are unknown,
+      // and a planner must not drive through unknown space.
+      const double p = mode == "raw" ? v / 100.0
+                       : negate     ? double(v) / image.maxval
+                                    : double(image.maxval - v) / image.maxval;
+      grid.set_blocked({x, y}, !(p < free));
+    }
+  }
+  return grid;
+}
+
+std::unique_ptr<Map> load_map(const std::filesystem::path& file) {
+  const auto ext = file.extension();
+  if (ext == ".yaml" || ext == ".yml") return std::make_unique<OccupancyGrid>(load_ros_map(file));
+  std::ifstream in = open(file);
+  if (ext == ".map") return std::make_unique<OccupancyGrid>(read_movingai_map(in, file.string()));
+  return std::make_unique<OccupancyGrid>(read_matrix_map(in, file.string()));
+}
+
+std::vector<Scenario> read_scenarios(std::istream& in, const std::string& name) {
+  LineReader reader(in, name);
+  std::string line;
+  if (!reader.next(line)) reader.fail("empty scenario file (expected 'version 1')");
+  const auto head = split_whitespace(line);
+  if (head.size() != 2 || head[0] != "version") reader.fail("expected 'version 1', found '" + line + "'");
+  std::vector<Scenario> scenarios;
+  while (reader.next(line)) {
+    if (is_blank(line)) continue;
+    std::vector<std::string> f;
+    std::istringstream fields(line);
+    for (std::string w; std::getline(fields, w, '\t');) f.push_back(w);
+    if (f.size() != 9) f = split_whitespace(line);
+    if (f.size() != 9)
+      reader.fail("expected 9 fields (bucket, map, width, height, start x, start y, goal x, goal y, optimal length), found " +
+                  std::to_string(f.size()));
+    Scenario s;
+    s.map_path = f[1];
+    const bool ok = parse_number(f[0], s.bucket) && parse_number(f[2], s.width) && parse_number(f[3], s.height) &&
+                    parse_number(f[4], s.start.x) && parse_number(f[5], s.start.y) && parse_number(f[6], s.goal.x) &&
+                    parse_number(f[7], s.goal.y) && parse_number(f[8], s.optimal_length);
+    if (!ok || s.width <= 0 || s.height <= 0 || s.optimal_length < 0) reader.fail("malformed scenario line '" + line + "'");
+    scenarios.push_back(s);
+  }
+  return scenarios;
+}
+
+std::vector<Scenario> load_scenarios(const std::filesystem::path& file) {
+  std::ifstream in = open(file);
+  return read_scenarios(in, file.string());
+}
+
+std::filesystem::path scenario_map_file(const std::filesystem::path& scen_file) {
+  if (scen_file.extension() != ".scen")
+    throw Error(scen_file.string() + ": a scenario file name must end in .scen (e.g. arena.map.scen)");
+  std::filesystem::path map = scen_file;
+  map.replace_extension();
+  return map;
+}
+
+}  // namespace aco

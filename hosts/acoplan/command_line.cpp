@@ -1,0 +1,301 @@
+#include "command_line.hpp"
+
+#include <boost/program_options.hpp>
+
+#include <fstream>
+#include <sstream>
+
+#include "aco/error.hpp"
+
+namespace acoplan {
+namespace po = boost::program_options;
+namespace {
+
+constexpr aco::ParamSpec kRunParameters[] = {
+    {"planner", aco::ParamType::categorical, "aco", "aco,astar",
+     "aco = the colony; astar = exact shortest path on the same graph (reference)"},
+    {"neighbourhood", aco::ParamType::categorical, "8", "4,8,16",
+     "moves per cell: 4 straight, 8 with diagonals, 16 with knight moves"},
+    {"corner-cutting", aco::ParamType::boolean, "false", "",
+     "let a diagonal step pass between two blocked side cells (the MATLAB code's rule; off = Moving AI rule)"},
+    {"threads", aco::ParamType::integer, "0", "0:1024", "worker threads, 0 = all cores; results do not depend on it"},
+    {"scen-index", aco::ParamType::integer, "0", "0:1000000000", "which problem of --scen to plan (0-based)"},
+    {"svg-pheromone", aco::ParamType::boolean, "false", "", "also draw the final pheromone field in the --svg picture"},
+};
+
+std::string type_hint(const aco::ParamSpec& spec) {
+  switch (spec.type) {
+    case aco::ParamType::integer: return "N";
+    case aco::ParamType::real: return "X";
+    case aco::ParamType::boolean: return "BOOL";
+    case aco::ParamType::categorical: return spec.range;
+  }
+  return "V";
+}
+
+std::string help_text(const aco::ParamSpec& spec) {
+  std::string text = std::string(spec.help) + " [" + aco::to_string(spec.type) + ", default " + spec.default_value;
+  if (spec.type != aco::ParamType::boolean && spec.type != aco::ParamType::categorical && spec.range && *spec.range)
+    text += ", range " + std::string(spec.range);
+  return text + "]";
+}
+
+void add_table(po::options_description& group, std::span<const aco::ParamSpec> table, const std::string& prefix) {
+  for (const auto& spec : table) {
+    auto* value = po::value<std::string>()->value_name(type_hint(spec));
+    if (spec.type == aco::ParamType::boolean) value->implicit_value("true");
+    group.add_options()((prefix + spec.name).c_str(), value, help_text(spec).c_str());
+  }
+}
+
+std::map<std::string, std::string> given(const po::variables_map& vm, std::span<const aco::ParamSpec> table,
+                                         const std::string& prefix) {
+  std::map<std::string, std::string> texts;
+  for (const auto& spec : table)
+    if (vm.count(prefix + spec.name)) texts[spec.name] = vm[prefix + spec.name].as<std::string>();
+  return texts;
+}
+
+std::optional<std::string> text(const po::variables_map& vm, const char* key) {
+  if (!vm.count(key)) return std::nullopt;
+  return vm[key].as<std::string>();
+}
+
+std::filesystem::path bundled_map() {
+  const std::filesystem::path relative = "maps/classic20/map1.txt";
+  for (const auto& dir : {std::filesystem::path(ACO_SOURCE_DATA_DIR), std::filesystem::path(ACO_INSTALL_DATA_DIR)})
+    if (std::filesystem::exists(dir / relative)) return dir / relative;
+  throw aco::Error("no --map given and the bundled map " + relative.string() + " was not found under " +
+                   ACO_SOURCE_DATA_DIR);
+}
+
+// Command line first, then the --config file: po keeps the first value stored for a key.
+po::variables_map parse(const po::options_description& options, int argc, const char* const* argv, bool lenient) {
+  po::variables_map vm;
+  auto parser = po::command_line_parser(argc, argv).options(options);
+  if (lenient) parser.allow_unregistered();
+  po::store(parser.run(), vm);
+  if (vm.count("config")) {
+    const auto file = vm["config"].as<std::string>();
+    std::ifstream in(file);
+    if (!in) throw aco::Error("--config: cannot open '" + file + "'");
+    po::store(po::parse_config_file(in, options, lenient), vm);
+  }
+  po::notify(vm);
+  return vm;
+}
+
+std::string unknown_option_message(const po::unknown_option& e, const po::options_description& options,
+                                   const aco::PipelineSpec& pipeline) {
+  std::string name = e.get_option_name();
+  name.erase(0, name.find_first_not_of('-'));
+  std::vector<std::string> keys;
+  for (const auto& option : options.options()) keys.push_back(option->long_name());
+  std::string message = "unknown option '--" + name + "'";
+  if (const auto near = aco::nearest(name, keys); !near.empty()) message += "; did you mean '--" + near + "'?";
+  const auto dot = name.find('.');
+  if (dot != std::string::npos) {
+    const auto slot = pipeline.slots.find(name.substr(0, dot));
+    if (slot != pipeline.slots.end()) {
+      std::vector<std::string> params;
+      for (const auto& key : keys)
+        if (key.rfind(slot->first + ".", 0) == 0) params.push_back(key.substr(dot + 1));
+      message += " (the " + slot->first + " plugin '" + slot->second.plugin + "' has ";
+      if (params.empty()) message += "no parameters)";
+      else {
+        message += "parameters:";
+        for (const auto& p : params) message += " " + p;
+        message += ")";
+      }
+    }
+  }
+  return message;
+}
+
+void print_section(std::ostream& out, std::span<const aco::ParamSpec> table, const aco::ParameterValues& values) {
+  for (const auto& spec : table) out << spec.name << " = " << aco::to_string(values.all().at(spec.name)) << "\n";
+}
+
+std::string config_file(const Request& r, const std::map<std::string, std::pair<std::span<const aco::ParamSpec>, aco::ParameterValues>>& plugins) {
+  std::ostringstream out;
+  out << "# acoplan configuration; run it again with: acoplan --config FILE\n";
+  if (r.map) out << "map = " << r.map->string() << "\n";
+  if (r.scen) out << "scen = " << r.scen->string() << "\n";
+  if (r.start) out << "start = " << *r.start << "\n";
+  if (r.goal) out << "goal = " << *r.goal << "\n";
+  print_section(out, kRunParameters, r.run);
+  print_section(out, aco::colony_parameters(), r.colony);
+  for (const char* slot : aco::kSlots) out << slot << " = " << r.pipeline.slots.at(slot).plugin << "\n";
+  for (const char* slot : aco::kSlots) {
+    const auto& [table, values] = plugins.at(slot);
+    if (table.empty()) continue;
+    out << "\n[" << slot << "]\n";
+    print_section(out, table, values);
+  }
+  return out.str();
+}
+
+}  // namespace
+
+Request parse_command_line(int argc, const char* const* argv) {
+  Request r;
+  po::options_description general("General");
+  general.add_options()
+      ("help,h", po::bool_switch(), "print this help (with the options of the chosen plugins) and exit")
+      ("map", po::value<std::string>()->value_name("FILE"),
+       "map: Moving AI .map, ROS map_server .yaml, or 0/1 matrix text (default: bundled classic map1)")
+      ("start", po::value<std::string>()->value_name("X,Y"), "start cell (column, row from the top, 0-based)")
+      ("goal", po::value<std::string>()->value_name("X,Y"), "goal cell")
+      ("scen", po::value<std::string>()->value_name("FILE"),
+       "Moving AI scenario file; start and goal come from --scen-index, the map from FILE minus .scen unless --map")
+      ("json", po::bool_switch(), "print one JSON object instead of the readable summary")
+      ("svg", po::value<std::string>()->value_name("FILE"), "write a picture of the map, the path and the convergence curve")
+      ("config", po::value<std::string>()->value_name("FILE"), "read options from an INI file (command line wins)")
+      ("print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")
+      ("list-plugins", po::bool_switch(), "list the plugins found and exit")
+      ("describe", po::value<std::string>()->value_name("NAME"), "print a plugin's parameter table and exit")
+      ("plugin-dir", po::value<std::vector<std::string>>()->composing()->value_name("DIR"),
+       "also search DIR for plugins (before ACO_PLUGIN_PATH and the default folders)");
+  add_table(general, kRunParameters, "");
+  po::options_description colony("Colony");
+  add_table(colony, aco::colony_parameters(), "");
+  po::options_description slots("Strategies (one plugin per slot; see --list-plugins)");
+  for (const char* slot : aco::kSlots)
+    slots.add_options()(slot, po::value<std::string>()->value_name("PLUGIN"),
+                        (std::string(slot) + " plugin [default " + aco::default_plugin(slot) + "]").c_str());
+  po::options_description base;
+  base.add(general).add(colony).add(slots);
+
+  try {
+    // Pass 1: which plugins, and where to find them; their options are not known yet.
+    const po::variables_map first = parse(base, argc, argv, true);
+    std::vector<std::filesystem::path> dirs;
+    if (first.count("plugin-dir"))
+      for (const auto& d : first["plugin-dir"].as<std::vector<std::string>>()) dirs.emplace_back(d);
+    r.registry = std::make_unique<aco::PluginRegistry>(aco::PluginRegistry::default_search_dirs(dirs));
+    if (first["list-plugins"].as<bool>()) {
+      r.action = Request::Action::list_plugins;
+      return r;
+    }
+    if (first.count("describe")) {
+      r.action = Request::Action::describe;
+      r.describe = first["describe"].as<std::string>();
+      return r;
+    }
+    for (const char* slot : aco::kSlots)
+      if (auto name = text(first, slot)) r.pipeline.slots[slot].plugin = *name;
+
+    // Pass 2: every option known; anything left over is a mistake.
+    po::options_description all;
+    all.add(base);
+    std::map<std::string, std::pair<std::span<const aco::ParamSpec>, aco::ParameterValues>> plugins;
+    std::vector<std::unique_ptr<po::options_description>> groups;
+    for (const char* slot : aco::kSlots) {
+      const auto& name = r.pipeline.slots[slot].plugin;
+      const aco::PluginDescriptor& d = r.registry->load(slot, name);
+      groups.push_back(std::make_unique<po::options_description>(std::string(slot) + " plugin '" + name + "'"));
+      add_table(*groups.back(), d.parameters(), std::string(slot) + ".");
+      all.add(*groups.back());
+      plugins[slot].first = d.parameters();
+    }
+    po::variables_map vm;
+    try {
+      vm = parse(all, argc, argv, false);
+    } catch (const po::unknown_option& e) {
+      throw aco::Error(unknown_option_message(e, all, r.pipeline));
+    }
+    std::ostringstream help;
+    help << "acoplan: plan a path with an ant colony composed of runtime plugins.\n\n"
+         << "Usage: acoplan [--map FILE --start X,Y --goal X,Y | --scen FILE --scen-index N] [options]\n\n"
+         << all << "\nExit status: 0 solved, 1 error, 3 no path found (goal unreachable or no ant arrived).\n";
+    r.help = help.str();
+    if (vm["help"].as<bool>()) {
+      r.action = Request::Action::help;
+      return r;
+    }
+    r.run = aco::resolve(kRunParameters, given(vm, kRunParameters, ""), "--");
+    r.colony = aco::resolve(aco::colony_parameters(), given(vm, aco::colony_parameters(), ""), "--");
+    for (const char* slot : aco::kSlots) {
+      auto& choice = r.pipeline.slots[slot];
+      choice.params = given(vm, plugins[slot].first, std::string(slot) + ".");
+      plugins[slot].second = aco::resolve(plugins[slot].first, choice.params, "--" + std::string(slot) + ".");
+    }
+    if (auto v = text(vm, "map")) r.map = *v;
+    if (auto v = text(vm, "scen")) r.scen = *v;
+    if (auto v = text(vm, "svg")) r.svg = *v;
+    r.start = text(vm, "start");
+    r.goal = text(vm, "goal");
+    r.json = vm["json"].as<bool>();
+    if (r.scen && (r.start || r.goal)) throw aco::Error("give either --scen or --start/--goal, not both");
+    if (vm.count("scen-index") && !r.scen) throw aco::Error("--scen-index needs --scen");
+    if (!r.map && !r.scen) {
+      // The demo problem: the bundled classic map, corner to corner.
+      r.map = bundled_map();
+      if (!r.start) r.start = "0,0";
+      if (!r.goal) r.goal = "19,19";
+    }
+    if (!r.scen && (!r.start || !r.goal)) throw aco::Error("--start and --goal are required with --map (or use --scen)");
+    if (vm["print-config"].as<bool>()) {
+      r.action = Request::Action::print_config;
+      r.config = config_file(r, plugins);
+    }
+  } catch (const po::error& e) {
+    throw aco::Error(e.what());
+  }
+  return r;
+}
+
+std::string list_plugins(aco::PluginRegistry& registry) {
+  std::ostringstream out;
+  out << "plugins (kind/name, version, summary, file):\n";
+  for (const char* kind : aco::kSlots) {
+    for (const auto& name : registry.names(kind)) {
+      const auto* file = registry.find(kind, name);
+      out << "  " << kind << "/" << name;
+      try {
+        const auto& d = registry.load(kind, name);
+        out << "  " << d.version << "  " << d.summary;
+      } catch (const aco::Error& e) {
+        out << "  UNUSABLE: " << e.what();
+      }
+      out << "\n      " << file->file.string() << "\n";
+    }
+  }
+  out << "searched:";
+  for (const auto& dir : registry.search_dirs()) out << " " << dir.string();
+  out << "\n";
+  return out.str();
+}
+
+std::string describe_plugin(aco::PluginRegistry& registry, const std::string& name) {
+  std::vector<const aco::PluginFile*> matches;
+  for (const auto& p : registry.available())
+    if (p.name == name || p.kind + "/" + p.name == name) matches.push_back(&p);
+  if (matches.empty()) {
+    std::vector<std::string> all;
+    for (const auto& p : registry.available()) all.push_back(p.kind + "/" + p.name);
+    const auto near = aco::nearest(name, all);
+    throw aco::Error("--describe: no plugin named '" + name + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
+  }
+  if (matches.size() > 1) {
+    std::string message = "--describe: '" + name + "' is ambiguous; use one of:";
+    for (const auto* p : matches) message += " " + p->kind + "/" + p->name;
+    throw aco::Error(message);
+  }
+  const auto& d = registry.load(matches[0]->kind, matches[0]->name);
+  std::ostringstream out;
+  out << d.kind << "/" << d.name << " " << d.version << ": " << d.summary << "\n"
+      << "file: " << matches[0]->file.string() << "\n";
+  if (d.param_count == 0) {
+    out << "no parameters\n";
+    return out.str();
+  }
+  out << "parameters (--" << d.kind << ".NAME VALUE):\n";
+  for (const auto& spec : d.parameters())
+    out << "  " << spec.name << "  " << aco::to_string(spec.type) << "  default " << spec.default_value
+        << (spec.range && *spec.range ? std::string("  range ") + spec.range : std::string()) << "\n      " << spec.help
+        << "\n";
+  return out.str();
+}
+
+}  // namespace acoplan

@@ -1,0 +1,43 @@
+#pragma once
+// acoplan's options: host settings, the colony's table, one slot flag per strategy, and one
+// option group per loaded plugin built from its parameter table (--update.rho ...).
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aco/colony.hpp"
+#include "aco/pipeline.hpp"
+#include "aco/plugin_registry.hpp"
+
+namespace acoplan {
+
+struct Request {
+  enum class Action { plan, help, list_plugins, describe, print_config };
+  Action action = Action::plan;
+  std::string describe;  // plugin to describe
+  std::string help;      // full --help text
+  std::string config;    // the resolved configuration as a config file (--print-config)
+
+  std::optional<std::filesystem::path> map;
+  std::optional<std::filesystem::path> scen;
+  std::optional<std::string> start;
+  std::optional<std::string> goal;
+  std::optional<std::filesystem::path> svg;
+  bool json = false;
+
+  aco::ParameterValues run;     // planner, neighbourhood, corner-cutting, threads, scen-index, svg-pheromone
+  aco::ParameterValues colony;  // ants, iterations, alpha, beta, seed, stagnation
+  aco::PipelineSpec pipeline;
+  std::unique_ptr<aco::PluginRegistry> registry;
+};
+
+// Throws aco::Error with a message naming the offending option (and the nearest valid one).
+Request parse_command_line(int argc, const char* const* argv);
+
+std::string describe_plugin(aco::PluginRegistry& registry, const std::string& name);
+std::string list_plugins(aco::PluginRegistry& registry);
+
+}  // namespace acoplan

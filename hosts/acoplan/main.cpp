@@ -1,0 +1,163 @@
+// acoplan: one planning run, composed from runtime plugins on the command line.
+#include <tbb/global_control.h>
+
+#include <charconv>
+#include <chrono>
+#include <iostream>
+#include <memory>
+
+#include "aco/astar.hpp"
+#include "aco/error.hpp"
+#include "aco/map_io.hpp"
+#include "aco/svg.hpp"
+#include "command_line.hpp"
+#include "report.hpp"
+
+namespace {
+
+constexpr int kExitError = 1;
+constexpr int kExitUnsolved = 3;
+
+struct Problem {
+  std::unique_ptr<aco::Map> map;
+  aco::Cell start;
+  aco::Cell goal;
+};
+
+aco::Cell parse_cell(const std::string& text, const char* option) {
+  aco::Cell c;
+  const auto comma = text.find(',');
+  auto whole = [](std::string_view s, int& v) {
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return ec == std::errc() && p == s.data() + s.size();
+  };
+  if (comma == std::string::npos || !whole(std::string_view(text).substr(0, comma), c.x) ||
+      !whole(std::string_view(text).substr(comma + 1), c.y))
+    throw aco::Error(std::string(option) + ": '" + text + "' is not a cell; expected X,Y such as 3,7");
+  return c;
+}
+
+void check_cell(const aco::Map& map, aco::Cell c, const char* what) {
+  if (!map.contains(c))
+    throw aco::Error(std::string(what) + " " + aco::to_string(c) + " is outside the " + std::to_string(map.width()) + "x" +
+                     std::to_string(map.height()) + " map " + map.name());
+  if (!map.passable(c)) throw aco::Error(std::string(what) + " " + aco::to_string(c) + " is a blocked cell of " + map.name());
+}
+
+Problem load_problem(const acoplan::Request& r) {
+  Problem p;
+  if (r.scen) {
+    const auto scenarios = aco::load_scenarios(*r.scen);
+    const auto index = r.run.integer("scen-index");
+    if (index >= static_cast<std::int64_t>(scenarios.size()))
+      throw aco::Error("--scen-index " + std::to_string(index) + " is out of range: " + r.scen->string() + " has " +
+                       std::to_string(scenarios.size()) + " scenarios");
+    const aco::Scenario& s = scenarios[index];
+    p.map = aco::load_map(r.map ? *r.map : aco::scenario_map_file(*r.scen));
+    if (p.map->width() != s.width || p.map->height() != s.height)
+      throw aco::Error(r.scen->string() + ": scenario " + std::to_string(index) + " is for a " + std::to_string(s.width) +
+                       "x" + std::to_string(s.height) + " map, but " + p.map->name() + " is " +
+                       std::to_string(p.map->width()) + "x" + std::to_string(p.map->height()));
+    p.start = s.start;
+    p.goal = s.goal;
+  } else {
+    p.map = aco::load_map(*r.map);
+    p.start = parse_cell(*r.start, "--start");
+    p.goal = parse_cell(*r.goal, "--goal");
+  }
+  check_cell(*p.map, p.start, "start");
+  check_cell(*p.map, p.goal, "goal");
+  return p;
+}
+
+int plan(const acoplan::Request& r) {
+  const Problem problem = load_problem(r);
+  aco::GraphOptions options;
+  options.neighbourhood = static_cast<aco::Neighbourhood>(std::stoi(r.run.text("neighbourhood")));
+  options.corner_cutting = r.run.boolean("corner-cutting");
+  const aco::Graph graph = aco::build_graph(*problem.map, options);
+  const aco::LoadedPipeline pipeline = aco::instantiate(*r.registry, r.pipeline);
+  std::unique_ptr<tbb::global_control> threads;
+  if (const auto n = r.run.integer("threads"); n > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, n);
+
+  acoplan::Outcome o;
+  o.start = graph.node(problem.start);
+  o.goal = graph.node(problem.goal);
+  const aco::ColonySettings settings = aco::colony_settings(r.colony);
+  const auto began = std::chrono::steady_clock::now();
+  if (!aco::reachable(graph, o.start, o.goal)) {
+    o.reason = "goal " + aco::to_string(problem.goal) + " is not reachable from start " + aco::to_string(problem.start) +
+               " (" + aco::describe(options) + ")";
+  } else if (r.run.text("planner") == "astar") {
+    const auto shortest = aco::astar(graph, o.start, o.goal);
+    o.solved = true;
+    o.grid_path = shortest->nodes;
+  } else {
+    aco::ColonyResult colony = aco::run_colony(graph, o.start, o.goal, pipeline.colony(), settings);
+    o.solved = colony.solved;
+    o.grid_path = std::move(colony.path);
+    o.iterations = colony.iterations;
+    o.best_iteration = colony.best_iteration;
+    o.ant_steps = colony.ant_steps;
+    o.best_so_far = std::move(colony.best_so_far);
+    o.iteration_best = std::move(colony.iteration_best);
+    o.pheromone = std::move(colony.pheromone);
+    if (!o.solved)
+      o.reason = "no ant reached the goal in " + std::to_string(o.iterations) +
+                 " iterations (try more ants or iterations, or another deadlock policy)";
+  }
+  if (o.solved) {
+    aco::Context context;
+    context.graph = &graph;
+    context.start = o.start;
+    context.goal = o.goal;
+    context.seed = settings.seed;
+    o.grid_length = aco::path_length(graph, o.grid_path);
+    o.path = pipeline.smoother->smooth(context, o.grid_path);
+    if (o.path.empty() || o.path.front() != graph.positions[o.start] || o.path.back() != graph.positions[o.goal])
+      throw aco::Error("the smoother plugin '" + r.pipeline.slots.at("smoother").plugin +
+                       "' returned a path that does not run from start to goal");
+    o.length = aco::polyline_length(o.path);
+    o.turns = aco::count_turns(o.path);
+  }
+  o.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
+  if (o.solved) o.optimal_length = aco::astar(graph, o.start, o.goal)->length;
+
+  if (r.json) std::cout << acoplan::to_json(r, graph, pipeline, o).dump() << "\n";
+  else std::cout << acoplan::summary(r, graph, o);
+  if (r.svg) {
+    aco::RunPicture picture;
+    picture.title = graph.map->name() + ": " + (o.solved ? "length " + std::to_string(o.length) : "not solved");
+    picture.start = o.start;
+    picture.goal = o.goal;
+    picture.grid_path = o.grid_path;
+    picture.path = o.path;
+    if (r.run.boolean("svg-pheromone")) picture.pheromone = o.pheromone;
+    picture.best_so_far = o.best_so_far;
+    picture.iteration_best = o.iteration_best;
+    picture.optimal_length = o.optimal_length.value_or(0.0);
+    aco::write_svg(*r.svg, graph, picture);
+  }
+  return o.solved ? 0 : kExitUnsolved;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    acoplan::Request request = acoplan::parse_command_line(argc, argv);
+    switch (request.action) {
+      case acoplan::Request::Action::help: std::cout << request.help; return 0;
+      case acoplan::Request::Action::list_plugins: std::cout << acoplan::list_plugins(*request.registry); return 0;
+      case acoplan::Request::Action::describe:
+        std::cout << acoplan::describe_plugin(*request.registry, request.describe);
+        return 0;
+      case acoplan::Request::Action::print_config: std::cout << request.config; return 0;
+      case acoplan::Request::Action::plan: return plan(request);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "acoplan: error: " << e.what() << "\n";
+  }
+  return kExitError;
+}

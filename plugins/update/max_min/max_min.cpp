@@ -1,0 +1,93 @@
+// MAX-MIN Ant System (Stuetzle and Hoos 2000), with the details of Stuetzle's ACOTSP reference
+// code: one ant deposits, tau kept in [tau_min, tau_max], optional restart on stagnation.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "aco/pheromone.hpp"
+#include "aco/plugin.hpp"
+
+namespace {
+
+constexpr aco::ParamSpec kParams[] = {
+    {"rho", aco::ParamType::real, "0.1", "(0:1]", "evaporation rate"},
+    {"q", aco::ParamType::real, "1", "(0:1e12]", "deposit constant Q: the depositing ant adds Q / L"},
+    {"p_best", aco::ParamType::real, "0.05", "(0:1)",
+     "probability that a converged colony rebuilds the best path; sets tau_min relative to tau_max"},
+    {"best_so_far_every", aco::ParamType::integer, "0", "0:1000000",
+     "the best-so-far ant deposits every n-th iteration, the iteration best otherwise; 0 = ACOTSP's schedule "
+     "(every 25th iteration before iteration 25, 5th before 75, 3rd before 125, 2nd before 250, then always)"},
+    {"restart_after", aco::ParamType::integer, "0", "0:1000000",
+     "reset every edge to tau_max after this many iterations without a shorter best-so-far path (0 = never)"},
+};
+
+class MaxMinUpdate final : public aco::PheromoneUpdate {
+ public:
+  explicit MaxMinUpdate(const aco::ParameterValues& p)
+      : rho_(p.real("rho")),
+        q_(p.real("q")),
+        p_best_(p.real("p_best")),
+        every_(p.integer("best_so_far_every")),
+        restart_after_(p.integer("restart_after")) {}
+
+  void start(const aco::Context& c, std::span<double>) override {
+    // ACOTSP's "average number of choices" is (candidates + 1) / 2; here the candidates of a
+    // decision are the neighbours, so the mean degree of the passable nodes.
+    const aco::Graph& g = *c.graph;
+    int nodes = 0;
+    for (aco::NodeId n = 0; n < g.num_nodes(); ++n) nodes += g.degree(n) > 0;
+    choices_ = 0.5 * (1.0 + double(g.num_edges()) / std::max(nodes, 1));
+  }
+
+  void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
+    aco::evaporate(tau, rho_);
+    if (it.best_so_far == nullptr) return;  // nothing to deposit, no bounds known yet
+    const aco::Ant& best = *it.best_so_far;
+    const double tau_max = q_ / (rho_ * best.length);
+    const double p_dec = std::pow(p_best_, 1.0 / std::max<double>(1.0, double(best.edges.size())));
+    const double tau_min = std::min(tau_max, tau_max * (1.0 - p_dec) / (choices_ * p_dec));
+
+    if (best.length < best_length_) {
+      best_length_ = best.length;
+      last_improvement_ = c.iteration;
+    }
+    if (restart_after_ > 0 && c.iteration - last_improvement_ >= restart_after_) {
+      std::fill(tau.begin(), tau.end(), tau_max);  // forget the trail; the engine keeps the best path
+      last_improvement_ = c.iteration;
+      return;
+    }
+    if (!bounded_) {
+      // MMAS starts at tau_max, which the first solution fixes: scale the init plugin's field
+      // to it here, keeping its shape.
+      const double top = *std::max_element(tau.begin(), tau.end());
+      if (top > 0.0)
+        for (double& t : tau) t *= tau_max / top;
+      bounded_ = true;
+    }
+    const aco::Ant& depositor = it.best == nullptr || (c.iteration + 1) % best_so_far_period(c.iteration) == 0 ? best : *it.best;
+    aco::deposit(tau, depositor, q_ / depositor.length);
+    aco::clamp(tau, tau_min, tau_max);
+  }
+
+ private:
+  int best_so_far_period(int iteration) const {
+    if (every_ > 0) return static_cast<int>(every_);
+    return iteration < 25 ? 25 : iteration < 75 ? 5 : iteration < 125 ? 3 : iteration < 250 ? 2 : 1;
+  }
+
+  double rho_;
+  double q_;
+  double p_best_;
+  std::int64_t every_;
+  std::int64_t restart_after_;
+  double choices_ = 1.0;
+  double best_length_ = std::numeric_limits<double>::infinity();
+  int last_improvement_ = 0;
+  bool bounded_ = false;
+};
+
+}  // namespace
+
+ACO_PLUGIN(update, max_min, MaxMinUpdate, "1.0",
+           "MAX-MIN Ant System: only the iteration-best (or best-so-far) ant deposits; tau bounded in [tau_min, tau_max]",
+           kParams)

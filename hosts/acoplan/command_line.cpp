@@ -74,7 +74,11 @@ po::variables_map parse(const po::options_description& options, int argc, const 
   po::variables_map vm;
   auto parser = po::command_line_parser(argc, argv).options(options);
   if (lenient) parser.allow_unregistered();
-  po::store(parser.run(), vm);
+  const po::parsed_options parsed = parser.run();
+  if (!lenient)
+    for (const auto& option : parsed.options)
+      if (option.position_key >= 0) throw aco::Error("unexpected argument '" + option.value.front() + "' (options start with --)");
+  po::store(parsed, vm);
   if (vm.count("config")) {
     const auto file = vm["config"].as<std::string>();
     std::ifstream in(file);
@@ -112,8 +116,10 @@ std::string unknown_option_message(const po::unknown_option& e, const po::option
   return message;
 }
 
-void print_section(std::ostream& out, std::span<const aco::ParamSpec> table, const aco::ParameterValues& values) {
-  for (const auto& spec : table) out << spec.name << " = " << aco::to_string(values.all().at(spec.name)) << "\n";
+void print_section(std::ostream& out, std::span<const aco::ParamSpec> table, const aco::ParameterValues& values,
+                   const std::string& skip = "") {
+  for (const auto& spec : table)
+    if (spec.name != skip) out << spec.name << " = " << aco::to_string(values.all().at(spec.name)) << "\n";
 }
 
 std::string config_file(const Request& r, const std::map<std::string, std::pair<std::span<const aco::ParamSpec>, aco::ParameterValues>>& plugins) {
@@ -123,7 +129,7 @@ std::string config_file(const Request& r, const std::map<std::string, std::pair<
   if (r.scen) out << "scen = " << r.scen->string() << "\n";
   if (r.start) out << "start = " << *r.start << "\n";
   if (r.goal) out << "goal = " << *r.goal << "\n";
-  print_section(out, kRunParameters, r.run);
+  print_section(out, kRunParameters, r.run, r.scen ? "" : "scen-index");
   print_section(out, aco::colony_parameters(), r.colony);
   for (const char* slot : aco::kSlots) out << slot << " = " << r.pipeline.slots.at(slot).plugin << "\n";
   for (const char* slot : aco::kSlots) {
@@ -272,10 +278,13 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
   for (const auto& p : registry.available())
     if (p.name == name || p.kind + "/" + p.name == name) matches.push_back(&p);
   if (matches.empty()) {
-    std::vector<std::string> all;
-    for (const auto& p : registry.available()) all.push_back(p.kind + "/" + p.name);
-    const auto near = aco::nearest(name, all);
-    throw aco::Error("--describe: no plugin named '" + name + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
+    std::string message = "--describe: no plugin named '" + name + "'";
+    std::vector<std::string> names;
+    for (const auto& p : registry.available()) names.push_back(name.find('/') == std::string::npos ? p.name : p.kind + "/" + p.name);
+    if (const auto near = aco::nearest(name, names); !near.empty())
+      for (const auto& p : registry.available())
+        if (p.name == near || p.kind + "/" + p.name == near) message += "; did you mean '" + p.kind + "/" + p.name + "'?";
+    throw aco::Error(message);
   }
   if (matches.size() > 1) {
     std::string message = "--describe: '" + name + "' is ambiguous; use one of:";

@@ -1,0 +1,52 @@
+#pragma once
+// Helpers shared by the tests: data locations, tiny hand-made maps, loaded plugins, running acoplan.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "aco/colony.hpp"
+#include "aco/graph.hpp"
+#include "aco/map.hpp"
+#include "aco/pipeline.hpp"
+#include "aco/plugin_registry.hpp"
+
+namespace test {
+
+std::filesystem::path data_dir();         // the project's data/
+std::filesystem::path shared_data_dir();  // ../shared/data (Moving AI subset, classic maps)
+
+// A map from rows of text: '#' blocked, anything else free. Row 0 is the top.
+aco::OccupancyGrid grid(const std::vector<std::string>& rows);
+
+// The build tree's plugins (a process-wide registry).
+aco::PluginRegistry& plugins();
+
+// One plugin instantiated with its defaults overridden by `params`.
+template <class Interface>
+std::unique_ptr<Interface> make(const std::string& kind, const std::string& name,
+                                 const std::map<std::string, std::string>& params = {}) {
+  const auto& descriptor = plugins().load(kind, name);
+  return plugins().create<Interface>(kind, name, aco::resolve(descriptor.parameters(), params, kind + "."));
+}
+
+// A Context for calling a strategy directly.
+aco::Context context(const aco::Graph& graph, aco::Cell start, aco::Cell goal, int iteration = 0,
+                     int max_iterations = 100);
+
+// An arrived ant following the given cells (consecutive cells must be neighbours).
+aco::Ant ant(const aco::Graph& graph, const std::vector<aco::Cell>& cells);
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+// Runs a program with arguments (no shell), capturing stdout and stderr.
+CommandResult run(const std::vector<std::string>& argv, const std::vector<std::string>& env = {});
+CommandResult acoplan(const std::vector<std::string>& args, const std::vector<std::string>& env = {});
+
+// A file in a fresh temporary folder, with the given content.
+std::filesystem::path temp_file(const std::string& name, const std::string& content);
+
+}  // namespace test

@@ -1,0 +1,206 @@
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "support.hpp"
+
+using Catch::Contains;
+using nlohmann::json;
+
+namespace {
+
+const std::string map1 = (test::data_dir() / "maps/classic20/map1.txt").string();
+const std::string arena_scen = (test::data_dir() / "maps/movingai/arena.map.scen").string();
+
+json run_json(const std::vector<std::string>& args) {
+  auto args_json = args;
+  args_json.push_back("--json");
+  const auto r = test::acoplan(args_json);
+  INFO(r.err);
+  REQUIRE((r.exit_code == 0 || r.exit_code == 3));
+  return json::parse(r.out);
+}
+
+// An error: exit status 1, nothing on stdout, one message on stderr containing `expected`.
+void expect_error(const std::vector<std::string>& args, const std::string& expected) {
+  const auto r = test::acoplan(args);
+  INFO("stderr: " << r.err);
+  CHECK(r.exit_code == 1);
+  CHECK(r.out.empty());
+  CHECK_THAT(r.err, Contains("acoplan: error: ") && Contains(expected));
+}
+
+}  // namespace
+
+TEST_CASE("acoplan --json reports every documented field", "[acoplan]") {
+  const json j = run_json({"--map", map1, "--start", "0,0", "--goal", "19,19", "--corner-cutting", "--seed", "3"});
+  REQUIRE(j.at("solved").get<bool>());
+  for (const char* field : {"length", "path", "grid_length", "grid_path", "turns", "iterations", "best_iteration", "time_ms", "seed"})
+    CHECK(j.contains(field));
+  CHECK(j["seed"] == 3);
+  CHECK(j["iterations"] == 100);
+  CHECK(j["best_iteration"].get<int>() >= 1);
+  CHECK(j["best_iteration"].get<int>() <= 100);
+  CHECK(j["time_ms"].get<double>() >= 0.0);
+  const auto& grid_path = j["grid_path"];
+  CHECK(grid_path.front() == json::array({0, 0}));
+  CHECK(grid_path.back() == json::array({19, 19}));
+  double length = 0;
+  for (std::size_t i = 1; i < grid_path.size(); ++i) {
+    const int dx = grid_path[i][0].get<int>() - grid_path[i - 1][0].get<int>();
+    const int dy = grid_path[i][1].get<int>() - grid_path[i - 1][1].get<int>();
+    REQUIRE(std::max(std::abs(dx), std::abs(dy)) == 1);
+    length += std::hypot(dx, dy);
+  }
+  CHECK(j["grid_length"].get<double>() == Approx(length));
+  CHECK(j["length"].get<double>() == Approx(length));  // smoother "none"
+  CHECK(j["path"].size() == grid_path.size());
+  CHECK(j["grid_length"].get<double>() >= j["optimal_length"].get<double>() - 1e-9);
+  CHECK(j["optimal_length"].get<double>() == Approx(34.3848).margin(1e-4));
+  CHECK(j["convergence"].size() == 100);
+  CHECK(j["pipeline"]["update"]["plugin"] == "ant_system");
+  CHECK(j["pipeline"]["update"]["params"]["rho"] == 0.3);
+}
+
+TEST_CASE("acoplan is deterministic for a seed, whatever the thread count", "[acoplan][determinism]") {
+  auto strip = [](json j) {
+    j.erase("time_ms");
+    return j;
+  };
+  const std::vector<std::string> base{"--scen", arena_scen, "--scen-index", "120", "--iterations", "40"};
+  auto one = base, two = base;
+  one.insert(one.end(), {"--threads", "1"});
+  two.insert(two.end(), {"--threads", "2"});
+  const json a = strip(run_json(one)), b = strip(run_json(two)), c = strip(run_json(one));
+  CHECK(a == b);
+  CHECK(a == c);
+  auto other_seed = one;
+  other_seed.insert(other_seed.end(), {"--seed", "99"});
+  CHECK(strip(run_json(other_seed))["ant_steps"] != a["ant_steps"]);
+}
+
+TEST_CASE("acoplan with no arguments plans on the bundled map and prints a summary", "[acoplan]") {
+  const auto r = test::acoplan({});
+  CHECK(r.exit_code == 0);
+  CHECK_THAT(r.out, Contains("classic20/map1.txt") && Contains("result:   length") && Contains("optimum:"));
+}
+
+TEST_CASE("acoplan plans Moving AI scenarios and the exact reference", "[acoplan]") {
+  const json j = run_json({"--scen", arena_scen, "--scen-index", "100"});
+  REQUIRE(j["solved"].get<bool>());
+  const json exact = run_json({"--scen", arena_scen, "--scen-index", "100", "--planner", "astar"});
+  CHECK(exact["grid_length"].get<double>() == Approx(j["optimal_length"].get<double>()));
+  CHECK(j["grid_length"].get<double>() >= exact["grid_length"].get<double>() - 1e-9);
+  const json classic = run_json({"--planner", "astar"});
+  CHECK(classic["length"].get<double>() == Approx(37.8995).margin(1e-4));
+}
+
+TEST_CASE("acoplan composes plugins and parameters from the command line and a config file", "[acoplan]") {
+  const json mmas = run_json({"--update", "max_min", "--update.rho", "0.2", "--update.p_best", "0.1", "--iterations", "30"});
+  CHECK(mmas["pipeline"]["update"]["plugin"] == "max_min");
+  CHECK(mmas["pipeline"]["update"]["params"]["rho"] == 0.2);
+  CHECK(mmas["iterations"] == 30);
+
+  const auto printed = test::acoplan({"--update", "acs", "--update.q0", "0.5", "--ants", "20", "--print-config"});
+  REQUIRE(printed.exit_code == 0);
+  CHECK_THAT(printed.out, Contains("update = acs") && Contains("[update]") && Contains("q0 = 0.5") && Contains("ants = 20"));
+  const auto config = test::temp_file("run.ini", printed.out);
+  json from_file = run_json({"--config", config.string()});
+  json direct = run_json({"--update", "acs", "--update.q0", "0.5", "--ants", "20"});
+  from_file.erase("time_ms");
+  direct.erase("time_ms");
+  CHECK(from_file == direct);
+  // The command line wins over the file.
+  CHECK(run_json({"--config", config.string(), "--ants", "7"})["colony"]["ants"] == 7);
+}
+
+TEST_CASE("acoplan lists and describes plugins, and prints help with plugin options", "[acoplan]") {
+  const auto list = test::acoplan({"--list-plugins"});
+  CHECK(list.exit_code == 0);
+  for (const char* p : {"init/uniform", "heuristic/distance", "update/ant_system", "update/max_min", "update/acs",
+                        "deadlock/discard", "smoother/none"})
+    CHECK_THAT(list.out, Contains(p));
+  const auto described = test::acoplan({"--describe", "max_min"});
+  CHECK(described.exit_code == 0);
+  CHECK_THAT(described.out, Contains("update/max_min") && Contains("p_best") && Contains("(0:1)"));
+  const auto help = test::acoplan({"--update", "acs", "--help"});
+  CHECK(help.exit_code == 0);
+  CHECK_THAT(help.out, Contains("--update.q0") && Contains("--ants") && Contains("--init.tau0"));
+  expect_error({"--describe", "max_mn"}, "no plugin named 'max_mn'; did you mean 'update/max_min'?");
+}
+
+TEST_CASE("acoplan writes an SVG picture", "[acoplan]") {
+  const auto file = test::temp_file("run.svg", "");
+  const auto r = test::acoplan({"--svg", file.string(), "--svg-pheromone"});
+  REQUIRE(r.exit_code == 0);
+  std::ifstream in(file);
+  const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(svg, Contains("<svg") && Contains("id=\"grid-path\"") && Contains("id=\"convergence\"") &&
+                      Contains("id=\"pheromone\"") && Contains("</svg>"));
+}
+
+TEST_CASE("acoplan rejects malformed map files with the file, line and problem", "[acoplan][bad-input]") {
+  const std::string ok_rows = "....\n....\n";
+  expect_error({"--map", test::temp_file("a.map", "typo octile\nheight 2\nwidth 4\nmap\n" + ok_rows).string(), "--start", "0,0", "--goal", "1,1"},
+               "a.map:1: bad header line 'typo octile'");
+  expect_error({"--map", test::temp_file("b.map", "type octile\nheight 2\nwidth 4\nmap\n....\n...\n").string(), "--start", "0,0", "--goal", "1,1"},
+               "b.map:6: row 1 has 3 characters, expected 4");
+  expect_error({"--map", test::temp_file("c.map", "type octile\nheight 2\nwidth 4\nmap\n..x.\n....\n").string(), "--start", "0,0", "--goal", "1,1"},
+               "unknown character 'x' at column 2");
+  expect_error({"--map", test::temp_file("d.map", "type octile\nheight 3\nwidth 4\nmap\n" + ok_rows).string(), "--start", "0,0", "--goal", "1,1"},
+               "truncated map: expected 3 rows, found 2");
+  expect_error({"--map", test::temp_file("e.txt", "0 0 1\n0 a 0\n").string(), "--start", "0,0", "--goal", "1,0"},
+               "e.txt:2: 'a' is not a number");
+  expect_error({"--map", test::temp_file("f.txt", "0 0 1\n0 0\n").string(), "--start", "0,0", "--goal", "1,0"},
+               "row has 2 values, the first row has 3");
+  expect_error({"--map", "/nonexistent/map.map", "--start", "0,0", "--goal", "1,0"}, "/nonexistent/map.map: cannot open file");
+}
+
+TEST_CASE("acoplan rejects blocked, out-of-range and malformed start and goal cells", "[acoplan][bad-input]") {
+  expect_error({"--map", map1, "--start", "6,0", "--goal", "19,19"}, "start (6,0) is a blocked cell");
+  expect_error({"--map", map1, "--start", "0,0", "--goal", "25,3"}, "goal (25,3) is outside the 20x20 map");
+  expect_error({"--map", map1, "--start", "-1,0", "--goal", "19,19"}, "start (-1,0) is outside");
+  expect_error({"--map", map1, "--start", "3", "--goal", "19,19"}, "--start: '3' is not a cell");
+  expect_error({"--map", map1}, "--start and --goal are required");
+  expect_error({"--scen", arena_scen, "--scen-index", "100000"}, "--scen-index 100000 is out of range");
+  expect_error({"--scen", arena_scen, "--start", "1,1"}, "either --scen or --start/--goal");
+}
+
+TEST_CASE("an unreachable goal is reported as unsolved with its own exit status", "[acoplan][bad-input]") {
+  const auto walled = test::temp_file("walled.txt", "0 1 0\n0 1 0\n0 1 0\n");
+  const auto r = test::acoplan({"--map", walled.string(), "--start", "0,0", "--goal", "2,2", "--json"});
+  CHECK(r.exit_code == 3);
+  const json j = json::parse(r.out);
+  CHECK_FALSE(j["solved"].get<bool>());
+  CHECK(j["length"].is_null());
+  CHECK_THAT(j["reason"].get<std::string>(), Contains("goal (2,2) is not reachable from start (0,0)"));
+  const auto text = test::acoplan({"--map", walled.string(), "--start", "0,0", "--goal", "2,2"});
+  CHECK(text.exit_code == 3);
+  CHECK_THAT(text.out, Contains("NOT SOLVED"));
+}
+
+TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range values", "[acoplan][bad-input]") {
+  expect_error({"--update", "nope"}, "unknown update plugin 'nope'");
+  expect_error({"--update.rhoo", "0.5"}, "unknown option '--update.rhoo'; did you mean '--update.rho'?");
+  expect_error({"--update.p_best", "0.5"}, "the update plugin 'ant_system' has parameters: rho q");
+  expect_error({"--antz", "5"}, "did you mean '--ants'?");
+  expect_error({"--ants", "0"}, "--ants: 0 is outside the range [1, 1000000]");
+  expect_error({"--ants", "-3"}, "--ants: -3 is outside the range");
+  expect_error({"--ants", "many"}, "--ants: 'many' is not a whole number");
+  expect_error({"--update.rho", "1.5"}, "--update.rho: 1.5 is outside the range [0, 1]");
+  expect_error({"--update.rho", "-0.1"}, "--update.rho: -0.1 is outside the range [0, 1]");
+  expect_error({"--neighbourhood", "6"}, "--neighbourhood: '6' is not one of 4,8,16");
+  expect_error({"stray"}, "stray");
+  const auto config = test::temp_file("bad.ini", "ants = 10\n[update]\nrhoo = 0.2\n");
+  expect_error({"--config", config.string()}, "unknown option '--update.rhoo'; did you mean '--update.rho'?");
+  expect_error({"--config", "/nonexistent.ini"}, "--config: cannot open '/nonexistent.ini'");
+}
+
+TEST_CASE("acoplan refuses a plugin built for another ABI version", "[acoplan][bad-input][abi]") {
+  expect_error({"--plugin-dir", ACO_TEST_BAD_PLUGIN_DIR, "--update", "wrong_abi"},
+               "plugin update/wrong_abi (" + std::string(ACO_TEST_BAD_PLUGIN_DIR) + "/aco_update_wrong_abi.so): ABI 999, host expects 1");
+  const auto list = test::acoplan({"--plugin-dir", ACO_TEST_BAD_PLUGIN_DIR, "--list-plugins"});
+  CHECK(list.exit_code == 0);
+  CHECK_THAT(list.out, Contains("update/wrong_abi  UNUSABLE") && Contains("ABI 999"));
+}

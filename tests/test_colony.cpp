@@ -1,0 +1,262 @@
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <set>
+
+#include "aco/colony.hpp"
+#include "aco/error.hpp"
+#include "aco/map_io.hpp"
+#include "aco/rng.hpp"
+#include "support.hpp"
+
+using Catch::Contains;
+
+namespace {
+
+// Wraps a real update rule and keeps a copy of every iteration's ants for inspection.
+class RecordingUpdate final : public aco::PheromoneUpdate {
+ public:
+  explicit RecordingUpdate(aco::PheromoneUpdate& inner) : inner_(inner) {}
+  void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
+    ants.emplace_back(it.ants.begin(), it.ants.end());
+    inner_.update(c, it, tau);
+  }
+  std::vector<std::vector<aco::Ant>> ants;
+
+ private:
+  aco::PheromoneUpdate& inner_;
+};
+
+struct Baseline {
+  std::unique_ptr<aco::PheromoneInit> init = test::make<aco::PheromoneInit>("init", "uniform");
+  std::unique_ptr<aco::Heuristic> heuristic = test::make<aco::Heuristic>("heuristic", "distance");
+  std::unique_ptr<aco::PheromoneUpdate> update = test::make<aco::PheromoneUpdate>("update", "ant_system");
+  std::unique_ptr<aco::DeadlockPolicy> deadlock = test::make<aco::DeadlockPolicy>("deadlock", "discard");
+  aco::Pipeline pipeline() { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
+};
+
+aco::OccupancyGrid classic_map1() {
+  std::ifstream in(test::data_dir() / "maps/classic20/map1.txt");
+  return aco::read_matrix_map(in, "map1");
+}
+
+}  // namespace
+
+TEST_CASE("random streams are reproducible and independent", "[rng]") {
+  aco::Rng a(42), b(42), c(43);
+  for (int i = 0; i < 100; ++i) {
+    const auto x = a.next();
+    CHECK(x == b.next());
+    CHECK(x != c.next());
+  }
+  auto s1 = aco::Rng::stream(7, 3, 5), s2 = aco::Rng::stream(7, 3, 5), s3 = aco::Rng::stream(7, 5, 3);
+  CHECK(s1.next() == s2.next());
+  CHECK(s1.next() != s3.next());
+  aco::Rng r(1);
+  double sum = 0;
+  for (int i = 0; i < 10000; ++i) {
+    const double u = r.uniform();
+    REQUIRE(u >= 0.0);
+    REQUIRE(u < 1.0);
+    sum += u;
+    REQUIRE(r.below(7) < 7);
+  }
+  CHECK(sum / 10000 == Approx(0.5).margin(0.02));
+}
+
+TEST_CASE("results are bit-identical for any thread count", "[colony][determinism]") {
+  const auto map = aco::load_map(test::data_dir() / "maps/movingai/arena.map");
+  const aco::Graph graph = aco::build_graph(*map, {});
+  aco::ColonySettings settings;
+  settings.ants = 40;
+  settings.iterations = 30;
+  settings.seed = 11;
+  std::vector<aco::ColonyResult> results;
+  // Allow more threads than cores, so 4 really means 4 on a small machine.
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
+  for (int threads : {1, 2, 4}) {
+    Baseline b;
+    tbb::task_arena arena(threads);
+    arena.execute([&] { results.push_back(aco::run_colony(graph, graph.node({3, 3}), graph.node({44, 40}), b.pipeline(), settings)); });
+  }
+  for (std::size_t i = 1; i < results.size(); ++i) {
+    CHECK(results[i].path == results[0].path);
+    CHECK(results[i].length == results[0].length);  // exact, not approximate
+    CHECK(results[i].best_so_far == results[0].best_so_far);
+    CHECK(results[i].iteration_best == results[0].iteration_best);
+    CHECK(results[i].ant_steps == results[0].ant_steps);
+    CHECK(results[i].pheromone == results[0].pheromone);
+  }
+  REQUIRE(results[0].solved);
+}
+
+TEST_CASE("another seed gives another run", "[colony][determinism]") {
+  const auto map = classic_map1();
+  const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
+  Baseline b;
+  aco::ColonySettings s;
+  s.iterations = 20;
+  const auto first = aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s);
+  s.seed = 2;
+  Baseline c;
+  const auto second = aco::run_colony(graph, 0, graph.node({19, 19}), c.pipeline(), s);
+  CHECK(first.ant_steps != second.ant_steps);
+}
+
+TEST_CASE("every ant walks a loop-free chain of edges from the start", "[colony]") {
+  const auto map = classic_map1();
+  const aco::Graph graph = aco::build_graph(map, {});
+  Baseline b;
+  RecordingUpdate recorder(*b.update);
+  aco::Pipeline p = b.pipeline();
+  p.update = &recorder;
+  aco::ColonySettings s;
+  s.ants = 30;
+  s.iterations = 10;
+  const aco::NodeId start = 0, goal = graph.node({19, 19});
+  const auto result = aco::run_colony(graph, start, goal, p, s);
+  REQUIRE(recorder.ants.size() == 10);
+  int arrived = 0;
+  for (const auto& iteration : recorder.ants) {
+    REQUIRE(iteration.size() == 30);
+    for (const aco::Ant& ant : iteration) {
+      REQUIRE(ant.nodes.front() == start);
+      REQUIRE(ant.edges.size() + 1 == ant.nodes.size());
+      REQUIRE(std::set<aco::NodeId>(ant.nodes.begin(), ant.nodes.end()).size() == ant.nodes.size());
+      for (std::size_t i = 0; i < ant.edges.size(); ++i) {
+        REQUIRE(graph.source(ant.edges[i]) == ant.nodes[i]);
+        REQUIRE(graph.targets[ant.edges[i]] == ant.nodes[i + 1]);
+      }
+      REQUIRE(ant.arrived == (ant.nodes.back() == goal));
+      if (ant.arrived) {
+        ++arrived;
+        REQUIRE(ant.length == Approx(aco::path_length(graph, ant.nodes)));
+      }
+    }
+  }
+  CHECK(arrived > 0);
+  // The reported best is the shortest arrived ant, and best_iteration the first iteration reaching it.
+  double shortest = INFINITY;
+  int first = 0;
+  for (std::size_t it = 0; it < recorder.ants.size(); ++it)
+    for (const aco::Ant& ant : recorder.ants[it])
+      if (ant.arrived && ant.length < shortest) shortest = ant.length, first = int(it) + 1;
+  CHECK(result.length == shortest);
+  CHECK(result.best_iteration == first);
+  for (std::size_t i = 1; i < result.best_so_far.size(); ++i) CHECK(result.best_so_far[i] <= result.best_so_far[i - 1]);
+}
+
+TEST_CASE("the stagnation rule stops a run after that many iterations without improvement", "[colony]") {
+  const auto map = classic_map1();
+  const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
+  Baseline b;
+  aco::ColonySettings s;
+  s.iterations = 1000;
+  s.stagnation = 5;
+  const auto result = aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s);
+  REQUIRE(result.solved);
+  CHECK(result.iterations < 1000);
+  CHECK(result.iterations - result.best_iteration == 5);
+  CHECK(result.best_so_far.size() == std::size_t(result.iterations));
+}
+
+namespace {
+// Steps back one node whenever an ant is stuck.
+class BacktrackOne final : public aco::DeadlockPolicy {
+ public:
+  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 1; }
+};
+class ForbidNode final : public aco::DeadlockPolicy {
+ public:
+  explicit ForbidNode(aco::NodeId n) : node(n) {}
+  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }
+  void after_iteration(const aco::Context&, const aco::Iteration&, std::span<double>,
+                       std::vector<std::uint8_t>& forbidden) override {
+    forbidden[node] = 1;
+  }
+  aco::NodeId node;
+};
+}  // namespace
+
+TEST_CASE("a backtracking deadlock policy lets ants out of dead ends", "[colony][deadlock]") {
+  // A dead-end pocket right next to the start, towards the goal: greedy ants walk into it.
+  const auto map = test::grid({
+      "..........",
+      ".######...",
+      ".#....#...",
+      ".#.##.#...",
+      ".#..#.....",
+      ".####.....",
+      "..........",
+  });
+  const aco::Graph graph = aco::build_graph(map, {});
+  aco::ColonySettings s;
+  s.ants = 20;
+  s.iterations = 5;
+  const aco::NodeId start = graph.node({2, 2}), goal = graph.node({9, 6});
+  Baseline discard;
+  const auto dropped = aco::run_colony(graph, start, goal, discard.pipeline(), s);
+  Baseline with_backtrack;
+  BacktrackOne backtrack;
+  aco::Pipeline p = with_backtrack.pipeline();
+  p.deadlock = &backtrack;
+  RecordingUpdate recorder(*with_backtrack.update);
+  p.update = &recorder;
+  const auto rescued = aco::run_colony(graph, start, goal, p, s);
+  int arrived_backtrack = 0, arrived_discard = 0;
+  for (int a : rescued.arrived) arrived_backtrack += a;
+  for (int a : dropped.arrived) arrived_discard += a;
+  CHECK(arrived_backtrack == 100);  // backtracking never loses an ant when the goal is reachable
+  CHECK(arrived_discard < arrived_backtrack);
+  for (const auto& iteration : recorder.ants)
+    for (const aco::Ant& ant : iteration) REQUIRE(aco::path_length(graph, ant.nodes) == Approx(ant.length));
+}
+
+TEST_CASE("nodes a deadlock policy forbids are never entered again", "[colony][deadlock]") {
+  const auto map = test::grid({"......", "......", "......", "......"});
+  const aco::Graph graph = aco::build_graph(map, {});
+  Baseline b;
+  const aco::NodeId banned = graph.node({2, 1});
+  ForbidNode forbid(banned);
+  RecordingUpdate recorder(*b.update);
+  aco::Pipeline p = b.pipeline();
+  p.deadlock = &forbid;
+  p.update = &recorder;
+  aco::ColonySettings s;
+  s.iterations = 10;
+  aco::run_colony(graph, graph.node({0, 1}), graph.node({5, 1}), p, s);
+  bool visited_before = false;
+  for (const aco::Ant& ant : recorder.ants[0]) visited_before |= std::count(ant.nodes.begin(), ant.nodes.end(), banned) > 0;
+  CHECK(visited_before);  // the straight line runs through it, so the first iteration uses it
+  for (std::size_t it = 1; it < recorder.ants.size(); ++it)
+    for (const aco::Ant& ant : recorder.ants[it]) REQUIRE(std::count(ant.nodes.begin(), ant.nodes.end(), banned) == 0);
+}
+
+namespace {
+class PoisonUpdate final : public aco::PheromoneUpdate {
+ public:
+  void update(const aco::Context&, const aco::Iteration&, std::span<double> tau) override { tau[3] = NAN; }
+};
+}  // namespace
+
+TEST_CASE("bad inputs and bad strategy output are reported, not run", "[colony]") {
+  const auto map = test::grid({"..#", "...", "..."});
+  const aco::Graph graph = aco::build_graph(map, {});
+  Baseline b;
+  aco::ColonySettings s;
+  REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, graph.node({2, 0}), b.pipeline(), s), Contains("goal (2,0) is a blocked cell"));
+  REQUIRE_THROWS_WITH(aco::run_colony(graph, -1, 2, b.pipeline(), s), Contains("start node is outside the map"));
+  s.ants = 0;
+  REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, 8, b.pipeline(), s), Contains("ants must be at least 1"));
+  s.ants = 5;
+  PoisonUpdate poison;
+  aco::Pipeline p = b.pipeline();
+  p.update = &poison;
+  REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, 8, p, s), Contains("pheromone of edge") && Contains("pheromone update"));
+  const auto trivial = aco::run_colony(graph, 4, 4, b.pipeline(), s);
+  CHECK(trivial.solved);
+  CHECK(trivial.length == 0.0);
+  CHECK(trivial.path == std::vector<aco::NodeId>{4});
+}

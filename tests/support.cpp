@@ -64,10 +64,18 @@ std::string slurp(const std::filesystem::path& file) {
   s << in.rdbuf();
   return s.str();
 }
+// Every temporary file of this test process lives under one folder, removed at exit.
+struct TempRoot {
+  std::filesystem::path path = std::filesystem::temp_directory_path() / ("aco_tests_" + std::to_string(::getpid()));
+  ~TempRoot() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
 std::filesystem::path fresh_dir() {
+  static TempRoot root;
   static std::atomic<int> counter{0};
-  auto dir = std::filesystem::temp_directory_path() /
-             ("aco_tests_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+  auto dir = root.path / std::to_string(counter++);
   std::filesystem::create_directories(dir);
   return dir;
 }

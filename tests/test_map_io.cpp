@@ -143,6 +143,10 @@ TEST_CASE("Malformed Moving AI maps are rejected with a precise message", "[map_
     REQUIRE_THROWS_WITH(movingai("typo octile\nheight 2\nwidth 4\nmap\n....\n....\n", "bad.map"),
                         Catch::Contains("bad.map:1:") && Catch::Contains("bad header line 'typo octile'"));
   }
+  SECTION("unsupported map type") {
+    REQUIRE_THROWS_WITH(movingai("type hex\nheight 2\nwidth 4\nmap\n....\n....\n", "bad.map"),
+                        Catch::Contains("bad.map:1:") && Catch::Contains("map type 'hex' is not supported"));
+  }
   SECTION("missing width") {
     REQUIRE_THROWS_WITH(movingai("type octile\nheight 2\nmap\n....\n....\n", "bad.map"),
                         Catch::Contains("bad.map:3:") && Catch::Contains("lacks a 'type', 'height' or 'width'"));
@@ -306,6 +310,11 @@ TEST_CASE("Malformed scenario files are rejected with a precise message", "[map_
     REQUIRE_THROWS_AS(scenarios(good), aco::Error);
     REQUIRE_THROWS_WITH(scenarios(good, "bad.scen"),
                         Catch::Contains("bad.scen:1:") && Catch::Contains("expected 'version 1'"));
+  }
+  SECTION("unknown version") {
+    REQUIRE_THROWS_WITH(scenarios("version 2\n" + good, "bad.scen"),
+                        Catch::Contains("bad.scen:1:") && Catch::Contains("expected 'version 1', found 'version 2'"));
+    CHECK(scenarios("version 1.0\n" + good, "ok.scen").size() == 1);
   }
   SECTION("empty file") {
     REQUIRE_THROWS_WITH(scenarios("", "bad.scen"), Catch::Contains("bad.scen") && Catch::Contains("empty scenario file"));

@@ -56,7 +56,6 @@ TEST_CASE("removing one plugin library leaves the others working", "[registry]")
   const auto& d = registry.load("update", "ant_system");
   auto update = registry.create<aco::PheromoneUpdate>("update", "ant_system", aco::resolve(d.parameters(), {}, ""));
   CHECK(update != nullptr);
-  fs::remove_all(dir.parent_path());
 }
 
 TEST_CASE("a plugin of the wrong slot is not accepted as another interface", "[registry]") {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "aco/error.hpp"
 #include "aco/rng.hpp"
@@ -65,7 +66,6 @@ class Engine {
     const auto edges = static_cast<std::size_t>(graph.num_edges());
     tau_.assign(edges, 0.0);
     eta_beta_.assign(edges, 0.0);
-    weight_.assign(edges, 0.0);
     forbidden_.assign(graph.num_nodes(), 0);
     for (NodeId n = 0; n < graph.num_nodes(); ++n) max_degree_ = std::max(max_degree_, graph.degree(n));
   }
@@ -79,7 +79,6 @@ class Engine {
       throw Error("the update plugin's exploitation probability q0 is not within [0, 1]");
     uses_walk_ = p_.heuristic->uses_walk();
     compute_heuristic();
-    refresh_weights("pheromone initialisation");
 
     std::vector<Ant> ants(s_.ants);
     std::vector<std::uint64_t> steps(s_.ants, 0);
@@ -90,10 +89,7 @@ class Engine {
 
     for (int it = 0; it < s_.iterations; ++it) {
       context_.iteration = it;
-      if (it > 0 && p_.heuristic->varies_by_iteration()) {
-        compute_heuristic();
-        refresh_weights("the heuristic update");
-      }
+      if (it > 0 && p_.heuristic->varies_by_iteration()) compute_heuristic();
       tbb::parallel_for(tbb::blocked_range<int>(0, s_.ants), [&](const tbb::blocked_range<int>& range) {
         Scratch& local = scratch.local();
         for (int k = range.begin(); k != range.end(); ++k) {
@@ -125,7 +121,6 @@ class Engine {
       p_.deadlock->after_iteration(context_, view, tau_, forbidden_);
       forbidden_[context_.start] = forbidden_[context_.goal] = 0;
       p_.update->update(context_, view, tau_);
-      refresh_weights("the pheromone update");
 
       if (s_.stagnation > 0 && it + 1 - last_improvement >= s_.stagnation) break;
     }
@@ -147,24 +142,22 @@ class Engine {
     }
   }
 
-  void refresh_weights(const char* phase) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tau_.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t e = r.begin(); e != r.end(); ++e) {
-        const double t = tau_[e];
-        if (!(t >= 0.0 && std::isfinite(t))) fail_value("pheromone", phase, t, e);
-        weight_[e] = power(t, s_.alpha) * eta_beta_[e];
-      }
-    });
-  }
-
-  [[noreturn]] void fail_value(const char* what, const char* phase, double value, std::size_t e) const {
+  // The pheromone is checked where it is used, not in a pass over every edge per iteration:
+  // on large maps such a pass would cost more than the ants themselves.
+  [[noreturn]] void fail_value(const char* what, const char* source, double value, std::size_t e) const {
     const NodeId from = g_.source(static_cast<EdgeId>(e));
-    throw Error(std::string(what) + " of edge " + to_string(g_.cell(from)) + " -> " +
-                to_string(g_.cell(g_.targets[e])) + " is " + std::to_string(value) + " after " + phase +
-                " (must be finite and >= 0)");
+    throw Error(std::string(what) + " of edge " + to_string(g_.cell(from)) + " -> " + to_string(g_.cell(g_.targets[e])) +
+                " is " + std::to_string(value) + " in iteration " + std::to_string(context_.iteration + 1) + " (set by " +
+                source + "; it must be finite and >= 0)");
   }
 
-  // One ant's walk; returns the number of moves it made.
+  std::uint64_t construct(Ant& ant, Scratch& scratch, Rng& rng) const {
+    return s_.alpha == 1.0 ? construct<true>(ant, scratch, rng) : construct<false>(ant, scratch, rng);
+  }
+
+  // One ant's walk; returns the number of moves it made. Specialised for alpha = 1, the usual
+  // case, which needs no pow() in the inner loop.
+  template <bool kAlphaOne>
   std::uint64_t construct(Ant& ant, Scratch& scratch, Rng& rng) const {
     ant.nodes.clear();
     ant.edges.clear();
@@ -177,7 +170,9 @@ class Engine {
     const EdgeId* offsets = g_.offsets.data();
     const NodeId* targets = g_.targets.data();
     const std::uint8_t* forbidden = forbidden_.data();
-    const double* weight = weight_.data();
+    const double* tau = tau_.data();
+    const double* eta_beta = eta_beta_.data();
+    const double alpha = s_.alpha;  // unused when kAlphaOne
 
     NodeId current = context_.start;
     ant.nodes.push_back(current);
@@ -186,14 +181,20 @@ class Engine {
     while (current != context_.goal) {
       int n = 0;
       double total = 0.0;
+      bool negative = false;
       for (EdgeId e = offsets[current], end = offsets[current + 1]; e < end; ++e) {
         const NodeId j = targets[e];
         if (visited[j] == stamp || forbidden[j]) continue;
+        const double t = tau[e];
+        negative |= !(t >= 0.0);
+        const double w = (kAlphaOne ? t : power(t, alpha)) * eta_beta[e];
         candidates[n] = e;
-        weights[n] = weight[e];
-        total += weight[e];
+        weights[n] = w;
+        total += w;
         ++n;
       }
+      // NaN and infinity reach the total; a negative value may not, hence its own flag.
+      if (negative || !(total <= std::numeric_limits<double>::max())) reject_pheromone(candidates, n);
       if (n == 0) {
         const int back = std::min<int>(p_.deadlock->on_stuck(context_, ant.nodes), int(ant.nodes.size()) - 1);
         if (back <= 0) return moves;  // the ant dies
@@ -220,6 +221,14 @@ class Engine {
     return moves;
   }
 
+  [[noreturn]] void reject_pheromone(const EdgeId* candidates, int n) const {
+    for (int i = 0; i < n; ++i) {
+      const double t = tau_[candidates[i]];
+      if (!(t >= 0.0 && std::isfinite(t))) fail_value("pheromone", "the init, update or deadlock plugin", t, candidates[i]);
+    }
+    throw Error("the transition weights overflowed: pheromone or heuristic values are too large");
+  }
+
   // Pseudo-random proportional rule: with probability q0 the best candidate, else the roulette.
   int choose(Rng& rng, int n, const double* weights, double total) const {
     if (exploitation_ > 0.0 && rng.uniform() < exploitation_)
@@ -242,7 +251,6 @@ class Engine {
   Context context_;
   std::vector<double> tau_;
   std::vector<double> eta_beta_;
-  std::vector<double> weight_;  // tau^alpha * eta^beta, refreshed after every change of either
   std::vector<std::uint8_t> forbidden_;
   int max_degree_ = 0;
   double exploitation_ = 0.0;

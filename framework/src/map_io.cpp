@@ -76,7 +76,10 @@ OccupancyGrid read_movingai_map(std::istream& in, const std::string& name) {
     if (words.empty()) continue;
     if (words[0] == "map" && words.size() == 1) break;
     if (words.size() != 2) reader.fail("bad header line '" + line + "': expected 'type octile', 'height H', 'width W' or 'map'");
-    if (words[0] == "type") typed = true;
+    if (words[0] == "type") {
+      if (words[1] != "octile") reader.fail("map type '" + words[1] + "' is not supported (expected 'type octile')");
+      typed = true;
+    }
     else if (words[0] == "height") height = parse_dimension(reader, words[1], "height");
     else if (words[0] == "width") width = parse_dimension(reader, words[1], "width");
     else reader.fail("bad header line '" + line + "': expected 'type octile', 'height H', 'width W' or 'map'");
@@ -233,7 +236,9 @@ OccupancyGrid load_ros_map(const std::filesystem::path& yaml_file) {
     for (int x = 0; x < image.width; ++x) {
       const int v = image.pixels[static_cast<std::size_t>(y) * image.width + x];
       // map_server: p = occupancy probability; cells between the thresholds are unknown,
-      // and a planner must not drive through unknown space.
+      // and a planner must not drive through unknown space. In raw mode map_server takes the
+      // value as an occupancy percentage and ignores negate; a planner still has to decide
+      // free or not, so the free threshold applies to it too (values above 100 are unknown).
       const double p = mode == "raw" ? v / 100.0
                        : negate     ? double(v) / image.maxval
                                     : double(image.maxval - v) / image.maxval;
@@ -256,7 +261,8 @@ std::vector<Scenario> read_scenarios(std::istream& in, const std::string& name) 
   std::string line;
   if (!reader.next(line)) reader.fail("empty scenario file (expected 'version 1')");
   const auto head = split_whitespace(line);
-  if (head.size() != 2 || head[0] != "version") reader.fail("expected 'version 1', found '" + line + "'");
+  if (head.size() != 2 || head[0] != "version" || (head[1] != "1" && head[1] != "1.0"))
+    reader.fail("expected 'version 1', found '" + line + "'");
   std::vector<Scenario> scenarios;
   while (reader.next(line)) {
     if (is_blank(line)) continue;

@@ -17,13 +17,16 @@ double polyline_length(std::span<const Eigen::Vector3d> points) {
 
 int count_turns(std::span<const Eigen::Vector3d> points) {
   int turns = 0;
-  for (std::size_t i = 1; i + 1 < points.size(); ++i) {
-    const Eigen::Vector3d a = points[i] - points[i - 1];
-    const Eigen::Vector3d b = points[i + 1] - points[i];
-    if (a.squaredNorm() == 0.0 || b.squaredNorm() == 0.0) continue;
-    // Same heading when parallel and pointing the same way (relative tolerance).
-    const bool parallel = a.cross(b).norm() <= 1e-9 * a.norm() * b.norm();
-    if (!(parallel && a.dot(b) > 0.0)) ++turns;
+  Eigen::Vector3d heading = Eigen::Vector3d::Zero();  // direction of the last non-empty segment
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const Eigen::Vector3d step = points[i] - points[i - 1];
+    if (step.squaredNorm() == 0.0) continue;  // a repeated waypoint is no move, and hides no turn
+    if (heading.squaredNorm() > 0.0) {
+      // Same heading when parallel and pointing the same way (relative tolerance).
+      const bool parallel = heading.cross(step).norm() <= 1e-9 * heading.norm() * step.norm();
+      if (!(parallel && heading.dot(step) > 0.0)) ++turns;
+    }
+    heading = step;
   }
   return turns;
 }

@@ -1,6 +1,8 @@
 #pragma once
-// Building blocks shared by pheromone update plugins.
-#include <algorithm>
+// Building blocks shared by pheromone update plugins. The whole-field operations run in
+// parallel (element-wise, so the result does not depend on the thread count): on large maps
+// they, not the ants, would otherwise dominate an iteration.
+#include <boost/config.hpp>
 #include <span>
 
 #include "aco/strategies.hpp"
@@ -8,27 +10,17 @@
 namespace aco {
 
 // tau = (1 - rho) * tau on every edge.
-inline void evaporate(std::span<double> tau, double rho) {
-  const double keep = 1.0 - rho;
-  for (double& t : tau) t *= keep;
-}
+BOOST_SYMBOL_VISIBLE void evaporate(std::span<double> tau, double rho);
+
+// tau = clamp(tau, low, high) on every edge.
+BOOST_SYMBOL_VISIBLE void clamp(std::span<double> tau, double low, double high);
+
+// Multiplies the field so its mean over edges is `mean`, keeping its shape.
+BOOST_SYMBOL_VISIBLE void rescale_mean(std::span<double> tau, double mean);
 
 // tau += amount on every edge of the ant's walk.
 inline void deposit(std::span<double> tau, const Ant& ant, double amount) {
   for (EdgeId e : ant.edges) tau[e] += amount;
-}
-
-inline void clamp(std::span<double> tau, double low, double high) {
-  for (double& t : tau) t = std::clamp(t, low, high);
-}
-
-// Multiplies the field so its mean over edges is `mean`, keeping its shape.
-inline void rescale_mean(std::span<double> tau, double mean) {
-  double sum = 0.0;
-  for (double t : tau) sum += t;
-  if (sum <= 0.0) return;
-  const double factor = mean * static_cast<double>(tau.size()) / sum;
-  for (double& t : tau) t *= factor;
 }
 
 }  // namespace aco

@@ -1,0 +1,122 @@
+// aco_bench: speed figures of the colony engine. Times whole runs with steady_clock and
+// reports medians; ns per ant step = run time / moves made by all ants.
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <boost/program_options.hpp>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+#include "aco/error.hpp"
+#include "aco/map_io.hpp"
+#include "aco/pipeline.hpp"
+
+namespace po = boost::program_options;
+
+namespace {
+
+struct Timing {
+  double median_ms = 0;
+  double min_ms = 0;
+  double ns_per_step = 0;
+  aco::ColonyResult last;
+};
+
+// Runs the colony `repeats` times with seeds 1..repeats inside an arena of `threads` threads.
+Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::PluginRegistry& registry,
+                 const aco::PipelineSpec& spec, aco::ColonySettings settings, int repeats, int threads,
+                 bool same_seed = false) {
+  std::vector<double> ms;
+  double total_ms = 0;
+  std::uint64_t total_steps = 0;
+  Timing t;
+  tbb::task_arena arena(threads);
+  for (int i = 0; i < repeats; ++i) {
+    const auto pipeline = aco::instantiate(registry, spec);
+    settings.seed = same_seed ? 1 : static_cast<std::uint64_t>(i + 1);
+    const auto began = std::chrono::steady_clock::now();
+    arena.execute([&] { t.last = aco::run_colony(graph, graph.node(start), graph.node(goal), pipeline.colony(), settings); });
+    const double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
+    ms.push_back(elapsed);
+    total_ms += elapsed;
+    total_steps += t.last.ant_steps;
+  }
+  std::sort(ms.begin(), ms.end());
+  t.median_ms = ms[ms.size() / 2];
+  t.min_ms = ms.front();
+  t.ns_per_step = total_ms * 1e6 / double(std::max<std::uint64_t>(total_steps, 1));
+  return t;
+}
+
+std::unique_ptr<aco::Map> load(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) throw aco::Error(file.string() + " not found (give --shared-data DIR)");
+  return aco::load_map(file);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  int repeats = 30;
+  std::string shared = ACO_BENCH_SHARED_DATA_DIR;
+  std::string large = "movingai/street/Berlin_0_512.map";
+  int large_index = 400;
+  int large_repeats = 5;
+  po::options_description options("aco_bench options");
+  options.add_options()("help,h", "print this help")
+      ("repeats", po::value(&repeats), "runs per small-map measurement (seeds 1..N)")
+      ("shared-data", po::value(&shared), "folder with movingai/ (default ../shared/data)")
+      ("large-map", po::value(&large), "512x512 map for the thread-scaling run, relative to --shared-data")
+      ("large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")
+      ("large-repeats", po::value(&large_repeats), "runs per thread count on the large map");
+  po::variables_map vm;
+  po::store(po::parse_command_line(argc, argv, options), vm);
+  po::notify(vm);
+  if (vm.count("help")) {
+    std::cout << options;
+    return 0;
+  }
+  if (repeats < 1 || large_repeats < 1) throw aco::Error("repeats must be >= 1");
+  aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
+
+  std::printf("== classic map1, corner cutting, 8-neighbourhood, 50 ants x 100 iterations, alpha 1, beta 7, 1 thread ==\n");
+  std::printf("%-12s %10s %10s %12s %12s\n", "update", "median ms", "min ms", "ns/ant step", "mean length");
+  const auto map1 = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/classic20/map1.txt");
+  const aco::Graph classic = aco::build_graph(*map1, {aco::Neighbourhood::eight, true});
+  for (const char* update : {"ant_system", "max_min", "acs"}) {
+    aco::PipelineSpec spec;
+    spec.slots["update"].plugin = update;
+    if (std::string(update) != "max_min") spec.slots["update"].params = {{"rho", "0.3"}, {"q", "1"}};
+    const Timing t = time_runs(classic, {0, 0}, {19, 19}, registry, spec, {}, repeats, 1);
+    std::printf("%-12s %10.3f %10.3f %12.1f %12.4f\n", update, t.median_ms, t.min_ms, t.ns_per_step, t.last.length);
+  }
+
+  const std::filesystem::path large_file = std::filesystem::path(shared) / large;
+  const auto scenarios = aco::load_scenarios(large_file.string() + ".scen");
+  if (large_index < 0 || large_index >= int(scenarios.size())) throw aco::Error("--large-scen-index out of range");
+  const aco::Scenario& s = scenarios[large_index];
+  const auto big = load(large_file);
+  const aco::Graph graph = aco::build_graph(*big, {});
+  std::printf("\n== %s (%dx%d, %d edges), scenario %d: %s -> %s, optimum %.2f; ant_system defaults ==\n", large.c_str(),
+              graph.width, graph.height, graph.num_edges(), large_index, aco::to_string(s.start).c_str(),
+              aco::to_string(s.goal).c_str(), s.optimal_length);
+  std::printf("%-8s %10s %10s %12s %10s %8s\n", "threads", "median ms", "min ms", "ns/ant step", "length", "speedup");
+  const aco::PipelineSpec defaults;
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 2);
+  const Timing one = time_runs(graph, s.start, s.goal, registry, defaults, {}, large_repeats, 1, true);
+  const Timing two = time_runs(graph, s.start, s.goal, registry, defaults, {}, large_repeats, 2, true);
+  std::printf("%-8d %10.1f %10.1f %12.1f %10.2f %8s\n", 1, one.median_ms, one.min_ms, one.ns_per_step, one.last.length, "1.00");
+  std::printf("%-8d %10.1f %10.1f %12.1f %10.2f %8.2f\n", 2, two.median_ms, two.min_ms, two.ns_per_step, two.last.length,
+              one.median_ms / two.median_ms);
+  const bool identical = one.last.path == two.last.path && one.last.length == two.last.length &&
+                         one.last.ant_steps == two.last.ant_steps && one.last.best_so_far == two.last.best_so_far &&
+                         one.last.pheromone == two.last.pheromone;
+  std::printf("results with 1 and 2 threads identical (path, length, steps, curve, pheromone): %s; solved: %s, %d iterations\n",
+              identical ? "yes" : "NO", one.last.solved ? "yes" : "no", one.last.iterations);
+  return identical ? 0 : 1;
+} catch (const std::exception& e) {
+  std::cerr << "aco_bench: error: " << e.what() << "\n";
+  return 1;
+}

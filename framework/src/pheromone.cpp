@@ -1,0 +1,40 @@
+#include "aco/pheromone.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+
+namespace aco {
+namespace {
+
+// Chunks large enough that small maps run in one piece, without task overhead.
+constexpr std::size_t kGrain = 1 << 15;
+
+template <class Body>
+void for_each_chunk(std::span<double> tau, Body body) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tau.size(), kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t e = r.begin(); e != r.end(); ++e) body(tau[e]);
+  });
+}
+
+}  // namespace
+
+void evaporate(std::span<double> tau, double rho) {
+  const double keep = 1.0 - rho;
+  for_each_chunk(tau, [keep](double& t) { t *= keep; });
+}
+
+void clamp(std::span<double> tau, double low, double high) {
+  for_each_chunk(tau, [low, high](double& t) { t = std::clamp(t, low, high); });
+}
+
+void rescale_mean(std::span<double> tau, double mean) {
+  double sum = 0.0;  // serial: a parallel sum's rounding would depend on the thread count
+  for (double t : tau) sum += t;
+  if (sum <= 0.0) return;
+  const double factor = mean * static_cast<double>(tau.size()) / sum;
+  for_each_chunk(tau, [factor](double& t) { t *= factor; });
+}
+
+}  // namespace aco

@@ -74,12 +74,12 @@ std::vector<fs::path> PluginRegistry::default_search_dirs(const std::vector<fs::
     for (std::string part; std::getline(parts, part, ':');)
       if (!part.empty()) dirs.emplace_back(part);
   }
-#ifdef ACO_BUILD_PLUGIN_DIR
-  dirs.emplace_back(ACO_BUILD_PLUGIN_DIR);
-#endif
+  // An installed host prefers the plugins installed with it; in the build tree that folder
+  // does not exist and the build tree's plugin folder serves.
   boost::dll::fs::error_code ec;
   const fs::path exe = boost::dll::program_location(ec);
   if (!ec) dirs.push_back(exe.parent_path().parent_path() / ACO_INSTALL_PLUGIN_DIR);
+  dirs.emplace_back(ACO_BUILD_PLUGIN_DIR);
   return dirs;
 }
 

@@ -23,8 +23,8 @@ class BOOST_SYMBOL_VISIBLE PluginRegistry {
   // Searches the folders in order; the first plugin of a given kind and name wins.
   explicit PluginRegistry(std::vector<std::filesystem::path> search_dirs);
 
-  // `extra` (e.g. --plugin-dir), then every folder of ACO_PLUGIN_PATH, then the build tree's
-  // plugin folder, then <prefix>/lib/aco/plugins next to the running executable.
+  // `extra` (e.g. --plugin-dir), then every folder of ACO_PLUGIN_PATH, then <prefix>/lib/aco/plugins
+  // of the running executable, then the build tree's plugin folder.
   static std::vector<std::filesystem::path> default_search_dirs(const std::vector<std::filesystem::path>& extra = {});
 
   const std::vector<std::filesystem::path>& search_dirs() const { return dirs_; }

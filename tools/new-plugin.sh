@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Scaffolds an out-of-tree plugin project that builds against an installed aco SDK:
+#   tools/new-plugin.sh KIND NAME DIR      (KIND: init, heuristic, update, deadlock, smoother)
+# then: cmake -S DIR -B DIR/build -DCMAKE_PREFIX_PATH=<aco prefix> && cmake --build DIR/build
+#       acoplan --plugin-dir DIR/build/plugins --KIND NAME
+# The generated class compiles and runs as it is; replace its one method with your idea.
+set -euo pipefail
+if [ $# -ne 3 ]; then echo "usage: $0 KIND NAME DIR" >&2; exit 2; fi
+kind=$1 name=$2 dir=$3
+[[ "$name" =~ ^[a-z][a-z0-9_]*$ ]] || { echo "new-plugin: NAME must be lower_case_with_underscores" >&2; exit 2; }
+case "$kind" in
+  init) interface=PheromoneInit; method='  void initialize(const aco::Context&, std::span<double> tau) override {
+    for (double& t : tau) t = value_;
+  }' ;;
+  heuristic) interface=Heuristic; method='  void compute(const aco::Context& c, std::span<double> eta) override {
+    const aco::Graph& g = *c.graph;
+    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) eta[e] = value_ / (1.0 + g.distance(g.targets[e], c.goal));
+  }' ;;
+  update) interface=PheromoneUpdate; method='  void update(const aco::Context&, const aco::Iteration& it, std::span<double> tau) override {
+    aco::evaporate(tau, 0.1);
+    if (it.best) aco::deposit(tau, *it.best, value_ / it.best->length);
+  }' ;;
+  deadlock) interface=DeadlockPolicy; method='  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override {
+    return static_cast<int>(value_);  // nodes to step back; 0 lets the ant die
+  }' ;;
+  smoother) interface=Smoother; method='  std::vector<Eigen::Vector3d> smooth(const aco::Context& c, std::span<const aco::NodeId> path) const override {
+    return aco::to_waypoints(*c.graph, path);
+  }' ;;
+  *) echo "new-plugin: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother)" >&2; exit 2 ;;
+esac
+mkdir -p "$dir"
+cat > "$dir/CMakeLists.txt" <<CMAKE
+cmake_minimum_required(VERSION 3.25)
+project(aco_${kind}_${name} LANGUAGES CXX)
+set(CMAKE_CXX_STANDARD 20)
+find_package(aco REQUIRED)
+aco_add_plugin(${kind} ${name} ${name}.cpp)
+CMAKE
+cat > "$dir/${name}.cpp" <<CPP
+// ${kind}/${name}: describe the idea and cite its source here.
+#include "aco/path.hpp"
+#include "aco/pheromone.hpp"
+#include "aco/plugin.hpp"
+
+namespace {
+
+constexpr aco::ParamSpec kParams[] = {
+    {"value", aco::ParamType::real, "1", "(0:1e6]", "an example parameter (--${kind}.value)"},
+};
+
+class Plugin final : public aco::${interface} {
+ public:
+  explicit Plugin(const aco::ParameterValues& p) : value_(p.real("value")) {}
+${method}
+
+ private:
+  double value_;
+};
+
+}  // namespace
+
+ACO_PLUGIN(${kind}, ${name}, Plugin, "0.1", "describe ${name} in one line", kParams)
+CPP
+cat > "$dir/README.md" <<MD
+# ${kind}/${name}
+
+What it does, the formula it implements, the source it comes from, and its parameters.
+MD
+echo "new-plugin: wrote $dir (${kind}/${name})"

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/map_io.hpp"
 
 extern char** environ;
 
@@ -17,6 +18,12 @@ namespace test {
 
 std::filesystem::path data_dir() { return ACO_TEST_DATA_DIR; }
 std::filesystem::path shared_data_dir() { return ACO_TEST_SHARED_DATA_DIR; }
+
+aco::OccupancyGrid classic_map(int n) {
+  const auto file = data_dir() / "maps/classic20" / ("map" + std::to_string(n) + ".txt");
+  std::ifstream in(file);
+  return aco::read_matrix_map(in, file.string());
+}
 
 aco::OccupancyGrid grid(const std::vector<std::string>& rows) {
   aco::OccupancyGrid g(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), "test grid");

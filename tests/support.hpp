@@ -16,6 +16,9 @@ namespace test {
 std::filesystem::path data_dir();         // the project's data/
 std::filesystem::path shared_data_dir();  // ../shared/data (Moving AI subset, classic maps)
 
+// data/maps/classic20/map<n>.txt, the 20x20 maps of the papers' MATLAB code.
+aco::OccupancyGrid classic_map(int n);
+
 // A map from rows of text: '#' blocked, anything else free. Row 0 is the top.
 aco::OccupancyGrid grid(const std::vector<std::string>& rows);
 

@@ -37,10 +37,6 @@ struct Baseline {
   aco::Pipeline pipeline() { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
 };
 
-aco::OccupancyGrid classic_map1() {
-  std::ifstream in(test::data_dir() / "maps/classic20/map1.txt");
-  return aco::read_matrix_map(in, "map1");
-}
 
 }  // namespace
 
@@ -93,7 +89,7 @@ TEST_CASE("results are bit-identical for any thread count", "[colony][determinis
 }
 
 TEST_CASE("another seed gives another run", "[colony][determinism]") {
-  const auto map = classic_map1();
+  const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   Baseline b;
   aco::ColonySettings s;
@@ -106,7 +102,7 @@ TEST_CASE("another seed gives another run", "[colony][determinism]") {
 }
 
 TEST_CASE("every ant walks a loop-free chain of edges from the start", "[colony]") {
-  const auto map = classic_map1();
+  const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {});
   Baseline b;
   RecordingUpdate recorder(*b.update);
@@ -149,7 +145,7 @@ TEST_CASE("every ant walks a loop-free chain of edges from the start", "[colony]
 }
 
 TEST_CASE("the stagnation rule stops a run after that many iterations without improvement", "[colony]") {
-  const auto map = classic_map1();
+  const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   Baseline b;
   aco::ColonySettings s;

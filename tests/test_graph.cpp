@@ -29,7 +29,7 @@ std::vector<std::string> open_grid(int w, int h) { return std::vector<std::strin
 void check_invariants(const aco::Graph& g) {
   REQUIRE(static_cast<int>(g.offsets.size()) == g.num_nodes() + 1);
   REQUIRE(g.offsets.front() == 0);
-  REQUIRE(g.source_edge_count() == g.num_edges());
+  REQUIRE(g.offsets.back() == g.num_edges());
   REQUIRE(g.costs.size() == g.targets.size());
   REQUIRE(g.reverse.size() == g.targets.size());
   for (aco::NodeId n = 0; n < g.num_nodes(); ++n) {

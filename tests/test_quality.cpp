@@ -16,11 +16,6 @@ struct Problem {
   Problem(aco::OccupancyGrid m, aco::GraphOptions options) : map(std::move(m)), graph(aco::build_graph(map, options)) {}
 };
 
-aco::OccupancyGrid map1() {
-  std::ifstream in(test::data_dir() / "maps/classic20/map1.txt");
-  return aco::read_matrix_map(in, "map1");
-}
-
 aco::ColonyResult plan(const Problem& p, aco::Cell start, aco::Cell goal, const std::string& update,
                        std::map<std::string, std::string> params, std::uint64_t seed) {
   aco::PipelineSpec spec;
@@ -36,7 +31,7 @@ constexpr double kMap1CornerCutting = 34.3848;
 }  // namespace
 
 TEST_CASE("ant_system on classic map1 ends within 3 % of the optimum on average", "[quality]") {
-  const Problem p(map1(), {aco::Neighbourhood::eight, true});
+  const Problem p(test::classic_map(1), {aco::Neighbourhood::eight, true});
   double sum = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     const auto r = plan(p, {0, 0}, {19, 19}, "ant_system", {{"rho", "0.3"}, {"q", "1"}}, seed);
@@ -50,7 +45,7 @@ TEST_CASE("ant_system on classic map1 ends within 3 % of the optimum on average"
 }
 
 TEST_CASE("max_min and acs reach the optimum of classic map1 in at least 18 of 20 seeds", "[quality]") {
-  const Problem p(map1(), {aco::Neighbourhood::eight, true});
+  const Problem p(test::classic_map(1), {aco::Neighbourhood::eight, true});
   const std::vector<std::pair<std::string, std::map<std::string, std::string>>> variants{
       {"max_min", {}}, {"acs", {{"rho", "0.3"}, {"q", "1"}}}};
   for (const auto& [update, params] : variants) {

@@ -77,8 +77,8 @@ std::string summary(const Request& request, const aco::Graph& graph, const Outco
   const std::string planner = request.run.text("planner");
   if (planner == "aco") {
     out << "colony:   " << request.colony.integer("ants") << " ants x " << request.colony.integer("iterations")
-        << " iterations, alpha " << request.colony.real("alpha") << ", beta " << request.colony.real("beta") << ", seed "
-        << request.colony.integer("seed") << "\n";
+        << " iterations, alpha " << aco::to_string(request.colony.all().at("alpha")) << ", beta "
+        << aco::to_string(request.colony.all().at("beta")) << ", seed " << request.colony.integer("seed") << "\n";
     out << "pipeline:";
     for (const char* slot : aco::kSlots) out << " " << slot << "=" << request.pipeline.slots.at(slot).plugin;
     out << "\n";
@@ -107,6 +107,11 @@ std::string summary(const Request& request, const aco::Graph& graph, const Outco
   out << "path:    ";
   for (aco::NodeId n : o.grid_path) out << " " << cell_text(graph, n);
   out << "\n";
+  if (o.path != aco::to_waypoints(graph, o.grid_path)) {
+    out << "smoothed:" << std::setprecision(2);
+    for (const auto& p : o.path) out << " (" << p.x() << "," << p.y() << ")";
+    out << "\n";
+  }
   return out.str();
 }
 

@@ -42,7 +42,6 @@ struct BOOST_SYMBOL_VISIBLE Graph {
   EdgeId edges_begin(NodeId n) const { return offsets[n]; }
   EdgeId edges_end(NodeId n) const { return offsets[n + 1]; }
   int degree(NodeId n) const { return offsets[n + 1] - offsets[n]; }
-  EdgeId source_edge_count() const { return offsets.back(); }
   NodeId source(EdgeId e) const { return targets[reverse[e]]; }
 
   NodeId node(Cell c) const { return c.y * width + c.x; }

@@ -18,4 +18,5 @@ function(aco_add_plugin kind name)
     LIBRARY_OUTPUT_DIRECTORY ${output}
     INSTALL_RPATH "$ORIGIN/../..")
   install(TARGETS ${target} LIBRARY DESTINATION lib/aco/plugins)
+  set_property(GLOBAL APPEND PROPERTY ACO_PLUGIN_TARGETS ${target})
 endfunction()

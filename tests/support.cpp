@@ -5,7 +5,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -128,6 +131,63 @@ std::filesystem::path temp_file(const std::string& name, const std::string& cont
   const auto file = fresh_dir() / name;
   std::ofstream(file) << content;
   return file;
+}
+
+// reference_segment_clear does not walk the grid as aco::line_of_sight does: it samples the
+// segment densely, exactly in integers (dense enough that every cell whose interior the segment
+// meets gets a sample), and checks every grid vertex of the bounding box explicitly.
+
+// Cells whose open interior the segment between the centres of a and b meets (a and b
+// included). Sample k of N sits at t = (2k + 1) / (2N); its x is a.x + t * dx, and its cell is
+// floor(x + 1/2) = floor((2N * a.x + (2k + 1) * dx + N) / (2N)), exact in integers; a sample on
+// a cell border (numerator divisible by 2N) is skipped. A cell's interior is an open t-interval
+// with ends in {0, 1, (2m+1)/(2|dx|), (2n+1)/(2|dy|)}, so at least 1/(2|dx||dy| + 2|dx| + 2|dy|)
+// wide: N above that puts a sample in every one.
+std::set<std::pair<int, int>> reference_cells_entered(aco::Cell a, aco::Cell b) {
+  const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+  const std::int64_t adx = std::abs(dx), ady = std::abs(dy);
+  const std::int64_t n = 4 * (adx * ady + adx + ady + 1);
+  auto floor_div = [](std::int64_t p, std::int64_t q) { return p / q - ((p % q != 0) && ((p < 0) != (q < 0))); };
+  std::set<std::pair<int, int>> cells{{a.x, a.y}, {b.x, b.y}};
+  for (std::int64_t k = 0; k < n; ++k) {
+    const std::int64_t px = 2 * n * a.x + (2 * k + 1) * dx + n;
+    const std::int64_t py = 2 * n * a.y + (2 * k + 1) * dy + n;
+    if (px % (2 * n) == 0 || py % (2 * n) == 0) continue;  // on a cell border
+    cells.insert({int(floor_div(px, 2 * n)), int(floor_div(py, 2 * n))});
+  }
+  return cells;
+}
+
+// Grid vertices (corners shared by four cells) strictly inside the segment, each with the two
+// side cells the segment touches there only at that corner.
+std::vector<std::pair<aco::Cell, aco::Cell>> reference_vertex_sides(aco::Cell a, aco::Cell b) {
+  std::vector<std::pair<aco::Cell, aco::Cell>> sides;
+  const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+  const int sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
+  for (int vy = std::min(a.y, b.y) - 1; vy <= std::max(a.y, b.y); ++vy) {
+    for (int vx = std::min(a.x, b.x) - 1; vx <= std::max(a.x, b.x); ++vx) {
+      // The vertex (vx + 1/2, vy + 1/2), doubled, relative to a's doubled centre.
+      const std::int64_t rx = 2 * vx + 1 - 2 * a.x, ry = 2 * vy + 1 - 2 * a.y;
+      if (rx * dy - ry * dx != 0) continue;  // not on the line
+      const std::int64_t along = rx * dx + ry * dy;
+      if (along <= 0 || along >= 2 * (dx * dx + dy * dy)) continue;  // not between the centres
+      // The segment runs through quadrants (sx, sy) and (-sx, -sy) of the vertex; the side cells
+      // are the other two. The cell in quadrant (qx, qy) is (vx + [qx > 0], vy + [qy > 0]).
+      auto quadrant = [&](int qx, int qy) { return aco::Cell{vx + (qx > 0 ? 1 : 0), vy + (qy > 0 ? 1 : 0)}; };
+      sides.push_back({quadrant(sx, -sy), quadrant(-sx, sy)});
+    }
+  }
+  return sides;
+}
+
+bool reference_segment_clear(const aco::Map& map, aco::Cell a, aco::Cell b, bool corner_cutting) {
+  for (const auto& [x, y] : reference_cells_entered(a, b))
+    if (!map.passable({x, y})) return false;
+  for (const auto& [s1, s2] : reference_vertex_sides(a, b)) {
+    const bool f1 = map.passable(s1), f2 = map.passable(s2);
+    if (corner_cutting ? (!f1 && !f2) : (!f1 || !f2)) return false;
+  }
+  return true;
 }
 
 }  // namespace test

@@ -2,6 +2,8 @@
 // Helpers shared by the tests: data locations, tiny hand-made maps, loaded plugins, running acoplan.
 #include <filesystem>
 #include <memory>
+#include <set>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,13 @@ std::unique_ptr<Interface> make(const std::string& kind, const std::string& name
   const auto& descriptor = plugins().load(kind, name);
   return plugins().create<Interface>(kind, name, aco::resolve(descriptor.parameters(), params, kind + "."));
 }
+
+// An independent statement of the segment rule of aco::line_of_sight, for checking it and the
+// paths smoothers produce: the cells whose interior the segment between the centres of a and b
+// meets, the side cells of every grid vertex it passes through, and whether it is free.
+std::set<std::pair<int, int>> reference_cells_entered(aco::Cell a, aco::Cell b);
+std::vector<std::pair<aco::Cell, aco::Cell>> reference_vertex_sides(aco::Cell a, aco::Cell b);
+bool reference_segment_clear(const aco::Map& map, aco::Cell a, aco::Cell b, bool corner_cutting);
 
 // A Context for calling a strategy directly.
 aco::Context context(const aco::Graph& graph, aco::Cell start, aco::Cell goal, int iteration = 0,

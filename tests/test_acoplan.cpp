@@ -3,6 +3,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "aco/plugin.hpp"
 #include "support.hpp"
 
 using Catch::Contains;
@@ -199,7 +200,8 @@ TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range val
 
 TEST_CASE("acoplan refuses a plugin built for another ABI version", "[acoplan][bad-input][abi]") {
   expect_error({"--plugin-dir", ACO_TEST_BAD_PLUGIN_DIR, "--update", "wrong_abi"},
-               "plugin update/wrong_abi (" + std::string(ACO_TEST_BAD_PLUGIN_DIR) + "/aco_update_wrong_abi.so): ABI 999, host expects 1");
+               "plugin update/wrong_abi (" + std::string(ACO_TEST_BAD_PLUGIN_DIR) +
+                   "/aco_update_wrong_abi.so): ABI 999, host expects " + std::to_string(aco::kPluginAbiVersion));
   const auto list = test::acoplan({"--plugin-dir", ACO_TEST_BAD_PLUGIN_DIR, "--list-plugins"});
   CHECK(list.exit_code == 0);
   CHECK_THAT(list.out, Contains("update/wrong_abi  UNUSABLE") && Contains("ABI 999"));

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 #include <fstream>
+#include <map>
 #include <set>
 
 #include "aco/colony.hpp"
@@ -255,4 +256,30 @@ TEST_CASE("bad inputs and bad strategy output are reported, not run", "[colony]"
   CHECK(trivial.solved);
   CHECK(trivial.length == 0.0);
   CHECK(trivial.path == std::vector<aco::NodeId>{4});
+}
+
+TEST_CASE("the same-path rule stops once that fraction of an iteration's ants share one path", "[colony]") {
+  const auto map = test::classic_map(1);
+  const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
+  Baseline b;
+  RecordingUpdate recorder(*b.update);
+  aco::Pipeline p = b.pipeline();
+  p.update = &recorder;
+  aco::ColonySettings s;
+  s.iterations = 300;
+  s.same_path_stop = true;
+  s.same_path_fraction = 0.5;
+  const auto result = aco::run_colony(graph, 0, graph.node({19, 19}), p, s);
+  REQUIRE(result.stopped_by == "same path");
+  REQUIRE(result.iterations < 300);
+  // The last iteration met the rule and none before it did.
+  auto largest = [](const std::vector<aco::Ant>& ants) {
+    std::map<std::vector<aco::NodeId>, int> count;
+    int most = 0;
+    for (const auto& a : ants)
+      if (a.arrived) most = std::max(most, ++count[a.nodes]);
+    return most;
+  };
+  CHECK(largest(recorder.ants.back()) >= 25);
+  for (std::size_t it = 0; it + 1 < recorder.ants.size(); ++it) CHECK(largest(recorder.ants[it]) < 25);
 }

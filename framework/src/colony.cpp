@@ -22,6 +22,9 @@ constexpr ParamSpec kColonyParameters[] = {
     {"seed", ParamType::integer, "1", "0:9.2e18", "random seed: a run is a pure function of its inputs and this seed"},
     {"stagnation", ParamType::integer, "0", "0:100000000",
      "stop after this many iterations without a shorter path (0 = run every iteration)"},
+    {"same-path-stop", ParamType::boolean, "false", "",
+     "stop once same-path-fraction of an iteration's ants walked the same path (paper 001)"},
+    {"same-path-fraction", ParamType::real, "0.9", "(0:1]", "fraction of the ants for --same-path-stop"},
 };
 
 // x^p with the common exponents spared a pow() call: the weights are recomputed every iteration.
@@ -122,7 +125,14 @@ class Engine {
       forbidden_[context_.start] = forbidden_[context_.goal] = 0;
       p_.update->update(context_, view, tau_);
 
-      if (s_.stagnation > 0 && it + 1 - last_improvement >= s_.stagnation) break;
+      if (s_.stagnation > 0 && it + 1 - last_improvement >= s_.stagnation) {
+        result.stopped_by = "stagnation";
+        break;
+      }
+      if (s_.same_path_stop && largest_same_path(ants) >= s_.same_path_fraction * s_.ants) {
+        result.stopped_by = "same path";
+        break;
+      }
     }
     if (result.solved) {
       result.path = best.nodes;
@@ -134,12 +144,10 @@ class Engine {
 
  private:
   void compute_heuristic() {
-    std::vector<double> eta(tau_.size(), 0.0);
-    p_.heuristic->compute(context_, eta);
-    for (std::size_t e = 0; e < eta.size(); ++e) {
-      if (!(eta[e] >= 0.0 && std::isfinite(eta[e]))) fail_value("heuristic", "the heuristic plugin", eta[e], e);
-      eta_beta_[e] = power(eta[e], s_.beta);
-    }
+    p_.heuristic->compute_powered(context_, eta_beta_);
+    for (std::size_t e = 0; e < eta_beta_.size(); ++e)
+      if (!(eta_beta_[e] >= 0.0 && std::isfinite(eta_beta_[e])))
+        fail_value("heuristic^beta", "the heuristic plugin", eta_beta_[e], e);
   }
 
   // The pheromone is checked where it is used, not in a pass over every edge per iteration:
@@ -205,7 +213,7 @@ class Engine {
       }
       if (uses_walk_) {
         std::span<double> factors(scratch.factors.data(), n);
-        p_.heuristic->step_factors(context_, ant.nodes, {candidates, std::size_t(n)}, factors);
+        p_.heuristic->step_factors(context_, ant, {candidates, std::size_t(n)}, factors);
         total = 0.0;
         for (int i = 0; i < n; ++i) total += weights[i] *= factors[i];
       }
@@ -219,6 +227,20 @@ class Engine {
     ant.arrived = true;
     for (EdgeId e : ant.edges) ant.length += g_.costs[e];
     return moves;
+  }
+
+  // How many arrived ants of the iteration share the most common path.
+  static int largest_same_path(const std::vector<Ant>& ants) {
+    std::vector<const std::vector<NodeId>*> paths;
+    for (const Ant& ant : ants)
+      if (ant.arrived) paths.push_back(&ant.nodes);
+    std::sort(paths.begin(), paths.end(), [](auto* a, auto* b) { return *a < *b; });
+    int largest = 0;
+    for (std::size_t i = 0, j = 0; i < paths.size(); i = j) {
+      while (j < paths.size() && *paths[j] == *paths[i]) ++j;
+      largest = std::max(largest, int(j - i));
+    }
+    return largest;
   }
 
   [[noreturn]] void reject_pheromone(const EdgeId* candidates, int n) const {
@@ -269,6 +291,7 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const Pipeline&
   if (!(s.alpha >= 0 && std::isfinite(s.alpha)) || !(s.beta >= 0 && std::isfinite(s.beta)))
     throw Error("alpha and beta must be finite and >= 0");
   if (s.stagnation < 0) throw Error("stagnation must be >= 0");
+  if (!(s.same_path_fraction > 0 && s.same_path_fraction <= 1)) throw Error("same-path-fraction must be in (0, 1]");
 }
 
 }  // namespace
@@ -283,6 +306,8 @@ ColonySettings colony_settings(const ParameterValues& v) {
   s.beta = v.real("beta");
   s.seed = static_cast<std::uint64_t>(v.integer("seed"));
   s.stagnation = static_cast<int>(v.integer("stagnation"));
+  s.same_path_stop = v.boolean("same-path-stop");
+  s.same_path_fraction = v.real("same-path-fraction");
   return s;
 }
 

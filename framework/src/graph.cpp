@@ -132,4 +132,46 @@ double path_length(const Graph& graph, std::span<const NodeId> path) {
   return length;
 }
 
+bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
+  // Amanatides-Woo traversal in exact integers. Seen from a's centre, the segment leaves the
+  // current column after crossing x-distance ix + 1/2, i.e. at t = (2*ix + 1) / (2*|dx|), and
+  // the current row at t = (2*iy + 1) / (2*|dy|). Cross-multiplied: compare (2*ix + 1) * |dy|
+  // with (2*iy + 1) * |dx|; equal means both at once, i.e. through a grid vertex.
+  // Only passability is checked, not step_allowed(): slopes along a segment are a later concern.
+  if (!map.passable(a)) return false;
+  const std::int64_t dx = std::int64_t{b.x} - a.x;
+  const std::int64_t dy = std::int64_t{b.y} - a.y;
+  const int sx = dx > 0 ? 1 : -1;
+  const int sy = dy > 0 ? 1 : -1;
+  const std::int64_t adx = dx < 0 ? -dx : dx;
+  const std::int64_t ady = dy < 0 ? -dy : dy;
+  std::int64_t ix = 0, iy = 0;  // columns and rows crossed so far
+  Cell c = a;
+  while (ix < adx || iy < ady) {
+    // With one direction exhausted the other comes first; otherwise both are strictly inside
+    // the segment and the cross-multiplied comparison is valid (adx, ady > 0).
+    std::int64_t order = 0;  // < 0: column boundary first, > 0: row boundary first, 0: vertex
+    if (iy == ady) order = -1;
+    else if (ix == adx) order = 1;
+    else order = (2 * ix + 1) * ady - (2 * iy + 1) * adx;
+    if (order < 0) {
+      c.x += sx;
+      ++ix;
+    } else if (order > 0) {
+      c.y += sy;
+      ++iy;
+    } else {
+      const bool side_x = map.passable({c.x + sx, c.y});
+      const bool side_y = map.passable({c.x, c.y + sy});
+      if (corner_cutting ? !side_x && !side_y : !side_x || !side_y) return false;
+      c.x += sx;
+      c.y += sy;
+      ++ix;
+      ++iy;
+    }
+    if (!map.passable(c)) return false;
+  }
+  return true;
+}
+
 }  // namespace aco

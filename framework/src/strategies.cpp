@@ -1,5 +1,7 @@
 #include "aco/strategies.hpp"
 
+#include <cmath>
+
 namespace aco {
 
 // Out-of-line destructors give each interface one home for its vtable and type_info (in
@@ -11,8 +13,13 @@ PheromoneUpdate::~PheromoneUpdate() = default;
 DeadlockPolicy::~DeadlockPolicy() = default;
 Smoother::~Smoother() = default;
 
-void Heuristic::step_factors(const Context&, std::span<const NodeId>, std::span<const EdgeId>,
-                             std::span<double> factors) const {
+void Heuristic::compute_powered(const Context& context, std::span<double> eta_beta) {
+  compute(context, eta_beta);
+  if (context.beta == 1.0) return;
+  for (double& v : eta_beta) v = std::pow(v, context.beta);
+}
+
+void Heuristic::step_factors(const Context&, const Ant&, std::span<const EdgeId>, std::span<double> factors) const {
   for (double& f : factors) f = 1.0;
 }
 

@@ -21,6 +21,8 @@ constexpr aco::ParamSpec kRunParameters[] = {
     {"threads", aco::ParamType::integer, "0", "0:1024", "worker threads, 0 = all cores; results do not depend on it"},
     {"scen-index", aco::ParamType::integer, "0", "0:1000000000", "which problem of --scen to plan (0-based)"},
     {"svg-pheromone", aco::ParamType::boolean, "false", "", "also draw the final pheromone field in the --svg picture"},
+    {"repeat", aco::ParamType::integer, "1", "1:1000000",
+     "plan N times with seeds seed, seed+1, ...; print mean and standard deviation (--svg shows the best run)"},
 };
 
 std::string type_hint(const aco::ParamSpec& spec) {

@@ -1,6 +1,7 @@
 // acoplan: one planning run, composed from runtime plugins on the command line.
 #include <tbb/global_control.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <iostream>
@@ -70,29 +71,21 @@ Problem load_problem(const acoplan::Request& r) {
   return p;
 }
 
-int plan(const acoplan::Request& r) {
-  const Problem problem = load_problem(r);
-  aco::GraphOptions options;
-  options.neighbourhood = static_cast<aco::Neighbourhood>(std::stoi(r.run.text("neighbourhood")));
-  options.corner_cutting = r.run.boolean("corner-cutting");
-  const aco::Graph graph = aco::build_graph(*problem.map, options);
+// One planning run: the colony (or A*), then the smoother.
+acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, const Problem& problem,
+                           const aco::ColonySettings& settings) {
   const aco::LoadedPipeline pipeline = aco::instantiate(*r.registry, r.pipeline);
-  std::unique_ptr<tbb::global_control> threads;
-  if (const auto n = r.run.integer("threads"); n > 0)
-    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, n);
-
   acoplan::Outcome o;
+  o.seed = settings.seed;
   o.start = graph.node(problem.start);
   o.goal = graph.node(problem.goal);
-  const aco::ColonySettings settings = aco::colony_settings(r.colony);
   const auto began = std::chrono::steady_clock::now();
   if (!aco::reachable(graph, o.start, o.goal)) {
     o.reason = "goal " + aco::to_string(problem.goal) + " is not reachable from start " + aco::to_string(problem.start) +
-               " (" + aco::describe(options) + ")";
+               " (" + aco::describe(graph.options) + ")";
   } else if (r.run.text("planner") == "astar") {
-    const auto shortest = aco::astar(graph, o.start, o.goal);
     o.solved = true;
-    o.grid_path = shortest->nodes;
+    o.grid_path = aco::astar(graph, o.start, o.goal)->nodes;
   } else {
     aco::ColonyResult colony = aco::run_colony(graph, o.start, o.goal, pipeline.colony(), settings);
     o.solved = colony.solved;
@@ -100,6 +93,7 @@ int plan(const acoplan::Request& r) {
     o.iterations = colony.iterations;
     o.best_iteration = colony.best_iteration;
     o.ant_steps = colony.ant_steps;
+    o.stopped_by = colony.stopped_by;
     o.best_so_far = std::move(colony.best_so_far);
     o.iteration_best = std::move(colony.iteration_best);
     o.pheromone = std::move(colony.pheromone);
@@ -122,24 +116,57 @@ int plan(const acoplan::Request& r) {
     o.turns = aco::count_turns(o.path);
   }
   o.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
-  if (o.solved) o.optimal_length = aco::astar(graph, o.start, o.goal)->length;
+  o.resolved = pipeline.resolved;
+  return o;
+}
 
-  if (r.json) std::cout << acoplan::to_json(r, graph, pipeline, o).dump() << "\n";
-  else std::cout << acoplan::summary(r, graph, o);
-  if (r.svg) {
-    aco::RunPicture picture;
-    picture.title = graph.map->name() + ": " + (o.solved ? "length " + std::to_string(o.length) : "not solved");
-    picture.start = o.start;
-    picture.goal = o.goal;
-    picture.grid_path = o.grid_path;
-    picture.path = o.path;
-    if (r.run.boolean("svg-pheromone")) picture.pheromone = o.pheromone;
-    picture.best_so_far = o.best_so_far;
-    picture.iteration_best = o.iteration_best;
-    picture.optimal_length = o.optimal_length.value_or(0.0);
-    aco::write_svg(*r.svg, graph, picture);
+void write_picture(const acoplan::Request& r, const aco::Graph& graph, const acoplan::Outcome& o) {
+  aco::RunPicture picture;
+  picture.title = graph.map->name() + ": " + (o.solved ? "length " + std::to_string(o.length) : "not solved") +
+                  ", seed " + std::to_string(o.seed);
+  picture.start = o.start;
+  picture.goal = o.goal;
+  picture.grid_path = o.grid_path;
+  picture.path = o.path;
+  if (r.run.boolean("svg-pheromone")) picture.pheromone = o.pheromone;
+  picture.best_so_far = o.best_so_far;
+  picture.iteration_best = o.iteration_best;
+  picture.optimal_length = o.optimal_length.value_or(0.0);
+  aco::write_svg(*r.svg, graph, picture);
+}
+
+int plan(const acoplan::Request& r) {
+  const Problem problem = load_problem(r);
+  aco::GraphOptions options;
+  options.neighbourhood = static_cast<aco::Neighbourhood>(std::stoi(r.run.text("neighbourhood")));
+  options.corner_cutting = r.run.boolean("corner-cutting");
+  const aco::Graph graph = aco::build_graph(*problem.map, options);
+  std::unique_ptr<tbb::global_control> threads;
+  if (const auto n = r.run.integer("threads"); n > 0)
+    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, n);
+
+  // --repeat N: the same problem with seeds seed, seed+1, ..., seed+N-1.
+  aco::ColonySettings settings = aco::colony_settings(r.colony);
+  std::vector<acoplan::Outcome> runs;
+  for (std::int64_t i = 0; i < r.run.integer("repeat"); ++i, ++settings.seed) runs.push_back(plan_once(r, graph, problem, settings));
+  const auto optimal = aco::astar(graph, graph.node(problem.start), graph.node(problem.goal));
+  for (auto& o : runs)
+    if (optimal) o.optimal_length = optimal->length;
+
+  if (runs.size() == 1) {
+    if (r.json) std::cout << acoplan::to_json(r, graph, runs[0]).dump() << "\n";
+    else std::cout << acoplan::summary(r, graph, runs[0]);
+  } else {
+    if (r.json) std::cout << acoplan::to_json(r, graph, runs).dump() << "\n";
+    else std::cout << acoplan::summary(r, graph, runs);
   }
-  return o.solved ? 0 : kExitUnsolved;
+  // The picture shows the best run: the shortest solved one, else the first.
+  const auto best = std::min_element(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
+    return a.solved != b.solved ? a.solved : a.length < b.length;
+  });
+  if (r.svg) write_picture(r, graph, *best);
+  const bool all_solved = std::all_of(runs.begin(), runs.end(), [](const auto& o) { return o.solved; });
+  return all_solved ? 0 : kExitUnsolved;
 }
 
 }  // namespace

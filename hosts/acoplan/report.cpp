@@ -1,5 +1,6 @@
 #include "report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -30,10 +31,27 @@ nlohmann::json values(const aco::ParameterValues& p) {
 
 std::string cell_text(const aco::Graph& g, aco::NodeId n) { return aco::to_string(g.cell(n)); }
 
-}  // namespace
+std::string pipeline_lines(const Request& request) {
+  std::ostringstream out;
+  const std::string planner = request.run.text("planner");
+  if (planner != "aco") {
+    out << "planner:  " << planner << ", smoother=" << request.pipeline.slots.at("smoother").plugin << "\n";
+    return out.str();
+  }
+  out << "colony:   " << request.colony.integer("ants") << " ants x " << request.colony.integer("iterations")
+      << " iterations, alpha " << aco::to_string(request.colony.all().at("alpha")) << ", beta "
+      << aco::to_string(request.colony.all().at("beta")) << ", seed " << request.colony.integer("seed") << "\n";
+  out << "pipeline:";
+  for (const char* slot : aco::kSlots) {
+    out << " " << slot << "=" << request.pipeline.slots.at(slot).plugin;
+    for (const auto& [name, text] : request.pipeline.slots.at(slot).params) out << " " << slot << "." << name << "=" << text;
+  }
+  out << "\n";
+  return out.str();
+}
 
-nlohmann::json to_json(const Request& request, const aco::Graph& graph, const aco::LoadedPipeline& pipeline,
-                       const Outcome& o) {
+// The measures of one run.
+nlohmann::json run_json(const aco::Graph& graph, const Outcome& o) {
   bool three_d = false;
   for (const auto& p : graph.positions) three_d = three_d || p.z() != 0.0;
   nlohmann::json j;
@@ -48,8 +66,19 @@ nlohmann::json to_json(const Request& request, const aco::Graph& graph, const ac
   j["iterations"] = o.iterations;
   j["best_iteration"] = o.best_iteration;
   j["time_ms"] = o.time_ms;
-  j["seed"] = request.colony.integer("seed");
+  j["seed"] = o.seed;
   if (!o.solved) j["reason"] = o.reason;
+  j["ant_steps"] = o.ant_steps;
+  if (!o.stopped_by.empty()) j["stopped_by"] = o.stopped_by;
+  j["optimal_length"] = o.optimal_length ? nlohmann::json(*o.optimal_length) : nlohmann::json(nullptr);
+  j["convergence"] = nlohmann::json::array();
+  for (double v : o.best_so_far) j["convergence"].push_back(number_or_null(v));
+  return j;
+}
+
+// The configuration shared by all runs.
+nlohmann::json config_json(const Request& request, const aco::Graph& graph, const Outcome& o) {
+  nlohmann::json j;
   j["planner"] = request.run.text("planner");
   j["map"] = graph.map->name();
   j["width"] = graph.width;
@@ -59,13 +88,99 @@ nlohmann::json to_json(const Request& request, const aco::Graph& graph, const ac
   j["neighbourhood"] = static_cast<int>(graph.options.neighbourhood);
   j["corner_cutting"] = graph.options.corner_cutting;
   j["colony"] = values(request.colony);
-  for (const auto& [slot, params] : pipeline.resolved)
+  for (const auto& [slot, params] : o.resolved)
     j["pipeline"][slot] = {{"plugin", request.pipeline.slots.at(slot).plugin}, {"params", values(params)}};
-  j["ant_steps"] = o.ant_steps;
-  j["optimal_length"] = o.optimal_length ? nlohmann::json(*o.optimal_length) : nlohmann::json(nullptr);
-  j["convergence"] = nlohmann::json::array();
-  for (double v : o.best_so_far) j["convergence"].push_back(number_or_null(v));
   return j;
+}
+
+struct Stats {
+  double mean = 0, sd = 0, min = 0, max = 0;
+  std::size_t n = 0;
+};
+
+// Sample statistics (standard deviation with n - 1).
+Stats stats(const std::vector<double>& v) {
+  Stats s;
+  s.n = v.size();
+  if (v.empty()) return s;
+  s.min = *std::min_element(v.begin(), v.end());
+  s.max = *std::max_element(v.begin(), v.end());
+  for (double x : v) s.mean += x / double(v.size());
+  for (double x : v) s.sd += (x - s.mean) * (x - s.mean);
+  s.sd = v.size() > 1 ? std::sqrt(s.sd / double(v.size() - 1)) : 0.0;
+  return s;
+}
+
+// Each measure over the solved runs (time over all runs).
+std::vector<std::pair<std::string, Stats>> measures(const std::vector<Outcome>& runs) {
+  std::map<std::string, std::vector<double>> v;
+  for (const auto& o : runs) {
+    v["time_ms"].push_back(o.time_ms);
+    if (!o.solved) continue;
+    v["length"].push_back(o.length);
+    v["grid_length"].push_back(o.grid_length);
+    v["cells"].push_back(double(o.grid_path.size()));
+    v["turns"].push_back(o.turns);
+    v["best_iteration"].push_back(o.best_iteration);
+    v["iterations"].push_back(o.iterations);
+  }
+  std::vector<std::pair<std::string, Stats>> result;
+  for (const char* name : {"length", "grid_length", "cells", "turns", "best_iteration", "iterations", "time_ms"})
+    result.emplace_back(name, stats(v[name]));
+  return result;
+}
+
+}  // namespace
+
+nlohmann::json to_json(const Request& request, const aco::Graph& graph, const Outcome& o) {
+  nlohmann::json j = run_json(graph, o);
+  j.update(config_json(request, graph, o));
+  return j;
+}
+
+nlohmann::json to_json(const Request& request, const aco::Graph& graph, const std::vector<Outcome>& runs) {
+  nlohmann::json j = config_json(request, graph, runs.front());
+  j["runs"] = nlohmann::json::array();
+  int solved = 0;
+  for (const auto& o : runs) {
+    j["runs"].push_back(run_json(graph, o));
+    solved += o.solved;
+  }
+  nlohmann::json& s = j["summary"];
+  s["runs"] = runs.size();
+  s["solved"] = solved;
+  s["optimal_length"] = runs.front().optimal_length ? nlohmann::json(*runs.front().optimal_length) : nlohmann::json(nullptr);
+  for (const auto& [name, st] : measures(runs)) {
+    if (st.n == 0) s[name] = nullptr;
+    else s[name] = {{"mean", st.mean}, {"sd", st.sd}, {"min", st.min}, {"max", st.max}};
+  }
+  return j;
+}
+
+std::string summary(const Request& request, const aco::Graph& graph, const std::vector<Outcome>& runs) {
+  std::ostringstream out;
+  const Outcome& first = runs.front();
+  out << "map:      " << graph.map->name() << " (" << graph.width << "x" << graph.height << "), "
+      << aco::describe(graph.options) << "\n";
+  out << "problem:  start " << cell_text(graph, first.start) << " -> goal " << cell_text(graph, first.goal);
+  if (first.optimal_length) out << ", optimum " << std::fixed << std::setprecision(4) << *first.optimal_length;
+  out << "\n";
+  out << pipeline_lines(request);
+  int solved = 0;
+  for (const auto& o : runs) solved += o.solved;
+  out << "runs:     " << runs.size() << " seeds (" << first.seed << ".." << runs.back().seed << "), " << solved << " solved\n";
+  out << std::fixed;
+  for (const auto& [name, st] : measures(runs)) {
+    out << "  " << std::left << std::setw(15) << name << std::right;
+    if (st.n == 0) {
+      out << "-\n";
+      continue;
+    }
+    const int digits = name == "length" || name == "grid_length" ? 4 : name == "time_ms" ? 2 : 1;
+    out << std::setprecision(digits) << "mean " << st.mean << "  sd " << st.sd << "  min " << st.min << "  max " << st.max
+        << "\n";
+  }
+  return out.str();
 }
 
 std::string summary(const Request& request, const aco::Graph& graph, const Outcome& o) {
@@ -74,17 +189,8 @@ std::string summary(const Request& request, const aco::Graph& graph, const Outco
   out << "map:      " << graph.map->name() << " (" << graph.width << "x" << graph.height << "), "
       << aco::describe(graph.options) << "\n";
   out << "problem:  start " << cell_text(graph, o.start) << " -> goal " << cell_text(graph, o.goal) << "\n";
+  out << pipeline_lines(request);
   const std::string planner = request.run.text("planner");
-  if (planner == "aco") {
-    out << "colony:   " << request.colony.integer("ants") << " ants x " << request.colony.integer("iterations")
-        << " iterations, alpha " << aco::to_string(request.colony.all().at("alpha")) << ", beta "
-        << aco::to_string(request.colony.all().at("beta")) << ", seed " << request.colony.integer("seed") << "\n";
-    out << "pipeline:";
-    for (const char* slot : aco::kSlots) out << " " << slot << "=" << request.pipeline.slots.at(slot).plugin;
-    out << "\n";
-  } else {
-    out << "planner:  " << planner << ", smoother=" << request.pipeline.slots.at("smoother").plugin << "\n";
-  }
   if (!o.solved) {
     out << "result:   NOT SOLVED: " << o.reason << "\n";
     return out.str();
@@ -97,7 +203,8 @@ std::string summary(const Request& request, const aco::Graph& graph, const Outco
         << std::setprecision(4);
   }
   if (planner == "aco") {
-    out << "search:   best found at iteration " << o.best_iteration << " of " << o.iterations << ", " << o.ant_steps
+    out << "search:   best found at iteration " << o.best_iteration << " of " << o.iterations << " (stopped by "
+        << o.stopped_by << "), " << o.ant_steps
         << " ant steps, " << std::setprecision(2) << o.time_ms << " ms";
     if (o.ant_steps > 0) out << " (" << std::setprecision(1) << o.time_ms * 1e6 / double(o.ant_steps) << " ns per ant step)";
     out << "\n";

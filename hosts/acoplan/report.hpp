@@ -1,6 +1,7 @@
 #pragma once
 // acoplan's outputs: the readable summary and the --json object.
 #include <nlohmann/json.hpp>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 namespace acoplan {
 
 struct Outcome {
+  std::uint64_t seed = 0;
   bool solved = false;
   std::string reason;  // why not solved
   aco::NodeId start = 0;
@@ -26,14 +28,21 @@ struct Outcome {
   int best_iteration = 0;
   double time_ms = 0.0;
   std::uint64_t ant_steps = 0;
+  std::string stopped_by;  // which rule ended the colony run
   std::vector<double> best_so_far;
   std::vector<double> iteration_best;
   std::vector<double> pheromone;
   std::optional<double> optimal_length;  // exact A* reference on the same graph
+  std::map<std::string, aco::ParameterValues> resolved;  // slot -> every plugin parameter
 };
 
-nlohmann::json to_json(const Request& request, const aco::Graph& graph, const aco::LoadedPipeline& pipeline,
-                       const Outcome& outcome);
+// One run: its result and the full configuration.
+nlohmann::json to_json(const Request& request, const aco::Graph& graph, const Outcome& outcome);
 std::string summary(const Request& request, const aco::Graph& graph, const Outcome& outcome);
+
+// Several seeds of one configuration (--repeat): every run, and mean, standard deviation, min
+// and max of each measure over the solved runs.
+nlohmann::json to_json(const Request& request, const aco::Graph& graph, const std::vector<Outcome>& runs);
+std::string summary(const Request& request, const aco::Graph& graph, const std::vector<Outcome>& runs);
 
 }  // namespace acoplan

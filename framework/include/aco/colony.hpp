@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "aco/parameters.hpp"
@@ -18,6 +19,9 @@ struct ColonySettings {
   double beta = 7.0;
   std::uint64_t seed = 1;
   int stagnation = 0;  // stop after this many iterations without improvement; 0 = run them all
+  // Paper 001's rule: stop once this fraction of an iteration's ants walked one and the same path.
+  bool same_path_stop = false;
+  double same_path_fraction = 0.9;
 };
 
 // The colony's own parameter table (ants, iterations, alpha, beta, seed, stagnation).
@@ -43,6 +47,7 @@ struct ColonyResult {
   std::vector<double> iteration_best;  // per iteration (none if no ant arrived)
   std::vector<int> arrived;            // per iteration: ants that reached the goal
   std::uint64_t ant_steps = 0;         // moves made by all ants, backtracking included
+  std::string stopped_by = "iterations";  // or "stagnation", "same path"
   std::vector<double> pheromone;       // final tau per edge
 };
 

@@ -63,4 +63,17 @@ bool reachable(const Graph& graph, NodeId start, NodeId goal);
 // Length of a node path (sum of step costs); throws if two consecutive nodes are not neighbours.
 double path_length(const Graph& graph, std::span<const NodeId> path);
 
+// Whether the straight segment between the centres of cells a and b is free. Cells are unit
+// squares centred on integer (x, y). Every cell whose interior the segment passes through must
+// be passable (map.passable, false outside the map). Where the segment passes exactly through a
+// grid vertex, from one cell into its diagonal neighbour, the two side cells touching that
+// vertex obey the corner rule: without corner cutting both must be passable (the segment may
+// not even touch a blocked cell); with corner cutting they must not both be blocked (grazing
+// one blocked corner is fine, squeezing between two is not). a == b is free iff a is passable.
+// Exact integer traversal, no floating point. Only passability is checked, not
+// Map::step_allowed: a slope rule along an arbitrary segment is a terrain question for later.
+// Note: with corner cutting this is stricter than the move rule for a single diagonal step,
+// which may squeeze between two blocked cells.
+bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting);
+
 }  // namespace aco

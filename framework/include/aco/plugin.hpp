@@ -20,7 +20,7 @@ namespace aco {
 
 // Bump on any change to the strategy interfaces, Context, Ant, Iteration, ParameterValues or
 // the descriptor below.
-inline constexpr std::uint32_t kPluginAbiVersion = 1;
+inline constexpr std::uint32_t kPluginAbiVersion = 2;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
 

@@ -39,6 +39,8 @@ struct Iteration {
   const Ant* best_so_far = nullptr;  // shortest path of the run so far (this iteration included), or null
 };
 
+// One strategy object may serve several runs in turn (benchmarks, ablation studies): per-run
+// state belongs in initialize(), compute() or start(), which every run calls first.
 class BOOST_SYMBOL_VISIBLE Strategy {
  public:
   virtual ~Strategy();
@@ -60,13 +62,18 @@ class BOOST_SYMBOL_VISIBLE Heuristic : public Strategy {
   // iteration when varies_by_iteration() is true. The engine raises it to beta itself.
   virtual void compute(const Context& context, std::span<double> eta) = 0;
   virtual bool varies_by_iteration() const { return false; }
+  // What the engine calls: eta^beta for every edge. The default calls compute() and raises
+  // each value to beta; a heuristic that changes every iteration may override it to update
+  // eta^beta more cheaply than a pow() per edge (see heuristic/adaptive).
+  virtual void compute_powered(const Context& context, std::span<double> eta_beta);
 
   // A heuristic that depends on the ant's own walk (its heading, say) returns true here; the
   // engine then calls step_factors() once per step with all candidate edges, never once per
-  // candidate. factors[i] multiplies candidate i's tau^alpha * eta^beta. Must be thread-safe.
+  // candidate. `ant` holds the walk so far (nodes and edges). factors[i] multiplies candidate
+  // i's tau^alpha * eta^beta. Must be thread-safe.
   virtual bool uses_walk() const { return false; }
-  virtual void step_factors(const Context& context, std::span<const NodeId> walk,
-                            std::span<const EdgeId> candidates, std::span<double> factors) const;
+  virtual void step_factors(const Context& context, const Ant& ant, std::span<const EdgeId> candidates,
+                            std::span<double> factors) const;
 };
 
 // Slot "update": pheromone evaporation and deposit after every iteration.

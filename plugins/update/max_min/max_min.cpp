@@ -31,6 +31,9 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
         restart_after_(p.integer("restart_after")) {}
 
   void start(const aco::Context& c, std::span<double>) override {
+    bounded_ = false;  // one plugin object may serve several runs
+    best_length_ = std::numeric_limits<double>::infinity();
+    last_improvement_ = 0;
     // ACOTSP's "average number of choices" is (candidates + 1) / 2; here the candidates of a
     // decision are the neighbours, so the mean degree of the passable nodes.
     const aco::Graph& g = *c.graph;

@@ -1,0 +1,74 @@
+// Adaptive heuristic (paper 003, eq. 9): eta_ij = 1 / (d_ij + d_jE), faded over the iterations
+// by w(Nc) = 1 + (Nc_max - Nc) / Nc_max, which runs from 2 down to 1.
+#include <cmath>
+#include <vector>
+
+#include "aco/plugin.hpp"
+
+namespace {
+
+constexpr aco::ParamSpec kParams[] = {
+    {"fade", aco::ParamType::categorical, "exponent", "exponent,factor",
+     "how w(Nc) applies: eta = base^w (exponent: the heuristic's weight halves over the run) or eta = base * w "
+     "(factor: eq. 9 read literally; w is the same for every candidate and cancels in the transition rule)"},
+};
+
+class AdaptiveHeuristic final : public aco::Heuristic {
+ public:
+  explicit AdaptiveHeuristic(const aco::ParameterValues& p) : exponent_(p.text("fade") == "exponent") {}
+
+  bool varies_by_iteration() const override { return true; }
+
+  void compute(const aco::Context& c, std::span<double> eta) override {
+    const double w = weight(c);
+    const aco::Graph& g = *c.graph;
+    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
+      const double base = 1.0 / (g.costs[e] + g.distance(g.targets[e], c.goal));
+      eta[e] = exponent_ ? std::pow(base, w) : base * w;
+    }
+  }
+
+  // eta^beta = base^(beta * w) (exponent) or (base * w)^beta (factor). w falls by 1/Nc_max each
+  // iteration, so each iteration multiplies eta^beta by a per-edge constant: one multiplication
+  // per edge instead of a pow().
+  void compute_powered(const aco::Context& c, std::span<double> eta_beta) override {
+    const aco::Graph& g = *c.graph;
+    if (c.iteration == 0 || step_.size() != eta_beta.size()) {
+      compute(c, eta_beta);
+      step_.resize(eta_beta.size());
+      const double dw = -1.0 / c.max_iterations;
+      for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
+        const double base = 1.0 / (g.costs[e] + g.distance(g.targets[e], c.goal));
+        eta_beta[e] = std::pow(eta_beta[e], c.beta);
+        step_[e] = exponent_ ? std::pow(base, c.beta * dw) : 0.0;
+      }
+      return;
+    }
+    if (exponent_) {
+      for (std::size_t e = 0; e < eta_beta.size(); ++e) eta_beta[e] *= step_[e];
+    } else {
+      // (base * w)^beta: the same factor (w_now / w_before)^beta for every edge.
+      const double f = std::pow(weight(c) / weight_before(c), c.beta);
+      for (double& v : eta_beta) v *= f;
+    }
+  }
+
+ private:
+  static double weight(const aco::Context& c) {
+    const double nc = c.iteration + 1, nc_max = c.max_iterations;
+    return 1.0 + (nc_max - nc) / nc_max;
+  }
+  static double weight_before(const aco::Context& c) {
+    aco::Context previous = c;
+    previous.iteration -= 1;
+    return weight(previous);
+  }
+
+  bool exponent_;
+  std::vector<double> step_;  // per edge: what eta^beta is multiplied by each iteration (exponent)
+};
+
+}  // namespace
+
+ACO_PLUGIN(heuristic, adaptive, AdaptiveHeuristic, "1.0",
+           "paper 003: eta = 1 / (d_ij + d_jE), faded from strong to normal over the iterations", kParams)

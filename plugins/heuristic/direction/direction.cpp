@@ -1,0 +1,107 @@
+// Direction heuristic (paper 001, eq. 6-7): eta_ab = 1 / (d + gamma * |dtheta| / pi), dtheta =
+// heading change between the ant's previous move and the candidate move.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "aco/plugin.hpp"
+
+namespace {
+
+constexpr aco::ParamSpec kParams[] = {
+    {"gamma", aco::ParamType::real, "2", "0:1000", "weight of the heading change: a U-turn adds gamma to d"},
+    {"distance", aco::ParamType::categorical, "goal", "goal,step",
+     "d: distance from the next node to the goal (goal), or the step length d_ab (step, eq. 6 read literally)"},
+    {"min_distance", aco::ParamType::real, "0.01", "(0:1]", "floor of d, so stepping onto the goal stays finite"},
+};
+
+// Moves are told apart by (dx, dy) in [-2, 2]^2, the reach of a 16-neighbourhood.
+constexpr int kMoveKinds = 25;
+int move_kind(aco::Cell from, aco::Cell to) { return (to.x - from.x + 2) * 5 + (to.y - from.y + 2); }
+
+class DirectionHeuristic final : public aco::Heuristic {
+ public:
+  explicit DirectionHeuristic(const aco::ParameterValues& p)
+      : gamma_(p.real("gamma")), to_goal_(p.text("distance") == "goal"), min_distance_(p.real("min_distance")) {}
+
+  bool uses_walk() const override { return true; }
+
+  // The table part: eta = 1 / d with no turn. Also prepares the per-step lookups: the engine
+  // asks step_factors() once per step, and it must not call pow() there.
+  void compute(const aco::Context& c, std::span<double> eta) override {
+    const aco::Graph& g = *c.graph;
+    graph_ = &g;
+    build_turn_classes();
+    move_.resize(g.num_edges());
+    const int keys = to_goal_ ? g.num_nodes() : kMoveKinds;
+    std::vector<double> d(keys, 1.0);
+    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
+      const aco::NodeId from = g.source(e), to = g.targets[e];
+      move_[e] = static_cast<std::uint8_t>(move_kind(g.cell(from), g.cell(to)));
+      const double dist = to_goal_ ? g.distance(to, c.goal) : g.costs[e];
+      d[key(e)] = std::max(dist, min_distance_);
+      eta[e] = 1.0 / d[key(e)];
+    }
+    // factor = (eta with the turn / eta without)^beta = (d / (d + gamma * turn))^beta
+    factor_.assign(static_cast<std::size_t>(keys) * turn_values_.size(), 1.0);
+    for (int k = 0; k < keys; ++k)
+      for (std::size_t t = 0; t < turn_values_.size(); ++t)
+        factor_[k * turn_values_.size() + t] = std::pow(d[k] / (d[k] + gamma_ * turn_values_[t]), c.beta);
+  }
+
+  void step_factors(const aco::Context&, const aco::Ant& ant, std::span<const aco::EdgeId> candidates,
+                    std::span<double> factors) const override {
+    if (ant.edges.empty()) {  // no heading yet
+      std::fill(factors.begin(), factors.end(), 1.0);
+      return;
+    }
+    const std::uint8_t* turn = &turn_class_[move_[ant.edges.back()] * kMoveKinds];
+    const std::size_t classes = turn_values_.size();
+    if (to_goal_) {
+      const aco::NodeId* targets = graph_->targets.data();
+      for (std::size_t i = 0; i < candidates.size(); ++i)
+        factors[i] = factor_[targets[candidates[i]] * classes + turn[move_[candidates[i]]]];
+    } else {
+      for (std::size_t i = 0; i < candidates.size(); ++i)
+        factors[i] = factor_[move_[candidates[i]] * classes + turn[move_[candidates[i]]]];
+    }
+  }
+
+ private:
+  std::size_t key(aco::EdgeId e) const {
+    return to_goal_ ? static_cast<std::size_t>(graph_->targets[e]) : static_cast<std::size_t>(move_[e]);
+  }
+
+  // |dtheta| / pi for every pair of move kinds, as a small class index: 5 classes on an
+  // 8-neighbourhood (0, 45, 90, 135, 180 degrees), a few more with knight moves.
+  void build_turn_classes() {
+    turn_values_.clear();
+    turn_class_.assign(kMoveKinds * kMoveKinds, 0);
+    for (int a = 0; a < kMoveKinds; ++a) {
+      for (int b = 0; b < kMoveKinds; ++b) {
+        const double ta = std::atan2(a % 5 - 2, a / 5 - 2), tb = std::atan2(b % 5 - 2, b / 5 - 2);
+        double turn = std::fabs(tb - ta);
+        if (turn > M_PI) turn = 2 * M_PI - turn;
+        turn /= M_PI;
+        auto found = std::find_if(turn_values_.begin(), turn_values_.end(), [&](double v) { return std::fabs(v - turn) < 1e-9; });
+        if (found == turn_values_.end()) found = turn_values_.insert(turn_values_.end(), turn);
+        turn_class_[a * kMoveKinds + b] = static_cast<std::uint8_t>(found - turn_values_.begin());
+      }
+    }
+  }
+
+  double gamma_;
+  bool to_goal_;
+  double min_distance_;
+  const aco::Graph* graph_ = nullptr;
+  std::vector<std::uint8_t> move_;         // per edge: its move kind
+  std::vector<double> turn_values_;        // |dtheta| / pi of each turn class
+  std::vector<std::uint8_t> turn_class_;   // [previous move kind][move kind] -> turn class
+  std::vector<double> factor_;             // [key][turn class] -> (d / (d + gamma * turn))^beta
+};
+
+}  // namespace
+
+ACO_PLUGIN(heuristic, direction, DirectionHeuristic, "1.0",
+           "paper 001: eta = 1 / (d + gamma * |heading change| / pi), favouring straight moves", kParams)

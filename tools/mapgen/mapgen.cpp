@@ -1,0 +1,331 @@
+// aco_mapgen OUTDIR: writes the look-alike maps of the papers' 20x20 experiments (and paper 003's
+// 15x15 figure) as Moving AI .map files, each with a one-line .scen whose optimal length is exact
+// A* on the 8-neighbourhood without corner cutting.
+//
+// The papers' maps exist only as figures; these maps imitate them (obstacle kinds, placement,
+// random density), they are not the originals. See data/maps/papers/README.md.
+//
+// Deterministic: fixed seeds, aco::Rng only (no std:: distributions, no clock), so two runs write
+// byte-identical files.
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "aco/astar.hpp"
+#include "aco/error.hpp"
+#include "aco/graph.hpp"
+#include "aco/map.hpp"
+#include "aco/rng.hpp"
+
+namespace {
+
+using aco::Cell;
+using aco::OccupancyGrid;
+
+struct PaperMap {
+  std::string name;  // file stem: <name>.map, <name>.map.scen
+  OccupancyGrid grid;
+  Cell start;
+  Cell goal;
+  int margin = 0;         // cells within this Chebyshev distance of start and goal must be free
+  std::string seed_note;  // how the random part was drawn, for the summary line
+};
+
+// ---------------------------------------------------------------------------------------------
+// Shape helpers. All clip to the grid; coordinates are cells (x = column, y = row from the top).
+
+void block(OccupancyGrid& g, Cell c) {
+  if (g.contains(c)) g.set_blocked(c, true);
+}
+
+// Filled rectangle, corners inclusive.
+void fill_rect(OccupancyGrid& g, int x0, int y0, int x1, int y1) {
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) block(g, {x, y});
+}
+
+// Filled axis-aligned ellipse: every cell whose centre lies inside it.
+void fill_ellipse(OccupancyGrid& g, double cx, double cy, double rx, double ry) {
+  for (int y = 0; y < g.height(); ++y)
+    for (int x = 0; x < g.width(); ++x) {
+      const double u = (x - cx) / rx;
+      const double v = (y - cy) / ry;
+      if (u * u + v * v <= 1.0) block(g, {x, y});
+    }
+}
+
+// The cells a curve passes through, given as densely sampled points (consecutive samples less
+// than one cell apart). Consecutive cells are joined 4-connected: where the curve steps
+// diagonally, the cell beside the step is blocked too, so the wall is sealed even for a planner
+// that cuts corners.
+void draw_curve(OccupancyGrid& g, const std::vector<Eigen::Vector2d>& points) {
+  std::optional<Cell> previous;
+  for (const auto& p : points) {
+    const Cell c{static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
+    if (previous && previous->x != c.x && previous->y != c.y) block(g, {c.x, previous->y});
+    block(g, c);
+    previous = c;
+  }
+}
+
+// Parabola u = k v^2 in the frame of its vertex: u along the axis (the side it opens to),
+// v across it, |v| <= half_width. axis need not be normalised.
+void draw_parabola(OccupancyGrid& g, Eigen::Vector2d vertex, Eigen::Vector2d axis, double k, double half_width) {
+  axis.normalize();
+  const Eigen::Vector2d across(-axis.y(), axis.x());
+  std::vector<Eigen::Vector2d> points;
+  constexpr double step = 0.05;
+  const int n = static_cast<int>(std::ceil(2.0 * half_width / step));
+  for (int i = 0; i <= n; ++i) {
+    const double v = -half_width + 2.0 * half_width * i / n;
+    points.push_back(vertex + axis * (k * v * v) + across * v);
+  }
+  draw_curve(g, points);
+}
+
+int blocked_cells(const OccupancyGrid& g) {
+  int count = 0;
+  for (int y = 0; y < g.height(); ++y)
+    for (int x = 0; x < g.width(); ++x) count += g.blocked({x, y}) ? 1 : 0;
+  return count;
+}
+
+std::string format_density(double p) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", p);
+  return buffer;
+}
+
+bool near(Cell a, Cell b, int radius) { return std::abs(a.x - b.x) <= radius && std::abs(a.y - b.y) <= radius; }
+
+// Blocks each free cell with probability p, except where keep_free says no. One draw per cell in
+// row-major order whatever the cell holds, so the pattern does not shift when a shape moves.
+void scatter(OccupancyGrid& g, aco::Rng& rng, double p, const std::function<bool(Cell)>& keep_free) {
+  for (int y = 0; y < g.height(); ++y)
+    for (int x = 0; x < g.width(); ++x) {
+      const bool hit = rng.uniform() < p;
+      const Cell c{x, y};
+      if (hit && !g.blocked(c) && !keep_free(c)) g.set_blocked(c, true);
+    }
+}
+
+// `count` isolated single cells: free, all 8 neighbours free and in the grid, not within `margin`
+// of start or goal. Drawn uniformly from the cells that qualify at each draw.
+void scatter_isolated(OccupancyGrid& g, aco::Rng& rng, int count, Cell start, Cell goal, int margin) {
+  for (int placed = 0; placed < count; ++placed) {
+    std::vector<Cell> candidates;
+    for (int y = 1; y + 1 < g.height(); ++y)
+      for (int x = 1; x + 1 < g.width(); ++x) {
+        const Cell c{x, y};
+        if (near(c, start, margin) || near(c, goal, margin)) continue;
+        bool clear = true;
+        for (int dy = -1; dy <= 1 && clear; ++dy)
+          for (int dx = -1; dx <= 1 && clear; ++dx) clear = !g.blocked({x + dx, y + dy});
+        if (clear) candidates.push_back(c);
+      }
+    if (candidates.empty()) throw aco::Error("no room left for an isolated obstacle cell");
+    g.set_blocked(candidates[rng.below(candidates.size())], true);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checks and lengths.
+
+std::optional<double> optimal_length(const OccupancyGrid& g, Cell start, Cell goal, aco::GraphOptions options) {
+  const aco::Graph graph = aco::build_graph(g, options);
+  const auto path = aco::astar(graph, graph.node(start), graph.node(goal));
+  if (!path) return std::nullopt;
+  return path->length;
+}
+
+constexpr aco::GraphOptions kScenarioGraph{aco::Neighbourhood::eight, false};
+
+// Empty string if the map is usable, otherwise what is wrong with it.
+std::string problem(const PaperMap& m) {
+  const auto& g = m.grid;
+  for (const auto& [what, c] : {std::pair{"start", m.start}, std::pair{"goal", m.goal}}) {
+    if (!g.contains(c)) return std::string(what) + " " + aco::to_string(c) + " is outside the map";
+    for (int y = c.y - m.margin; y <= c.y + m.margin; ++y)
+      for (int x = c.x - m.margin; x <= c.x + m.margin; ++x)
+        if (g.contains({x, y}) && g.blocked({x, y}))
+          return std::string(what) + " " + aco::to_string(c) + ": cell " + aco::to_string({x, y}) +
+                 " within the free margin " + std::to_string(m.margin) + " is blocked";
+  }
+  if (!optimal_length(g, m.start, m.goal, kScenarioGraph))
+    return "goal " + aco::to_string(m.goal) + " is unreachable from start " + aco::to_string(m.start) +
+           " (8-neighbourhood, no corner cutting)";
+  return {};
+}
+
+// ---------------------------------------------------------------------------------------------
+// The maps.
+
+// Paper 001 (fig. 1/2): 20x20, a filled ellipse, a filled rectangle and a parabola, every other
+// cell an obstacle with probability 15 %. The paper drops its three shapes at random places; here
+// they have fixed places so that the parabola always sits across the way. Start (0,20) and goal (20,0) of the paper (y up)
+// are the bottom-left and top-right cells. The parabola is a cup open downwards, towards the
+// start's side, across the start-goal diagonal: ants heading straight for the goal walk into it
+// and have to turn back. If a seed gives an invalid map (start or goal cut off), the next seed is
+// tried.
+PaperMap paper001() {
+  constexpr std::uint64_t kFirstSeed = 1;
+  constexpr int kAttempts = 1000;
+  constexpr double kDensity = 0.15;
+  for (std::uint64_t seed = kFirstSeed; seed < kFirstSeed + kAttempts; ++seed) {
+    PaperMap m{"paper001", OccupancyGrid(20, 20, "paper001"), {0, 19}, {19, 0}, 1, ""};
+    fill_ellipse(m.grid, 4.5, 3.5, 3.6, 2.6);                  // upper left, rows 1-6
+    fill_rect(m.grid, 14, 15, 17, 17);                          // lower right, 4x3
+    draw_parabola(m.grid, {12.0, 5.0}, {0.0, 1.0}, 0.4, 4.5);  // y = 5 + 0.4 (x-12)^2, |x-12| <= 4.5
+    const int shape_cells = blocked_cells(m.grid);
+    aco::Rng rng(seed);
+    const auto in_margin = [&](Cell c) { return near(c, m.start, m.margin) || near(c, m.goal, m.margin); };
+    scatter(m.grid, rng, kDensity, in_margin);
+    if (problem(m).empty()) {
+      const int random_cells = blocked_cells(m.grid) - shape_cells;
+      m.seed_note = std::to_string(shape_cells) + " shape cells + " + std::to_string(random_cells) +
+                    " random (density " + format_density(kDensity) + ", seed " + std::to_string(seed) +
+                    ", the first valid seed from " + std::to_string(kFirstSeed) + ")";
+      return m;
+    }
+  }
+  throw aco::Error("paper001: no valid map among seeds " + std::to_string(kFirstSeed) + ".." +
+                   std::to_string(kFirstSeed + kAttempts - 1));
+}
+
+// Paper 002 (fig. 1): a 20x20 warehouse. Shelf rows (long, 1-2 cells thick) with aisles, a
+// conveyor along the right side with one gap, barriers (isolation belts) and 2x2 picking
+// stations. No random cells.
+PaperMap paper002() {
+  PaperMap m{"paper002", OccupancyGrid(20, 20, "paper002"), {1, 1}, {18, 18}, 1, "no random cells"};
+  auto& g = m.grid;
+  // Shelf rows, two cells thick, cross aisles staggered so the way down zigzags.
+  fill_rect(g, 0, 3, 10, 4);
+  fill_rect(g, 12, 3, 15, 4);
+  fill_rect(g, 3, 7, 15, 8);
+  fill_rect(g, 0, 11, 5, 12);
+  fill_rect(g, 7, 11, 13, 12);
+  // Single-thickness shelf row at the bottom.
+  fill_rect(g, 3, 15, 13, 15);
+  // Conveyor along the right side with a gap.
+  fill_rect(g, 17, 0, 17, 9);
+  fill_rect(g, 17, 12, 17, 16);
+  // Barriers.
+  fill_rect(g, 15, 11, 16, 11);
+  fill_rect(g, 1, 17, 1, 19);
+  // Picking stations beside the conveyor.
+  fill_rect(g, 18, 4, 19, 5);
+  fill_rect(g, 15, 18, 16, 19);
+  return m;
+}
+
+// Paper 003 (fig. 1, 15x15, and the 20x20 comparison maps): rectangles of different sizes, an L,
+// and a few isolated cells (placed with a fixed seed). Start top-left, goal bottom-right.
+PaperMap paper003_20() {
+  constexpr std::uint64_t kSeed = 3;
+  constexpr int kIsolated = 8;
+  PaperMap m{"paper003_20", OccupancyGrid(20, 20, "paper003_20"), {0, 0}, {19, 19}, 1,
+             std::to_string(kIsolated) + " isolated cells drawn with seed " + std::to_string(kSeed)};
+  auto& g = m.grid;
+  fill_rect(g, 3, 2, 5, 4);      // 3x3
+  fill_rect(g, 9, 1, 10, 6);     // 2x6 column
+  fill_rect(g, 14, 3, 17, 4);    // 4x2
+  fill_rect(g, 2, 8, 7, 9);      // 6x2 bar
+  fill_rect(g, 12, 8, 13, 13);   // L: vertical leg
+  fill_rect(g, 12, 12, 17, 13);  //    horizontal leg
+  fill_rect(g, 4, 13, 8, 16);    // 5x4 block
+  fill_rect(g, 15, 16, 16, 17);  // 2x2
+  fill_rect(g, 10, 17, 11, 19);  // 2x3 from the bottom edge
+  aco::Rng rng(kSeed);
+  scatter_isolated(g, rng, kIsolated, m.start, m.goal, 2);
+  return m;
+}
+
+PaperMap paper003_15() {
+  constexpr std::uint64_t kSeed = 4;
+  constexpr int kIsolated = 5;
+  PaperMap m{"paper003_15", OccupancyGrid(15, 15, "paper003_15"), {0, 0}, {14, 14}, 1,
+             std::to_string(kIsolated) + " isolated cells drawn with seed " + std::to_string(kSeed)};
+  auto& g = m.grid;
+  fill_rect(g, 2, 2, 4, 3);     // 3x2
+  fill_rect(g, 7, 1, 8, 4);     // 2x4 column
+  fill_rect(g, 3, 6, 6, 8);     // 4x3 block
+  fill_rect(g, 9, 6, 9, 10);    // L: vertical leg
+  fill_rect(g, 9, 10, 12, 10);  //    horizontal leg
+  fill_rect(g, 1, 11, 4, 12);   // 4x2
+  fill_rect(g, 12, 2, 13, 3);   // 2x2
+  fill_rect(g, 6, 12, 7, 14);   // 2x3 from the bottom edge
+  aco::Rng rng(kSeed);
+  scatter_isolated(g, rng, kIsolated, m.start, m.goal, 2);
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Output.
+
+std::string format_length(double length) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.8g", length);
+  return buffer;
+}
+
+void write_file(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  if (!out) throw aco::Error(file.string() + ": cannot open for writing");
+  out << text;
+  if (!out.flush()) throw aco::Error(file.string() + ": write failed");
+}
+
+void write_map(const PaperMap& m, const std::filesystem::path& dir) {
+  if (const auto why = problem(m); !why.empty()) throw aco::Error(m.name + ": " + why);
+  const auto& g = m.grid;
+  std::string map =
+      "type octile\nheight " + std::to_string(g.height()) + "\nwidth " + std::to_string(g.width()) + "\nmap\n";
+  for (int y = 0; y < g.height(); ++y) {
+    for (int x = 0; x < g.width(); ++x) map += g.blocked({x, y}) ? '@' : '.';
+    map += '\n';
+  }
+  const double length = *optimal_length(g, m.start, m.goal, kScenarioGraph);
+  const std::string scen = "version 1\n0\t" + m.name + ".map\t" + std::to_string(g.width()) + "\t" +
+                           std::to_string(g.height()) + "\t" + std::to_string(m.start.x) + "\t" +
+                           std::to_string(m.start.y) + "\t" + std::to_string(m.goal.x) + "\t" +
+                           std::to_string(m.goal.y) + "\t" + format_length(length) + "\n";
+  write_file(dir / (m.name + ".map"), map);
+  write_file(dir / (m.name + ".map.scen"), scen);
+
+  const double cut = *optimal_length(g, m.start, m.goal, {aco::Neighbourhood::eight, true});
+  const double four = *optimal_length(g, m.start, m.goal, {aco::Neighbourhood::four, false});
+  std::cout << m.name << ": " << g.width() << "x" << g.height() << ", start " << aco::to_string(m.start) << ", goal "
+            << aco::to_string(m.goal) << ", " << blocked_cells(g) << " blocked, " << m.seed_note
+            << "\n  optimal length: 8-conn no corner cutting " << format_length(length) << ", 8-conn corner cutting "
+            << format_length(cut) << ", 4-conn " << format_length(four) << "\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::cerr << "usage: aco_mapgen OUTDIR\n"
+                 "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR\n";
+    return 1;
+  }
+  try {
+    const std::filesystem::path dir = argv[1];
+    std::filesystem::create_directories(dir);
+    for (const auto& make : {paper001, paper002, paper003_20, paper003_15}) write_map(make(), dir);
+  } catch (const std::exception& e) {
+    std::cerr << "aco_mapgen: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

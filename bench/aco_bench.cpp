@@ -95,6 +95,41 @@ int main(int argc, char** argv) try {
     std::printf("%-12s %10.3f %10.3f %12.1f %12.4f\n", update, t.median_ms, t.min_ms, t.ns_per_step, t.mean_length);
   }
 
+  // Each plugin swapped into the baseline pipeline (the other slots stay at their defaults).
+  std::printf("\n== plugins on classic map1 (same setting, 1 thread): ns per ant step against the ant_system baseline ==\n");
+  std::printf("%-28s %12s %8s %12s\n", "slot/plugin", "ns/ant step", "ratio", "mean length");
+  aco::PipelineSpec baseline;
+  baseline.slots["update"].params = {{"rho", "0.3"}, {"q", "1"}};
+  const Timing base = time_runs(classic, {0, 0}, {19, 19}, registry, baseline, {}, repeats, 1);
+  std::printf("%-28s %12.1f %8.2f %12.4f\n", "(baseline)", base.ns_per_step, 1.0, base.mean_length);
+  for (const char* slot : aco::kSlots) {
+    for (const auto& name : registry.names(slot)) {
+      if (name == aco::default_plugin(slot)) continue;
+      aco::PipelineSpec spec = baseline;
+      spec.slots[slot] = {name, {}};
+      const Timing t = time_runs(classic, {0, 0}, {19, 19}, registry, spec, {}, repeats, 1);
+      std::printf("%-28s %12.1f %8.2f %12.4f\n", (std::string(slot) + "/" + name).c_str(), t.ns_per_step,
+                  t.ns_per_step / base.ns_per_step, t.mean_length);
+    }
+  }
+
+  // The smoother runs once per plan, on the best path: its cost is per call, not per ant step.
+  {
+    aco::PipelineSpec spec = baseline;
+    spec.slots["smoother"].plugin = "prune";
+    const auto pipeline = aco::instantiate(registry, spec);
+    aco::Context context;
+    context.graph = &classic;
+    context.start = 0;
+    context.goal = classic.node({19, 19});
+    const auto began = std::chrono::steady_clock::now();
+    std::size_t points = 0;
+    for (int i = 0; i < 1000; ++i) points += pipeline.smoother->smooth(context, base.last.path).size();
+    const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - began).count() / 1000;
+    std::printf("%-28s %9.2f us per call on the best map1 path (%zu cells -> %zu waypoints)\n", "smoother/prune", us,
+                base.last.path.size(), points / 1000);
+  }
+
   const std::filesystem::path large_file = std::filesystem::path(shared) / large;
   const auto scenarios = aco::load_scenarios(large_file.string() + ".scen");
   if (large_index < 0 || large_index >= int(scenarios.size())) throw aco::Error("--large-scen-index out of range");
@@ -115,6 +150,19 @@ int main(int argc, char** argv) try {
   const bool identical = one.last.path == two.last.path && one.last.length == two.last.length &&
                          one.last.ant_steps == two.last.ant_steps && one.last.best_so_far == two.last.best_so_far &&
                          one.last.pheromone == two.last.pheromone;
+  {
+    aco::PipelineSpec spec;
+    spec.slots["smoother"].plugin = "prune";
+    const auto pipeline = aco::instantiate(registry, spec);
+    aco::Context context;
+    context.graph = &graph;
+    context.start = graph.node(s.start);
+    context.goal = graph.node(s.goal);
+    const auto began = std::chrono::steady_clock::now();
+    const auto points = pipeline.smoother->smooth(context, one.last.path);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
+    std::printf("smoother/prune on this path: %.2f ms (%zu cells -> %zu waypoints)\n", ms, one.last.path.size(), points.size());
+  }
   std::printf("results with 1 and 2 threads identical (path, length, steps, curve, pheromone): %s; solved: %s, %d iterations\n",
               identical ? "yes" : "NO", one.last.solved ? "yes" : "no", one.last.iterations);
   return identical ? 0 : 1;

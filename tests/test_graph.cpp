@@ -10,6 +10,7 @@
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/path.hpp"
+#include "aco/rng.hpp"
 #include "support.hpp"
 
 namespace {
@@ -622,4 +623,28 @@ TEST_CASE("line_of_sight on long segments", "[graph][line_of_sight]") {
   // one cell per column and row boundary it crosses.
   CHECK(test::reference_vertex_sides(a, b).empty());
   CHECK(entered.size() == 1 + 594 + 441);
+}
+
+TEST_CASE("edge_by_move and find_edge agree with a scan of the edge list", "[graph]") {
+  aco::Rng rng(5);
+  for (int round = 0; round < 20; ++round) {
+    std::vector<std::string> rows(9, std::string(11, '.'));
+    for (auto& row : rows)
+      for (char& c : row) c = rng.uniform() < 0.25 ? '#' : '.';
+    const auto map = test::grid(rows);
+    for (auto hood : {aco::Neighbourhood::four, aco::Neighbourhood::eight, aco::Neighbourhood::sixteen})
+      for (bool cc : {false, true}) {
+        const aco::Graph g = aco::build_graph(map, {hood, cc});
+        for (aco::NodeId a = 0; a < g.num_nodes(); ++a)
+          for (int dy = -3; dy <= 3; ++dy)
+            for (int dx = -3; dx <= 3; ++dx) {
+              const aco::Cell from = g.cell(a), to{from.x + dx, from.y + dy};
+              aco::EdgeId scanned = -1;
+              for (aco::EdgeId e = g.edges_begin(a); e < g.edges_end(a); ++e)
+                if (map.contains(to) && g.targets[e] == g.node(to)) scanned = e;
+              REQUIRE(g.edge_by_move(a, dx, dy) == scanned);
+              if (map.contains(to)) REQUIRE(g.find_edge(a, g.node(to)) == scanned);
+            }
+      }
+  }
 }

@@ -1,6 +1,7 @@
 #include "aco/graph.hpp"
 
 #include <array>
+#include <bit>
 #include <deque>
 
 #include "aco/error.hpp"
@@ -56,10 +57,25 @@ std::string describe(const GraphOptions& options) {
          (options.corner_cutting ? "corner cutting" : "no corner cutting");
 }
 
+// Index of each (dx, dy) in [-2, 2]^2 in kMoves, or -1.
+constexpr std::array<std::int8_t, 25> kMoveIndex = [] {
+  std::array<std::int8_t, 25> index{};
+  index.fill(-1);
+  for (std::size_t k = 0; k < kMoves.size(); ++k) index[(kMoves[k].dx + 2) * 5 + kMoves[k].dy + 2] = static_cast<std::int8_t>(k);
+  return index;
+}();
+
+EdgeId Graph::edge_by_move(NodeId from, int dx, int dy) const {
+  if (dx < -2 || dx > 2 || dy < -2 || dy > 2) return -1;
+  const int k = kMoveIndex[(dx + 2) * 5 + dy + 2];
+  if (k < 0 || !(move_mask[from] >> k & 1u)) return -1;
+  // Edges are stored in move order, skipping missing moves: count the moves before k.
+  return offsets[from] + std::popcount(static_cast<unsigned>(move_mask[from] & ((1u << k) - 1u)));
+}
+
 EdgeId Graph::find_edge(NodeId a, NodeId b) const {
-  for (EdgeId e = edges_begin(a); e < edges_end(a); ++e)
-    if (targets[e] == b) return e;
-  return -1;
+  const Cell ca = cell(a), cb = cell(b);
+  return edge_by_move(a, cb.x - ca.x, cb.y - ca.y);
 }
 
 Graph build_graph(const Map& map, const GraphOptions& options) {
@@ -71,6 +87,7 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   const int moves = static_cast<int>(options.neighbourhood);
   const int n = g.num_nodes();
   g.offsets.assign(n + 1, 0);
+  g.move_mask.assign(n, 0);
   g.positions.resize(n);
   for (NodeId id = 0; id < n; ++id) {
     const Cell c = g.cell(id);
@@ -81,6 +98,7 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
         if (!map.passable(to) || !move_clear(map, c, kMoves[k], options.corner_cutting) || !map.step_allowed(c, to))
           continue;
         g.targets.push_back(g.node(to));
+        g.move_mask[id] |= static_cast<std::uint16_t>(1u << k);
       }
     }
     g.offsets[id + 1] = static_cast<EdgeId>(g.targets.size());

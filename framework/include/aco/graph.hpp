@@ -47,8 +47,12 @@ struct BOOST_SYMBOL_VISIBLE Graph {
   NodeId node(Cell c) const { return c.y * width + c.x; }
   Cell cell(NodeId n) const { return {n % width, n / width}; }
   bool passable(NodeId n) const { return map->passable(cell(n)); }
+  std::vector<std::uint16_t> move_mask;  // per node: which moves (in the graph's move order) have an edge
+
   // Edge from a to b, or -1 if they are not neighbours.
   EdgeId find_edge(NodeId a, NodeId b) const;
+  // Edge leaving `from` by the move (dx, dy), or -1; O(1), no division.
+  EdgeId edge_by_move(NodeId from, int dx, int dy) const;
   double distance(NodeId a, NodeId b) const { return (positions[a] - positions[b]).norm(); }
 };
 

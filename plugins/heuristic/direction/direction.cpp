@@ -10,7 +10,7 @@
 namespace {
 
 constexpr aco::ParamSpec kParams[] = {
-    {"gamma", aco::ParamType::real, "2", "0:1000", "weight of the heading change: a U-turn adds gamma to d"},
+    {"gamma", aco::ParamType::real, "20", "0:1000", "weight of the heading change, in cells: a U-turn adds gamma to d"},
     {"distance", aco::ParamType::categorical, "goal", "goal,step",
      "d: distance from the next node to the goal (goal), or the step length d_ab (step, eq. 6 read literally)"},
     {"min_distance", aco::ParamType::real, "0.01", "(0:1]", "floor of d, so stepping onto the goal stays finite"},

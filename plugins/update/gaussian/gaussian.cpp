@@ -1,7 +1,8 @@
 // Gaussian pheromone deposition (paper 002, eq. 7): an arrived ant deposits around its path, not
-// only on it. Every cell of the path spreads y(x) = psi / sqrt(2 pi sigma) * exp(-(x - mu)^2 /
-// (2 sigma^2)) to the cells within the cutoff radius (x = distance between the two cells), and the
-// contributions add up, so cells inside a bend, near several path cells, collect the most.
+// only on it. Every step of the path spreads y(x) = psi / sqrt(2 pi sigma) * exp(-(x - mu)^2 /
+// (2 sigma^2)) to its neighbourhood within the cutoff radius (x = length of the offset), scaled
+// by Q / L_k, and the contributions add up, so the inside of a bend, near both of its legs,
+// collects the most.
 #include <cmath>
 #include <vector>
 
@@ -16,48 +17,33 @@ constexpr aco::ParamSpec kParams[] = {
     {"psi", aco::ParamType::real, "300", "0:1e12", "balance factor psi (paper 002: 300)"},
     {"mu", aco::ParamType::real, "0", "-100:100", "mean mu of the Gaussian (paper 002: 0)"},
     {"sigma", aco::ParamType::real, "1", "(0:100]", "spread sigma of the Gaussian (paper 002: 1)"},
-    {"cutoff", aco::ParamType::real, "2", "0:20", "radius in cells around each path cell that receives pheromone"},
+    {"cutoff", aco::ParamType::real, "2", "0:20", "radius in cells of the neighbourhood that receives pheromone"},
+    {"onto", aco::ParamType::categorical, "edges", "edges,cells",
+     "edges: each path step, shifted by the offset, gets y (the move keeps its direction); "
+     "cells: every edge into each cell near a path cell gets y (direction is lost)"},
 };
 
 class GaussianUpdate final : public aco::PheromoneUpdate {
  public:
   explicit GaussianUpdate(const aco::ParameterValues& p)
-      : rho_(p.real("rho")), q_(p.real("q")), psi_(p.real("psi")), mu_(p.real("mu")), sigma_(p.real("sigma")),
-        cutoff_(p.real("cutoff")) {
-    // The kernel depends only on the offset between the two cells: tabulate it once.
-    const int r = static_cast<int>(std::floor(cutoff_));
+      : q_(p.real("q")), rho_(p.real("rho")), onto_edges_(p.text("onto") == "edges") {
+    // The kernel depends only on the offset: tabulate it once.
+    const double psi = p.real("psi"), mu = p.real("mu"), sigma = p.real("sigma"), cutoff = p.real("cutoff");
+    const int r = static_cast<int>(std::floor(cutoff));
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx) {
         const double x = std::hypot(dx, dy);
-        if (x > cutoff_) continue;
-        const double y = psi_ / std::sqrt(2 * M_PI * sigma_) * std::exp(-(x - mu_) * (x - mu_) / (2 * sigma_ * sigma_));
-        kernel_.push_back({dx, dy, y});
+        if (x <= cutoff)
+          kernel_.push_back({dx, dy, psi / std::sqrt(2 * M_PI * sigma) * std::exp(-(x - mu) * (x - mu) / (2 * sigma * sigma))});
       }
   }
 
   void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
-    const aco::Graph& g = *c.graph;
-    spread_.resize(g.num_nodes(), 0.0);
     aco::evaporate(tau, rho_);
     for (const aco::Ant& ant : it.ants) {
       if (!ant.arrived) continue;
-      touched_.clear();
-      for (aco::NodeId p : ant.nodes) {
-        const aco::Cell cell = g.cell(p);
-        for (const auto& k : kernel_) {
-          const aco::Cell near{cell.x + k.dx, cell.y + k.dy};
-          if (near.x < 0 || near.y < 0 || near.x >= g.width || near.y >= g.height) continue;
-          const aco::NodeId n = g.node(near);
-          if (spread_[n] == 0.0) touched_.push_back(n);
-          spread_[n] += k.weight;
-        }
-      }
-      // The pheromone of a cell is that of every edge into it.
-      const double scale = q_ / ant.length;
-      for (aco::NodeId n : touched_) {
-        for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) tau[g.reverse[e]] += scale * spread_[n];
-        spread_[n] = 0.0;
-      }
+      if (onto_edges_) spread_onto_edges(*c.graph, ant, tau);
+      else spread_onto_cells(*c.graph, ant, tau);
     }
   }
 
@@ -67,9 +53,48 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
     int dy;
     double weight;
   };
-  double rho_, q_, psi_, mu_, sigma_, cutoff_;
+
+  // Step a -> b deposits y(|o|) on the step a+o -> b+o, where that is an edge of the graph.
+  void spread_onto_edges(const aco::Graph& g, const aco::Ant& ant, std::span<double> tau) const {
+    const double scale = q_ / ant.length;
+    for (std::size_t i = 0; i < ant.edges.size(); ++i) {
+      const aco::Cell a = g.cell(ant.nodes[i]), b = g.cell(ant.nodes[i + 1]);
+      const int dx = b.x - a.x, dy = b.y - a.y;
+      for (const Offset& k : kernel_) {
+        const aco::Cell from{a.x + k.dx, a.y + k.dy};
+        if (from.x < 0 || from.y < 0 || from.x >= g.width || from.y >= g.height) continue;
+        const aco::EdgeId e = g.edge_by_move(g.node(from), dx, dy);
+        if (e >= 0) tau[e] += scale * k.weight;
+      }
+    }
+  }
+
+  // Path cell p gives y(|c - p|) to cell c, and every edge into c receives c's total.
+  void spread_onto_cells(const aco::Graph& g, const aco::Ant& ant, std::span<double> tau) {
+    spread_.resize(g.num_nodes(), 0.0);
+    touched_.clear();
+    for (aco::NodeId p : ant.nodes) {
+      const aco::Cell cell = g.cell(p);
+      for (const Offset& k : kernel_) {
+        const aco::Cell near{cell.x + k.dx, cell.y + k.dy};
+        if (!g.map->contains(near)) continue;
+        const aco::NodeId n = g.node(near);
+        if (spread_[n] == 0.0) touched_.push_back(n);
+        spread_[n] += k.weight;
+      }
+    }
+    const double scale = q_ / ant.length;
+    for (aco::NodeId n : touched_) {
+      for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) tau[g.reverse[e]] += scale * spread_[n];
+      spread_[n] = 0.0;
+    }
+  }
+
+  double q_;
+  double rho_;
+  bool onto_edges_;
   std::vector<Offset> kernel_;
-  std::vector<double> spread_;       // per node, zero between ants
+  std::vector<double> spread_;        // per node, zero between ants (cells mode)
   std::vector<aco::NodeId> touched_;  // nodes with a non-zero spread_
 };
 

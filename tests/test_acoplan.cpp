@@ -206,3 +206,30 @@ TEST_CASE("acoplan refuses a plugin built for another ABI version", "[acoplan][b
   CHECK(list.exit_code == 0);
   CHECK_THAT(list.out, Contains("update/wrong_abi  UNUSABLE") && Contains("ABI 999"));
 }
+
+TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acoplan]") {
+  const json j = run_json({"--repeat", "6", "--seed", "10", "--iterations", "30", "--corner-cutting"});
+  REQUIRE(j["runs"].size() == 6);
+  double sum = 0, sum_sq = 0;
+  for (std::size_t i = 0; i < 6; ++i) {
+    const auto& run = j["runs"][i];
+    CHECK(run["seed"] == 10 + i);
+    REQUIRE(run["solved"].get<bool>());
+    sum += run["length"].get<double>();
+  }
+  const double mean = sum / 6;
+  for (const auto& run : j["runs"]) sum_sq += std::pow(run["length"].get<double>() - mean, 2);
+  const auto& s = j["summary"];
+  CHECK(s["runs"] == 6);
+  CHECK(s["solved"] == 6);
+  CHECK(s["length"]["mean"].get<double>() == Approx(mean));
+  CHECK(s["length"]["sd"].get<double>() == Approx(std::sqrt(sum_sq / 5)).margin(1e-12));
+  CHECK(s["turns"].contains("max"));
+  CHECK(j["pipeline"]["update"]["plugin"] == "ant_system");
+  // Run 3 of the repetition is the same as a single run with its seed.
+  json single = run_json({"--seed", "13", "--iterations", "30", "--corner-cutting"});
+  CHECK(single["grid_path"] == j["runs"][3]["grid_path"]);
+  const auto text = test::acoplan({"--repeat", "3", "--iterations", "10"});
+  CHECK(text.exit_code == 0);
+  CHECK_THAT(text.out, Contains("runs:     3 seeds (1..3), 3 solved") && Contains("best_iteration mean"));
+}

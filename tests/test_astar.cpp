@@ -20,13 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-aco::Graph build(const aco::Map& map, aco::Neighbourhood n, bool corner_cutting) {
-  aco::GraphOptions options;
-  options.neighbourhood = n;
-  options.corner_cutting = corner_cutting;
-  return aco::build_graph(map, options);
-}
-
 // Checks that a path is a valid walk from start to goal whose length is the reported one.
 void check_path(const aco::Graph& g, const aco::ShortestPath& path, aco::NodeId start, aco::NodeId goal) {
   REQUIRE_FALSE(path.nodes.empty());
@@ -87,7 +80,7 @@ TEST_CASE("A* matches the classic20 table of optimal lengths", "[astar]") {
     for (const Case& c : {Case{aco::Neighbourhood::eight, true, row.cutting},
                           Case{aco::Neighbourhood::eight, false, row.no_cutting},
                           Case{aco::Neighbourhood::four, false, row.four}}) {
-      const aco::Graph g = build(*map, c.n, c.cc);
+      const aco::Graph g = aco::build_graph(*map, {c.n, c.cc});
       INFO(aco::describe(g.options));
       const aco::NodeId start = g.node({0, 0}), goal = g.node({19, 19});
       const auto path = aco::astar(g, start, goal);
@@ -109,7 +102,7 @@ TEST_CASE("A* matches Moving AI optimal lengths (8-neighbourhood, no corner cutt
     const auto scenarios = aco::load_scenarios(scen);
     REQUIRE(scenarios.size() > 1);
     const auto map = aco::load_map(aco::scenario_map_file(scen));
-    const aco::Graph g = build(*map, aco::Neighbourhood::eight, false);
+    const aco::Graph g = aco::build_graph(*map, {aco::Neighbourhood::eight, false});
     // About 40 scenarios per file, evenly spread (buckets grow in length), always the last one.
     const std::size_t n = scenarios.size();
     const std::size_t k = std::max<std::size_t>(1, (n + 39) / 40);
@@ -136,26 +129,26 @@ TEST_CASE("A* matches Moving AI optimal lengths (8-neighbourhood, no corner cutt
 
 TEST_CASE("A* returns nothing for an unreachable goal", "[astar]") {
   const auto map = test::grid({"..#..", "..#..", ".#..."});
-  const auto strict = build(map, aco::Neighbourhood::eight, false);
+  const auto strict = aco::build_graph(map, {aco::Neighbourhood::eight, false});
   CHECK_FALSE(aco::astar(strict, strict.node({0, 0}), strict.node({4, 2})).has_value());
-  CHECK_FALSE(aco::astar(build(map, aco::Neighbourhood::four, false), 0, 14).has_value());
-  CHECK_FALSE(aco::astar(build(map, aco::Neighbourhood::sixteen, false), 0, 14).has_value());
+  CHECK_FALSE(aco::astar(aco::build_graph(map, {aco::Neighbourhood::four, false}), 0, 14).has_value());
+  CHECK_FALSE(aco::astar(aco::build_graph(map, {aco::Neighbourhood::sixteen, false}), 0, 14).has_value());
   // The diagonal gap at (1,1)-(2,2) opens with corner cutting.
-  const auto cutting = build(map, aco::Neighbourhood::eight, true);
+  const auto cutting = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   const auto path = aco::astar(cutting, 0, 14);
   REQUIRE(path.has_value());
   CHECK(path->length == Approx(2 * std::sqrt(2.0) + 2.0));
   check_path(cutting, *path, 0, 14);
   // A blocked goal is unreachable too.
   const auto walled = test::grid({"...", "...", "..#"});
-  const auto g = build(walled, aco::Neighbourhood::eight, false);
+  const auto g = aco::build_graph(walled, {aco::Neighbourhood::eight, false});
   CHECK_FALSE(aco::astar(g, 0, g.node({2, 2})).has_value());
 }
 
 TEST_CASE("A* path shape on small maps", "[astar]") {
   SECTION("start equals goal") {
     const auto map = test::grid({"...", "..."});
-    const auto g = build(map, aco::Neighbourhood::eight, false);
+    const auto g = aco::build_graph(map, {aco::Neighbourhood::eight, false});
     const auto path = aco::astar(g, 4, 4);
     REQUIRE(path.has_value());
     CHECK(path->nodes == std::vector<aco::NodeId>{4});
@@ -164,18 +157,18 @@ TEST_CASE("A* path shape on small maps", "[astar]") {
   SECTION("open grid: octile, Manhattan and knight lengths") {
     const auto map = test::grid(std::vector<std::string>(6, std::string(8, '.')));
     const aco::Cell a{0, 0}, b{7, 3};
-    const auto g8 = build(map, aco::Neighbourhood::eight, false);
+    const auto g8 = aco::build_graph(map, {aco::Neighbourhood::eight, false});
     const auto p8 = aco::astar(g8, g8.node(a), g8.node(b));
     REQUIRE(p8);
     CHECK(p8->length == Approx(3 * std::sqrt(2.0) + 4.0));
     check_path(g8, *p8, g8.node(a), g8.node(b));
-    const auto g4 = build(map, aco::Neighbourhood::four, false);
+    const auto g4 = aco::build_graph(map, {aco::Neighbourhood::four, false});
     const auto p4 = aco::astar(g4, g4.node(a), g4.node(b));
     REQUIRE(p4);
     CHECK(p4->length == Approx(10.0));
     CHECK(p4->nodes.size() == 11);
     check_path(g4, *p4, g4.node(a), g4.node(b));
-    const auto g16 = build(map, aco::Neighbourhood::sixteen, false);
+    const auto g16 = aco::build_graph(map, {aco::Neighbourhood::sixteen, false});
     const auto p16 = aco::astar(g16, g16.node({0, 0}), g16.node({6, 3}));
     REQUIRE(p16);
     CHECK(p16->length == Approx(3 * std::sqrt(5.0)));
@@ -189,7 +182,7 @@ TEST_CASE("A* path shape on small maps", "[astar]") {
         "..#..",
         "..#..",
     });
-    const auto g = build(map, aco::Neighbourhood::four, false);
+    const auto g = aco::build_graph(map, {aco::Neighbourhood::four, false});
     const auto path = aco::astar(g, g.node({1, 3}), g.node({3, 3}));
     REQUIRE(path);
     CHECK(path->length == Approx(12.0));  // to (0,1), across row 0, down column 4
@@ -210,7 +203,7 @@ TEST_CASE("A* agrees with Dijkstra on random maps", "[astar]") {
     const auto map = test::grid(rows);
     for (auto n : {aco::Neighbourhood::four, aco::Neighbourhood::eight, aco::Neighbourhood::sixteen}) {
       for (bool cc : {false, true}) {
-        const auto g = build(map, n, cc);
+        const auto g = aco::build_graph(map, {n, cc});
         for (int q = 0; q < 5; ++q) {
           const aco::NodeId start = q == 0 ? 0 : static_cast<aco::NodeId>(rng() % g.num_nodes());
           const aco::NodeId goal = q == 0 ? g.num_nodes() - 1 : static_cast<aco::NodeId>(rng() % g.num_nodes());

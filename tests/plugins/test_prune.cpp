@@ -16,13 +16,6 @@
 
 namespace {
 
-aco::Graph build(const aco::Map& map, aco::Neighbourhood n, bool corner_cutting) {
-  aco::GraphOptions options;
-  options.neighbourhood = n;
-  options.corner_cutting = corner_cutting;
-  return aco::build_graph(map, options);
-}
-
 std::vector<aco::NodeId> nodes(const aco::Graph& g, const std::vector<aco::Cell>& cells) {
   std::vector<aco::NodeId> v;
   for (const auto& c : cells) v.push_back(g.node(c));
@@ -118,7 +111,7 @@ TEST_CASE("prune: declared parameters and trivial paths", "[plugin][prune]") {
   CHECK(std::string(descriptor.parameters()[0].default_value) == "0");
 
   const auto map = test::grid({"...", "..."});
-  const auto g = build(map, aco::Neighbourhood::eight, false);
+  const auto g = aco::build_graph(map, {aco::Neighbourhood::eight, false});
   CHECK(prune(g, nodes(g, {{1, 1}})) == points({{1, 1}}));
   CHECK(prune(g, nodes(g, {{0, 0}, {1, 1}})) == points({{0, 0}, {1, 1}}));
   CHECK(prune(g, nodes(g, {{0, 0}, {1, 0}, {2, 0}})) == points({{0, 0}, {2, 0}}));
@@ -130,7 +123,7 @@ TEST_CASE("prune: an open map turns a staircase into one segment", "[plugin][pru
   const auto map = test::grid(std::vector<std::string>(6, std::string(8, '.')));
   for (bool cc : {false, true}) {
     INFO("corner cutting " << cc);
-    const auto g4 = build(map, aco::Neighbourhood::four, cc);
+    const auto g4 = aco::build_graph(map, {aco::Neighbourhood::four, cc});
     const auto stairs =
         nodes(g4, {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {3, 2}, {4, 2}, {4, 3}, {5, 3}, {6, 3}, {6, 4}, {7, 4}, {7, 5}});
     const auto r4 = prune(g4, stairs);
@@ -139,11 +132,11 @@ TEST_CASE("prune: an open map turns a staircase into one segment", "[plugin][pru
     CHECK(aco::path_length(g4, stairs) == 12.0);
     check_pruned(g4, stairs, r4);
 
-    const auto g8 = build(map, aco::Neighbourhood::eight, cc);
+    const auto g8 = aco::build_graph(map, {aco::Neighbourhood::eight, cc});
     const auto diag = nodes(g8, {{0, 5}, {1, 4}, {2, 3}, {3, 3}, {4, 2}, {5, 1}, {6, 1}, {7, 0}});
     CHECK(prune(g8, diag) == points({{0, 5}, {7, 0}}));
 
-    const auto g16 = build(map, aco::Neighbourhood::sixteen, cc);
+    const auto g16 = aco::build_graph(map, {aco::Neighbourhood::sixteen, cc});
     const auto knight = nodes(g16, {{7, 5}, {5, 4}, {4, 4}, {2, 3}, {1, 1}, {0, 0}});
     CHECK(prune(g16, knight) == points({{7, 5}, {0, 0}}));
     // An A* path on the open map, too.
@@ -164,7 +157,7 @@ TEST_CASE("prune: an L-shaped corridor keeps its corner", "[plugin][prune]") {
     for (auto n : {aco::Neighbourhood::four, aco::Neighbourhood::eight, aco::Neighbourhood::sixteen}) {
       for (bool cc : {false, true}) {
         INFO("neighbourhood " << static_cast<int>(n) << ", corner cutting " << cc);
-        const auto g = build(map, n, cc);
+        const auto g = aco::build_graph(map, {n, cc});
         const auto path = nodes(g, {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {4, 1}, {4, 2}, {4, 3}});
         const auto r = prune(g, path);
         CHECK(r == points({{0, 0}, {4, 0}, {4, 3}}));
@@ -185,7 +178,7 @@ TEST_CASE("prune: an L-shaped corridor keeps its corner", "[plugin][prune]") {
     });
     for (bool cc : {false, true}) {
       INFO("corner cutting " << cc);
-      const auto g = build(map, aco::Neighbourhood::four, cc);
+      const auto g = aco::build_graph(map, {aco::Neighbourhood::four, cc});
       const auto path =
           nodes(g, {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}, {5, 1}, {5, 2}, {5, 3}, {5, 4}});
       const auto r = prune(g, path);
@@ -206,7 +199,7 @@ TEST_CASE("prune: an obstacle blocks the direct shortcut", "[plugin][prune]") {
   });
   for (bool cc : {false, true}) {
     INFO("corner cutting " << cc);
-    const auto g = build(map, aco::Neighbourhood::eight, cc);
+    const auto g = aco::build_graph(map, {aco::Neighbourhood::eight, cc});
     const auto path = nodes(g, {{0, 1}, {1, 1}, {2, 0}, {3, 0}, {4, 0}, {5, 1}, {6, 1}});
     const auto r = prune(g, path);
     // (0,1) -> (6,1) and (0,1) -> (5,1) run through (3,1); (0,1) -> (4,0) passes above it.
@@ -223,11 +216,11 @@ TEST_CASE("prune: the corner rule decides a shortcut that grazes a blocked corne
       "....",
       ".#..",
   });
-  const auto strict = build(map, aco::Neighbourhood::eight, false);
+  const auto strict = aco::build_graph(map, {aco::Neighbourhood::eight, false});
   const auto path = nodes(strict, {{0, 0}, {1, 0}, {2, 0}, {3, 1}});
   CHECK(prune(strict, path) == points({{0, 0}, {2, 0}, {3, 1}}));
   check_pruned(strict, path, prune(strict, path));
-  const auto cutting = build(map, aco::Neighbourhood::eight, true);
+  const auto cutting = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   CHECK(prune(cutting, path) == points({{0, 0}, {3, 1}}));
   check_pruned(cutting, path, prune(cutting, path));
 
@@ -237,7 +230,7 @@ TEST_CASE("prune: the corner rule decides a shortcut that grazes a blocked corne
         ".#.",
         "...",
     });
-    const auto g = build(squeeze, aco::Neighbourhood::eight, true);
+    const auto g = aco::build_graph(squeeze, {aco::Neighbourhood::eight, true});
     // (1,0) -> (2,1) squeezes between (2,0) and (1,1): an edge of this graph, but no line of sight.
     const auto p = nodes(g, {{0, 0}, {1, 0}, {2, 1}, {2, 2}});
     const auto r = prune(g, p);
@@ -248,7 +241,7 @@ TEST_CASE("prune: the corner rule decides a shortcut that grazes a blocked corne
 
 TEST_CASE("prune: max_lookahead bounds how far a shortcut reaches", "[plugin][prune]") {
   const auto map = test::grid({"........."});
-  const auto g = build(map, aco::Neighbourhood::four, false);
+  const auto g = aco::build_graph(map, {aco::Neighbourhood::four, false});
   const auto path = nodes(g, {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}, {6, 0}, {7, 0}, {8, 0}});
   CHECK(prune(g, path, {{"max_lookahead", "1"}}) == aco::to_waypoints(g, path));
   CHECK(prune(g, path, {{"max_lookahead", "3"}}) == points({{0, 0}, {3, 0}, {6, 0}, {8, 0}}));
@@ -263,7 +256,7 @@ TEST_CASE("prune on the classic maps: shorter than the A* grid path, every segme
     for (bool cc : {false, true}) {
       for (auto n : {aco::Neighbourhood::eight, aco::Neighbourhood::sixteen}) {
         INFO("map" << m << ", neighbourhood " << static_cast<int>(n) << ", corner cutting " << cc);
-        const auto g = build(map, n, cc);
+        const auto g = aco::build_graph(map, {n, cc});
         const auto best = aco::astar(g, g.node({0, 0}), g.node({19, 19}));
         REQUIRE(best);
         const auto r = prune(g, best->nodes);
@@ -292,7 +285,7 @@ TEST_CASE("prune on random maps and random grid paths: the properties hold", "[p
     for (auto n : {aco::Neighbourhood::four, aco::Neighbourhood::eight, aco::Neighbourhood::sixteen}) {
       for (bool cc : {false, true}) {
         INFO("trial " << trial << ", neighbourhood " << static_cast<int>(n) << ", corner cutting " << cc);
-        const auto g = build(map, n, cc);
+        const auto g = aco::build_graph(map, {n, cc});
         std::vector<std::vector<aco::NodeId>> grid_paths;
         if (const auto best = aco::astar(g, g.node(s), g.node(t))) grid_paths.push_back(best->nodes);
         grid_paths.push_back(loop_free_walk(g, g.node(s), 4 * (w + h), rng));

@@ -28,6 +28,14 @@ aco::OccupancyGrid classic_map(int n) {
   return aco::read_matrix_map(in, file.string());
 }
 
+aco::OccupancyGrid random_grid(std::mt19937& rng, int w, int h) {
+  std::bernoulli_distribution blocked(std::uniform_real_distribution<double>(0.0, 0.4)(rng));
+  aco::OccupancyGrid map(w, h, "random");
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) map.set_blocked({x, y}, blocked(rng));
+  return map;
+}
+
 aco::OccupancyGrid grid(const std::vector<std::string>& rows) {
   aco::OccupancyGrid g(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), "test grid");
   for (int y = 0; y < g.height(); ++y)

@@ -2,6 +2,7 @@
 // Helpers shared by the tests: data locations, tiny hand-made maps, loaded plugins, running acoplan.
 #include <filesystem>
 #include <memory>
+#include <random>
 #include <set>
 #include <utility>
 #include <string>
@@ -34,6 +35,9 @@ std::unique_ptr<Interface> make(const std::string& kind, const std::string& name
   const auto& descriptor = plugins().load(kind, name);
   return plugins().create<Interface>(kind, name, aco::resolve(descriptor.parameters(), params, kind + "."));
 }
+
+// A w x h map whose cells are blocked with a density drawn uniformly from [0, 0.4).
+aco::OccupancyGrid random_grid(std::mt19937& rng, int w, int h);
 
 // An independent statement of the segment rule of aco::line_of_sight, for checking it and the
 // paths smoothers produce: the cells whose interior the segment between the centres of a and b

@@ -568,10 +568,7 @@ TEST_CASE("line_of_sight on random maps: symmetric and equal to the reference", 
   for (int trial = 0; trial < 200; ++trial) {
     std::uniform_int_distribution<int> size(3, 16);
     const int w = size(rng), h = size(rng);
-    std::bernoulli_distribution blocked(std::uniform_real_distribution<double>(0.0, 0.4)(rng));
-    aco::OccupancyGrid map(w, h, "random");
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) map.set_blocked({x, y}, blocked(rng));
+    const aco::OccupancyGrid map = test::random_grid(rng, w, h);
     // Ends inside, one in ten up to two cells outside the map.
     std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1), ox(-2, w + 1), oy(-2, h + 1);
     std::bernoulli_distribution outside(0.1);

@@ -274,10 +274,7 @@ TEST_CASE("prune on random maps and random grid paths: the properties hold", "[p
   for (int trial = 0; trial < 120; ++trial) {
     std::uniform_int_distribution<int> size(4, 22);
     const int w = size(rng), h = size(rng);
-    std::bernoulli_distribution blocked(std::uniform_real_distribution<double>(0.0, 0.4)(rng));
-    aco::OccupancyGrid map(w, h, "random");
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) map.set_blocked({x, y}, blocked(rng));
+    aco::OccupancyGrid map = test::random_grid(rng, w, h);
     std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
     const aco::Cell s{px(rng), py(rng)}, t{px(rng), py(rng)};
     map.set_blocked(s, false);

@@ -53,6 +53,28 @@ Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::
   return t;
 }
 
+struct PruneTiming {
+  double us_per_call = 0;
+  std::size_t waypoints = 0;
+};
+
+// The prune smoother on a grid path, timed over `calls` calls.
+PruneTiming time_prune(aco::PluginRegistry& registry, const aco::Graph& graph, const std::vector<aco::NodeId>& path,
+                       int calls) {
+  aco::PipelineSpec spec;
+  spec.slots["smoother"].plugin = "prune";
+  const auto pipeline = aco::instantiate(registry, spec);
+  aco::Context context;
+  context.graph = &graph;
+  context.start = path.front();
+  context.goal = path.back();
+  PruneTiming t;
+  const auto began = std::chrono::steady_clock::now();
+  for (int i = 0; i < calls; ++i) t.waypoints = pipeline.smoother->smooth(context, path).size();
+  t.us_per_call = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - began).count() / calls;
+  return t;
+}
+
 std::unique_ptr<aco::Map> load(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) throw aco::Error(file.string() + " not found (give --shared-data DIR)");
   return aco::load_map(file);
@@ -114,21 +136,9 @@ int main(int argc, char** argv) try {
   }
 
   // The smoother runs once per plan, on the best path: its cost is per call, not per ant step.
-  {
-    aco::PipelineSpec spec = baseline;
-    spec.slots["smoother"].plugin = "prune";
-    const auto pipeline = aco::instantiate(registry, spec);
-    aco::Context context;
-    context.graph = &classic;
-    context.start = 0;
-    context.goal = classic.node({19, 19});
-    const auto began = std::chrono::steady_clock::now();
-    std::size_t points = 0;
-    for (int i = 0; i < 1000; ++i) points += pipeline.smoother->smooth(context, base.last.path).size();
-    const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - began).count() / 1000;
-    std::printf("%-28s %9.2f us per call on the best map1 path (%zu cells -> %zu waypoints)\n", "smoother/prune", us,
-                base.last.path.size(), points / 1000);
-  }
+  const PruneTiming small = time_prune(registry, classic, base.last.path, 1000);
+  std::printf("%-28s %9.2f us per call on the best map1 path (%zu cells -> %zu waypoints)\n", "smoother/prune",
+              small.us_per_call, base.last.path.size(), small.waypoints);
 
   const std::filesystem::path large_file = std::filesystem::path(shared) / large;
   const auto scenarios = aco::load_scenarios(large_file.string() + ".scen");
@@ -150,18 +160,10 @@ int main(int argc, char** argv) try {
   const bool identical = one.last.path == two.last.path && one.last.length == two.last.length &&
                          one.last.ant_steps == two.last.ant_steps && one.last.best_so_far == two.last.best_so_far &&
                          one.last.pheromone == two.last.pheromone;
-  {
-    aco::PipelineSpec spec;
-    spec.slots["smoother"].plugin = "prune";
-    const auto pipeline = aco::instantiate(registry, spec);
-    aco::Context context;
-    context.graph = &graph;
-    context.start = graph.node(s.start);
-    context.goal = graph.node(s.goal);
-    const auto began = std::chrono::steady_clock::now();
-    const auto points = pipeline.smoother->smooth(context, one.last.path);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
-    std::printf("smoother/prune on this path: %.2f ms (%zu cells -> %zu waypoints)\n", ms, one.last.path.size(), points.size());
+  if (one.last.solved) {
+    const PruneTiming large = time_prune(registry, graph, one.last.path, 1);
+    std::printf("smoother/prune on this path: %.2f ms (%zu cells -> %zu waypoints)\n", large.us_per_call / 1000,
+                one.last.path.size(), large.waypoints);
   }
   std::printf("results with 1 and 2 threads identical (path, length, steps, curve, pheromone): %s; solved: %s, %d iterations\n",
               identical ? "yes" : "NO", one.last.solved ? "yes" : "no", one.last.iterations);

@@ -27,7 +27,7 @@ constexpr ParamSpec kColonyParameters[] = {
     {"same-path-fraction", ParamType::real, "0.9", "(0:1]", "fraction of the ants for --same-path-stop"},
 };
 
-// x^p with the common exponents spared a pow() call: the weights are recomputed every iteration.
+// x^p with the common exponents spared a pow() call: it runs once per candidate of every step.
 inline double power(double x, double p) {
   if (p == 1.0) return x;
   if (p == 0.0) return 1.0;
@@ -150,8 +150,6 @@ class Engine {
         fail_value("heuristic^beta", "the heuristic plugin", eta_beta_[e], e);
   }
 
-  // The pheromone is checked where it is used, not in a pass over every edge per iteration:
-  // on large maps such a pass would cost more than the ants themselves.
   [[noreturn]] void fail_value(const char* what, const char* source, double value, std::size_t e) const {
     const NodeId from = g_.source(static_cast<EdgeId>(e));
     throw Error(std::string(what) + " of edge " + to_string(g_.cell(from)) + " -> " + to_string(g_.cell(g_.targets[e])) +
@@ -201,7 +199,9 @@ class Engine {
         total += w;
         ++n;
       }
-      // NaN and infinity reach the total; a negative value may not, hence its own flag.
+      // The pheromone is checked here, where it is used, not in a pass over every edge per
+      // iteration, which on large maps would cost more than the ants. NaN and infinity reach
+      // the total; a negative value may not, hence its own flag.
       if (negative || !(total <= std::numeric_limits<double>::max())) reject_pheromone(candidates, n);
       if (n == 0) {
         const int back = std::min<int>(p_.deadlock->on_stuck(context_, ant.nodes), int(ant.nodes.size()) - 1);

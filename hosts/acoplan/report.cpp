@@ -31,6 +31,11 @@ nlohmann::json values(const aco::ParameterValues& p) {
 
 std::string cell_text(const aco::Graph& g, aco::NodeId n) { return aco::to_string(g.cell(n)); }
 
+std::string map_line(const aco::Graph& graph) {
+  return "map:      " + graph.map->name() + " (" + std::to_string(graph.width) + "x" + std::to_string(graph.height) +
+         "), " + aco::describe(graph.options) + "\n";
+}
+
 std::string pipeline_lines(const Request& request) {
   std::ostringstream out;
   const std::string planner = request.run.text("planner");
@@ -160,8 +165,7 @@ nlohmann::json to_json(const Request& request, const aco::Graph& graph, const st
 std::string summary(const Request& request, const aco::Graph& graph, const std::vector<Outcome>& runs) {
   std::ostringstream out;
   const Outcome& first = runs.front();
-  out << "map:      " << graph.map->name() << " (" << graph.width << "x" << graph.height << "), "
-      << aco::describe(graph.options) << "\n";
+  out << map_line(graph);
   out << "problem:  start " << cell_text(graph, first.start) << " -> goal " << cell_text(graph, first.goal);
   if (first.optimal_length) out << ", optimum " << std::fixed << std::setprecision(4) << *first.optimal_length;
   out << "\n";
@@ -186,8 +190,7 @@ std::string summary(const Request& request, const aco::Graph& graph, const std::
 std::string summary(const Request& request, const aco::Graph& graph, const Outcome& o) {
   std::ostringstream out;
   out << std::fixed << std::setprecision(4);
-  out << "map:      " << graph.map->name() << " (" << graph.width << "x" << graph.height << "), "
-      << aco::describe(graph.options) << "\n";
+  out << map_line(graph);
   out << "problem:  start " << cell_text(graph, o.start) << " -> goal " << cell_text(graph, o.goal) << "\n";
   out << pipeline_lines(request);
   const std::string planner = request.run.text("planner");

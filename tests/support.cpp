@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
@@ -196,6 +197,21 @@ bool reference_segment_clear(const aco::Map& map, aco::Cell a, aco::Cell b, bool
     if (corner_cutting ? (!f1 && !f2) : (!f1 || !f2)) return false;
   }
   return true;
+}
+
+std::string walk_problem(const aco::Graph& graph, const aco::Ant& ant, aco::NodeId start, aco::NodeId goal) {
+  if (ant.nodes.empty() || ant.nodes.front() != start) return "the walk does not begin at the start";
+  if (ant.edges.size() + 1 != ant.nodes.size()) return "the walk has " + std::to_string(ant.edges.size()) + " edges for " +
+                                                        std::to_string(ant.nodes.size()) + " nodes";
+  if (std::set<aco::NodeId>(ant.nodes.begin(), ant.nodes.end()).size() != ant.nodes.size()) return "a node repeats";
+  for (std::size_t i = 0; i < ant.edges.size(); ++i)
+    if (graph.source(ant.edges[i]) != ant.nodes[i] || graph.targets[ant.edges[i]] != ant.nodes[i + 1])
+      return "edge " + std::to_string(i) + " does not lead from node " + std::to_string(i) + " to the next";
+  if (ant.arrived != (ant.nodes.back() == goal)) return "arrived is " + std::string(ant.arrived ? "true" : "false") +
+                                                         " but the walk ends at " + aco::to_string(graph.cell(ant.nodes.back()));
+  if (ant.arrived && std::abs(ant.length - aco::path_length(graph, ant.nodes)) > 1e-9 * (1 + ant.length))
+    return "length " + std::to_string(ant.length) + " is not the walk's length";
+  return "";
 }
 
 }  // namespace test

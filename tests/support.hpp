@@ -53,6 +53,34 @@ aco::Context context(const aco::Graph& graph, aco::Cell start, aco::Cell goal, i
 // An arrived ant following the given cells (consecutive cells must be neighbours).
 aco::Ant ant(const aco::Graph& graph, const std::vector<aco::Cell>& cells);
 
+// The baseline strategies (uniform, distance, ant_system, discard) as one pipeline.
+struct Baseline {
+  std::unique_ptr<aco::PheromoneInit> init = make<aco::PheromoneInit>("init", "uniform");
+  std::unique_ptr<aco::Heuristic> heuristic = make<aco::Heuristic>("heuristic", "distance");
+  std::unique_ptr<aco::PheromoneUpdate> update = make<aco::PheromoneUpdate>("update", "ant_system");
+  std::unique_ptr<aco::DeadlockPolicy> deadlock = make<aco::DeadlockPolicy>("deadlock", "discard");
+  aco::Pipeline pipeline() { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
+};
+
+// Wraps a real update rule and keeps a copy of every iteration's ants for inspection.
+class RecordingUpdate final : public aco::PheromoneUpdate {
+ public:
+  explicit RecordingUpdate(aco::PheromoneUpdate& inner) : inner_(inner) {}
+  void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
+    ants.emplace_back(it.ants.begin(), it.ants.end());
+    inner_.update(c, it, tau);
+  }
+  std::vector<std::vector<aco::Ant>> ants;
+
+ private:
+  aco::PheromoneUpdate& inner_;
+};
+
+// What is wrong with an ant's walk from `start`, or "" if nothing: its edges must chain its
+// nodes, no node may repeat, it has arrived exactly when it ends at `goal`, and then its length
+// is the sum of its step costs.
+std::string walk_problem(const aco::Graph& graph, const aco::Ant& ant, aco::NodeId start, aco::NodeId goal);
+
 struct CommandResult {
   int exit_code = -1;
   std::string out;

@@ -14,32 +14,8 @@
 
 using Catch::Contains;
 
-namespace {
-
-// Wraps a real update rule and keeps a copy of every iteration's ants for inspection.
-class RecordingUpdate final : public aco::PheromoneUpdate {
- public:
-  explicit RecordingUpdate(aco::PheromoneUpdate& inner) : inner_(inner) {}
-  void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
-    ants.emplace_back(it.ants.begin(), it.ants.end());
-    inner_.update(c, it, tau);
-  }
-  std::vector<std::vector<aco::Ant>> ants;
-
- private:
-  aco::PheromoneUpdate& inner_;
-};
-
-struct Baseline {
-  std::unique_ptr<aco::PheromoneInit> init = test::make<aco::PheromoneInit>("init", "uniform");
-  std::unique_ptr<aco::Heuristic> heuristic = test::make<aco::Heuristic>("heuristic", "distance");
-  std::unique_ptr<aco::PheromoneUpdate> update = test::make<aco::PheromoneUpdate>("update", "ant_system");
-  std::unique_ptr<aco::DeadlockPolicy> deadlock = test::make<aco::DeadlockPolicy>("deadlock", "discard");
-  aco::Pipeline pipeline() { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
-};
-
-
-}  // namespace
+using test::Baseline;
+using test::RecordingUpdate;
 
 TEST_CASE("random streams are reproducible and independent", "[rng]") {
   aco::Rng a(42), b(42), c(43);
@@ -119,18 +95,8 @@ TEST_CASE("every ant walks a loop-free chain of edges from the start", "[colony]
   for (const auto& iteration : recorder.ants) {
     REQUIRE(iteration.size() == 30);
     for (const aco::Ant& ant : iteration) {
-      REQUIRE(ant.nodes.front() == start);
-      REQUIRE(ant.edges.size() + 1 == ant.nodes.size());
-      REQUIRE(std::set<aco::NodeId>(ant.nodes.begin(), ant.nodes.end()).size() == ant.nodes.size());
-      for (std::size_t i = 0; i < ant.edges.size(); ++i) {
-        REQUIRE(graph.source(ant.edges[i]) == ant.nodes[i]);
-        REQUIRE(graph.targets[ant.edges[i]] == ant.nodes[i + 1]);
-      }
-      REQUIRE(ant.arrived == (ant.nodes.back() == goal));
-      if (ant.arrived) {
-        ++arrived;
-        REQUIRE(ant.length == Approx(aco::path_length(graph, ant.nodes)));
-      }
+      REQUIRE(test::walk_problem(graph, ant, start, goal) == "");
+      if (ant.arrived) ++arrived;
     }
   }
   CHECK(arrived > 0);

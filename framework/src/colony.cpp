@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <numeric>
 
 #include "aco/error.hpp"
 #include "aco/rng.hpp"
@@ -25,6 +27,8 @@ constexpr ParamSpec kColonyParameters[] = {
     {"same-path-stop", ParamType::boolean, "false", "",
      "stop once same-path-fraction of an iteration's ants walked the same path (paper 001)"},
     {"same-path-fraction", ParamType::real, "0.9", "(0:1]", "fraction of the ants for --same-path-stop"},
+    {"search", ParamType::categorical, "single", "single,bidirectional",
+     "single = one colony from start to goal; bidirectional = two colonies meeting halfway (paper 000)"},
 };
 
 // x^p with the common exponents spared a pow() call: it runs once per candidate of every step.
@@ -36,27 +40,36 @@ inline double power(double x, double p) {
 }
 
 // Per-thread construction buffers. `visited` holds a stamp per node: a node is in the current
-// ant's tabu list when its stamp equals the ant's, so no clearing between ants.
+// ant's tabu list when its stamp equals the ant's, so no clearing between ants. `on_walk` marks
+// the nodes of the current walk only (a backed-off node stays tabu but leaves the walk): the
+// bidirectional search joins two ants where their walks meet.
 struct Scratch {
   explicit Scratch(int nodes, int max_degree)
-      : visited(nodes, 0), candidates(max_degree), weights(max_degree), factors(max_degree) {}
+      : visited(nodes, 0), on_walk(nodes, 0), candidates(max_degree), weights(max_degree), factors(max_degree) {}
   std::uint32_t next_stamp() {
     if (++stamp == 0) {
       std::fill(visited.begin(), visited.end(), 0);
+      std::fill(on_walk.begin(), on_walk.end(), 0);
       stamp = 1;
     }
     return stamp;
   }
+  bool walked(NodeId n) const { return on_walk[n] == stamp; }
   std::vector<std::uint32_t> visited;
+  std::vector<std::uint32_t> on_walk;
   std::uint32_t stamp = 0;
   std::vector<EdgeId> candidates;
   std::vector<double> weights;
   std::vector<double> factors;
 };
 
-class Engine {
+using ScratchPool = tbb::enumerable_thread_specific<Scratch>;
+
+// One colony: its strategies, pheromone field and heuristic, walking from its start to its goal.
+// The plain search runs one; the bidirectional search runs two, the second from goal to start.
+class Colony {
  public:
-  Engine(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline, const ColonySettings& settings)
+  Colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline, const ColonySettings& settings)
       : g_(graph), p_(pipeline), s_(settings) {
     context_.graph = &graph;
     context_.start = start;
@@ -70,11 +83,12 @@ class Engine {
     tau_.assign(edges, 0.0);
     eta_beta_.assign(edges, 0.0);
     forbidden_.assign(graph.num_nodes(), 0);
-    for (NodeId n = 0; n < graph.num_nodes(); ++n) max_degree_ = std::max(max_degree_, graph.degree(n));
+    int max_degree = 1;
+    for (NodeId n = 0; n < graph.num_nodes(); ++n) max_degree = std::max(max_degree, graph.degree(n));
+    scratch_ = std::make_unique<ScratchPool>([nodes = graph.num_nodes(), max_degree] { return Scratch(nodes, max_degree); });
   }
 
-  ColonyResult run() {
-    ColonyResult result;
+  void begin() {
     p_.init->initialize(context_, tau_);
     p_.update->start(context_, tau_);
     exploitation_ = p_.update->exploitation();
@@ -82,64 +96,66 @@ class Engine {
       throw Error("the update plugin's exploitation probability q0 is not within [0, 1]");
     uses_walk_ = p_.heuristic->uses_walk();
     compute_heuristic();
+  }
 
-    std::vector<Ant> ants(s_.ants);
-    std::vector<std::uint64_t> steps(s_.ants, 0);
-    Ant best;
-    int last_improvement = 0;
-    tbb::enumerable_thread_specific<Scratch> scratch(
-        [&] { return Scratch(g_.num_nodes(), std::max(max_degree_, 1)); });
+  void prepare(int iteration) {
+    context_.iteration = iteration;
+    if (iteration > 0 && p_.heuristic->varies_by_iteration()) compute_heuristic();
+  }
 
-    for (int it = 0; it < s_.iterations; ++it) {
-      context_.iteration = it;
-      if (it > 0 && p_.heuristic->varies_by_iteration()) compute_heuristic();
-      tbb::parallel_for(tbb::blocked_range<int>(0, s_.ants), [&](const tbb::blocked_range<int>& range) {
-        Scratch& local = scratch.local();
-        for (int k = range.begin(); k != range.end(); ++k) {
-          Rng rng = Rng::stream(s_.seed, static_cast<std::uint64_t>(it), static_cast<std::uint64_t>(k));
-          steps[k] = construct(ants[k], local, rng);
-        }
-      });
+  Scratch& local_scratch() { return scratch_->local(); }
+  const Context& context() const { return context_; }
+  const std::vector<double>& pheromone() const { return tau_; }
+  const Ant* best() const { return has_best_ ? &best_ : nullptr; }
 
-      const Ant* iteration_best = nullptr;
-      int arrived = 0;
-      for (int k = 0; k < s_.ants; ++k) {
-        result.ant_steps += steps[k];
-        if (!ants[k].arrived) continue;
-        ++arrived;
-        if (iteration_best == nullptr || ants[k].length < iteration_best->length) iteration_best = &ants[k];
-      }
-      if (iteration_best != nullptr && (!result.solved || iteration_best->length < best.length)) {
-        best = *iteration_best;
-        result.solved = true;
-        result.best_iteration = it + 1;
-        last_improvement = it + 1;
-      }
-      result.iteration_best.push_back(iteration_best ? iteration_best->length : ColonyResult::none);
-      result.best_so_far.push_back(result.solved ? best.length : ColonyResult::none);
-      result.arrived.push_back(arrived);
-      result.iterations = it + 1;
+  void start_walk(Ant& ant, Scratch& scratch) const {
+    ant.nodes.clear();
+    ant.edges.clear();
+    ant.arrived = false;
+    ant.length = 0.0;
+    const std::uint32_t stamp = scratch.next_stamp();
+    ant.nodes.push_back(context_.start);
+    scratch.visited[context_.start] = stamp;
+    scratch.on_walk[context_.start] = stamp;
+  }
 
-      const Iteration view{ants, iteration_best, result.solved ? &best : nullptr};
-      p_.deadlock->after_iteration(context_, view, tau_, forbidden_);
-      forbidden_[context_.start] = forbidden_[context_.goal] = 0;
-      p_.update->update(context_, view, tau_);
+  // Moves the ant one node on, backing off first while it is stuck. False: the ant died.
+  bool step(Ant& ant, Scratch& scratch, Rng& rng) const {
+    return s_.alpha == 1.0 ? step<true>(ant, scratch, rng) : step<false>(ant, scratch, rng);
+  }
 
-      if (s_.stagnation > 0 && it + 1 - last_improvement >= s_.stagnation) {
-        result.stopped_by = "stagnation";
-        break;
-      }
-      if (s_.same_path_stop && largest_same_path(ants) >= s_.same_path_fraction * s_.ants) {
-        result.stopped_by = "same path";
-        break;
-      }
+  // One ant's whole walk to the goal; returns the number of moves it made.
+  std::uint64_t construct(Ant& ant, Scratch& scratch, Rng& rng) const {
+    start_walk(ant, scratch);
+    std::uint64_t moves = 0;
+    while (ant.nodes.back() != context_.goal) {
+      if (!step(ant, scratch, rng)) return moves;
+      ++moves;
     }
-    if (result.solved) {
-      result.path = best.nodes;
-      result.length = best.length;
+    arrive(ant);
+    return moves;
+  }
+
+  void arrive(Ant& ant) const {
+    ant.arrived = true;
+    ant.length = 0.0;
+    for (EdgeId e : ant.edges) ant.length += g_.costs[e];
+  }
+
+  // The deadlock and update strategies learn from a finished iteration. Returns its best ant.
+  const Ant* learn(std::span<const Ant> ants) {
+    const Ant* iteration_best = nullptr;
+    for (const Ant& ant : ants)
+      if (ant.arrived && (iteration_best == nullptr || ant.length < iteration_best->length)) iteration_best = &ant;
+    if (iteration_best != nullptr && (!has_best_ || iteration_best->length < best_.length)) {
+      best_ = *iteration_best;
+      has_best_ = true;
     }
-    result.pheromone = tau_;
-    return result;
+    const Iteration view{ants, iteration_best, best()};
+    p_.deadlock->after_iteration(context_, view, tau_, forbidden_);
+    forbidden_[context_.start] = forbidden_[context_.goal] = 0;
+    p_.update->update(context_, view, tau_);
+    return iteration_best;
   }
 
  private:
@@ -157,19 +173,10 @@ class Engine {
                 source + "; it must be finite and >= 0)");
   }
 
-  std::uint64_t construct(Ant& ant, Scratch& scratch, Rng& rng) const {
-    return s_.alpha == 1.0 ? construct<true>(ant, scratch, rng) : construct<false>(ant, scratch, rng);
-  }
-
-  // One ant's walk; returns the number of moves it made. Specialised for alpha = 1, the usual
-  // case, which needs no pow() in the inner loop.
+  // Specialised for alpha = 1, the usual case, which needs no pow() in the inner loop.
   template <bool kAlphaOne>
-  std::uint64_t construct(Ant& ant, Scratch& scratch, Rng& rng) const {
-    ant.nodes.clear();
-    ant.edges.clear();
-    ant.arrived = false;
-    ant.length = 0.0;
-    const std::uint32_t stamp = scratch.next_stamp();
+  bool step(Ant& ant, Scratch& scratch, Rng& rng) const {
+    const std::uint32_t stamp = scratch.stamp;
     std::uint32_t* visited = scratch.visited.data();
     EdgeId* candidates = scratch.candidates.data();
     double* weights = scratch.weights.data();
@@ -179,12 +186,8 @@ class Engine {
     const double* tau = tau_.data();
     const double* eta_beta = eta_beta_.data();
     const double alpha = s_.alpha;  // unused when kAlphaOne
-
-    NodeId current = context_.start;
-    ant.nodes.push_back(current);
-    visited[current] = stamp;
-    std::uint64_t moves = 0;
-    while (current != context_.goal) {
+    for (;;) {
+      const NodeId current = ant.nodes.back();
       int n = 0;
       double total = 0.0;
       bool negative = false;
@@ -205,10 +208,10 @@ class Engine {
       if (negative || !(total <= std::numeric_limits<double>::max())) reject_pheromone(candidates, n);
       if (n == 0) {
         const int back = std::min<int>(p_.deadlock->on_stuck(context_, ant.nodes), int(ant.nodes.size()) - 1);
-        if (back <= 0) return moves;  // the ant dies
+        if (back <= 0) return false;
+        for (std::size_t i = ant.nodes.size() - back; i < ant.nodes.size(); ++i) scratch.on_walk[ant.nodes[i]] = 0;
         ant.nodes.resize(ant.nodes.size() - back);
         ant.edges.resize(ant.edges.size() - back);
-        current = ant.nodes.back();
         continue;
       }
       if (uses_walk_) {
@@ -218,29 +221,13 @@ class Engine {
         for (int i = 0; i < n; ++i) total += weights[i] *= factors[i];
       }
       const EdgeId e = candidates[choose(rng, n, weights, total)];
-      current = targets[e];
+      const NodeId next = targets[e];
       ant.edges.push_back(e);
-      ant.nodes.push_back(current);
-      visited[current] = stamp;
-      ++moves;
+      ant.nodes.push_back(next);
+      visited[next] = stamp;
+      scratch.on_walk[next] = stamp;
+      return true;
     }
-    ant.arrived = true;
-    for (EdgeId e : ant.edges) ant.length += g_.costs[e];
-    return moves;
-  }
-
-  // How many arrived ants of the iteration share the most common path.
-  static int largest_same_path(const std::vector<Ant>& ants) {
-    std::vector<const std::vector<NodeId>*> paths;
-    for (const Ant& ant : ants)
-      if (ant.arrived) paths.push_back(&ant.nodes);
-    std::sort(paths.begin(), paths.end(), [](auto* a, auto* b) { return *a < *b; });
-    int largest = 0;
-    for (std::size_t i = 0, j = 0; i < paths.size(); i = j) {
-      while (j < paths.size() && *paths[j] == *paths[i]) ++j;
-      largest = std::max(largest, int(j - i));
-    }
-    return largest;
   }
 
   [[noreturn]] void reject_pheromone(const EdgeId* candidates, int n) const {
@@ -274,10 +261,162 @@ class Engine {
   std::vector<double> tau_;
   std::vector<double> eta_beta_;
   std::vector<std::uint8_t> forbidden_;
-  int max_degree_ = 0;
+  std::unique_ptr<ScratchPool> scratch_;
   double exploitation_ = 0.0;
   bool uses_walk_ = false;
+  Ant best_;
+  bool has_best_ = false;
 };
+
+// How many arrived ants of the iteration share the most common path.
+int largest_same_path(const std::vector<Ant>& ants) {
+  std::vector<const std::vector<NodeId>*> paths;
+  for (const Ant& ant : ants)
+    if (ant.arrived) paths.push_back(&ant.nodes);
+  std::sort(paths.begin(), paths.end(), [](auto* a, auto* b) { return *a < *b; });
+  int largest = 0;
+  for (std::size_t i = 0, j = 0; i < paths.size(); i = j) {
+    while (j < paths.size() && *paths[j] == *paths[i]) ++j;
+    largest = std::max(largest, int(j - i));
+  }
+  return largest;
+}
+
+// The walk from `ant`'s end back along `reversed` (a walk in the opposite direction) to its start.
+void append_reversed(const Graph& g, Ant& ant, const Ant& reversed, std::size_t from_index) {
+  for (std::size_t i = from_index; i-- > 0;) {
+    ant.edges.push_back(g.reverse[reversed.edges[i]]);
+    ant.nodes.push_back(reversed.nodes[i]);
+  }
+}
+
+// Paper 000's bidirectional search: ant k of the forward colony (start -> goal) and ant k of the
+// backward colony (goal -> start) walk in turns, one step each. When either steps onto a node of
+// the other's current walk, the two partial walks are joined there into one start -> goal path;
+// checking every step keeps that node the only one they share, so the joined path is simple.
+// Reaching the other colony's start is such a meeting. An ant that dies leaves its walk to be met.
+// Both ants then carry the joined path (each in its own direction) into their colony's update.
+std::uint64_t construct_pair(const Graph& g, const Colony& forward, const Colony& backward, Ant& fa, Ant& ba,
+                             Scratch& fs, Scratch& bs, Rng& frng, Rng& brng) {
+  forward.start_walk(fa, fs);
+  backward.start_walk(ba, bs);
+  std::uint64_t moves = 0;
+  bool forward_alive = true, backward_alive = true;
+  NodeId meeting = -1;
+  while (meeting < 0 && (forward_alive || backward_alive)) {
+    if (forward_alive) {
+      forward_alive = forward.step(fa, fs, frng);
+      if (forward_alive) {
+        ++moves;
+        if (bs.walked(fa.nodes.back())) meeting = fa.nodes.back();
+      }
+    }
+    if (meeting < 0 && backward_alive) {
+      backward_alive = backward.step(ba, bs, brng);
+      if (backward_alive) {
+        ++moves;
+        if (fs.walked(ba.nodes.back())) meeting = ba.nodes.back();
+      }
+    }
+  }
+  if (meeting < 0) return moves;  // both died apart: no path this time
+  const auto index_in = [meeting](const Ant& a) {
+    return static_cast<std::size_t>(std::find(a.nodes.begin(), a.nodes.end(), meeting) - a.nodes.begin());
+  };
+  const std::size_t fi = index_in(fa), bi = index_in(ba);
+  Ant joined;
+  joined.nodes.assign(fa.nodes.begin(), fa.nodes.begin() + fi + 1);
+  joined.edges.assign(fa.edges.begin(), fa.edges.begin() + fi);
+  append_reversed(g, joined, ba, bi);
+  Ant back;
+  back.nodes.push_back(joined.nodes.back());
+  append_reversed(g, back, joined, joined.edges.size());
+  forward.arrive(joined);
+  backward.arrive(back);
+  fa = std::move(joined);
+  ba = std::move(back);
+  return moves;
+}
+
+// The iteration loop shared by both searches: `construct` fills the forward colony's ants (and
+// the backward ones) for one iteration and returns the moves made.
+template <class Construct>
+ColonyResult iterate(const ColonySettings& s, std::span<Colony* const> colonies, std::span<std::vector<Ant>> ants,
+                     Construct&& construct) {
+  ColonyResult result;
+  for (Colony* colony : colonies) colony->begin();
+  int last_improvement = 0;
+  for (int it = 0; it < s.iterations; ++it) {
+    for (Colony* colony : colonies) colony->prepare(it);
+    result.ant_steps += construct(it);
+
+    int arrived = 0;
+    for (const Ant& ant : ants[0]) arrived += ant.arrived ? 1 : 0;
+    const Ant* iteration_best = colonies[0]->learn(ants[0]);
+    for (std::size_t c = 1; c < colonies.size(); ++c) colonies[c]->learn(ants[c]);
+    if (iteration_best != nullptr && (!result.solved || iteration_best->length < result.length)) {
+      result.solved = true;
+      result.length = iteration_best->length;
+      result.best_iteration = it + 1;
+      last_improvement = it + 1;
+    }
+    result.iteration_best.push_back(iteration_best ? iteration_best->length : ColonyResult::none);
+    result.best_so_far.push_back(result.length);
+    result.arrived.push_back(arrived);
+    result.iterations = it + 1;
+
+    if (s.stagnation > 0 && it + 1 - last_improvement >= s.stagnation) {
+      result.stopped_by = "stagnation";
+      break;
+    }
+    if (s.same_path_stop && largest_same_path(ants[0]) >= s.same_path_fraction * s.ants) {
+      result.stopped_by = "same path";
+      break;
+    }
+  }
+  if (result.solved) result.path = colonies[0]->best()->nodes;
+  result.pheromone = colonies[0]->pheromone();
+  return result;
+}
+
+ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
+                        const ColonySettings& s) {
+  Colony colony(graph, start, goal, pipeline, s);
+  std::vector<std::vector<Ant>> ants(1, std::vector<Ant>(s.ants));
+  std::vector<std::uint64_t> steps(s.ants, 0);
+  Colony* colonies[] = {&colony};
+  return iterate(s, colonies, ants, [&](int it) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
+      Scratch& local = colony.local_scratch();
+      for (int k = range.begin(); k != range.end(); ++k) {
+        Rng rng = Rng::stream(s.seed, static_cast<std::uint64_t>(it), static_cast<std::uint64_t>(k));
+        steps[k] = colony.construct(ants[0][k], local, rng);
+      }
+    });
+    return std::accumulate(steps.begin(), steps.end(), std::uint64_t{0});
+  });
+}
+
+ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, const Pipeline& forward_pipeline,
+                               const Pipeline& backward_pipeline, const ColonySettings& s) {
+  Colony forward(graph, start, goal, forward_pipeline, s);
+  Colony backward(graph, goal, start, backward_pipeline, s);
+  std::vector<std::vector<Ant>> ants(2, std::vector<Ant>(s.ants));
+  std::vector<std::uint64_t> steps(s.ants, 0);
+  Colony* colonies[] = {&forward, &backward};
+  return iterate(s, colonies, ants, [&](int it) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
+      Scratch& fs = forward.local_scratch();
+      Scratch& bs = backward.local_scratch();
+      for (int k = range.begin(); k != range.end(); ++k) {
+        const auto i = static_cast<std::uint64_t>(it), a = 2 * static_cast<std::uint64_t>(k);
+        Rng frng = Rng::stream(s.seed, i, a), brng = Rng::stream(s.seed, i, a + 1);
+        steps[k] = construct_pair(graph, forward, backward, ants[0][k], ants[1][k], fs, bs, frng, brng);
+      }
+    });
+    return std::accumulate(steps.begin(), steps.end(), std::uint64_t{0});
+  });
+}
 
 void check_inputs(const Graph& graph, NodeId start, NodeId goal, const Pipeline& p, const ColonySettings& s) {
   for (const auto& [node, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
@@ -308,11 +447,12 @@ ColonySettings colony_settings(const ParameterValues& v) {
   s.stagnation = static_cast<int>(v.integer("stagnation"));
   s.same_path_stop = v.boolean("same-path-stop");
   s.same_path_fraction = v.real("same-path-fraction");
+  s.bidirectional = v.text("search") == "bidirectional";
   return s;
 }
 
 ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
-                        const ColonySettings& settings) {
+                        const ColonySettings& settings, const Pipeline* backward) {
   check_inputs(graph, start, goal, pipeline, settings);
   if (start == goal) {
     ColonyResult trivial;
@@ -321,7 +461,12 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pip
     trivial.length = 0.0;
     return trivial;
   }
-  return Engine(graph, start, goal, pipeline, settings).run();
+  if (!settings.bidirectional) return run_single(graph, start, goal, pipeline, settings);
+  if (backward == nullptr || !backward->init || !backward->heuristic || !backward->update || !backward->deadlock)
+    throw Error("the bidirectional search needs a second, complete set of strategy objects for its backward colony");
+  if (backward->init == pipeline.init || backward->update == pipeline.update)
+    throw Error("the bidirectional search's two colonies must not share strategy objects (they keep per-run state)");
+  return run_bidirectional(graph, start, goal, pipeline, *backward, settings);
 }
 
 }  // namespace aco

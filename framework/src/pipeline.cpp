@@ -42,4 +42,12 @@ LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec) {
   return loaded;
 }
 
+ColonyResult run_colony(PluginRegistry& registry, const PipelineSpec& spec, const LoadedPipeline& pipeline,
+                        const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings) {
+  if (!settings.bidirectional) return run_colony(graph, start, goal, pipeline.colony(), settings);
+  const LoadedPipeline backward = instantiate(registry, spec);
+  const Pipeline backward_colony = backward.colony();
+  return run_colony(graph, start, goal, pipeline.colony(), settings, &backward_colony);
+}
+
 }  // namespace aco

@@ -87,7 +87,7 @@ acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, c
     o.solved = true;
     o.grid_path = aco::astar(graph, o.start, o.goal)->nodes;
   } else {
-    aco::ColonyResult colony = aco::run_colony(graph, o.start, o.goal, pipeline.colony(), settings);
+    aco::ColonyResult colony = aco::run_colony(*r.registry, r.pipeline, pipeline, graph, o.start, o.goal, settings);
     o.solved = colony.solved;
     o.grid_path = std::move(colony.path);
     o.iterations = colony.iterations;

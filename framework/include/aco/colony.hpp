@@ -22,6 +22,9 @@ struct ColonySettings {
   // Paper 001's rule: stop once this fraction of an iteration's ants walked one and the same path.
   bool same_path_stop = false;
   double same_path_fraction = 0.9;
+  // Paper 000's bidirectional search: a second colony walks from the goal and ants join where
+  // their walks meet. Needs a second set of strategy objects (see run_colony).
+  bool bidirectional = false;
 };
 
 // The colony's own parameter table (ants, iterations, alpha, beta, seed, stagnation).
@@ -52,8 +55,10 @@ struct ColonyResult {
 };
 
 // Runs the colony in the calling thread's TBB arena. Throws Error if a strategy produces a
-// non-finite or negative pheromone or heuristic value.
+// non-finite or negative pheromone or heuristic value. With settings.bidirectional, `backward`
+// is the backward colony's pipeline: separate objects of the same (or other) plugins, since
+// strategies keep per-run state. Its result is the forward colony's view (its pheromone).
 ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
-                        const ColonySettings& settings);
+                        const ColonySettings& settings, const Pipeline* backward = nullptr);
 
 }  // namespace aco

@@ -40,4 +40,9 @@ struct LoadedPipeline {
 // out-of-range values are errors that name the slot, the key and the nearest valid key.
 LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec);
 
+// run_colony with a loaded pipeline. The bidirectional search's backward colony gets its own
+// instances of the same plugins, instantiated here from `spec`.
+ColonyResult run_colony(PluginRegistry& registry, const PipelineSpec& spec, const LoadedPipeline& pipeline,
+                        const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings);
+
 }  // namespace aco

@@ -71,52 +71,16 @@ Problem load_problem(const acoplan::Request& r) {
   return p;
 }
 
-// One planning run: the colony (or A*), then the smoother.
+// One planning run: the colony (or a reference planner), then the smoother.
 acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, const Problem& problem,
                            const aco::ColonySettings& settings) {
-  const aco::LoadedPipeline pipeline = aco::instantiate(*r.registry, r.pipeline);
+  aco::PlanRequest request;
+  request.planner = r.run.text("planner");
+  request.pipeline = r.pipeline;
+  request.colony = settings;
   acoplan::Outcome o;
-  o.seed = settings.seed;
-  o.start = graph.node(problem.start);
-  o.goal = graph.node(problem.goal);
-  const auto began = std::chrono::steady_clock::now();
-  if (!aco::reachable(graph, o.start, o.goal)) {
-    o.reason = "goal " + aco::to_string(problem.goal) + " is not reachable from start " + aco::to_string(problem.start) +
-               " (" + aco::describe(graph.options) + ")";
-  } else if (r.run.text("planner") == "astar") {
-    o.solved = true;
-    o.grid_path = aco::astar(graph, o.start, o.goal)->nodes;
-  } else {
-    aco::ColonyResult colony = aco::run_colony(*r.registry, r.pipeline, pipeline, graph, o.start, o.goal, settings);
-    o.solved = colony.solved;
-    o.grid_path = std::move(colony.path);
-    o.iterations = colony.iterations;
-    o.best_iteration = colony.best_iteration;
-    o.ant_steps = colony.ant_steps;
-    o.stopped_by = colony.stopped_by;
-    o.best_so_far = std::move(colony.best_so_far);
-    o.iteration_best = std::move(colony.iteration_best);
-    o.pheromone = std::move(colony.pheromone);
-    if (!o.solved)
-      o.reason = "no ant reached the goal in " + std::to_string(o.iterations) +
-                 " iterations (try more ants or iterations, or another deadlock policy)";
-  }
-  if (o.solved) {
-    aco::Context context;
-    context.graph = &graph;
-    context.start = o.start;
-    context.goal = o.goal;
-    context.seed = settings.seed;
-    o.grid_length = aco::path_length(graph, o.grid_path);
-    o.path = pipeline.smoother->smooth(context, o.grid_path);
-    if (o.path.empty() || o.path.front() != graph.positions[o.start] || o.path.back() != graph.positions[o.goal])
-      throw aco::Error("the smoother plugin '" + r.pipeline.slots.at("smoother").plugin +
-                       "' returned a path that does not run from start to goal");
-    o.length = aco::polyline_length(o.path);
-    o.turns = aco::count_turns(o.path);
-  }
-  o.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
-  o.resolved = pipeline.resolved;
+  static_cast<aco::PlanOutcome&>(o) =
+      aco::plan(*r.registry, graph, graph.node(problem.start), graph.node(problem.goal), request);
   return o;
 }
 

@@ -7,33 +7,13 @@
 #include <vector>
 
 #include "aco/graph.hpp"
-#include "aco/path.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/planning.hpp"
 #include "command_line.hpp"
 
 namespace acoplan {
 
-struct Outcome {
-  std::uint64_t seed = 0;
-  bool solved = false;
-  std::string reason;  // why not solved
-  aco::NodeId start = 0;
-  aco::NodeId goal = 0;
-  std::vector<aco::NodeId> grid_path;
-  double grid_length = 0.0;
-  aco::Waypoints path;  // after the smoother
-  double length = 0.0;
-  int turns = 0;
-  int iterations = 0;
-  int best_iteration = 0;
-  double time_ms = 0.0;
-  std::uint64_t ant_steps = 0;
-  std::string stopped_by;  // which rule ended the colony run
-  std::vector<double> best_so_far;
-  std::vector<double> iteration_best;
-  std::vector<double> pheromone;
+struct Outcome : aco::PlanOutcome {
   std::optional<double> optimal_length;  // exact A* reference on the same graph
-  std::map<std::string, aco::ParameterValues> resolved;  // slot -> every plugin parameter
 };
 
 // One run: its result and the full configuration.

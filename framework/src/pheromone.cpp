@@ -37,4 +37,14 @@ void rescale_mean(std::span<double> tau, double mean) {
   for_each_chunk(tau, [factor](double& t) { t *= factor; });
 }
 
+void LocalUpdate::start(std::span<double> tau, double mean) {
+  rescale_mean(tau, mean);
+  start_.assign(tau.begin(), tau.end());
+}
+
+void LocalUpdate::apply(std::span<const Ant> ants, std::span<double> tau) const {
+  for (const Ant& ant : ants)
+    for (EdgeId e : ant.edges) tau[e] = (1.0 - xi_) * tau[e] + xi_ * start_[e];
+}
+
 }  // namespace aco

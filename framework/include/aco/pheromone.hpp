@@ -4,6 +4,7 @@
 // they, not the ants, would otherwise dominate an iteration.
 #include <boost/config.hpp>
 #include <span>
+#include <vector>
 
 #include "aco/strategies.hpp"
 
@@ -22,5 +23,24 @@ BOOST_SYMBOL_VISIBLE void rescale_mean(std::span<double> tau, double mean);
 inline void deposit(std::span<double> tau, const Ant& ant, double amount) {
   for (EdgeId e : ant.edges) tau[e] += amount;
 }
+
+// Ant Colony System's local update (Dorigo and Gambardella 1997): every edge an ant walked moves
+// back towards its starting value, tau <- (1 - xi) * tau + xi * tau_start. ACS applies it after
+// each step; here ants of an iteration are built in parallel on one pheromone snapshot, so it
+// is applied after construction, edge by edge in ant order, which keeps runs independent of the
+// thread count (ants of one iteration do not repel each other).
+class BOOST_SYMBOL_VISIBLE LocalUpdate {
+ public:
+  explicit LocalUpdate(double xi) : xi_(xi) {}
+  // Scales the init plugin's field to the given mean, keeping its shape, and remembers the
+  // result as the starting values. Call once per run, from PheromoneUpdate::start().
+  void start(std::span<double> tau, double mean);
+  // The local update for every step of every ant (arrived or not).
+  void apply(std::span<const Ant> ants, std::span<double> tau) const;
+
+ private:
+  double xi_;
+  std::vector<double> start_;
+};
 
 }  // namespace aco

@@ -1,7 +1,5 @@
 // Ant Colony System (Dorigo and Gambardella 1997): pseudo-random proportional rule, local
 // update towards tau0, global update on the best-so-far path only.
-#include <vector>
-
 #include "aco/pheromone.hpp"
 #include "aco/plugin.hpp"
 
@@ -19,21 +17,17 @@ constexpr aco::ParamSpec kParams[] = {
 class AcsUpdate final : public aco::PheromoneUpdate {
  public:
   explicit AcsUpdate(const aco::ParameterValues& p)
-      : rho_(p.real("rho")), xi_(p.real("xi")), q0_(p.real("q0")), q_(p.real("q")), tau0_(p.real("tau0")) {}
+      : rho_(p.real("rho")), q0_(p.real("q0")), q_(p.real("q")), tau0_(p.real("tau0")), local_(p.real("xi")) {}
 
   double exploitation() const override { return q0_; }
 
   void start(const aco::Context& c, std::span<double> tau) override {
     const double straight = c.graph->distance(c.start, c.goal);
-    aco::rescale_mean(tau, tau0_ > 0.0 ? tau0_ : q_ / (straight * straight));
-    initial_.assign(tau.begin(), tau.end());
+    local_.start(tau, tau0_ > 0.0 ? tau0_ : q_ / (straight * straight));
   }
 
   void update(const aco::Context&, const aco::Iteration& it, std::span<double> tau) override {
-    // Local update. Ants are built in parallel on one pheromone snapshot, so it is applied
-    // here, edge by edge in ant order, which keeps runs independent of the thread count.
-    for (const aco::Ant& ant : it.ants)
-      for (aco::EdgeId e : ant.edges) tau[e] = (1.0 - xi_) * tau[e] + xi_ * initial_[e];
+    local_.apply(it.ants, tau);
     if (it.best_so_far == nullptr) return;
     const double target = q_ / it.best_so_far->length;
     for (aco::EdgeId e : it.best_so_far->edges) tau[e] = (1.0 - rho_) * tau[e] + rho_ * target;
@@ -41,11 +35,10 @@ class AcsUpdate final : public aco::PheromoneUpdate {
 
  private:
   double rho_;
-  double xi_;
   double q0_;
   double q_;
   double tau0_;
-  std::vector<double> initial_;
+  aco::LocalUpdate local_;
 };
 
 }  // namespace

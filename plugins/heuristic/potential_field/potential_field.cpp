@@ -1,0 +1,105 @@
+// Potential-field heuristic (paper 000, section 4.5): the distance heuristic boosted on moves that
+// follow the potential-field force, strongly early and not at all in the last iteration:
+//   eta_ij = (1 / d_jE) * (1 + a * w(it) * max(0, cos phi)),  w(it) = ((it_max - it) / it_max)^3,
+// phi the angle between the move i -> j and F_tot(i), it = 1..it_max.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "aco/plugin.hpp"
+#include "aco/potential_field.hpp"
+
+namespace {
+
+constexpr auto kParams = aco::with_potential_field_params(std::array<aco::ParamSpec, 2>{{
+    {"a", aco::ParamType::real, "0.1", "0:1e6",
+     "weight of the force term: a move along the force gets eta x (1 + a) in the first iteration"},
+    {"min_distance", aco::ParamType::real, "0.01", "(0:1]",
+     "d(j, goal) is floored at this value, so stepping onto the goal gets 1/min_distance (as in heuristic/distance)"},
+}});
+
+class PotentialFieldHeuristic final : public aco::Heuristic {
+ public:
+  explicit PotentialFieldHeuristic(const aco::ParameterValues& p)
+      : a_(p.real("a")), min_distance_(p.real("min_distance")), gains_(aco::potential_field_gains(p)) {}
+
+  bool varies_by_iteration() const override { return true; }
+
+  void compute(const aco::Context& c, std::span<double> eta) override {
+    prepare(c);
+    const double w = weight(c);
+    for (std::size_t e = 0; e < eta.size(); ++e) eta[e] = base_[e] * (1.0 + w * boost_[e]);
+  }
+
+  // eta^beta = base^beta * (1 + w * boost)^beta: base^beta is computed once per run, and the
+  // second factor only on edges with a boost, by multiplications when beta is a whole number.
+  void compute_powered(const aco::Context& c, std::span<double> eta_beta) override {
+    if (prepare(c) || base_beta_.size() != base_.size() || beta_ != c.beta) {
+      beta_ = c.beta;
+      base_beta_.resize(base_.size());
+      for (std::size_t e = 0; e < base_.size(); ++e) base_beta_[e] = std::pow(base_[e], beta_);
+    }
+    const double w = weight(c);
+    const bool whole = beta_ == std::floor(beta_) && beta_ <= 64.0;
+    for (std::size_t e = 0; e < eta_beta.size(); ++e) {
+      if (boost_[e] == 0.0 || w == 0.0) {
+        eta_beta[e] = base_beta_[e];
+      } else {
+        const double factor = 1.0 + w * boost_[e];
+        eta_beta[e] = base_beta_[e] * (whole ? whole_power(factor, static_cast<int>(beta_)) : std::pow(factor, beta_));
+      }
+    }
+  }
+
+ private:
+  // w(it) = ((it_max - it) / it_max)^3 with it = iteration + 1: just under 1 in the first
+  // iteration, 0 in the last.
+  static double weight(const aco::Context& c) {
+    const double left = double(c.max_iterations - (c.iteration + 1)) / c.max_iterations;
+    return std::max(0.0, left * left * left);
+  }
+
+  static double whole_power(double x, int n) {
+    double result = 1.0;
+    for (; n > 0; n >>= 1, x *= x)
+      if (n & 1) result *= x;
+    return result;
+  }
+
+  // Per edge, once per run (a run starts at iteration 0): the distance heuristic and
+  // a * max(0, cos phi). Returns whether it computed them.
+  bool prepare(const aco::Context& c) {
+    const aco::Graph& g = *c.graph;
+    if (c.iteration != 0 && graph_ == &g && start_ == c.start && goal_ == c.goal) return false;
+    graph_ = &g;
+    start_ = c.start;
+    goal_ = c.goal;
+    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, gains_);
+    base_.resize(g.num_edges());
+    boost_.resize(g.num_edges());
+    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
+      base_[e] = 1.0 / std::max(g.distance(g.targets[e], c.goal), min_distance_);
+      const Eigen::Vector2d& force = forces[g.source(e)];
+      const double strength = force.norm();
+      boost_[e] = strength > 0.0 ? a_ * std::max(0.0, force.dot(aco::planar_direction(g, e)) / strength) : 0.0;
+    }
+    return true;
+  }
+
+  double a_;
+  double min_distance_;
+  aco::PotentialFieldGains gains_;
+  const aco::Graph* graph_ = nullptr;
+  aco::NodeId start_ = -1;
+  aco::NodeId goal_ = -1;
+  double beta_ = 0.0;
+  std::vector<double> base_;       // per edge: 1 / d(j, goal)
+  std::vector<double> boost_;      // per edge: a * max(0, cos phi)
+  std::vector<double> base_beta_;  // per edge: base^beta
+};
+
+}  // namespace
+
+ACO_PLUGIN(heuristic, potential_field, PotentialFieldHeuristic, "1.0",
+           "paper 000: eta = (1 / d_jE) * (1 + a * ((it_max - it) / it_max)^3 * max(0, cos phi)), phi between the move and the force",
+           kParams)

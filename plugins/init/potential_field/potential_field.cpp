@@ -1,0 +1,46 @@
+// Potential-field initial pheromone (paper 000, eq. 14): tau(0) = tau0 * F'_tot, read per edge
+// i -> j as tau0 * (floor + (1 - floor) * s), s = (1 + clamp(F_tot(i) . u_ij / k, -1, 1)) / 2 in
+// [0, 1]: the pheromone is high on moves that follow the force at i (towards the goal, away
+// from obstacles and high ground) and low on moves against it.
+#include <algorithm>
+#include <vector>
+
+#include "aco/plugin.hpp"
+#include "aco/potential_field.hpp"
+
+namespace {
+
+constexpr auto kParams = aco::with_potential_field_params(std::array<aco::ParamSpec, 2>{{
+    {"tau0", aco::ParamType::real, "8", "(0:1e12]", "pheromone of a move along a full-strength force (8 = the uniform plugin's tau0)"},
+    {"floor", aco::ParamType::real, "0.1", "(0:1]",
+     "share of tau0 a move straight against a full-strength force keeps; 1 = uniform"},
+}});
+
+class PotentialFieldInit final : public aco::PheromoneInit {
+ public:
+  explicit PotentialFieldInit(const aco::ParameterValues& p)
+      : tau0_(p.real("tau0")), floor_(p.real("floor")), gains_(aco::potential_field_gains(p)) {}
+
+  void initialize(const aco::Context& c, std::span<double> tau) override {
+    const aco::Graph& g = *c.graph;
+    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, gains_);
+    // The force is measured against k, its strength in the open; with k = 0 against theta.
+    const double unit = gains_.k > 0.0 ? gains_.k : std::max(gains_.theta, 1e-300);
+    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
+      const double along = forces[g.source(e)].dot(aco::planar_direction(g, e)) / unit;
+      const double share = 0.5 * (1.0 + std::clamp(along, -1.0, 1.0));
+      tau[e] = tau0_ * (floor_ + (1.0 - floor_) * share);
+    }
+  }
+
+ private:
+  double tau0_;
+  double floor_;
+  aco::PotentialFieldGains gains_;
+};
+
+}  // namespace
+
+ACO_PLUGIN(init, potential_field, PotentialFieldInit, "1.0",
+           "paper 000: tau(0) of a move scaled by how well it follows the potential-field force (goal attracts, high ground repels)",
+           kParams)

@@ -6,14 +6,20 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/fireworks.hpp"
+#include "aco/pso.hpp"
 
 namespace acoplan {
 namespace po = boost::program_options;
+
+const BaselineTable kBaselineTables[2] = {{"ifwa", aco::fireworks_parameters}, {"pso", aco::pso_parameters}};
+
 namespace {
 
 constexpr aco::ParamSpec kRunParameters[] = {
-    {"planner", aco::ParamType::categorical, "aco", "aco,astar",
-     "aco = the colony; astar = exact shortest path on the same graph (reference)"},
+    {"planner", aco::ParamType::categorical, "aco", "aco,astar,ifwa,pso",
+     "aco = the colony; astar = exact shortest path on the same graph (reference); ifwa = improved fireworks "
+     "(paper 004); pso = particle swarm over waypoints (paper 000's baseline)"},
     {"neighbourhood", aco::ParamType::categorical, "8", "4,8,16",
      "moves per cell: 4 straight, 8 with diagonals, 16 with knight moves"},
     {"corner-cutting", aco::ParamType::boolean, "false", "",
@@ -140,6 +146,11 @@ std::string config_file(const Request& r, const std::map<std::string, std::pair<
     out << "\n[" << slot << "]\n";
     print_section(out, table, values);
   }
+  for (const auto& baseline : kBaselineTables)
+    if (r.run.text("planner") == baseline.planner) {
+      out << "\n[" << baseline.planner << "]\n";
+      print_section(out, baseline.parameters(), r.baselines.at(baseline.planner));
+    }
   return out.str();
 }
 
@@ -167,12 +178,14 @@ Request parse_command_line(int argc, const char* const* argv) {
   add_table(general, kRunParameters, "");
   po::options_description colony("Colony");
   add_table(colony, aco::colony_parameters(), "");
+  po::options_description baselines("Baseline planners (--planner ifwa|pso)");
+  for (const auto& baseline : kBaselineTables) add_table(baselines, baseline.parameters(), std::string(baseline.planner) + ".");
   po::options_description slots("Strategies (one plugin per slot; see --list-plugins)");
   for (const char* slot : aco::kSlots)
     slots.add_options()(slot, po::value<std::string>()->value_name("PLUGIN"),
                         (std::string(slot) + " plugin [default " + aco::default_plugin(slot) + "]").c_str());
   po::options_description base;
-  base.add(general).add(colony).add(slots);
+  base.add(general).add(colony).add(baselines).add(slots);
 
   try {
     // Pass 1: which plugins, and where to find them; their options are not known yet.
@@ -223,6 +236,10 @@ Request parse_command_line(int argc, const char* const* argv) {
     }
     r.run = aco::resolve(kRunParameters, given(vm, kRunParameters, ""), "--");
     r.colony = aco::resolve(aco::colony_parameters(), given(vm, aco::colony_parameters(), ""), "--");
+    for (const auto& baseline : kBaselineTables) {
+      const std::string prefix = std::string(baseline.planner) + ".";
+      r.baselines[baseline.planner] = aco::resolve(baseline.parameters(), given(vm, baseline.parameters(), prefix), "--" + prefix);
+    }
     for (const char* slot : aco::kSlots) {
       auto& choice = r.pipeline.slots[slot];
       choice.params = given(vm, plugins[slot].first, std::string(slot) + ".");

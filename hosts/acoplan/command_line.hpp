@@ -30,9 +30,17 @@ struct Request {
 
   aco::ParameterValues run;     // planner, neighbourhood, corner-cutting, threads, scen-index, svg-pheromone
   aco::ParameterValues colony;  // ants, iterations, alpha, beta, seed, stagnation
+  std::map<std::string, aco::ParameterValues> baselines;  // "ifwa", "pso" -> that planner's parameters
   aco::PipelineSpec pipeline;
   std::unique_ptr<aco::PluginRegistry> registry;
 };
+
+// The baseline planners with a parameter table (--ifwa.radius ...), by planner name.
+struct BaselineTable {
+  const char* planner;
+  std::span<const aco::ParamSpec> (*parameters)();
+};
+extern const BaselineTable kBaselineTables[2];
 
 // Throws aco::Error with a message naming the offending option (and the nearest valid one).
 Request parse_command_line(int argc, const char* const* argv);

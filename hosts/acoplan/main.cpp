@@ -9,7 +9,9 @@
 
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
+#include "aco/fireworks.hpp"
 #include "aco/map_io.hpp"
+#include "aco/pso.hpp"
 #include "aco/svg.hpp"
 #include "command_line.hpp"
 #include "report.hpp"
@@ -71,7 +73,21 @@ Problem load_problem(const acoplan::Request& r) {
   return p;
 }
 
-// One planning run: the colony (or A*), then the smoother.
+// A baseline planner's search, with the run's seed.
+aco::PlannerResult run_baseline(const acoplan::Request& r, const aco::Graph& graph, aco::NodeId start, aco::NodeId goal,
+                                std::uint64_t seed) {
+  const std::string planner = r.run.text("planner");
+  if (planner == "ifwa") {
+    aco::FireworksSettings s = aco::fireworks_settings(r.baselines.at(planner));
+    s.seed = seed;
+    return aco::run_fireworks(graph, start, goal, s);
+  }
+  aco::PsoSettings s = aco::pso_settings(r.baselines.at(planner));
+  s.seed = seed;
+  return aco::run_pso(graph, start, goal, s);
+}
+
+// One planning run: the colony (or A*, or a baseline), then the smoother.
 acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, const Problem& problem,
                            const aco::ColonySettings& settings) {
   const aco::LoadedPipeline pipeline = aco::instantiate(*r.registry, r.pipeline);
@@ -86,6 +102,16 @@ acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, c
   } else if (r.run.text("planner") == "astar") {
     o.solved = true;
     o.grid_path = aco::astar(graph, o.start, o.goal)->nodes;
+  } else if (r.run.text("planner") != "aco") {
+    aco::PlannerResult baseline = run_baseline(r, graph, o.start, o.goal, settings.seed);
+    o.solved = baseline.solved;
+    o.grid_path = std::move(baseline.path);
+    o.iterations = baseline.iterations;
+    o.best_iteration = baseline.best_iteration;
+    o.evaluations = baseline.evaluations;
+    o.best_so_far = std::move(baseline.best_so_far);
+    if (!o.solved)
+      o.reason = "no feasible path found in " + std::to_string(o.iterations) + " iterations (try more iterations or particles)";
   } else {
     aco::ColonyResult colony = aco::run_colony(graph, o.start, o.goal, pipeline.colony(), settings);
     o.solved = colony.solved;

@@ -28,6 +28,7 @@ struct Outcome {
   int best_iteration = 0;
   double time_ms = 0.0;
   std::uint64_t ant_steps = 0;
+  std::uint64_t evaluations = 0;  // candidate solutions decoded by a baseline planner (ifwa, pso)
   std::string stopped_by;  // which rule ended the colony run
   std::vector<double> best_so_far;
   std::vector<double> iteration_best;

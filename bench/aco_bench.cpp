@@ -9,8 +9,10 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <numeric>
 
 #include "aco/error.hpp"
+#include "aco/fireworks.hpp"
 #include "aco/map_io.hpp"
 #include "aco/pipeline.hpp"
 
@@ -80,6 +82,30 @@ std::unique_ptr<aco::Map> load(const std::filesystem::path& file) {
   return aco::load_map(file);
 }
 
+// Paper 004's fireworks seeding (IFWA with the paper's settings) on its look-alike map, 1 thread.
+void time_fireworks(int repeats) {
+  const auto map = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "terrain/paper004.map");
+  const aco::Graph graph = aco::build_graph(*map, {aco::Neighbourhood::eight, true});
+  aco::FireworksSettings settings = aco::fireworks_settings(aco::resolve(aco::fireworks_parameters(), {}, ""));
+  std::vector<double> ms;
+  double mean_length = 0;
+  std::uint64_t evaluations = 0;
+  tbb::task_arena arena(1);
+  for (int i = 0; i < repeats; ++i) {
+    settings.seed = static_cast<std::uint64_t>(i + 1);
+    aco::PlannerResult r;
+    const auto began = std::chrono::steady_clock::now();
+    arena.execute([&] { r = aco::run_fireworks(graph, graph.node({0, 0}), graph.node({19, 19}), settings); });
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count());
+    mean_length += r.length / repeats;
+    evaluations += r.evaluations;
+  }
+  std::sort(ms.begin(), ms.end());
+  std::printf("\n== fireworks seeding (IFWA, paper 004 settings) on data/terrain/paper004.map, corner cutting, 1 thread ==\n");
+  std::printf("median %.2f ms, min %.2f ms, %.1f us per evaluation, mean best length %.4f\n", ms[ms.size() / 2], ms.front(),
+              1000.0 * std::accumulate(ms.begin(), ms.end(), 0.0) / double(evaluations), mean_length);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -139,6 +165,8 @@ int main(int argc, char** argv) try {
   const PruneTiming small = time_prune(registry, classic, base.last.path, 1000);
   std::printf("%-28s %9.2f us per call on the best map1 path (%zu cells -> %zu waypoints)\n", "smoother/prune",
               small.us_per_call, base.last.path.size(), small.waypoints);
+
+  time_fireworks(repeats);
 
   const std::filesystem::path large_file = std::filesystem::path(shared) / large;
   const auto scenarios = aco::load_scenarios(large_file.string() + ".scen");

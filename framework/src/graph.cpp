@@ -9,11 +9,6 @@
 namespace aco {
 namespace {
 
-struct Move {
-  int dx;
-  int dy;
-};
-
 // King moves first (straight, then diagonal), then knight moves; the order fixes edge ids and
 // so, with the seed, every run's random choices.
 constexpr std::array<Move, 16> kMoves = {{{1, 0},
@@ -51,6 +46,10 @@ bool move_clear(const Map& map, Cell from, Move m, bool corner_cutting) {
 }
 
 }  // namespace
+
+std::span<const Move> moves(Neighbourhood neighbourhood) {
+  return std::span<const Move>(kMoves).first(static_cast<std::size_t>(neighbourhood));
+}
 
 std::string describe(const GraphOptions& options) {
   return std::to_string(static_cast<int>(options.neighbourhood)) + "-neighbourhood, " +

@@ -4,15 +4,35 @@
 
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
+#include "aco/fireworks.hpp"
+#include "aco/pso.hpp"
 
 namespace aco {
 
-std::vector<std::string> planner_names() { return {"aco", "astar"}; }
+std::vector<std::string> planner_names() { return {"aco", "astar", "ifwa", "pso"}; }
 
 std::span<const ParamSpec> planner_parameters(const std::string& planner) {
   if (planner == "aco" || planner == "astar") return {};
+  if (planner == "ifwa") return fireworks_parameters();
+  if (planner == "pso") return pso_parameters();
   throw Error("unknown planner '" + planner + "'");
 }
+
+namespace {
+
+// A baseline planner's search, with the run's seed.
+PlannerResult run_baseline(const PlanRequest& request, const Graph& graph, NodeId start, NodeId goal) {
+  if (request.planner == "ifwa") {
+    FireworksSettings s = fireworks_settings(request.planner_parameters);
+    s.seed = request.colony.seed;
+    return run_fireworks(graph, start, goal, s);
+  }
+  PsoSettings s = pso_settings(request.planner_parameters);
+  s.seed = request.colony.seed;
+  return run_pso(graph, start, goal, s);
+}
+
+}  // namespace
 
 PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const PlanRequest& request) {
   const LoadedPipeline pipeline = instantiate(registry, request.pipeline);
@@ -28,6 +48,16 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
   } else if (request.planner == "astar") {
     o.solved = true;
     o.grid_path = astar(graph, start, goal)->nodes;
+  } else if (request.planner == "ifwa" || request.planner == "pso") {
+    PlannerResult baseline = run_baseline(request, graph, start, goal);
+    o.solved = baseline.solved;
+    o.grid_path = std::move(baseline.path);
+    o.iterations = baseline.iterations;
+    o.best_iteration = baseline.best_iteration;
+    o.evaluations = baseline.evaluations;
+    o.best_so_far = std::move(baseline.best_so_far);
+    if (!o.solved)
+      o.reason = "no feasible path found in " + std::to_string(o.iterations) + " iterations (try more iterations or particles)";
   } else if (request.planner == "aco") {
     ColonyResult colony = run_colony(registry, request.pipeline, pipeline, graph, start, goal, request.colony);
     o.solved = colony.solved;

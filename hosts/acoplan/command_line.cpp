@@ -6,14 +6,24 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/planning.hpp"
 
 namespace acoplan {
 namespace po = boost::program_options;
 namespace {
 
+// The planners with their own parameter table (--ifwa.radius ...).
+std::vector<std::string> baseline_planners() {
+  std::vector<std::string> names;
+  for (const auto& name : aco::planner_names())
+    if (!aco::planner_parameters(name).empty()) names.push_back(name);
+  return names;
+}
+
 constexpr aco::ParamSpec kRunParameters[] = {
-    {"planner", aco::ParamType::categorical, "aco", "aco,astar",
-     "aco = the colony; astar = exact shortest path on the same graph (reference)"},
+    {"planner", aco::ParamType::categorical, "aco", "aco,astar,ifwa,pso",
+     "aco = the colony; astar = exact shortest path on the same graph (reference); ifwa = improved fireworks "
+     "(paper 004); pso = particle swarm over waypoints (paper 000's baseline)"},
     {"neighbourhood", aco::ParamType::categorical, "8", "4,8,16",
      "moves per cell: 4 straight, 8 with diagonals, 16 with knight moves"},
     {"corner-cutting", aco::ParamType::boolean, "false", "",
@@ -140,6 +150,11 @@ std::string config_file(const Request& r, const std::map<std::string, std::pair<
     out << "\n[" << slot << "]\n";
     print_section(out, table, values);
   }
+  for (const auto& planner : baseline_planners())
+    if (r.run.text("planner") == planner) {
+      out << "\n[" << planner << "]\n";
+      print_section(out, aco::planner_parameters(planner), r.baselines.at(planner));
+    }
   return out.str();
 }
 
@@ -167,12 +182,14 @@ Request parse_command_line(int argc, const char* const* argv) {
   add_table(general, kRunParameters, "");
   po::options_description colony("Colony");
   add_table(colony, aco::colony_parameters(), "");
+  po::options_description baselines("Baseline planners (--planner ifwa|pso)");
+  for (const auto& planner : baseline_planners()) add_table(baselines, aco::planner_parameters(planner), planner + ".");
   po::options_description slots("Strategies (one plugin per slot; see --list-plugins)");
   for (const char* slot : aco::kSlots)
     slots.add_options()(slot, po::value<std::string>()->value_name("PLUGIN"),
                         (std::string(slot) + " plugin [default " + aco::default_plugin(slot) + "]").c_str());
   po::options_description base;
-  base.add(general).add(colony).add(slots);
+  base.add(general).add(colony).add(baselines).add(slots);
 
   try {
     // Pass 1: which plugins, and where to find them; their options are not known yet.
@@ -223,6 +240,11 @@ Request parse_command_line(int argc, const char* const* argv) {
     }
     r.run = aco::resolve(kRunParameters, given(vm, kRunParameters, ""), "--");
     r.colony = aco::resolve(aco::colony_parameters(), given(vm, aco::colony_parameters(), ""), "--");
+    for (const auto& planner : baseline_planners()) {
+      const std::string prefix = planner + ".";
+      const auto table = aco::planner_parameters(planner);
+      r.baselines[planner] = aco::resolve(table, given(vm, table, prefix), "--" + prefix);
+    }
     for (const char* slot : aco::kSlots) {
       auto& choice = r.pipeline.slots[slot];
       choice.params = given(vm, plugins[slot].first, std::string(slot) + ".");

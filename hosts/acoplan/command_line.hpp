@@ -30,6 +30,7 @@ struct Request {
 
   aco::ParameterValues run;     // planner, neighbourhood, corner-cutting, threads, scen-index, svg-pheromone
   aco::ParameterValues colony;  // ants, iterations, alpha, beta, seed, stagnation
+  std::map<std::string, aco::ParameterValues> baselines;  // "ifwa", "pso" -> that planner's parameters
   aco::PipelineSpec pipeline;
   std::unique_ptr<aco::PluginRegistry> registry;
 };

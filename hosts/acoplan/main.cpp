@@ -78,6 +78,8 @@ acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, c
   request.planner = r.run.text("planner");
   request.pipeline = r.pipeline;
   request.colony = settings;
+  if (const auto baseline = r.baselines.find(request.planner); baseline != r.baselines.end())
+    request.planner_parameters = baseline->second;
   acoplan::Outcome o;
   static_cast<aco::PlanOutcome&>(o) =
       aco::plan(*r.registry, graph, graph.node(problem.start), graph.node(problem.goal), request);

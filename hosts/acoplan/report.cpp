@@ -40,7 +40,12 @@ std::string pipeline_lines(const Request& request) {
   std::ostringstream out;
   const std::string planner = request.run.text("planner");
   if (planner != "aco") {
-    out << "planner:  " << planner << ", smoother=" << request.pipeline.slots.at("smoother").plugin << "\n";
+    out << "planner:  " << planner << ", smoother=" << request.pipeline.slots.at("smoother").plugin;
+    if (const auto baseline = request.baselines.find(planner); baseline != request.baselines.end()) {
+      for (const auto& [name, v] : baseline->second.all()) out << " " << planner << "." << name << "=" << aco::to_string(v);
+      out << ", seed " << request.colony.integer("seed");
+    }
+    out << "\n";
     return out.str();
   }
   out << "colony:   " << request.colony.integer("ants") << " ants x " << request.colony.integer("iterations")
@@ -74,6 +79,7 @@ nlohmann::json run_json(const aco::Graph& graph, const Outcome& o) {
   j["seed"] = o.seed;
   if (!o.solved) j["reason"] = o.reason;
   j["ant_steps"] = o.ant_steps;
+  if (o.evaluations > 0) j["evaluations"] = o.evaluations;
   if (!o.stopped_by.empty()) j["stopped_by"] = o.stopped_by;
   j["optimal_length"] = o.optimal_length ? nlohmann::json(*o.optimal_length) : nlohmann::json(nullptr);
   j["convergence"] = nlohmann::json::array();
@@ -93,6 +99,8 @@ nlohmann::json config_json(const Request& request, const aco::Graph& graph, cons
   j["neighbourhood"] = static_cast<int>(graph.options.neighbourhood);
   j["corner_cutting"] = graph.options.corner_cutting;
   j["colony"] = values(request.colony);
+  if (const auto baseline = request.baselines.find(request.run.text("planner")); baseline != request.baselines.end())
+    j[baseline->first] = values(baseline->second);
   for (const auto& [slot, params] : o.resolved)
     j["pipeline"][slot] = {{"plugin", request.pipeline.slots.at(slot).plugin}, {"params", values(params)}};
   return j;
@@ -211,6 +219,9 @@ std::string summary(const Request& request, const aco::Graph& graph, const Outco
         << " ant steps, " << std::setprecision(2) << o.time_ms << " ms";
     if (o.ant_steps > 0) out << " (" << std::setprecision(1) << o.time_ms * 1e6 / double(o.ant_steps) << " ns per ant step)";
     out << "\n";
+  } else if (o.evaluations > 0) {
+    out << "search:   best found at iteration " << o.best_iteration << " of " << o.iterations << ", " << o.evaluations
+        << " evaluations, " << std::setprecision(2) << o.time_ms << " ms\n";
   } else {
     out << "search:   " << std::setprecision(2) << o.time_ms << " ms\n";
   }

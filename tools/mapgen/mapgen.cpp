@@ -1,6 +1,7 @@
-// aco_mapgen OUTDIR: writes the look-alike maps of the papers' 20x20 experiments (and paper 003's
-// 15x15 figure) as Moving AI .map files, each with a one-line .scen whose optimal length is exact
-// A* on the 8-neighbourhood without corner cutting.
+// aco_mapgen OUTDIR [TERRAIN_OUTDIR]: writes the look-alike maps of the papers' 20x20 experiments
+// (and paper 003's 15x15 figure) into OUTDIR, and paper 004's into TERRAIN_OUTDIR if given, as
+// Moving AI .map files, each with a one-line .scen whose optimal length is exact A* on the
+// 8-neighbourhood without corner cutting.
 //
 // The papers' maps exist only as figures; these maps imitate them (obstacle kinds, placement,
 // random density), they are not the originals. See data/maps/papers/README.md.
@@ -270,6 +271,29 @@ PaperMap paper003_15() {
   return m;
 }
 
+// Paper 004 (section 2, fig. 2-4): a 20x20 map "with criss-crossing obstacles", horizontal and
+// vertical bars that cross or meet in pluses, Ts and Ls, with gaps between them. No random cells.
+// Start top left, goal bottom right.
+PaperMap paper004() {
+  PaperMap m{"paper004", OccupancyGrid(20, 20, "paper004"), {0, 0}, {19, 19}, 1, "no random cells"};
+  auto& g = m.grid;
+  fill_rect(g, 2, 4, 9, 4);      // plus, upper left: horizontal bar
+  fill_rect(g, 6, 1, 6, 8);      //                    vertical bar
+  fill_rect(g, 10, 0, 10, 3);    // stub from the top edge
+  fill_rect(g, 14, 3, 18, 3);    // T, upper right: top bar
+  fill_rect(g, 16, 3, 16, 8);    //                 stem
+  fill_rect(g, 8, 10, 16, 10);   // plus, centre: horizontal bar
+  fill_rect(g, 12, 6, 12, 14);   //               vertical bar
+  fill_rect(g, 0, 8, 3, 8);      // bar from the left edge
+  fill_rect(g, 4, 11, 4, 17);    // plus, lower left: vertical bar
+  fill_rect(g, 1, 14, 8, 14);    //                   horizontal bar
+  fill_rect(g, 8, 17, 13, 17);   // L, bottom: horizontal leg
+  fill_rect(g, 8, 15, 8, 17);    //            vertical leg
+  fill_rect(g, 15, 14, 19, 14);  // bar into the right edge
+  fill_rect(g, 16, 16, 16, 18);  // short post above the goal's corner
+  return m;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Output.
 
@@ -314,15 +338,21 @@ void write_map(const PaperMap& m, const std::filesystem::path& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::cerr << "usage: aco_mapgen OUTDIR\n"
-                 "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR\n";
+  if (argc != 2 && argc != 3) {
+    std::cerr << "usage: aco_mapgen OUTDIR [TERRAIN_OUTDIR]\n"
+                 "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR,\n"
+                 "and paper004 into TERRAIN_OUTDIR if given (data/terrain)\n";
     return 1;
   }
   try {
     const std::filesystem::path dir = argv[1];
     std::filesystem::create_directories(dir);
     for (const auto& make : {paper001, paper002, paper003_20, paper003_15}) write_map(make(), dir);
+    if (argc == 3) {
+      const std::filesystem::path terrain_dir = argv[2];
+      std::filesystem::create_directories(terrain_dir);
+      write_map(paper004(), terrain_dir);
+    }
   } catch (const std::exception& e) {
     std::cerr << "aco_mapgen: " << e.what() << "\n";
     return 1;

@@ -26,6 +26,14 @@ struct GraphOptions {
 
 std::string describe(const GraphOptions& options);  // "8-neighbourhood, no corner cutting"
 
+struct Move {
+  int dx;
+  int dy;
+};
+
+// The moves of a neighbourhood in the graph's move order: straight, then diagonal, then knight.
+std::span<const Move> moves(Neighbourhood neighbourhood);
+
 struct BOOST_SYMBOL_VISIBLE Graph {
   const Map* map = nullptr;
   GraphOptions options;

@@ -24,7 +24,7 @@ struct PlanRequest {
   std::string planner = "aco";
   PipelineSpec pipeline;                          // the smoother applies to every planner
   ColonySettings colony;                          // seed, iterations... (its seed seeds every planner)
-  std::map<std::string, std::string> planner_keys;  // the planner's own parameters, by name
+  ParameterValues planner_parameters;  // resolved from planner_parameters(planner); empty for aco, astar
 };
 
 struct PlanOutcome {
@@ -42,6 +42,7 @@ struct PlanOutcome {
   int best_iteration = 0;  // first that reached the final best
   double time_ms = 0.0;
   std::uint64_t ant_steps = 0;
+  std::uint64_t evaluations = 0;  // candidate solutions decoded by a baseline planner (ifwa, pso)
   std::string stopped_by;  // which rule ended the run
   std::vector<double> best_so_far;
   std::vector<double> iteration_best;

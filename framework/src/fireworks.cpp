@@ -1,0 +1,283 @@
+#include "aco/fireworks.hpp"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <numeric>
+
+#include "aco/error.hpp"
+#include "aco/rng.hpp"
+
+namespace aco {
+namespace {
+
+constexpr ParamSpec kFireworksParameters[] = {
+    {"iterations", ParamType::integer, "50", "1:1000000", "generations G_max"},
+    {"fireworks", ParamType::integer, "15", "1:100000", "fireworks kept from one generation to the next"},
+    {"mutation_sparks", ParamType::integer, "10", "0:100000", "Gaussian mutation sparks per generation"},
+    {"sparks", ParamType::integer, "5", "1:100000", "explosion count m: sparks shared out among the fireworks by fitness"},
+    {"radius", ParamType::real, "3", "(0:1e9]", "explosion radius A^ (largest amplitude) at the first generation"},
+    {"radius_end", ParamType::real, "0.1", "(0:1]",
+     "annealing: the radius cools geometrically to radius x radius_end at the last generation (1 = constant)"},
+    {"a", ParamType::real, "0.3", "0:1", "each firework makes at least round(a m) explosion sparks"},
+    {"b", ParamType::real, "0.5", "0:1", "each firework makes at most round(b m) explosion sparks (a <= b)"},
+    {"inertia_start", ParamType::real, "0.9", "0:10",
+     "mutation inertia weight w at the first generation: a mutated weight is multiplied by 1 + w N(0,1)"},
+    {"inertia_end", ParamType::real, "0.4", "0:10", "mutation inertia weight at the last generation (linear in between)"},
+    {"weight_min", ParamType::real, "0.01", "(0:1e9)", "smallest node weight a_j (positive: every move stays possible)"},
+    {"weight_max", ParamType::real, "1", "(0:1e9]", "largest node weight a_j"},
+};
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+using Weights = std::vector<double>;
+
+struct Spark {
+  Weights weights;  // per active node
+  std::vector<NodeId> path;
+  double fitness = 0.0;
+};
+
+class Search {
+ public:
+  Search(const Graph& graph, NodeId start, NodeId goal, const FireworksSettings& settings)
+      : g_(graph), start_(start), goal_(goal), s_(settings), index_(graph.num_nodes(), -1),
+        attraction_(graph.num_nodes(), 0.0) {
+    for (NodeId n = 0; n < g_.num_nodes(); ++n) {
+      if (g_.degree(n) == 0) continue;
+      index_[n] = static_cast<int>(active_.size());
+      active_.push_back(n);
+      attraction_[n] = n == goal_ ? 0.0 : 1.0 / g_.distance(n, goal_);
+    }
+    // Longer than any walk without repeated nodes: each edge cost counted once per direction.
+    penalty_ = std::accumulate(g_.costs.begin(), g_.costs.end(), 1.0);
+  }
+
+  PlannerResult run() {
+    PlannerResult r;
+    std::vector<Spark> fireworks(s_.fireworks);
+    tbb::parallel_for(0, s_.fireworks, [&](int i) {
+      Rng rng = Rng::stream(s_.seed, 0, static_cast<std::uint64_t>(i));
+      Spark& f = fireworks[i];
+      f.weights.resize(active_.size());
+      for (double& w : f.weights) w = rng.uniform(s_.weight_min, s_.weight_max);
+      evaluate(f, rng);
+    });
+    r.evaluations += fireworks.size();
+    Spark best_so_far = *std::min_element(fireworks.begin(), fireworks.end(), by_fitness);
+
+    for (int generation = 1; generation <= s_.iterations; ++generation) {
+      std::vector<Spark> pool = std::move(fireworks);
+      std::vector<Spark> sparks = make_sparks(pool, generation);
+      r.evaluations += sparks.size();
+      std::move(sparks.begin(), sparks.end(), std::back_inserter(pool));
+      fireworks = select(std::move(pool), generation);
+      if (fireworks[0].fitness < best_so_far.fitness) best_so_far = fireworks[0];  // select() puts the best first
+      r.best_so_far.push_back(best_so_far.path.empty() ? PlannerResult::none : best_so_far.fitness);
+    }
+    r.iterations = s_.iterations;
+    if (best_so_far.path.empty()) return r;
+    r.solved = true;
+    r.path = std::move(best_so_far.path);
+    r.length = best_so_far.fitness;
+    r.finish();
+    return r;
+  }
+
+ private:
+  static bool by_fitness(const Spark& x, const Spark& y) { return x.fitness < y.fitness; }
+
+  // Explosion sparks of every firework, then the mutation sparks; spark k draws from stream
+  // (seed, generation, k) for its weights and its walk.
+  std::vector<Spark> make_sparks(const std::vector<Spark>& fireworks, int generation) const {
+    std::vector<double> fitness;
+    for (const auto& f : fireworks) fitness.push_back(f.fitness);
+    const auto counts = explosion_counts(fitness, s_.sparks, s_.a, s_.b);
+    const auto amplitudes = explosion_amplitudes(fitness, explosion_radius(s_, generation));
+    std::vector<int> exploding;  // parent of each explosion spark
+    for (std::size_t i = 0; i < fireworks.size(); ++i) exploding.insert(exploding.end(), counts[i], static_cast<int>(i));
+    const double progress = s_.iterations > 1 ? double(generation - 1) / (s_.iterations - 1) : 0.0;
+    const double inertia = s_.inertia_start + (s_.inertia_end - s_.inertia_start) * progress;
+
+    std::vector<Spark> sparks(exploding.size() + s_.mutation_sparks);
+    tbb::parallel_for(std::size_t{0}, sparks.size(), [&](std::size_t k) {
+      Rng rng = Rng::stream(s_.seed, static_cast<std::uint64_t>(generation), k);
+      Spark& spark = sparks[k];
+      if (k < exploding.size()) {
+        spark.weights = fireworks[exploding[k]].weights;
+        const double amplitude = amplitudes[exploding[k]];
+        for (double& w : spark.weights)
+          if (rng.uniform() < 0.5) w = into_range(w + amplitude * rng.uniform(-1.0, 1.0));
+      } else {
+        spark.weights = fireworks[rng.below(fireworks.size())].weights;
+        for (double& w : spark.weights)
+          if (rng.uniform() < 0.5) w = into_range(w * (1.0 + inertia * rng.normal()));
+      }
+      evaluate(spark, rng);
+    });
+    return sparks;
+  }
+
+  // Keeps the best, then draws the other fireworks without replacement with probability
+  // proportional to their summed distance to every candidate (paper 004 eq. 7-8).
+  std::vector<Spark> select(std::vector<Spark> pool, int generation) const {
+    std::stable_sort(pool.begin(), pool.end(), by_fitness);
+    if (pool.size() <= static_cast<std::size_t>(s_.fireworks)) return pool;
+    std::vector<double> spread(pool.size(), 0.0);
+    tbb::parallel_for(std::size_t{0}, pool.size(), [&](std::size_t i) {
+      for (const auto& other : pool) {
+        double d2 = 0.0;
+        for (std::size_t k = 0; k < active_.size(); ++k) d2 += (pool[i].weights[k] - other.weights[k]) * (pool[i].weights[k] - other.weights[k]);
+        spread[i] += std::sqrt(d2);
+      }
+    });
+    Rng rng = Rng::stream(s_.seed, static_cast<std::uint64_t>(generation), pool.size());
+    std::vector<bool> taken(pool.size(), false);
+    std::vector<Spark> kept;
+    for (std::size_t pick = 0; kept.size() < static_cast<std::size_t>(s_.fireworks);) {
+      kept.push_back(std::move(pool[pick]));
+      taken[pick] = true;
+      spread[pick] = 0.0;
+      // Candidates identical to all others have no spread: then the next fittest one.
+      const bool spread_left = std::any_of(spread.begin(), spread.end(), [](double v) { return v > 0.0; });
+      pick = spread_left ? roulette(spread, rng) : std::find(taken.begin(), taken.end(), false) - taken.begin();
+    }
+    return kept;
+  }
+
+  // Paper 004 eq. 6: a weight outside [min, max] is mapped to min + |w| mod (max - min).
+  double into_range(double w) const {
+    if (w >= s_.weight_min && w <= s_.weight_max) return w;
+    return s_.weight_min + std::fmod(std::abs(w), s_.weight_max - s_.weight_min);
+  }
+
+  // The walk of paper 004 eq. 1 with back-off: from the current node, an untried neighbour j
+  // with probability a_j / d(j, goal) / sum (the goal itself at once). A dead end is left and
+  // stays tried. Fitness = the walk's length, or the penalty if it backs off past the start.
+  void evaluate(Spark& spark, Rng& rng) const {
+    std::vector<std::uint8_t> tried(g_.num_nodes(), 0);
+    std::vector<NodeId>& walk = spark.path;
+    walk.assign(1, start_);
+    tried[start_] = 1;
+    std::vector<double> chances;
+    std::vector<NodeId> options;
+    while (!walk.empty() && walk.back() != goal_) {
+      const NodeId at = walk.back();
+      chances.clear();
+      options.clear();
+      NodeId next = -1;
+      for (EdgeId e = g_.edges_begin(at); e < g_.edges_end(at) && next < 0; ++e) {
+        const NodeId j = g_.targets[e];
+        if (tried[j]) continue;
+        if (j == goal_) next = j;
+        options.push_back(j);
+        chances.push_back(spark.weights[index_[j]] * attraction_[j]);
+      }
+      if (next < 0 && !options.empty()) next = options[roulette(chances, rng)];
+      if (next < 0) {
+        walk.pop_back();
+        continue;
+      }
+      tried[next] = 1;
+      walk.push_back(next);
+    }
+    spark.fitness = walk.empty() ? penalty_ : path_length(g_, walk);
+  }
+
+  // Index drawn with probability chances[i] / sum; never one with chance 0 (needs one positive).
+  static std::size_t roulette(const std::vector<double>& chances, Rng& rng) {
+    double r = rng.uniform() * std::accumulate(chances.begin(), chances.end(), 0.0);
+    std::size_t last_positive = 0;
+    for (std::size_t i = 0; i < chances.size(); ++i) {
+      if (chances[i] <= 0.0) continue;
+      if ((r -= chances[i]) < 0.0) return i;
+      last_positive = i;
+    }
+    return last_positive;  // rounding left r just above 0
+  }
+
+  const Graph& g_;
+  NodeId start_;
+  NodeId goal_;
+  FireworksSettings s_;
+  std::vector<NodeId> active_;  // the nodes a firework has a weight for: those with edges
+  std::vector<int> index_;      // node -> its weight's index in a firework, or -1
+  std::vector<double> attraction_;  // per node: 1 / distance to the goal
+  double penalty_ = 0.0;
+};
+
+}  // namespace
+
+std::span<const ParamSpec> fireworks_parameters() { return kFireworksParameters; }
+
+FireworksSettings fireworks_settings(const ParameterValues& v) {
+  FireworksSettings s;
+  s.iterations = static_cast<int>(v.integer("iterations"));
+  s.fireworks = static_cast<int>(v.integer("fireworks"));
+  s.mutation_sparks = static_cast<int>(v.integer("mutation_sparks"));
+  s.sparks = static_cast<int>(v.integer("sparks"));
+  s.radius = v.real("radius");
+  s.radius_end = v.real("radius_end");
+  s.a = v.real("a");
+  s.b = v.real("b");
+  s.inertia_start = v.real("inertia_start");
+  s.inertia_end = v.real("inertia_end");
+  s.weight_min = v.real("weight_min");
+  s.weight_max = v.real("weight_max");
+  if (s.a > s.b)
+    throw Error("fireworks: a = " + to_string(ParamValue(s.a)) + " is above b = " + to_string(ParamValue(s.b)) +
+                " (the spark count bounds are [round(a m), round(b m)])");
+  if (s.weight_min >= s.weight_max)
+    throw Error("fireworks: weight_min = " + to_string(ParamValue(s.weight_min)) + " must be below weight_max = " +
+                to_string(ParamValue(s.weight_max)));
+  return s;
+}
+
+std::vector<int> explosion_counts(std::span<const double> fitness, int m, double a, double b) {
+  const double worst = *std::max_element(fitness.begin(), fitness.end());
+  double total = kEps;
+  for (double f : fitness) total += worst - f;
+  const long low = std::lround(a * m), high = std::lround(b * m);
+  std::vector<int> counts;
+  for (double f : fitness) counts.push_back(static_cast<int>(std::clamp(std::lround(m * (worst - f + kEps) / total), low, high)));
+  return counts;
+}
+
+std::vector<double> explosion_amplitudes(std::span<const double> fitness, double radius) {
+  const double best = *std::min_element(fitness.begin(), fitness.end());
+  double total = kEps;
+  for (double f : fitness) total += f - best;
+  std::vector<double> amplitudes;
+  for (double f : fitness) amplitudes.push_back(radius * (f - best + kEps) / total);
+  return amplitudes;
+}
+
+double explosion_radius(const FireworksSettings& s, int generation) {
+  return s.radius * std::pow(s.radius_end, double(generation) / s.iterations);
+}
+
+PlannerResult run_fireworks(const Graph& graph, NodeId start, NodeId goal, const FireworksSettings& s) {
+  for (const auto& [node, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
+    if (node < 0 || node >= graph.num_nodes()) throw Error(std::string("fireworks: ") + what + " node is outside the map");
+    if (!graph.passable(node)) throw Error(std::string("fireworks: ") + what + " " + to_string(graph.cell(node)) + " is a blocked cell");
+  }
+  if (s.iterations < 1 || s.fireworks < 1 || s.sparks < 1 || s.mutation_sparks < 0)
+    throw Error("fireworks: iterations, fireworks and sparks must be at least 1, mutation_sparks at least 0");
+  if (!(s.a >= 0 && s.a <= s.b && s.b <= 1)) throw Error("fireworks: need 0 <= a <= b <= 1");
+  if (!(s.weight_min > 0 && s.weight_min < s.weight_max && std::isfinite(s.weight_max)))
+    throw Error("fireworks: need 0 < weight_min < weight_max");
+  if (!(s.radius > 0 && std::isfinite(s.radius) && s.radius_end > 0 && s.radius_end <= 1))
+    throw Error("fireworks: need radius > 0 and radius_end in (0, 1]");
+  if (start == goal) {
+    PlannerResult trivial;
+    trivial.solved = true;
+    trivial.path = {start};
+    trivial.length = 0.0;
+    return trivial;
+  }
+  return Search(graph, start, goal, s).run();
+}
+
+}  // namespace aco

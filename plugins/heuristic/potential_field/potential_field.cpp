@@ -40,7 +40,7 @@ class PotentialFieldHeuristic final : public aco::Heuristic {
       for (std::size_t e = 0; e < base_.size(); ++e) base_beta_[e] = std::pow(base_[e], beta_);
     }
     const double w = weight(c);
-    const bool whole = beta_ == std::floor(beta_) && beta_ <= 64.0;
+    const bool whole = beta_ >= 0.0 && beta_ <= 64.0 && beta_ == std::floor(beta_);
     for (std::size_t e = 0; e < eta_beta.size(); ++e) {
       if (boost_[e] == 0.0 || w == 0.0) {
         eta_beta[e] = base_beta_[e];

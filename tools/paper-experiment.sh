@@ -3,9 +3,10 @@
 # seeds (1-30): the traditional colony, each of the paper's plugins alone, and all of them
 # together. Prints mean, standard deviation, min and max of length, cells, turns, best iteration
 # and iterations run for every configuration.
-#   tools/paper-experiment.sh 001|002|003 [SCENARIO]
-# SCENARIO defaults to the paper's look-alike map (data/maps/papers/); any Moving AI .scen file
-# works, e.g. data/maps/classic20/map1.txt.scen. Results and their discussion:
+#   tools/paper-experiment.sh 000|001|002|003|004 [SCENARIO]
+# SCENARIO defaults to the paper's look-alike map (data/maps/papers/, data/terrain/); any Moving
+# AI .scen file works, e.g. data/maps/classic20/map1.txt.scen. Paper 000 runs its three terrains
+# (20x20, 30x30, 50x50) unless a SCENARIO is given. Results and their discussion:
 # data/experiments/README.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,6 +25,19 @@ run() {
 }
 
 case "$paper" in
+  000)
+    # 50 ants, 100 iterations, alpha 1, beta 7; EPF-ACO: q0 0.8, local evaporation 0.1, global
+    # 0.2, repulsion range 2, 16-neighbourhood, bidirectional search. Classic ACO: Ant System
+    # with the same evaporation on the 8-neighbourhood. PSO: 50 particles, 100 iterations.
+    seeds=${SEEDS:-20}
+    for scen in ${2:-data/terrain/epf20.asc.scen data/terrain/epf30.asc.scen data/terrain/epf50.asc.scen}; do
+      common=(--scen "$scen" --ants 50 --iterations 100 --alpha 1 --beta 7)
+      run "$scen: PSO (50 particles, 100 iterations)" --scen "$scen" --planner pso
+      run "$scen: classic ACO (ant_system rho 0.2)" "${common[@]}" --update.rho 0.2
+      run "$scen: EPF-ACO (potential-field init + heuristic, elite, bidirectional, 16-nbhd)" "${common[@]}" \
+        --neighbourhood 16 --search bidirectional --init potential_field --heuristic potential_field --update elite
+    done
+    ;;
   001)
     # m = 20 ants, N = 200 iterations, alpha = beta = 1, stop when 90 % of an iteration's ants
     # follow the same path.
@@ -57,8 +71,20 @@ case "$paper" in
     run "improved + secondary optimisation (prune)" "${common[@]}" --beta 13.7 --init obstacle_density --heuristic adaptive \
       "${wolf[@]}" --smoother prune
     ;;
+  004)
+    # IFWA: 50 generations, 15 fireworks, 10 mutation sparks, m 5, radius 3, a 0.3, b 0.5.
+    # ACO alone: 50 iterations, 50 ants, alpha 1, beta 3, rho 0.5, Q 5. Hybrid: the fireworks'
+    # best path seeds the pheromone, then 50 iterations, 50 ants, alpha 2, beta 8, rho 0.9, Q 1,
+    # dead-end ants back off.
+    scen=${2:-data/terrain/paper004.map.scen}
+    run "IFWA alone" --scen "$scen" --corner-cutting --planner ifwa
+    run "ACO alone (ant_system)" --scen "$scen" --corner-cutting --ants 50 --iterations 50 --alpha 1 --beta 3 \
+      --update.rho 0.5 --update.q 5
+    run "hybrid: fireworks-seeded ACO with backtracking" --scen "$scen" --corner-cutting --ants 50 --iterations 50 \
+      --alpha 2 --beta 8 --update.rho 0.9 --update.q 1 --init fireworks --deadlock backtrack_penalty
+    ;;
   *)
-    echo "usage: $0 001|002|003 [SCENARIO]" >&2
+    echo "usage: $0 000|001|002|003|004 [SCENARIO]" >&2
     exit 2
     ;;
 esac

@@ -103,9 +103,10 @@ TEST_CASE("ESRI ASCII grid: malformed files name the line and the problem", "[te
   CHECK_THAT(error_of(header + "1 2 x3\n"), Contains("inline.asc:6: height 'x3' is not a number"));
   CHECK_THAT(error_of(header + "1 nan\n"), Contains("inline.asc:6: height 'nan' is not a number"));
   CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 0\n1 2\n"),
-             Contains("inline.asc:6: cellsize '0' is not positive"));
+             Contains("inline.asc:5: cellsize '0' is not positive"));
   CHECK_THAT(error_of("ncols -2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2\n"),
-             Contains("ncols '-2' is not a whole number"));
+             Contains("inline.asc:1: ncols '-2' is not a whole number"));
+  CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner west\n"), Contains("inline.asc:3: xllcorner 'west' is not a number"));
   CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\n1 2\n"), Contains("inline.asc:5: header lacks 'cellsize'"));
   CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\nrows 3\n1 2\n"),
              Contains("inline.asc:6: unknown header key 'rows'"));

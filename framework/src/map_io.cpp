@@ -270,7 +270,7 @@ TerrainMap read_esri_ascii(std::istream& in, const std::string& name, const Terr
   LineReader reader(in, name);
   static const char* const kKeys = "ncols, nrows, xllcorner or xllcenter, yllcorner or yllcenter, cellsize, NODATA_value";
   // Header: "KEY VALUE" lines until the first line that starts like a number.
-  std::map<std::string, std::string> header;  // lower-case key -> value text
+  std::map<std::string, double> header;  // lower-case key -> value
   std::string line;
   bool data_started = false;
   while (reader.next(line)) {
@@ -287,7 +287,10 @@ TerrainMap read_esri_ascii(std::istream& in, const std::string& name, const Terr
     if (std::find(known.begin(), known.end(), key) == known.end())
       reader.fail("unknown header key '" + words[0] + "' (expected " + kKeys + ")");
     if (words.size() != 2) reader.fail("header line '" + line + "' should be '" + words[0] + " VALUE'");
-    if (!header.emplace(key, words[1]).second) reader.fail("header key '" + words[0] + "' is given twice");
+    const double value = key == "ncols" || key == "nrows" ? parse_dimension(reader, words[1], words[0])
+                                                          : parse_real(reader, words[1], words[0]);
+    if (key == "cellsize" && !(value > 0)) reader.fail("cellsize '" + words[1] + "' is not positive");
+    if (!header.emplace(key, value).second) reader.fail("header key '" + words[0] + "' is given twice");
   }
   for (const char* key : {"ncols", "nrows", "cellsize"})
     if (!header.count(key)) reader.fail(std::string("header lacks '") + key + "' (an ESRI ASCII grid needs " + kKeys + ")");
@@ -297,15 +300,12 @@ TerrainMap read_esri_ascii(std::istream& in, const std::string& name, const Terr
       reader.fail("header needs exactly one of '" + corner + "' and '" + centre + "'");
   }
   if (!data_started) reader.fail("no heights after the header");
-  // Header values are checked where the data starts: the header lines are behind us.
-  const int ncols = parse_dimension(reader, header["ncols"], "ncols");
-  const int nrows = parse_dimension(reader, header["nrows"], "nrows");
-  const double cell_size = parse_real(reader, header["cellsize"], "cellsize");
-  if (!(cell_size > 0)) reader.fail("cellsize '" + header["cellsize"] + "' is not positive");
-  const double nodata = header.count("nodata_value") ? parse_real(reader, header["nodata_value"], "NODATA_value") : -9999.0;
+  const int ncols = static_cast<int>(header["ncols"]);
+  const int nrows = static_cast<int>(header["nrows"]);
+  const double cell_size = header["cellsize"];
+  const double nodata = header.count("nodata_value") ? header["nodata_value"] : -9999.0;
   auto lower_left = [&](const std::string& axis) {
-    if (header.count(axis + "llcorner")) return parse_real(reader, header[axis + "llcorner"], axis + "llcorner");
-    return parse_real(reader, header[axis + "llcenter"], axis + "llcenter") - cell_size / 2;
+    return header.count(axis + "llcorner") ? header[axis + "llcorner"] : header[axis + "llcenter"] - cell_size / 2;
   };
   const Eigen::Vector2d corner(lower_left("x"), lower_left("y"));
 

@@ -159,7 +159,7 @@ TEST_CASE("acoplan rejects malformed map files with the file, line and problem",
 }
 
 TEST_CASE("acoplan rejects blocked, out-of-range and malformed start and goal cells", "[acoplan][bad-input]") {
-  expect_error({"--map", map1, "--start", "6,0", "--goal", "19,19"}, "start (6,0) is a blocked cell");
+  expect_error({"--map", map1, "--start", "6,0", "--goal", "19,19"}, "start (6,0) is blocked: an obstacle (" + map1 + ")");
   expect_error({"--map", map1, "--start", "0,0", "--goal", "25,3"}, "goal (25,3) is outside the 20x20 map");
   expect_error({"--map", map1, "--start", "-1,0", "--goal", "19,19"}, "start (-1,0) is outside");
   expect_error({"--map", map1, "--start", "3", "--goal", "19,19"}, "--start: '3' is not a cell");

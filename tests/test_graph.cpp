@@ -124,7 +124,8 @@ TEST_CASE("Open 5x5 grid: edge counts, degrees and costs per neighbourhood", "[g
 TEST_CASE("Corner rule for diagonal steps", "[graph]") {
   SECTION("both side cells blocked: only with corner cutting") {
     const auto map = test::grid({".#", "#."});
-    for (auto n : {aco::Neighbourhood::eight, aco::Neighbourhood::sixteen}) {
+    {  // (a 2x2 map has no room for the 16-neighbourhood's knight moves: an error, see [terrain])
+      const auto n = aco::Neighbourhood::eight;
       const auto strict = build(map, n, false);
       CHECK_FALSE(has_edge(strict, {0, 0}, {1, 1}));
       CHECK_FALSE(has_edge(strict, {1, 1}, {0, 0}));

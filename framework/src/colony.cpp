@@ -421,7 +421,9 @@ ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, co
 void check_inputs(const Graph& graph, NodeId start, NodeId goal, const Pipeline& p, const ColonySettings& s) {
   for (const auto& [node, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
     if (node < 0 || node >= graph.num_nodes()) throw Error(std::string(what) + " node is outside the map");
-    if (!graph.passable(node)) throw Error(std::string(what) + " " + to_string(graph.cell(node)) + " is a blocked cell");
+    if (!graph.passable(node))
+      throw Error(std::string(what) + " " + to_string(graph.cell(node)) + " is a blocked cell (" +
+                  graph.map->blocked_reason(graph.cell(node)) + ")");
   }
   if (!p.init || !p.heuristic || !p.update || !p.deadlock)
     throw Error("a colony needs an init, a heuristic, an update and a deadlock strategy");

@@ -1,5 +1,6 @@
 #include "aco/graph.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <deque>
@@ -83,6 +84,11 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   g.options = options;
   g.width = map.width();
   g.height = map.height();
+  // A knight move needs room: without any, a "16-neighbourhood" would silently be the 8 one.
+  const bool knight_fits = std::min(g.width, g.height) >= 2 && std::max(g.width, g.height) >= 3;
+  if (options.neighbourhood == Neighbourhood::sixteen && !knight_fits)
+    throw Error("16-neighbourhood needs a map at least 3 cells long in one direction and 2 in the other; " + map.name() +
+                " is " + std::to_string(g.width) + "x" + std::to_string(g.height));
   const int moves = static_cast<int>(options.neighbourhood);
   const int n = g.num_nodes();
   g.offsets.assign(n + 1, 0);
@@ -154,7 +160,6 @@ bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
   // current column after crossing x-distance ix + 1/2, i.e. at t = (2*ix + 1) / (2*|dx|), and
   // the current row at t = (2*iy + 1) / (2*|dy|). Cross-multiplied: compare (2*ix + 1) * |dy|
   // with (2*iy + 1) * |dx|; equal means both at once, i.e. through a grid vertex.
-  // Only passability is checked, not step_allowed(): slopes along a segment are a later concern.
   if (!map.passable(a)) return false;
   const std::int64_t dx = std::int64_t{b.x} - a.x;
   const std::int64_t dy = std::int64_t{b.y} - a.y;
@@ -165,6 +170,7 @@ bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
   std::int64_t ix = 0, iy = 0;  // columns and rows crossed so far
   Cell c = a;
   while (ix < adx || iy < ady) {
+    const Cell previous = c;
     // With one direction exhausted the other comes first; otherwise both are strictly inside
     // the segment and the cross-multiplied comparison is valid (adx, ady > 0).
     std::int64_t order = 0;  // < 0: column boundary first, > 0: row boundary first, 0: vertex
@@ -186,7 +192,7 @@ bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
       ++ix;
       ++iy;
     }
-    if (!map.passable(c)) return false;
+    if (!map.passable(c) || !map.step_allowed(previous, c)) return false;
   }
   return true;
 }

@@ -17,6 +17,11 @@ Eigen::Vector3d Map::position(Cell c) const { return {double(c.x), double(c.y), 
 
 bool Map::step_allowed(Cell, Cell) const { return true; }
 
+std::string Map::blocked_reason(Cell c) const {
+  if (!contains(c)) return "outside the map";
+  return passable(c) ? "" : "an obstacle";
+}
+
 OccupancyGrid::OccupancyGrid(int width, int height, std::string name)
     : width_(width), height_(height), name_(std::move(name)) {
   if (width <= 0 || height <= 0)

@@ -2,9 +2,13 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <fstream>
+#include <limits>
+#include <map>
 #include <sstream>
 
 #include "aco/error.hpp"
@@ -22,10 +26,12 @@ class LineReader {
     ++number_;
     return true;
   }
-  [[noreturn]] void fail(const std::string& what) const {
-    throw Error(name_ + ":" + std::to_string(number_) + ": " + what);
+  [[noreturn]] void fail(const std::string& what) const { fail_at(number_, what); }
+  [[noreturn]] void fail_at(int line, const std::string& what) const {
+    throw Error(name_ + ":" + std::to_string(line) + ": " + what);
   }
   const std::string& name() const { return name_; }
+  int line_number() const { return number_; }
 
  private:
   std::istream& in_;
@@ -54,6 +60,18 @@ int parse_dimension(const LineReader& reader, const std::string& text, const std
   if (!parse_number(text, value) || value <= 0 || value > 100000)
     reader.fail(what + " '" + text + "' is not a whole number between 1 and 100000");
   return value;
+}
+
+// A finite real number, as the heights and header values of an ESRI grid must be.
+double parse_real(const LineReader& reader, const std::string& text, const std::string& what) {
+  double value = 0;
+  if (!parse_number(text, value) || !std::isfinite(value)) reader.fail(what + " '" + text + "' is not a number");
+  return value;
+}
+
+std::string lower_case(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
 }
 
 std::ifstream open(const std::filesystem::path& file) {
@@ -248,9 +266,92 @@ OccupancyGrid load_ros_map(const std::filesystem::path& yaml_file) {
   return grid;
 }
 
-std::unique_ptr<Map> load_map(const std::filesystem::path& file) {
+TerrainMap read_esri_ascii(std::istream& in, const std::string& name, const TerrainOptions& options) {
+  LineReader reader(in, name);
+  static const char* const kKeys = "ncols, nrows, xllcorner or xllcenter, yllcorner or yllcenter, cellsize, NODATA_value";
+  // Header: "KEY VALUE" lines until the first line that starts like a number.
+  std::map<std::string, double> header;  // lower-case key -> value
+  std::string line;
+  bool data_started = false;
+  while (reader.next(line)) {
+    const auto words = split_whitespace(line);
+    if (words.empty()) continue;
+    const char first = words[0].front();
+    if (std::isdigit(static_cast<unsigned char>(first)) || first == '-' || first == '+' || first == '.') {
+      data_started = true;
+      break;
+    }
+    const std::string key = lower_case(words[0]);
+    static const std::vector<std::string> known = {"ncols",     "nrows",     "xllcorner", "xllcenter",
+                                                   "yllcorner", "yllcenter", "cellsize",  "nodata_value"};
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      reader.fail("unknown header key '" + words[0] + "' (expected " + kKeys + ")");
+    if (words.size() != 2) reader.fail("header line '" + line + "' should be '" + words[0] + " VALUE'");
+    const double value = key == "ncols" || key == "nrows" ? parse_dimension(reader, words[1], words[0])
+                                                          : parse_real(reader, words[1], words[0]);
+    if (key == "cellsize" && !(value > 0)) reader.fail("cellsize '" + words[1] + "' is not positive");
+    if (!header.emplace(key, value).second) reader.fail("header key '" + words[0] + "' is given twice");
+  }
+  for (const char* key : {"ncols", "nrows", "cellsize"})
+    if (!header.count(key)) reader.fail(std::string("header lacks '") + key + "' (an ESRI ASCII grid needs " + kKeys + ")");
+  for (const char* axis : {"x", "y"}) {
+    const std::string corner = std::string(axis) + "llcorner", centre = std::string(axis) + "llcenter";
+    if (header.count(corner) == header.count(centre))
+      reader.fail("header needs exactly one of '" + corner + "' and '" + centre + "'");
+  }
+  if (!data_started) reader.fail("no heights after the header");
+  const int ncols = static_cast<int>(header["ncols"]);
+  const int nrows = static_cast<int>(header["nrows"]);
+  const double cell_size = header["cellsize"];
+  const double nodata = header.count("nodata_value") ? header["nodata_value"] : -9999.0;
+  auto lower_left = [&](const std::string& axis) {
+    return header.count(axis + "llcorner") ? header[axis + "llcorner"] : header[axis + "llcenter"] - cell_size / 2;
+  };
+  const Eigen::Vector2d corner(lower_left("x"), lower_left("y"));
+
+  const std::size_t expected = static_cast<std::size_t>(ncols) * nrows;
+  std::vector<double> heights;
+  std::size_t found = 0;
+  int first_extra_line = 0;
+  do {
+    for (const auto& word : split_whitespace(line)) {
+      const double h = parse_real(reader, word, "height");
+      if (++found > expected) {
+        if (first_extra_line == 0) first_extra_line = reader.line_number();
+        continue;
+      }
+      heights.push_back(h == nodata ? std::numeric_limits<double>::quiet_NaN() : h);
+    }
+  } while (reader.next(line));
+  if (found != expected)
+    reader.fail_at(found > expected ? first_extra_line : reader.line_number(),
+                   "expected " + std::to_string(expected) + " heights (nrows " + std::to_string(nrows) + " x ncols " +
+                       std::to_string(ncols) + "), found " + std::to_string(found));
+  TerrainMap map(ncols, nrows, cell_size, std::move(heights), options.max_slope_deg, name);
+  map.set_lower_left(corner);
+  return map;
+}
+
+TerrainMap load_esri_ascii(const std::filesystem::path& file, const TerrainOptions& options) {
+  std::ifstream in = open(file);
+  return read_esri_ascii(in, file.string(), options);
+}
+
+TerrainMap load_height_pgm(const std::filesystem::path& file, const TerrainOptions& options) {
+  if (!(options.height_scale > 0) || !std::isfinite(options.height_scale))
+    throw Error(file.string() + ": height scale " + std::to_string(options.height_scale) + " is not a positive number");
+  const GreyImage image = load_pgm(file);
+  std::vector<double> heights(image.pixels.size());
+  std::transform(image.pixels.begin(), image.pixels.end(), heights.begin(),
+                 [&](int grey) { return grey * options.height_scale; });
+  return TerrainMap(image.width, image.height, options.cell_size, std::move(heights), options.max_slope_deg, file.string());
+}
+
+std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain) {
   const auto ext = file.extension();
   if (ext == ".yaml" || ext == ".yml") return std::make_unique<OccupancyGrid>(load_ros_map(file));
+  if (ext == ".asc") return std::make_unique<TerrainMap>(load_esri_ascii(file, terrain));
+  if (ext == ".pgm") return std::make_unique<TerrainMap>(load_height_pgm(file, terrain));
   std::ifstream in = open(file);
   if (ext == ".map") return std::make_unique<OccupancyGrid>(read_movingai_map(in, file.string()));
   return std::make_unique<OccupancyGrid>(read_matrix_map(in, file.string()));

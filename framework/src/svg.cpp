@@ -2,10 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <optional>
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/terrain.hpp"
 
 namespace aco {
 namespace {
@@ -36,13 +40,156 @@ void polyline(std::ostream& out, const std::vector<std::pair<double, double>>& p
   out << "\"/>\n";
 }
 
+// Hypsometric tints, low to high: lowland green, tan, brown, snow.
+struct ColourStop {
+  double at;
+  int r, g, b;
+};
+constexpr ColourStop kHeightRamp[] = {{0.0, 0x3a, 0x8a, 0x3f}, {0.35, 0xd8, 0xc8, 0x7a}, {0.7, 0x8b, 0x5a, 0x2b}, {1.0, 0xf7, 0xf7, 0xf4}};
+// Shading bands: cells of one band share a colour, so rows merge into few rectangles.
+constexpr int kHeightBands = 32;
+
+std::string hex_colour(int r, int g, int b) {
+  char text[8];
+  std::snprintf(text, sizeof text, "#%02x%02x%02x", r, g, b);
+  return text;
+}
+
+// Colour of a relative height t in [0, 1].
+std::string ramp_colour(double t) {
+  std::size_t i = 1;
+  while (i + 1 < std::size(kHeightRamp) && t > kHeightRamp[i].at) ++i;
+  const ColourStop& a = kHeightRamp[i - 1];
+  const ColourStop& b = kHeightRamp[i];
+  const double u = std::clamp((t - a.at) / (b.at - a.at), 0.0, 1.0);
+  auto mix = [u](int x, int y) { return static_cast<int>(std::lround(x + (y - x) * u)); };
+  return hex_colour(mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b));
+}
+
+struct HeightRange {
+  double low = 0;
+  double high = 0;
+};
+
+// The heights of the cells with data, or nothing if the map is not a terrain or is flat.
+std::optional<HeightRange> height_range(const TerrainMap* terrain) {
+  if (!terrain) return std::nullopt;
+  std::optional<HeightRange> range;
+  for (int y = 0; y < terrain->height(); ++y)
+    for (int x = 0; x < terrain->width(); ++x) {
+      if (!terrain->has_data({x, y})) continue;
+      const double z = terrain->elevation({x, y});
+      if (!range) range = HeightRange{z, z};
+      range->low = std::min(range->low, z);
+      range->high = std::max(range->high, z);
+    }
+  if (!range || range->high <= range->low) return std::nullopt;
+  return range;
+}
+
+// Each cell with data filled with its height band's colour, runs of one colour merged.
+void draw_height_shading(std::ostream& out, const TerrainMap& terrain, HeightRange range) {
+  auto band = [&](int x, int y) -> int {
+    if (!terrain.has_data({x, y})) return -1;
+    const double t = (terrain.elevation({x, y}) - range.low) / (range.high - range.low);
+    return std::min(kHeightBands - 1, static_cast<int>(t * kHeightBands));
+  };
+  out << "<g id=\"terrain\" shape-rendering=\"crispEdges\">\n";
+  for (int y = 0; y < terrain.height(); ++y)
+    for (int x = 0; x < terrain.width();) {
+      const int b = band(x, y);
+      int end = x + 1;
+      while (end < terrain.width() && band(end, y) == b) ++end;
+      if (b >= 0)
+        out << "<rect x=\"" << x - 0.5 << "\" y=\"" << y - 0.5 << "\" width=\"" << end - x << "\" height=\"1\" fill=\""
+            << ramp_colour((b + 0.5) / kHeightBands) << "\"/>\n";
+      x = end;
+    }
+  out << "</g>\n";
+}
+
+// A round contour interval giving about eight levels: 1, 2 or 5 times a power of ten.
+double contour_interval(HeightRange range) {
+  const double rough = (range.high - range.low) / 8;
+  const double power = std::pow(10.0, std::floor(std::log10(rough)));
+  for (double factor : {1.0, 2.0, 5.0})
+    if (factor * power >= rough) return factor * power;
+  return 10 * power;
+}
+
+// Contour lines by marching squares over the lattice of cell centres; squares with a NODATA
+// corner are skipped. A saddle square is split by its centre value (the mean of its corners).
+void draw_contours(std::ostream& out, const TerrainMap& terrain, HeightRange range, double stroke) {
+  const double interval = contour_interval(range);
+  out << "<g id=\"contours\" fill=\"none\" stroke=\"#4e342e\" stroke-opacity=\"0.55\" stroke-width=\"" << stroke
+      << "\">\n";
+  for (double level = std::floor(range.low / interval + 1) * interval; level < range.high; level += interval) {
+    out << "<path class=\"contour\" data-height=\"" << level << "\" d=\"";
+    for (int y = 0; y + 1 < terrain.height(); ++y)
+      for (int x = 0; x + 1 < terrain.width(); ++x) {
+        const Cell corner[4] = {{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}};  // clockwise from top left
+        double z[4];
+        bool complete = true;
+        for (int i = 0; i < 4; ++i) {
+          complete = complete && terrain.has_data(corner[i]);
+          z[i] = terrain.elevation(corner[i]);
+        }
+        if (!complete) continue;
+        // Crossing points on the square's sides i = corner i -> corner i+1.
+        std::vector<std::pair<double, double>> crossings;
+        for (int i = 0; i < 4; ++i) {
+          const int j = (i + 1) % 4;
+          if ((z[i] >= level) == (z[j] >= level)) continue;
+          const double t = (level - z[i]) / (z[j] - z[i]);
+          crossings.emplace_back(corner[i].x + t * (corner[j].x - corner[i].x), corner[i].y + t * (corner[j].y - corner[i].y));
+        }
+        if (crossings.size() == 4) {
+          // Join sides 0-1 and 2-3 when corner 1 is cut off from the centre, else sides 3-0 and 1-2.
+          const bool centre_high = (z[0] + z[1] + z[2] + z[3]) / 4 >= level;
+          if ((z[1] >= level) == centre_high) crossings = {crossings[3], crossings[0], crossings[1], crossings[2]};
+        }
+        for (std::size_t k = 0; k + 1 < crossings.size(); k += 2)
+          out << 'M' << crossings[k].first << ' ' << crossings[k].second << 'L' << crossings[k + 1].first << ' '
+              << crossings[k + 1].second;
+      }
+    out << "\"/>\n";
+  }
+  out << "</g>\n";
+}
+
+// A colour bar from the lowest to the highest height, with both values.
+void draw_height_legend(std::ostream& out, HeightRange range, double left, double top) {
+  constexpr double kBarWidth = 200;
+  out << "<defs><linearGradient id=\"height-ramp\">";
+  for (const auto& stop : kHeightRamp)
+    out << "<stop offset=\"" << stop.at << "\" stop-color=\"" << hex_colour(stop.r, stop.g, stop.b) << "\"/>";
+  out << "</linearGradient></defs>\n";
+  out << "<g id=\"height-legend\" transform=\"translate(" << left << ',' << top
+      << ")\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  out << "<text x=\"0\" y=\"-6\">height (contour interval " << contour_interval(range) << ")</text>\n";
+  out << "<rect width=\"" << kBarWidth << "\" height=\"12\" fill=\"url(#height-ramp)\" stroke=\"#888\"/>\n";
+  out << "<text x=\"0\" y=\"28\">" << range.low << "</text>\n";
+  out << "<text x=\"" << kBarWidth << "\" y=\"28\" text-anchor=\"end\">" << range.high << "</text>\n";
+  out << "<rect x=\"" << kBarWidth + 16 << "\" width=\"12\" height=\"12\" fill=\"#333\"/><text x=\"" << kBarWidth + 32
+      << "\" y=\"11\">blocked (NODATA or too steep)</text>\n";
+  out << "</g>\n";
+}
+
 // Cells are drawn centred on their positions, in map units scaled by `scale`.
-void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, double scale) {
+// `terrain` is the map if it is one; `heights` its height range if it is not flat.
+void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, double scale, const TerrainMap* terrain,
+              const std::optional<HeightRange>& heights) {
   const int w = graph.width, h = graph.height;
+  // Positions are in map units; the picture is in cells.
+  const double unit = terrain ? terrain->cell_size() : 1.0;
   out << "<g id=\"map\" transform=\"translate(" << kMargin << ',' << kMargin << ") scale(" << scale
       << ") translate(0.5,0.5)\">\n";
   out << "<rect x=\"-0.5\" y=\"-0.5\" width=\"" << w << "\" height=\"" << h << "\" fill=\"#ffffff\" stroke=\"#888\" stroke-width=\""
       << 1.0 / scale << "\"/>\n";
+  if (heights) {
+    draw_height_shading(out, *terrain, *heights);
+    draw_contours(out, *terrain, *heights, 1.0 / scale);
+  }
   if (!pic.pheromone.empty()) {
     // Pheromone of a cell = sum over the edges into it.
     std::vector<double> cell(graph.num_nodes(), 0.0);
@@ -76,19 +223,19 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
   out << "</g>\n";
   const double line = std::max(0.08, 2.0 / scale);
   std::vector<std::pair<double, double>> points;
-  for (NodeId n : pic.grid_path) points.emplace_back(graph.positions[n].x(), graph.positions[n].y());
+  for (NodeId n : pic.grid_path) points.emplace_back(graph.positions[n].x() / unit, graph.positions[n].y() / unit);
   std::ostringstream style;
   style << "id=\"grid-path\" stroke=\"#1565c0\" stroke-width=\"" << line << "\" stroke-linejoin=\"round\"";
   polyline(out, points, style.str().c_str());
   points.clear();
-  for (const auto& p : pic.path) points.emplace_back(p.x(), p.y());
+  for (const auto& p : pic.path) points.emplace_back(p.x() / unit, p.y() / unit);
   style.str("");
   style << "id=\"path\" stroke=\"#d32f2f\" stroke-width=\"" << line << "\" stroke-dasharray=\"" << 3 * line << ','
         << 1.5 * line << "\"";
   polyline(out, points, style.str().c_str());
   for (const auto& [node, colour] : {std::pair{pic.start, "#43a047"}, std::pair{pic.goal, "#e53935"}}) {
     const auto& p = graph.positions[node];
-    out << "<circle cx=\"" << p.x() << "\" cy=\"" << p.y() << "\" r=\"" << std::max(0.35, 4.0 / scale) << "\" fill=\""
+    out << "<circle cx=\"" << p.x() / unit << "\" cy=\"" << p.y() / unit << "\" r=\"" << std::max(0.35, 4.0 / scale) << "\" fill=\""
         << colour << "\"/>\n";
   }
   out << "</g>\n";
@@ -143,18 +290,22 @@ void draw_convergence(std::ostream& out, const RunPicture& pic, double left, dou
 }  // namespace
 
 std::string render_svg(const Graph& graph, const RunPicture& pic) {
+  const auto* terrain = dynamic_cast<const TerrainMap*>(graph.map);
+  const auto heights = height_range(terrain);
   const double scale = kMapPixels / std::max(graph.width, graph.height);
   const double map_w = graph.width * scale, map_h = graph.height * scale;
   const double plot_left = kMargin * 2 + map_w + 30;
+  const double legend_top = kMargin + 10 + kPlotHeight + 80;  // the height legend, under the plot's own legend
   const double width = plot_left + kPlotWidth + kMargin;
-  const double height = std::max(map_h, kPlotHeight + 60) + kMargin * 2;
+  const double height = std::max(map_h, (heights ? legend_top + 40 - kMargin : kPlotHeight + 60)) + kMargin * 2;
   std::ostringstream out;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
       << width << ' ' << height << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
   out << "<text x=\"" << kMargin << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"14\">" << escape(pic.title) << "</text>\n";
-  draw_map(out, graph, pic, scale);
+  draw_map(out, graph, pic, scale, terrain, heights);
   draw_convergence(out, pic, plot_left, kMargin + 10);
+  if (heights) draw_height_legend(out, *heights, plot_left, legend_top);
   out << "</svg>\n";
   return out.str();
 }

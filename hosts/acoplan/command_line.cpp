@@ -33,6 +33,11 @@ constexpr aco::ParamSpec kRunParameters[] = {
     {"svg-pheromone", aco::ParamType::boolean, "false", "", "also draw the final pheromone field in the --svg picture"},
     {"repeat", aco::ParamType::integer, "1", "1:1000000",
      "plan N times with seeds seed, seed+1, ...; print mean and standard deviation (--svg shows the best run)"},
+    {"max-slope", aco::ParamType::real, "90", "0:90",
+     "terrain maps (.asc, .pgm): steepest slope in degrees a step or a cell may have; 90 = no limit"},
+    {"height-scale", aco::ParamType::real, "1", "(0:1e12]", "PGM height images: height = grey value * X"},
+    {"cell-size", aco::ParamType::real, "1", "(0:1e12]",
+     "PGM height images: horizontal size of a cell, in the heights' units (.asc files give their own)"},
 };
 
 std::string type_hint(const aco::ParamSpec& spec) {
@@ -166,7 +171,8 @@ Request parse_command_line(int argc, const char* const* argv) {
   general.add_options()
       ("help,h", po::bool_switch(), "print this help (with the options of the chosen plugins) and exit")
       ("map", po::value<std::string>()->value_name("FILE"),
-       "map: Moving AI .map, ROS map_server .yaml, or 0/1 matrix text (default: bundled classic map1)")
+       "map: Moving AI .map, ROS map_server .yaml, ESRI ASCII terrain .asc, PGM height image .pgm, or 0/1 "
+       "matrix text (default: bundled classic map1)")
       ("start", po::value<std::string>()->value_name("X,Y"), "start cell (column, row from the top, 0-based)")
       ("goal", po::value<std::string>()->value_name("X,Y"), "goal cell")
       ("scen", po::value<std::string>()->value_name("FILE"),

@@ -28,7 +28,8 @@ struct Request {
   std::optional<std::filesystem::path> svg;
   bool json = false;
 
-  aco::ParameterValues run;     // planner, neighbourhood, corner-cutting, threads, scen-index, svg-pheromone
+  aco::ParameterValues run;     // planner, neighbourhood, corner-cutting, threads, scen-index, svg-pheromone, repeat,
+                                // max-slope, height-scale, cell-size
   aco::ParameterValues colony;  // ants, iterations, alpha, beta, seed, stagnation
   std::map<std::string, aco::ParameterValues> baselines;  // "ifwa", "pso" -> that planner's parameters
   aco::PipelineSpec pipeline;

@@ -42,11 +42,17 @@ void check_cell(const aco::Map& map, aco::Cell c, const char* what) {
   if (!map.contains(c))
     throw aco::Error(std::string(what) + " " + aco::to_string(c) + " is outside the " + std::to_string(map.width()) + "x" +
                      std::to_string(map.height()) + " map " + map.name());
-  if (!map.passable(c)) throw aco::Error(std::string(what) + " " + aco::to_string(c) + " is a blocked cell of " + map.name());
+  if (!map.passable(c))
+    throw aco::Error(std::string(what) + " " + aco::to_string(c) + " is blocked: " + map.blocked_reason(c) + " (" +
+                     map.name() + ")");
 }
 
 Problem load_problem(const acoplan::Request& r) {
   Problem p;
+  aco::TerrainOptions terrain;
+  terrain.max_slope_deg = r.run.real("max-slope");
+  terrain.height_scale = r.run.real("height-scale");
+  terrain.cell_size = r.run.real("cell-size");
   if (r.scen) {
     const auto scenarios = aco::load_scenarios(*r.scen);
     const auto index = r.run.integer("scen-index");
@@ -54,7 +60,7 @@ Problem load_problem(const acoplan::Request& r) {
       throw aco::Error("--scen-index " + std::to_string(index) + " is out of range: " + r.scen->string() + " has " +
                        std::to_string(scenarios.size()) + " scenarios");
     const aco::Scenario& s = scenarios[index];
-    p.map = aco::load_map(r.map ? *r.map : aco::scenario_map_file(*r.scen));
+    p.map = aco::load_map(r.map ? *r.map : aco::scenario_map_file(*r.scen), terrain);
     if (p.map->width() != s.width || p.map->height() != s.height)
       throw aco::Error(r.scen->string() + ": scenario " + std::to_string(index) + " is for a " + std::to_string(s.width) +
                        "x" + std::to_string(s.height) + " map, but " + p.map->name() + " is " +
@@ -62,7 +68,7 @@ Problem load_problem(const acoplan::Request& r) {
     p.start = s.start;
     p.goal = s.goal;
   } else {
-    p.map = aco::load_map(*r.map);
+    p.map = aco::load_map(*r.map, terrain);
     p.start = parse_cell(*r.start, "--start");
     p.goal = parse_cell(*r.goal, "--goal");
   }

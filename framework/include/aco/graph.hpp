@@ -66,7 +66,8 @@ struct BOOST_SYMBOL_VISIBLE Graph {
 
 // Builds the graph of a map. Knight moves (16-neighbourhood) need the two cells their
 // segment crosses to be free, with or without corner cutting: the segment passes through
-// the middle of the edge those two cells share, never through a corner.
+// the middle of the edge those two cells share, never through a corner. The 16-neighbourhood
+// on a map with no room for a knight move (2x2, 1xN) is an Error.
 Graph build_graph(const Map& map, const GraphOptions& options);
 
 // Whether goal can be reached from start at all (breadth-first search).
@@ -82,8 +83,9 @@ double path_length(const Graph& graph, std::span<const NodeId> path);
 // vertex obey the corner rule: without corner cutting both must be passable (the segment may
 // not even touch a blocked cell); with corner cutting they must not both be blocked (grazing
 // one blocked corner is fine, squeezing between two is not). a == b is free iff a is passable.
-// Exact integer traversal, no floating point. Only passability is checked, not
-// Map::step_allowed: a slope rule along an arbitrary segment is a terrain question for later.
+// Exact integer traversal, no floating point. On a map with a step rule (a terrain's slope
+// limit), every step between consecutive cells the segment enters, including the diagonal step
+// through a vertex, must also be Map::step_allowed; on flat maps this adds nothing.
 // Note: with corner cutting this is stricter than the move rule for a single diagonal step,
 // which may squeeze between two blocked cells.
 bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting);

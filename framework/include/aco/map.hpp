@@ -17,7 +17,7 @@ struct Cell {
 std::string to_string(Cell c);  // "(x,y)"
 
 // A grid the planner can move on. The occupancy grid is the 2D case; a terrain map
-// (heights, slope limits) overrides position() and step_allowed().
+// (heights, slope limits; aco/terrain.hpp) overrides position() and step_allowed().
 class BOOST_SYMBOL_VISIBLE Map {
  public:
   virtual ~Map();
@@ -30,6 +30,9 @@ class BOOST_SYMBOL_VISIBLE Map {
   virtual bool step_allowed(Cell from, Cell to) const;
   // Human-readable origin of the map, e.g. the file it came from.
   virtual std::string name() const = 0;
+  // Why a cell is not passable, for messages ("start (3,4) is blocked: NODATA"); "" if it is.
+  // The default says "outside the map" or "an obstacle".
+  virtual std::string blocked_reason(Cell c) const;
 
   bool contains(Cell c) const { return c.x >= 0 && c.y >= 0 && c.x < width() && c.y < height(); }
 };

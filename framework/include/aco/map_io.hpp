@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "aco/map.hpp"
+#include "aco/terrain.hpp"
 
 namespace aco {
 
@@ -27,8 +28,20 @@ struct GreyImage {
 };
 GreyImage load_pgm(const std::filesystem::path& file);
 
-// By extension: .map (Moving AI), .yaml/.yml (ROS), anything else the 0/1 matrix.
-std::unique_ptr<Map> load_map(const std::filesystem::path& file);
+// ESRI ASCII grid (.asc): header lines "KEY VALUE" in any order, keys case-insensitive: ncols,
+// nrows, xllcorner or xllcenter, yllcorner or yllcenter, cellsize, optionally NODATA_value
+// (default -9999); then nrows * ncols heights, whitespace separated, the first row the
+// northernmost (our row 0). NODATA cells are blocked. The file's cellsize is the cell size;
+// options.height_scale and options.cell_size do not apply, options.max_slope_deg does.
+TerrainMap read_esri_ascii(std::istream& in, const std::string& name, const TerrainOptions& options);
+TerrainMap load_esri_ascii(const std::filesystem::path& file, const TerrainOptions& options);
+// A PGM image as a height map: height = grey value * options.height_scale, cell size
+// options.cell_size. Every pixel has data.
+TerrainMap load_height_pgm(const std::filesystem::path& file, const TerrainOptions& options);
+
+// By extension: .map (Moving AI), .yaml/.yml (ROS), .asc (ESRI ASCII terrain), .pgm (height
+// image terrain), anything else the 0/1 matrix. `terrain` applies to the two terrain formats only.
+std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain = {});
 
 struct Scenario {
   int bucket = 0;

@@ -14,7 +14,8 @@ using Waypoints = std::vector<Eigen::Vector3d>;
 Waypoints to_waypoints(const Graph& graph, std::span<const NodeId> path);
 double polyline_length(std::span<const Eigen::Vector3d> points);
 // Number of heading changes along the path: interior waypoints where the direction of travel
-// changes (collinear repeats are not turns).
+// in the (x, y) plane changes (collinear repeats are not turns; on terrain, neither is a change
+// of slope alone).
 int count_turns(std::span<const Eigen::Vector3d> points);
 
 }  // namespace aco

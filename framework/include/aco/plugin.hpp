@@ -18,9 +18,10 @@
 
 namespace aco {
 
-// Bump on any change to the strategy interfaces, Context, Ant, Iteration, ParameterValues or
-// the descriptor below.
-inline constexpr std::uint32_t kPluginAbiVersion = 2;
+// Bump on any change to the strategy interfaces, Context, Ant, Iteration, ParameterValues,
+// Map or Graph (plugins read them through Context), or the descriptor below.
+// 3: Map::blocked_reason() changed Map's vtable.
+inline constexpr std::uint32_t kPluginAbiVersion = 3;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
 

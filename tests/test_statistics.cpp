@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <regex>
 
 #include "aco/error.hpp"
@@ -179,6 +180,11 @@ TEST_CASE("Mann-Whitney exact p values agree with enumerating every rank assignm
   const auto separated = acobench::mann_whitney_u(std::vector<double>{1, 2, 3, 4}, std::vector<double>{5, 6, 7, 8});
   CHECK(separated.u == 0);
   CHECK(separated.p == Approx(2.0 / 70).epsilon(1e-12));
+  // The far tail stays accurate: 8 values all below 30 others, p = 2 / C(38, 8) = 2 / 48903492.
+  std::vector<double> below(8), above(30);
+  std::iota(below.begin(), below.end(), 0.0);
+  std::iota(above.begin(), above.end(), 100.0);
+  CHECK(acobench::mann_whitney_u(below, above).p == Approx(2.0 / 48903492).epsilon(1e-12));
 }
 
 TEST_CASE("Mann-Whitney with ties uses the tie-corrected normal approximation", "[statistics]") {

@@ -56,12 +56,14 @@ std::vector<double> u_frequencies(std::size_t m, std::size_t n) {
   return poly;
 }
 
-// P(U >= u) under the null hypothesis, from the exact distribution.
+// P(U >= u) under the null hypothesis, from the exact distribution. Summed as P(U <= n1 n2 - u)
+// by symmetry: the low coefficients never went through a subtraction, so even tiny tails are
+// accurate.
 double exact_upper_tail(double u, std::size_t n1, std::size_t n2) {
   const std::vector<double> frequencies = u_frequencies(n1, n2);
   const double total = std::accumulate(frequencies.begin(), frequencies.end(), 0.0);
-  const auto first = frequencies.begin() + std::ptrdiff_t(std::llround(u));
-  return std::accumulate(first, frequencies.end(), 0.0) / total;
+  const auto end = frequencies.begin() + std::ptrdiff_t(n1 * n2 - std::size_t(std::llround(u))) + 1;
+  return std::accumulate(frequencies.begin(), end, 0.0) / total;
 }
 
 double standard_normal_upper_tail(double z) { return 0.5 * std::erfc(z / std::sqrt(2.0)); }

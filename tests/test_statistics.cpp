@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <regex>
 
 #include "aco/error.hpp"
 #include "plots.hpp"
@@ -39,28 +38,32 @@ std::size_t count(const std::string& text, const std::string& word) {
   return found;
 }
 
-// Every opened element is closed in order, and the document is one <svg> root: enough to catch
-// a forgotten "/>" or a stray '<' from an unescaped name.
+// Every opened element is closed in order, and the document is one <svg> root with no stray '<'
+// or '>' in text: enough to catch a forgotten "/>" or an unescaped name.
 bool well_formed(const std::string& svg) {
+  if (svg.rfind("<svg", 0) != 0) return false;
   std::vector<std::string> open;
-  std::size_t roots = 0;
-  const std::regex tag(R"(<(/?)([a-zA-Z]+)[^<>]*?(/?)>)");
-  std::size_t covered = 0;
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), tag); it != std::sregex_iterator(); ++it) {
-    const auto& m = *it;
-    const std::string between = svg.substr(covered, std::size_t(m.position()) - covered);
-    if (between.find_first_of("<>") != std::string::npos) return false;
-    covered = std::size_t(m.position() + m.length());
-    if (m[1] == "/") {
-      if (open.empty() || open.back() != m[2]) return false;
+  std::size_t roots = 0, at = 0;
+  while (at < svg.size()) {
+    const std::size_t begin = svg.find('<', at);
+    if (svg.substr(at, begin - at).find('>') != std::string::npos) return false;
+    if (begin == std::string::npos) break;
+    const std::size_t end = svg.find('>', begin);
+    if (end == std::string::npos) return false;
+    const std::string tag = svg.substr(begin + 1, end - begin - 1);
+    if (tag.find('<') != std::string::npos) return false;
+    const bool closing = tag.front() == '/', empty = tag.back() == '/';
+    const std::string name = tag.substr(closing, tag.find_first_of(" /", 1) - closing);
+    if (closing) {
+      if (open.empty() || open.back() != name) return false;
       open.pop_back();
     } else {
-      if (open.empty()) ++roots;
-      if (m[3] != "/") open.push_back(m[2]);
+      roots += open.empty();
+      if (!empty) open.push_back(name);
     }
+    at = end + 1;
   }
-  return open.empty() && roots == 1 && svg.rfind("<svg", 0) == 0 &&
-         svg.substr(covered).find_first_not_of("\n") == std::string::npos;
+  return open.empty() && roots == 1;
 }
 
 bool has_undefined_number(const std::string& svg) {
@@ -271,6 +274,9 @@ TEST_CASE("box plots draw one box per sample, Tukey outliers and the reference l
   plot.samples = {{"ant_system", {1, 2, 3, 4, 5, 6, 7, 8, 9, 30}}, {"max_min", {4, 5, 6}}, {"acs", {5, 5, 5}}};
   plot.reference = 3.25;
   const std::string svg = acobench::box_plot_svg(plot);
+  REQUIRE_FALSE(well_formed("<svg><g></svg>"));  // the checker itself can fail
+  REQUIRE_FALSE(well_formed("<svg><text>a < b</text></svg>"));
+  REQUIRE(well_formed("<svg><g/><text>a</text></svg>\n"));
   CHECK(well_formed(svg));
   CHECK(count(svg, "class=\"boxplot\"") == 1);
   CHECK(count(svg, "class=\"box\"") == 3);

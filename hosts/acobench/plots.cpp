@@ -1,0 +1,359 @@
+#include "plots.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "aco/error.hpp"
+#include "statistics.hpp"
+
+namespace acobench {
+namespace {
+
+constexpr double kWidth = 640.0;
+constexpr double kHeight = 400.0;
+constexpr double kLeft = 70.0;  // room for the y tick labels and the y axis label
+constexpr double kTop = 40.0;   // room for the title
+constexpr double kRight = 20.0;
+constexpr double kLegendWidth = 170.0;
+constexpr double kBottom = 50.0;          // x tick labels and the x axis label
+constexpr double kRotatedBottom = 130.0;  // sample names written at a slant
+constexpr std::size_t kLongestSlantedName = 24;  // longer names are cut, in full in the tooltip
+constexpr double kCharWidth = 6.5;        // rough width of a 12 px sans-serif character
+constexpr std::array kPalette{"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                              "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// At most `decimals` decimals, trailing zeros dropped; std::to_chars ignores the locale.
+std::string number(double value, int decimals = 1) {
+  std::array<char, 400> buffer{};  // the widest finite double in fixed notation fits
+  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value + 0.0, std::chars_format::fixed,
+                                 decimals).ptr;
+  std::string text(buffer.data(), end);
+  if (text.find('.') != std::string::npos) {
+    text.erase(text.find_last_not_of('0') + 1);
+    if (text.back() == '.') text.pop_back();
+  }
+  return text == "-0" ? "0" : text;
+}
+
+// A value axis with ticks at 1, 2 or 5 times a power of ten, about five of them.
+struct Axis {
+  double low = 0.0;
+  double high = 1.0;
+  double step = 0.2;
+  int decimals = 1;
+
+  // Multiples of the step; an axis not rounded out to them also gets its low end (iteration 1).
+  std::vector<double> ticks() const {
+    std::vector<double> result;
+    const double first = std::ceil(low / step - 1e-9), last = std::floor(high / step + 1e-9);
+    if (first * step - low > step * 1e-9) result.push_back(low);
+    for (double k = first; k <= last && result.size() < 50; ++k) result.push_back(k * step);
+    return result;
+  }
+};
+
+// `extend` rounds the ends out to whole ticks; `min_step` keeps iteration ticks whole numbers.
+// A range of zero width (a constant sample) is widened so nothing divides by zero.
+Axis nice_axis(double low, double high, bool extend, double min_step = 0.0) {
+  if (!(high > low)) {
+    const double pad = low != 0.0 ? std::abs(low) * 0.05 : 1.0;
+    low -= pad;
+    high += pad;
+  }
+  const double raw = (high - low) / 5.0;
+  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
+  const double fraction = raw / magnitude;
+  Axis axis;
+  axis.step = std::max(min_step, (fraction <= 1.0 ? 1.0 : fraction <= 2.0 ? 2.0 : fraction <= 5.0 ? 5.0 : 10.0) * magnitude);
+  axis.low = extend ? std::floor(low / axis.step) * axis.step : low;
+  axis.high = extend ? std::ceil(high / axis.step) * axis.step : high;
+  axis.decimals = std::max(0, -int(std::floor(std::log10(axis.step) + 1e-9)));
+  return axis;
+}
+
+// The plotting area in pixels and its value axis.
+struct Frame {
+  double left = kLeft;
+  double top = kTop;
+  double width = 0.0;
+  double height = 0.0;
+  Axis y;
+
+  double py(double value) const { return top + height * (1.0 - (value - y.low) / (y.high - y.low)); }
+  double bottom() const { return top + height; }
+  double right() const { return left + width; }
+};
+
+// The y range covering every value and the reference, with a little air so that no extreme
+// value sits on the frame.
+Axis value_axis(const std::vector<double>& values, const std::optional<double>& reference) {
+  std::vector<double> all = values;
+  if (reference && !std::isfinite(*reference))
+    throw aco::Error("plot reference line: value " + number(*reference) + " is not finite");
+  if (reference) all.push_back(*reference);
+  if (all.empty()) return nice_axis(0.0, 1.0, true);
+  const auto [low, high] = std::minmax_element(all.begin(), all.end());
+  const double air = (*high - *low) * 0.03;
+  return nice_axis(*low - air, *high + air, true);
+}
+
+void open_svg(std::ostream& out, const char* css_class, const std::string& title) {
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"" << css_class << "\" width=\"" << number(kWidth)
+      << "\" height=\"" << number(kHeight) << "\" viewBox=\"0 0 " << number(kWidth) << ' ' << number(kHeight)
+      << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  out << "<rect width=\"" << number(kWidth) << "\" height=\"" << number(kHeight) << "\" fill=\"#fff\"/>\n";
+  out << "<text class=\"title\" x=\"" << number(kWidth / 2) << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">"
+      << escape(title) << "</text>\n";
+}
+
+// Horizontal grid lines with their labels on the left, the axis label written upwards, the frame.
+void draw_value_axis(std::ostream& out, const Frame& frame, const std::string& label) {
+  out << "<g class=\"y-axis\">\n";
+  for (double tick : frame.y.ticks()) {
+    const std::string y = number(frame.py(tick));
+    out << "<line x1=\"" << number(frame.left) << "\" x2=\"" << number(frame.right()) << "\" y1=\"" << y << "\" y2=\""
+        << y << "\" stroke=\"#e0e0e0\"/>";
+    out << "<text x=\"" << number(frame.left - 6) << "\" y=\"" << y << "\" dy=\"4\" text-anchor=\"end\">"
+        << number(tick, frame.y.decimals) << "</text>\n";
+  }
+  const std::string middle = number(frame.top + frame.height / 2);
+  out << "<text x=\"18\" y=\"" << middle << "\" text-anchor=\"middle\" transform=\"rotate(-90 18 " << middle << ")\">"
+      << escape(label) << "</text>\n";
+  out << "<rect x=\"" << number(frame.left) << "\" y=\"" << number(frame.top) << "\" width=\"" << number(frame.width)
+      << "\" height=\"" << number(frame.height) << "\" fill=\"none\" stroke=\"#555\"/>\n</g>\n";
+}
+
+constexpr const char* kReferenceStyle = "stroke=\"#2e7d32\" stroke-dasharray=\"6,4\"";
+
+std::string reference_text(double value, const std::string& label) { return escape(label) + ' ' + number(value, 4); }
+
+// The dashed line across the frame; the label goes above its right end unless a legend names it.
+void draw_reference(std::ostream& out, const Frame& frame, const std::optional<double>& value, const std::string& label,
+                    bool labelled_here) {
+  if (!value) return;
+  const std::string y = number(frame.py(*value));
+  out << "<line class=\"reference\" x1=\"" << number(frame.left) << "\" x2=\"" << number(frame.right()) << "\" y1=\""
+      << y << "\" y2=\"" << y << "\" " << kReferenceStyle << "/>\n";
+  if (labelled_here)
+    out << "<text x=\"" << number(frame.right() - 4) << "\" y=\"" << y << "\" dy=\"-4\" text-anchor=\"end\" fill=\"#2e7d32\">"
+        << reference_text(*value, label) << "</text>\n";
+}
+
+void no_data(std::ostream& out, const Frame& frame) {
+  out << "<text x=\"" << number(frame.left + frame.width / 2) << "\" y=\"" << number(frame.top + frame.height / 2)
+      << "\" text-anchor=\"middle\" fill=\"#777\">no data</text>\n";
+}
+
+Summary summarize_sample(const NamedSample& sample) {
+  try {
+    return summarize(sample.values);
+  } catch (const aco::Error& e) {
+    throw aco::Error("box plot sample \"" + sample.name + "\": " + e.what());
+  }
+}
+
+void draw_box(std::ostream& out, const Frame& frame, const NamedSample& sample, const Summary& s, double centre,
+              double box_width) {
+  const double fence_low = s.q1 - 1.5 * s.iqr, fence_high = s.q3 + 1.5 * s.iqr;
+  double whisker_low = s.q1, whisker_high = s.q3;
+  for (double v : sample.values)
+    if (v >= fence_low && v <= fence_high) whisker_low = std::min(whisker_low, v), whisker_high = std::max(whisker_high, v);
+  const std::string x = number(centre), cap_left = number(centre - box_width / 4), cap_right = number(centre + box_width / 4);
+  const std::string left = number(centre - box_width / 2), right = number(centre + box_width / 2);
+  out << "<g class=\"sample\"><title>" << escape(sample.name) << ": n " << std::to_string(s.n) << ", median " << number(s.median, 4)
+      << ", quartiles " << number(s.q1, 4) << " to " << number(s.q3, 4) << "</title>\n";
+  out << "<path class=\"whisker\" fill=\"none\" stroke=\"#333\" d=\"M" << x << ',' << number(frame.py(whisker_low)) << "V"
+      << number(frame.py(s.q1)) << "M" << x << ',' << number(frame.py(s.q3)) << "V" << number(frame.py(whisker_high))
+      << "M" << cap_left << ',' << number(frame.py(whisker_low)) << "H" << cap_right << "M" << cap_left << ','
+      << number(frame.py(whisker_high)) << "H" << cap_right << "\"/>\n";
+  out << "<rect class=\"box\" x=\"" << left << "\" y=\"" << number(frame.py(s.q3)) << "\" width=\"" << number(box_width)
+      << "\" height=\"" << number(frame.py(s.q1) - frame.py(s.q3)) << "\" fill=\"#bbdefb\" stroke=\"#1565c0\"/>\n";
+  const std::string median = number(frame.py(s.median));
+  out << "<line class=\"median\" x1=\"" << left << "\" x2=\"" << right << "\" y1=\"" << median << "\" y2=\"" << median
+      << "\" stroke=\"#0d47a1\" stroke-width=\"2\"/>\n";
+  for (double v : sample.values)
+    if (v < fence_low || v > fence_high)
+      out << "<circle class=\"outlier\" cx=\"" << x << "\" cy=\"" << number(frame.py(v)) << "\" r=\"2.5\" fill=\"#d32f2f\"/>\n";
+  out << "</g>\n";
+}
+
+// A sample's name under its box. Names too long to sit side by side are slanted, and cut if
+// they would still run off the picture (the box's tooltip has them in full).
+void draw_sample_name(std::ostream& out, std::string name, double centre, double baseline, bool slanted) {
+  const std::string x = number(centre), y = number(baseline);
+  if (!slanted) {
+    out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"middle\">" << escape(name) << "</text>\n";
+    return;
+  }
+  if (name.size() > kLongestSlantedName) {
+    std::size_t cut = kLongestSlantedName - 1;
+    while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+    name = name.substr(0, cut) + "\u2026";
+  }
+  out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"end\" transform=\"rotate(-45 " << x << ' ' << y << ")\">"
+      << escape(name) << "</text>\n";
+}
+
+// Half-open index ranges [begin, end) where `defined(i)` holds: the pieces of a curve with gaps.
+using Stretches = std::vector<std::pair<std::size_t, std::size_t>>;
+
+template <class Defined>
+Stretches stretches(std::size_t count, Defined defined) {
+  Stretches result;
+  for (std::size_t begin = 0; begin < count;) {
+    if (!defined(begin)) {
+      ++begin;
+      continue;
+    }
+    std::size_t end = begin;
+    while (end < count && defined(end)) ++end;
+    result.emplace_back(begin, end);
+    begin = end;
+  }
+  return result;
+}
+
+void check_band(const Series& series) {
+  const bool has_band = !series.band_low.empty() || !series.band_high.empty();
+  if (has_band && (series.band_low.size() != series.value.size() || series.band_high.size() != series.value.size()))
+    throw aco::Error("line chart series \"" + series.name + "\": the band has " + std::to_string(series.band_low.size()) +
+                     " low and " + std::to_string(series.band_high.size()) + " high values for " +
+                     std::to_string(series.value.size()) + " values");
+}
+
+}  // namespace
+
+std::string box_plot_svg(const BoxPlot& plot) {
+  std::vector<Summary> summaries;
+  std::vector<double> extremes;
+  for (const auto& sample : plot.samples) {
+    summaries.push_back(summarize_sample(sample));
+    if (summaries.back().n > 0) extremes.insert(extremes.end(), {summaries.back().min, summaries.back().max});
+  }
+  const double slot = (kWidth - kLeft - kRight) / double(std::max<std::size_t>(plot.samples.size(), 1));
+  const bool slanted = std::any_of(plot.samples.begin(), plot.samples.end(),
+                                   [&](const NamedSample& s) { return double(s.name.size()) * kCharWidth > slot - 4; });
+  Frame frame;
+  frame.width = kWidth - kLeft - kRight;
+  frame.height = kHeight - kTop - (slanted ? kRotatedBottom : kBottom);
+  frame.y = value_axis(extremes, plot.reference);
+
+  std::ostringstream out;
+  open_svg(out, "boxplot", plot.title);
+  draw_value_axis(out, frame, plot.value_label);
+  if (extremes.empty()) no_data(out, frame);
+  const double box_width = std::min(slot * 0.6, 60.0);
+  for (std::size_t i = 0; i < plot.samples.size(); ++i) {
+    const double centre = frame.left + slot * (double(i) + 0.5);
+    if (summaries[i].n > 0) draw_box(out, frame, plot.samples[i], summaries[i], centre, box_width);
+    draw_sample_name(out, plot.samples[i].name + (summaries[i].n == 0 ? " (no data)" : ""), centre,
+                     frame.bottom() + 16, slanted);
+  }
+  draw_reference(out, frame, plot.reference, plot.reference_label, true);
+  out << "</svg>\n";
+  return out.str();
+}
+
+Series convergence_series(std::string name, const std::vector<std::vector<double>>& runs) {
+  std::size_t iterations = 0;
+  for (const auto& run : runs) iterations = std::max(iterations, run.size());
+  Series series{std::move(name), {}, {}, {}};
+  std::vector<double> at_iteration;
+  for (std::size_t i = 0; i < iterations; ++i) {
+    at_iteration.clear();
+    for (const auto& run : runs) {
+      if (run.empty()) continue;
+      const double v = run[std::min(i, run.size() - 1)];
+      if (std::isfinite(v)) at_iteration.push_back(v);
+    }
+    const Summary s = summarize(at_iteration);
+    series.value.push_back(s.mean);
+    series.band_low.push_back(s.ci_low);
+    series.band_high.push_back(s.ci_high);
+  }
+  return series;
+}
+
+std::string line_chart_svg(const LineChart& chart) {
+  std::size_t iterations = 0;
+  std::vector<double> finite;
+  for (const auto& series : chart.series) {
+    check_band(series);
+    iterations = std::max(iterations, series.value.size());
+    for (const auto* values : {&series.value, &series.band_low, &series.band_high})
+      std::copy_if(values->begin(), values->end(), std::back_inserter(finite), [](double v) { return std::isfinite(v); });
+  }
+  Frame frame;
+  frame.width = kWidth - kLeft - kLegendWidth;
+  frame.height = kHeight - kTop - kBottom;
+  frame.y = value_axis(finite, chart.reference);
+  const Axis x_axis = nice_axis(1.0, double(std::max<std::size_t>(iterations, 1)), false, 1.0);
+  auto px = [&](double x) { return frame.left + frame.width * (x - x_axis.low) / (x_axis.high - x_axis.low); };
+
+  std::ostringstream out;
+  open_svg(out, "convergence", chart.title);
+  draw_value_axis(out, frame, chart.y_label);
+  out << "<g class=\"x-axis\">\n";
+  for (double tick : x_axis.ticks())
+    out << "<text x=\"" << number(px(tick)) << "\" y=\"" << number(frame.bottom() + 16) << "\" text-anchor=\"middle\">"
+        << number(tick, x_axis.decimals) << "</text>\n";
+  out << "<text x=\"" << number(frame.left + frame.width / 2) << "\" y=\"" << number(frame.bottom() + 38)
+      << "\" text-anchor=\"middle\">" << escape(chart.x_label) << "</text>\n</g>\n";
+  if (finite.empty()) no_data(out, frame);
+
+  for (std::size_t k = 0; k < chart.series.size(); ++k) {
+    const Series& s = chart.series[k];
+    const char* colour = kPalette[k % kPalette.size()];
+    auto banded = [&](std::size_t i) { return std::isfinite(s.band_low[i]) && std::isfinite(s.band_high[i]); };
+    const Stretches band_pieces = s.band_low.empty() ? Stretches{} : stretches(s.value.size(), banded);
+    if (!band_pieces.empty()) {
+      out << "<path class=\"band\" fill=\"" << colour << "\" fill-opacity=\"0.2\" stroke=\"none\" d=\"";
+      for (const auto& [begin, end] : band_pieces) {
+        for (std::size_t i = begin; i < end; ++i)
+          out << (i == begin ? 'M' : 'L') << number(px(double(i + 1))) << ',' << number(frame.py(s.band_high[i]));
+        for (std::size_t i = end; i-- > begin;) out << 'L' << number(px(double(i + 1))) << ',' << number(frame.py(s.band_low[i]));
+        out << 'Z';
+      }
+      out << "\"/>\n";
+    }
+    out << "<path class=\"series\" fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" d=\"";
+    for (const auto& [begin, end] : stretches(s.value.size(), [&](std::size_t i) { return std::isfinite(s.value[i]); }))
+      for (std::size_t i = begin; i < end; ++i)
+        out << (i == begin ? 'M' : 'L') << number(px(double(i + 1))) << ',' << number(frame.py(s.value[i]));
+    out << "\"/>\n";
+  }
+  draw_reference(out, frame, chart.reference, chart.reference_label, false);
+
+  out << "<g class=\"legend\">\n";
+  const double legend_x = frame.right() + 16;
+  auto entry = [&](std::size_t row, const std::string& line_style, const std::string& text) {
+    const std::string y = number(frame.top + 10 + 20 * double(row));
+    out << "<line x1=\"" << number(legend_x) << "\" x2=\"" << number(legend_x + 20) << "\" y1=\"" << y << "\" y2=\"" << y
+        << "\" " << line_style << "/><text x=\"" << number(legend_x + 26) << "\" y=\"" << y << "\" dy=\"4\">" << text
+        << "</text>\n";
+  };
+  for (std::size_t k = 0; k < chart.series.size(); ++k)
+    entry(k, std::string("stroke=\"") + kPalette[k % kPalette.size()] + "\" stroke-width=\"2\"", escape(chart.series[k].name));
+  if (chart.reference) entry(chart.series.size(), kReferenceStyle, reference_text(*chart.reference, chart.reference_label));
+  out << "</g>\n</svg>\n";
+  return out.str();
+}
+
+}  // namespace acobench

@@ -7,8 +7,8 @@
 #include <numeric>
 
 #include "aco/error.hpp"
-#include "plots.hpp"
-#include "statistics.hpp"
+#include "acobench/plots.hpp"
+#include "acobench/statistics.hpp"
 
 namespace {
 

@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages the build needs; only the missing ones, so it is quick to rerun.
 set -euo pipefail
 packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
-          nlohmann-json3-dev libyaml-cpp-dev catch2)
+          nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev catch2
+          chromium)  # chromium: the test that opens the acobench HTML report
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")

@@ -1,0 +1,79 @@
+#pragma once
+// An acobench experiment file (YAML): the problems, the common settings, a baseline
+// configuration and what to vary (named configurations, a full factorial, an ablation path).
+// See data/experiments/README.md for the format.
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aco/graph.hpp"
+#include "aco/parameters.hpp"
+#include "aco/pipeline.hpp"
+#include "aco/map.hpp"
+#include "aco/plugin_registry.hpp"
+
+namespace acobench {
+
+struct Problem {
+  std::string name;             // unique within the experiment
+  std::filesystem::path map;    // resolved against the experiment file's folder
+  aco::Cell start;
+  aco::Cell goal;
+};
+
+// A configuration is a set of keys, written as on acoplan's command line without the dashes:
+// "planner", "neighbourhood", "corner-cutting", colony parameters ("ants", "beta", "search"),
+// slots ("update") and plugin parameters ("update.rho"). Keys it does not set keep their
+// defaults; every key and value is checked when the experiment is loaded.
+struct Configuration {
+  std::string name;
+  std::map<std::string, std::string> keys;
+  // Where each key was written ("file:line"), for error messages; not part of the identity.
+  std::map<std::string, std::string> origins;
+};
+
+struct Experiment {
+  std::string name;
+  std::filesystem::path file;
+  std::vector<Problem> problems;
+  Configuration baseline;                      // common settings + the baseline's own keys
+  std::vector<Configuration> configurations;   // baseline first, then named, then factorial
+  std::optional<Configuration> ablation_target;
+  int repetitions = 10;
+  std::uint64_t seed = 1;
+
+  // Canonical text of everything that decides the trials: a results database made with another
+  // fingerprint belongs to another experiment.
+  std::string fingerprint() const;
+};
+
+// Loads and checks an experiment file. Errors name the file, the line and the key.
+Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistry& registry);
+
+// A configuration's keys sorted into what a trial needs, every key and value checked against
+// the plugins' and the colony's tables (aco::Error naming the key and the nearest valid one).
+struct Settings {
+  std::string planner = "aco";
+  aco::GraphOptions graph;
+  aco::ParameterValues colony;  // the colony's table, defaults filled in
+  aco::PipelineSpec pipeline;
+  aco::ParameterValues planner_parameters;  // of a baseline planner (ifwa, pso), defaults filled in
+};
+Settings resolve(const Configuration& config, aco::PluginRegistry& registry);
+
+// The seed of a trial: a hash of the master seed, the problem's name and the repetition, so
+// that a trial gives the same result whenever and wherever it runs, and every configuration
+// meets the same random streams on the same problem and repetition (common random numbers).
+std::uint64_t trial_seed(std::uint64_t master_seed, const std::string& problem, int repetition);
+
+// The ablation path's components: the keys that differ between two configurations, grouped so
+// that a slot's plugin moves together with its parameters ("update" carries "update.rho").
+std::vector<std::vector<std::string>> ablation_components(const Configuration& from, const Configuration& to);
+
+// `config` with one component set as in `target` (keys absent from the target are removed).
+Configuration flip(const Configuration& config, const Configuration& target, const std::vector<std::string>& component);
+
+}  // namespace acobench

@@ -1,0 +1,360 @@
+#include "report.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "aco/error.hpp"
+#include "aco/map_io.hpp"
+#include "plots.hpp"
+#include "results_db.hpp"
+#include "statistics.hpp"
+
+namespace acobench {
+namespace {
+
+std::string number(double v, int digits = 4) {
+  if (!std::isfinite(v)) return "-";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
+  return text;
+}
+
+std::string fixed(double v, int decimals) {
+  if (!std::isfinite(v)) return "-";
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", decimals, v);
+  return text;
+}
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+// One configuration on one problem.
+struct Result {
+  int config = 0;  // index into Analysis::configs
+  std::vector<const TrialRecord*> runs;
+  std::vector<double> lengths;  // solved runs only
+  Summary length;
+  double success = 0.0;
+  double gap = NAN;  // mean relative excess over the optimal length, %
+  double turns = NAN, best_iteration = NAN, time_ms = NAN;
+  double p = NAN, p_holm = NAN, a12 = NAN;  // against the baseline on this problem
+  const TrialRecord* best = nullptr;
+};
+
+struct Analysis {
+  std::string name;
+  std::vector<ProblemRecord> problems;
+  std::vector<std::pair<int, ConfigRecord>> configs;
+  std::vector<TrialRecord> trials;
+  std::vector<std::vector<Result>> results;  // [problem][config]
+  std::vector<double> average_rank;          // per config
+  std::vector<std::string> ablation_path;
+  std::filesystem::path experiment_dir;  // the maps are relative to it
+};
+
+double mean_of(const std::vector<double>& v) {
+  if (v.empty()) return NAN;
+  double s = 0;
+  for (double x : v) s += x;
+  return s / v.size();
+}
+
+Analysis analyse(const ResultsDb& db) {
+  Analysis a;
+  a.name = db.meta("experiment_name");
+  a.problems = db.problems();
+  a.configs = db.configs();
+  a.trials = db.trials();
+  a.experiment_dir = std::filesystem::path(db.meta("experiment_file")).parent_path();
+  std::map<int, int> index;  // config id -> position
+  for (std::size_t c = 0; c < a.configs.size(); ++c) index[a.configs[c].first] = static_cast<int>(c);
+  a.results.assign(a.problems.size(), std::vector<Result>(a.configs.size()));
+  for (std::size_t p = 0; p < a.problems.size(); ++p)
+    for (std::size_t c = 0; c < a.configs.size(); ++c) a.results[p][c].config = static_cast<int>(c);
+  for (const auto& t : a.trials) a.results[t.problem][index.at(t.config)].runs.push_back(&t);
+
+  std::vector<double> raw_p;
+  std::vector<Result*> compared;
+  for (std::size_t p = 0; p < a.problems.size(); ++p) {
+    const double optimal = a.problems[p].optimal_length;
+    for (auto& r : a.results[p]) {
+      std::vector<double> gaps, turns, best_iterations, times;
+      for (const auto* t : r.runs) {
+        times.push_back(t->time_s * 1000.0);
+        if (!t->solved) continue;
+        r.lengths.push_back(t->length);
+        turns.push_back(t->turns);
+        best_iterations.push_back(t->best_iteration);
+        if (optimal > 0) gaps.push_back(100.0 * (t->length / optimal - 1.0));
+        if (!r.best || t->length < r.best->length) r.best = t;
+      }
+      r.length = summarize(r.lengths);
+      r.success = r.runs.empty() ? NAN : double(r.lengths.size()) / r.runs.size();
+      r.gap = mean_of(gaps);
+      r.turns = mean_of(turns);
+      r.best_iteration = mean_of(best_iterations);
+      r.time_ms = mean_of(times);
+    }
+    const Result& baseline = a.results[p][0];
+    for (std::size_t c = 1; c < a.configs.size(); ++c) {
+      Result& r = a.results[p][c];
+      if (r.lengths.empty() || baseline.lengths.empty()) continue;
+      r.p = mann_whitney_u(r.lengths, baseline.lengths).p;
+      r.a12 = vargha_delaney_a12(r.lengths, baseline.lengths);
+      raw_p.push_back(r.p);
+      compared.push_back(&r);
+    }
+  }
+  const auto adjusted = holm_adjust(raw_p);
+  for (std::size_t i = 0; i < compared.size(); ++i) compared[i]->p_holm = adjusted[i];
+
+  // Ranking by mean length; a configuration that never solved a problem ranks last on it.
+  std::vector<std::vector<double>> scores(a.configs.size(), std::vector<double>(a.problems.size()));
+  for (std::size_t p = 0; p < a.problems.size(); ++p)
+    for (std::size_t c = 0; c < a.configs.size(); ++c) {
+      const double m = a.results[p][c].length.mean;
+      scores[c][p] = std::isfinite(m) ? m : std::numeric_limits<double>::max();
+    }
+  if (!a.problems.empty() && !a.configs.empty()) a.average_rank = average_ranks(scores);
+  try {
+    a.ablation_path = nlohmann::json::parse(db.meta("ablation_path")).get<std::vector<std::string>>();
+  } catch (const aco::Error&) {
+    // No ablation in this experiment.
+  }
+  return a;
+}
+
+struct Column {
+  std::string title;
+  std::function<std::string(const Result&)> value;
+};
+
+std::vector<Column> columns() {
+  return {
+      {"runs", [](const Result& r) { return std::to_string(r.runs.size()); }},
+      {"success", [](const Result& r) { return fixed(100 * r.success, 0) + " %"; }},
+      {"mean", [](const Result& r) { return fixed(r.length.mean, 3); }},
+      {"sd", [](const Result& r) { return fixed(r.length.stddev, 3); }},
+      {"median", [](const Result& r) { return fixed(r.length.median, 3); }},
+      {"IQR", [](const Result& r) { return fixed(r.length.iqr, 3); }},
+      {"95 % CI", [](const Result& r) {
+         return std::isfinite(r.length.ci_low) ? "[" + fixed(r.length.ci_low, 2) + ", " + fixed(r.length.ci_high, 2) + "]" : "-";
+       }},
+      {"gap %", [](const Result& r) { return fixed(r.gap, 2); }},
+      {"turns", [](const Result& r) { return fixed(r.turns, 1); }},
+      {"best it.", [](const Result& r) { return fixed(r.best_iteration, 1); }},
+      {"time ms", [](const Result& r) { return number(r.time_ms, 3); }},
+      {"p (Holm)", [](const Result& r) { return number(r.p_holm, 3); }},
+      {"A12", [](const Result& r) {
+         return std::isfinite(r.a12) ? fixed(r.a12, 2) + " " + std::string(to_string(effect_size(r.a12))) : "-";
+       }},
+  };
+}
+
+std::string markdown(const Analysis& a, const std::filesystem::path& database) {
+  std::ostringstream md;
+  md << "# acobench report: " << a.name << "\n\n"
+     << "Database `" << database.filename().string() << "`: " << a.trials.size() << " runs, " << a.configs.size()
+     << " configurations, " << a.problems.size() << " problems. Lengths are final path lengths of solved runs; gap is "
+        "the mean excess over the exact A* optimum on the baseline's graph; p is the two-sided Mann-Whitney U test "
+        "against the baseline (`"
+     << (a.configs.empty() ? "" : a.configs[0].second.name)
+     << "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline.\n\n";
+  const auto cols = columns();
+  for (std::size_t p = 0; p < a.problems.size(); ++p) {
+    md << "## " << a.problems[p].name << " (optimal " << fixed(a.problems[p].optimal_length, 4) << ")\n\n| configuration |";
+    for (const auto& c : cols) md << " " << c.title << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < cols.size(); ++i) md << "---:|";
+    md << "\n";
+    for (const auto& r : a.results[p]) {
+      md << "| " << a.configs[r.config].second.name << " |";
+      for (const auto& c : cols) md << " " << c.value(r) << " |";
+      md << "\n";
+    }
+    md << "\n";
+  }
+  if (!a.average_rank.empty()) {
+    md << "## Ranking across problems\n\nAverage rank of the mean length (1 = best; Friedman/Demšar).\n\n"
+          "| rank | configuration | average rank |\n|---:|---|---:|\n";
+    std::vector<std::size_t> order(a.configs.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](auto x, auto y) { return a.average_rank[x] < a.average_rank[y]; });
+    for (std::size_t i = 0; i < order.size(); ++i)
+      md << "| " << i + 1 << " | " << a.configs[order[i]].second.name << " | " << fixed(a.average_rank[order[i]], 2) << " |\n";
+    md << "\n";
+  }
+  if (!a.ablation_path.empty()) {
+    md << "## Ablation path\n\nFrom the baseline towards the target, one component at a time, keeping the best flip "
+          "(Fawcett and Hoos). Mean gap over all problems:\n\n| step | configuration | mean gap % |\n|---:|---|---:|\n";
+    for (std::size_t s = 0; s < a.ablation_path.size(); ++s) {
+      std::vector<double> gaps;
+      for (std::size_t p = 0; p < a.problems.size(); ++p)
+        for (const auto& r : a.results[p])
+          if (a.configs[r.config].second.name == a.ablation_path[s] && std::isfinite(r.gap)) gaps.push_back(r.gap);
+      md << "| " << s << " | " << a.ablation_path[s] << " | " << fixed(mean_of(gaps), 2) << " |\n";
+    }
+    md << "\n";
+  }
+  return md.str();
+}
+
+// The problem's map with each configuration's best path.
+std::string paths_svg(const Analysis& a, std::size_t p) {
+  const auto setup = nlohmann::json::parse(a.problems[p].setup_json);
+  std::unique_ptr<aco::Map> map;
+  try {
+    map = aco::load_map(a.experiment_dir / setup.at("map").get<std::string>());
+  } catch (const std::exception& e) {
+    return "<p>map not drawn: " + html_escape(e.what()) + "</p>";
+  }
+  const int w = map->width(), h = map->height();
+  const double scale = std::max(2.0, std::min(24.0, 480.0 / std::max(w, h)));
+  const double cell = w > 1 ? map->position({1, 0}).x() - map->position({0, 0}).x() : 1.0;
+  std::ostringstream svg;
+  svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w * scale + 200 << "\" height=\"" << h * scale
+      << "\"><rect width=\"" << w * scale << "\" height=\"" << h * scale << "\" fill=\"#fff\" stroke=\"#999\"/>";
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if (!map->passable({x, y}))
+        svg << "<rect x=\"" << x * scale << "\" y=\"" << y * scale << "\" width=\"" << scale << "\" height=\"" << scale
+            << "\" fill=\"#333\"/>";
+  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
+  int shown = 0;
+  for (const auto& r : a.results[p]) {
+    if (!r.best) continue;
+    const char* colour = colours[shown % 8];
+    svg << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << std::max(1.0, scale / 5)
+        << "\" stroke-opacity=\"0.8\" points=\"";
+    for (const auto& point : nlohmann::json::parse(r.best->path_json))
+      svg << (point[0].get<double>() / cell + 0.5) * scale << "," << (point[1].get<double>() / cell + 0.5) * scale << " ";
+    svg << "\"/><text x=\"" << w * scale + 8 << "\" y=\"" << 14 + 16 * shown << "\" font-size=\"12\" fill=\"" << colour
+        << "\">" << html_escape(a.configs[r.config].second.name) << " " << fixed(r.best->length, 2) << "</text>";
+    ++shown;
+  }
+  svg << "</svg>";
+  return svg.str();
+}
+
+std::string html(const Analysis& a, const std::string& md_intro) {
+  std::ostringstream out;
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>acobench: " << html_escape(a.name)
+      << "</title><style>body{font-family:sans-serif;margin:2em;max-width:1400px}table{border-collapse:collapse;"
+         "margin:1em 0}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}td:first-child,th:first-child{"
+         "text-align:left}svg{margin:0.5em}</style></head><body>\n<h1>acobench report: "
+      << html_escape(a.name) << "</h1>\n<p>" << html_escape(md_intro) << "</p>\n";
+  const auto cols = columns();
+  for (std::size_t p = 0; p < a.problems.size(); ++p) {
+    const double optimal = a.problems[p].optimal_length;
+    out << "<h2>" << html_escape(a.problems[p].name) << " (optimal " << fixed(optimal, 4) << ")</h2>\n<table><tr><th>configuration</th>";
+    for (const auto& c : cols) out << "<th>" << html_escape(c.title) << "</th>";
+    out << "</tr>\n";
+    for (const auto& r : a.results[p]) {
+      out << "<tr><td>" << html_escape(a.configs[r.config].second.name) << "</td>";
+      for (const auto& c : cols) out << "<td>" << html_escape(c.value(r)) << "</td>";
+      out << "</tr>\n";
+    }
+    out << "</table>\n";
+    BoxPlot box{"final path length: " + a.problems[p].name, "path length", {}, optimal > 0 ? std::optional(optimal) : std::nullopt};
+    LineChart chart;
+    chart.title = "best-so-far length (mean, 95 % CI): " + a.problems[p].name;
+    chart.y_label = "path length";
+    if (optimal > 0) chart.reference = optimal;
+    for (const auto& r : a.results[p]) {
+      const std::string& name = a.configs[r.config].second.name;
+      box.samples.push_back({name, r.lengths});
+      std::vector<std::vector<double>> curves;
+      for (const auto* t : r.runs)
+        if (!t->best_so_far.empty()) curves.push_back(t->best_so_far);
+      if (!curves.empty()) chart.series.push_back(convergence_series(name, curves));
+    }
+    out << box_plot_svg(box) << "\n";
+    if (!chart.series.empty()) out << line_chart_svg(chart) << "\n";
+    out << paths_svg(a, p) << "\n";
+  }
+  if (!a.average_rank.empty()) {
+    out << "<h2>Ranking across problems</h2><table><tr><th>configuration</th><th>average rank</th></tr>\n";
+    for (std::size_t c = 0; c < a.configs.size(); ++c)
+      out << "<tr><td>" << html_escape(a.configs[c].second.name) << "</td><td>" << fixed(a.average_rank[c], 2) << "</td></tr>\n";
+    out << "</table>\n";
+  }
+  if (!a.ablation_path.empty()) {
+    out << "<h2>Ablation path</h2>\n";
+    Series gaps{"mean gap %", {}, {}, {}};
+    for (const auto& name : a.ablation_path) {
+      std::vector<double> g;
+      for (std::size_t p = 0; p < a.problems.size(); ++p)
+        for (const auto& r : a.results[p])
+          if (a.configs[r.config].second.name == name && std::isfinite(r.gap)) g.push_back(r.gap);
+      gaps.value.push_back(mean_of(g));
+    }
+    out << "<ol start=\"0\">";
+    for (const auto& name : a.ablation_path) out << "<li>" << html_escape(name) << "</li>";
+    out << "</ol>\n" << line_chart_svg({"ablation path: mean gap to the optimum", "step", "gap %", {gaps}, std::nullopt, ""}) << "\n";
+  }
+  out << "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>\n</body></html>\n";
+  return out.str();
+}
+
+std::string csv(const Analysis& a) {
+  std::ostringstream out;
+  out << "problem,configuration,repetition,seed,solved,length,grid_length,gap_percent,turns,iterations,best_iteration,time_s,"
+         "ant_steps,stopped_by\n";
+  std::map<int, std::string> names;
+  for (const auto& [id, c] : a.configs) names[id] = c.name;
+  const auto quoted = [](const std::string& s) {
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  for (const auto& t : a.trials) {
+    const double optimal = a.problems[t.problem].optimal_length;
+    out << quoted(a.problems[t.problem].name) << "," << quoted(names.at(t.config)) << "," << t.repetition << "," << t.seed << ","
+        << (t.solved ? 1 : 0) << "," << (t.solved ? number(t.length, 10) : "") << ","
+        << (t.solved ? number(t.grid_length, 10) : "") << ","
+        << (t.solved && optimal > 0 ? number(100 * (t.length / optimal - 1), 6) : "") << "," << t.turns << "," << t.iterations
+        << "," << t.best_iteration << "," << number(t.time_s, 6) << "," << t.ant_steps << "," << t.stopped_by << "\n";
+  }
+  return out.str();
+}
+
+void write(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary);
+  out << text;
+  if (!out) throw aco::Error("cannot write " + file.string());
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> write_report(const std::filesystem::path& database, const std::filesystem::path& out) {
+  if (!std::filesystem::exists(database)) throw aco::Error(database.string() + ": no such results database");
+  const ResultsDb db(database);
+  const Analysis a = analyse(db);
+  std::filesystem::create_directories(out);
+  const std::string md = markdown(a, database);
+  const std::vector<std::filesystem::path> files = {out / "report.md", out / "report.html", out / "runs.csv"};
+  write(files[0], md);
+  write(files[1], html(a, md.substr(md.find("\n\n") + 2, md.find("\n\n", md.find("\n\n") + 2) - md.find("\n\n") - 2)));
+  write(files[2], csv(a));
+  return files;
+}
+
+}  // namespace acobench

@@ -1,0 +1,531 @@
+#include "results_db.hpp"
+
+#include <sqlite3.h>
+#include <unistd.h>
+
+#include <bit>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+#include <thread>
+
+#include "aco/error.hpp"
+
+namespace acobench {
+namespace {
+
+using aco::Error;
+
+// Bumped whenever the tables change in a way older readers would misread.
+const std::string kFormatVersion = "1";
+
+// OMPL's tables (as ompl_benchmark_statistics.py creates them) with our run and progress
+// attributes as columns; see the header for what each holds.
+const char* const kSchema = R"(
+CREATE TABLE experiments (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512), totaltime REAL,
+  timelimit REAL, memorylimit REAL, runcount INTEGER, version VARCHAR(128), hostname VARCHAR(1024),
+  cpuinfo TEXT, date DATETIME, seed VARCHAR(24), setup TEXT, optimal_length REAL);
+CREATE TABLE plannerConfigs (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512) NOT NULL, settings TEXT);
+CREATE TABLE enums (name VARCHAR(512), value INTEGER, description TEXT, PRIMARY KEY (name, value));
+CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, plannerid INTEGER,
+  repetition INTEGER, seed INTEGER, solved BOOLEAN, length REAL, grid_length REAL, gap REAL,
+  turns INTEGER, iterations INTEGER, best_iteration INTEGER, time REAL, ant_steps INTEGER,
+  stopped_by TEXT, path TEXT,
+  FOREIGN KEY (experimentid) REFERENCES experiments(id) ON DELETE CASCADE,
+  FOREIGN KEY (plannerid) REFERENCES plannerConfigs(id) ON DELETE CASCADE,
+  UNIQUE (experimentid, plannerid, repetition));
+CREATE TABLE progress (runid INTEGER, time REAL, iteration INTEGER, best_cost REAL,
+  PRIMARY KEY (runid, iteration), FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
+CREATE TABLE acobench_meta (key TEXT PRIMARY KEY, value TEXT);
+)";
+
+// One connection; every failure becomes an Error naming the file and SQLite's reason.
+class Connection {
+ public:
+  explicit Connection(const std::filesystem::path& file) : file_(file.string()) {
+    const int rc = sqlite3_open_v2(file_.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr);
+    if (rc != SQLITE_OK) {
+      const std::string reason = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
+      sqlite3_close(db_);
+      throw Error("cannot open results database " + file_ + ": " + reason);
+    }
+  }
+  ~Connection() { sqlite3_close(db_); }
+  Connection(const Connection&) = delete;
+  Connection& operator=(const Connection&) = delete;
+
+  void check(int rc, const std::string& doing) const {
+    if (rc != SQLITE_OK && rc != SQLITE_ROW && rc != SQLITE_DONE)
+      throw Error("results database " + file_ + ": " + doing + ": " + sqlite3_errmsg(db_));
+  }
+  void exec(const std::string& sql) { check(sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, nullptr), sql); }
+
+  sqlite3* handle() const { return db_; }
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+  sqlite3* db_ = nullptr;
+};
+
+// A prepared statement, reset before each use so it can be kept and reused.
+class Statement {
+ public:
+  Statement(const Connection& db, std::string sql) : db_(db), sql_(std::move(sql)) {
+    db_.check(sqlite3_prepare_v3(db_.handle(), sql_.c_str(), -1, SQLITE_PREPARE_PERSISTENT, &stmt_, nullptr),
+              "preparing " + sql_);
+  }
+  ~Statement() { sqlite3_finalize(stmt_); }
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+
+  // Starts a new execution with these parameters (?1, ?2, ...).
+  template <class... Values>
+  Statement& run(const Values&... values) {
+    sqlite3_reset(stmt_);
+    db_.check(sqlite3_clear_bindings(stmt_), sql_);
+    int index = 0;
+    (bind(++index, values), ...);
+    return *this;
+  }
+  // The next row: true if there is one, false when done.
+  bool next() {
+    const int rc = sqlite3_step(stmt_);
+    db_.check(rc, sql_);
+    return rc == SQLITE_ROW;
+  }
+  void finish() {
+    while (next()) {
+    }
+  }
+  // Whether the statement yields a row; reset at once so it holds no read open.
+  bool any() {
+    const bool found = next();
+    sqlite3_reset(stmt_);
+    return found;
+  }
+
+  bool null(int column) const { return sqlite3_column_type(stmt_, column) == SQLITE_NULL; }
+  std::int64_t integer(int column) const { return sqlite3_column_int64(stmt_, column); }
+  double real(int column) const { return sqlite3_column_double(stmt_, column); }
+  std::string text(int column) const {
+    const auto* bytes = reinterpret_cast<const char*>(sqlite3_column_text(stmt_, column));
+    return bytes ? std::string(bytes, static_cast<std::size_t>(sqlite3_column_bytes(stmt_, column))) : std::string();
+  }
+
+ private:
+  void bind(int i, std::int64_t v) { db_.check(sqlite3_bind_int64(stmt_, i, v), sql_); }
+  void bind(int i, int v) { bind(i, static_cast<std::int64_t>(v)); }
+  void bind(int i, double v) {
+    db_.check(std::isnan(v) ? sqlite3_bind_null(stmt_, i) : sqlite3_bind_double(stmt_, i, v), sql_);
+  }
+  void bind(int i, const std::string& v) {
+    db_.check(sqlite3_bind_text(stmt_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT), sql_);
+  }
+
+  const Connection& db_;
+  std::string sql_;
+  sqlite3_stmt* stmt_ = nullptr;
+};
+
+// BEGIN IMMEDIATE takes the write lock at once, so a check and the write it guards are atomic
+// even against another process. Rolled back unless committed.
+class Transaction {
+ public:
+  explicit Transaction(Connection& db) : db_(db) { db_.exec("BEGIN IMMEDIATE"); }
+  ~Transaction() {
+    if (!committed_) sqlite3_exec(db_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
+  }
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+  void commit() {
+    db_.exec("COMMIT");
+    committed_ = true;
+  }
+
+ private:
+  Connection& db_;
+  bool committed_ = false;
+};
+
+// A real that binds as SQL NULL.
+constexpr double kNull = std::numeric_limits<double>::quiet_NaN();
+
+double finite_or_null(double v) { return std::isfinite(v) ? v : kNull; }
+
+// 64-bit unsigned values keep their bits in SQLite's signed integers.
+std::int64_t to_sql(std::uint64_t v) { return std::bit_cast<std::int64_t>(v); }
+std::uint64_t from_sql(std::int64_t v) { return std::bit_cast<std::uint64_t>(v); }
+
+nlohmann::json parse_json(const std::string& text, const std::string& what) {
+  auto value = nlohmann::json::parse(text, nullptr, false);
+  if (value.is_discarded()) throw Error(what + " is not valid JSON: " + text.substr(0, 200));
+  return value;
+}
+
+std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
+
+// Where two canonical texts part, for telling the user what changed.
+std::string first_difference(const std::string& stored, const std::string& now) {
+  std::istringstream a(stored), b(now);
+  std::string line_a, line_b;
+  for (int line = 1;; ++line) {
+    const bool more_a = static_cast<bool>(std::getline(a, line_a));
+    const bool more_b = static_cast<bool>(std::getline(b, line_b));
+    if (!more_a && !more_b) return "they differ only in line endings";
+    if (!more_a || !more_b || line_a != line_b)
+      return "first difference at line " + std::to_string(line) + ": stored " +
+             (more_a ? in_quotes(line_a) : "(end)") + ", now " + (more_b ? in_quotes(line_b) : "(end)");
+  }
+}
+
+std::string hostname() {
+  char name[256] = {};
+  return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
+}
+
+// The CPU model and thread count, as OMPL records its cpuinfo: for reading results, not using them.
+std::string cpuinfo() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string model;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("model name", 0) != 0) continue;
+    const auto colon = line.find(':');
+    if (colon != std::string::npos) model = line.substr(line.find_first_not_of(' ', colon + 1));
+    break;
+  }
+  return model + " (" + std::to_string(std::thread::hardware_concurrency()) + " threads)";
+}
+
+// Opening would create a missing file: a report of a mistyped name must not.
+const std::filesystem::path& existing(const std::filesystem::path& file) {
+  if (!std::filesystem::is_regular_file(file)) throw Error(file.string() + ": no such results database");
+  return file;
+}
+
+// Bad problems are refused before opening, which would create the file.
+const std::filesystem::path& checked_before_opening(const std::filesystem::path& file,
+                                                    const std::vector<ProblemRecord>& problems) {
+  for (const auto& p : problems) parse_json(p.setup_json, "the setup of problem " + in_quotes(p.name));
+  return file;
+}
+
+}  // namespace
+
+struct ResultsDb::Impl {
+  explicit Impl(const std::filesystem::path& file) : db(file) {}
+
+  Connection db;
+  mutable std::mutex mutex;
+  std::vector<std::int64_t> experiment_ids;  // by problem index
+  std::map<std::int64_t, int> problem_of;    // by experiment id
+  std::vector<ProblemRecord> problems;
+  std::map<int, std::string> config_names;  // by id
+  std::optional<Statement> find_run, insert_run, insert_progress, add_time;
+
+  std::string file() const { return db.file(); }
+  void load();  // the problems, configurations and statements of an opened database
+
+  std::set<std::string> tables() {
+    std::set<std::string> names;
+    Statement list(db, "SELECT name FROM sqlite_master WHERE type = 'table'");
+    list.run();
+    while (list.next()) names.insert(list.text(0));
+    return names;
+  }
+
+  std::map<std::string, std::string> meta() {
+    std::map<std::string, std::string> values;
+    Statement read(db, "SELECT key, value FROM acobench_meta");
+    read.run();
+    while (read.next()) values[read.text(0)] = read.text(1);
+    return values;
+  }
+
+  std::vector<ProblemRecord> stored_problems() {
+    std::vector<ProblemRecord> stored;
+    Statement read(db, "SELECT name, setup, optimal_length FROM experiments ORDER BY id");
+    read.run();
+    while (read.next()) stored.push_back({read.text(0), read.text(1), read.null(2) ? -1.0 : read.real(2)});
+    return stored;
+  }
+
+  // Only reads: a file that is not ours stays as it was.
+  void check_is_ours(const std::string& experiment_name, const std::string& fingerprint) {
+    if (!tables().contains("acobench_meta"))
+      throw Error(file() + " is an SQLite database but not an acobench results database (it has no acobench_meta "
+                           "table); nothing in it was changed: give another results file");
+    const auto stored = meta();
+    const auto value = [&](const std::string& key) { return stored.contains(key) ? stored.at(key) : "(missing)"; };
+    const std::string reuse = "; nothing in it was changed: give another results file, or delete this one to start again";
+    if (value("format_version") != kFormatVersion)
+      throw Error(file() + " is an acobench results database of format version " + value("format_version") +
+                  ", this acobench reads version " + kFormatVersion + reuse);
+    if (value("experiment_name") != experiment_name)
+      throw Error(file() + " holds the results of experiment " + in_quotes(value("experiment_name")) + ", not of " +
+                  in_quotes(experiment_name) + reuse);
+    if (value("fingerprint") != fingerprint)
+      throw Error(file() + " holds the results of experiment " + in_quotes(experiment_name) +
+                  " with other trials: the experiment file changed since (" +
+                  first_difference(value("fingerprint"), fingerprint) + ")" + reuse);
+  }
+
+  void check_same_problems(const std::vector<ProblemRecord>& given) {
+    const auto stored = stored_problems();
+    if (stored.size() != given.size())
+      throw Error(file() + " holds " + std::to_string(stored.size()) + " problems, the experiment has " +
+                  std::to_string(given.size()) + " although its fingerprint is the same");
+    for (std::size_t i = 0; i < given.size(); ++i) {
+      const bool same = stored[i].name == given[i].name &&
+                        parse_json(stored[i].setup_json, "stored setup of problem " + in_quotes(stored[i].name)) ==
+                            parse_json(given[i].setup_json, "setup of problem " + in_quotes(given[i].name)) &&
+                        stored[i].optimal_length == (given[i].optimal_length < 0 ? -1.0 : given[i].optimal_length);
+      if (!same)
+        throw Error(file() + ": problem " + std::to_string(i) + " is stored as " + in_quotes(stored[i].name) + " " +
+                    stored[i].setup_json + ", the experiment gives " + in_quotes(given[i].name) + " " +
+                    given[i].setup_json + " although its fingerprint is the same");
+    }
+  }
+
+  // Creates the tables and rows of a new database; false if another process did it first.
+  bool create(const std::string& experiment_name, const std::string& fingerprint,
+              const std::vector<ProblemRecord>& given) {
+    Transaction transaction(db);
+    if (!tables().empty()) return false;
+    db.exec(kSchema);
+    Statement set(db, "INSERT INTO acobench_meta (key, value) VALUES (?1, ?2)");
+    set.run(std::string("format_version"), kFormatVersion).finish();
+    set.run(std::string("experiment_name"), experiment_name).finish();
+    set.run(std::string("fingerprint"), fingerprint).finish();
+    Statement add(db,
+                  "INSERT INTO experiments (name, totaltime, version, hostname, cpuinfo, date, setup, optimal_length) "
+                  "VALUES (?1, 0, ?2, ?3, ?4, datetime('now'), ?5, ?6)");
+    const std::string version = std::string("aco ") + ACOBENCH_VERSION, host = hostname(), cpu = cpuinfo();
+    for (const auto& p : given) {
+      add.run(p.name, version, host, cpu, p.setup_json, p.optimal_length >= 0 ? p.optimal_length : kNull).finish();
+    }
+    transaction.commit();
+    return true;
+  }
+
+  std::string trial_label(const TrialRecord& t) const {
+    return "trial (problem " + in_quotes(problems.at(static_cast<std::size_t>(t.problem)).name) + ", config " +
+           in_quotes(config_names.at(t.config)) + ", repetition " + std::to_string(t.repetition) + ")";
+  }
+
+  void check_trial(const TrialRecord& t) const {
+    if (t.problem < 0 || t.problem >= static_cast<int>(problems.size()))
+      throw Error(file() + ": a trial names problem " + std::to_string(t.problem) + ", the experiment has " +
+                  std::to_string(problems.size()));
+    if (!config_names.contains(t.config))
+      throw Error(file() + ": a trial names configuration id " + std::to_string(t.config) +
+                  ", which add_config() did not return");
+    const std::string label = trial_label(t);
+    if (t.best_so_far.size() != static_cast<std::size_t>(t.iterations))
+      throw Error(file() + ": " + label + " has " + std::to_string(t.best_so_far.size()) +
+                  " best-so-far values for " + std::to_string(t.iterations) + " iterations");
+    if (!nlohmann::json::accept(t.path_json))
+      throw Error(file() + ": the path of " + label + " is not valid JSON: " + t.path_json.substr(0, 200));
+  }
+};
+
+ResultsDb::ResultsDb(const std::filesystem::path& file, const std::string& experiment_name,
+                     const std::string& fingerprint, const std::vector<ProblemRecord>& problems)
+    : impl_(std::make_unique<Impl>(checked_before_opening(file, problems))) {
+  auto& d = *impl_;
+  d.db.check(sqlite3_busy_timeout(d.db.handle(), 10000), "setting the busy timeout");
+  std::set<std::string> tables;
+  try {
+    tables = d.tables();
+  } catch (const Error&) {
+    throw Error(file.string() + " is not an acobench results database (" + sqlite3_errmsg(d.db.handle()) +
+                "); nothing in it was changed: give another results file");
+  }
+  // WAL is switched on only once the file is known to be ours: switching rewrites its header.
+  bool created = false;
+  if (tables.empty()) {
+    d.db.exec("PRAGMA journal_mode = WAL");
+    created = d.create(experiment_name, fingerprint, problems);
+  }
+  if (!created) {
+    d.check_is_ours(experiment_name, fingerprint);
+    d.check_same_problems(problems);
+  }
+  Statement wal(d.db, "PRAGMA journal_mode = WAL");
+  wal.run();
+  if (!wal.next() || wal.text(0) != "wal")
+    throw Error("results database " + d.file() + ": cannot use write-ahead logging (journal mode " + wal.text(0) +
+                "), which resuming after a crash needs");
+  wal.finish();
+  d.db.exec("PRAGMA synchronous = NORMAL");
+  d.db.exec("PRAGMA foreign_keys = ON");
+  d.load();
+}
+
+ResultsDb::ResultsDb(const std::filesystem::path& file) : impl_(std::make_unique<Impl>(existing(file))) {
+  auto& d = *impl_;
+  d.db.check(sqlite3_busy_timeout(d.db.handle(), 10000), "setting the busy timeout");
+  bool ours = false;
+  try {
+    ours = d.tables().contains("acobench_meta");
+  } catch (const Error&) {
+  }
+  if (!ours) throw Error(file.string() + " is not an acobench results database");
+  const auto stored = d.meta();
+  if (!stored.contains("format_version") || stored.at("format_version") != kFormatVersion)
+    throw Error(file.string() + " is an acobench results database of another format version");
+  d.load();
+}
+
+void ResultsDb::Impl::load() {
+  problems = stored_problems();
+  Statement ids(db, "SELECT id FROM experiments ORDER BY id");
+  ids.run();
+  while (ids.next()) {
+    problem_of[ids.integer(0)] = static_cast<int>(experiment_ids.size());
+    experiment_ids.push_back(ids.integer(0));
+  }
+  Statement names(db, "SELECT id, name FROM plannerConfigs");
+  names.run();
+  while (names.next()) config_names[static_cast<int>(names.integer(0))] = names.text(1);
+
+  find_run.emplace(db, "SELECT id FROM runs WHERE experimentid = ?1 AND plannerid = ?2 AND repetition = ?3");
+  insert_run.emplace(db,
+                       "INSERT INTO runs (experimentid, plannerid, repetition, seed, solved, length, grid_length, gap, "
+                       "turns, iterations, best_iteration, time, ant_steps, stopped_by, path) "
+                       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15)");
+  insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost) VALUES (?1, ?2, ?3, ?4)");
+  add_time.emplace(db, "UPDATE experiments SET totaltime = totaltime + ?2 WHERE id = ?1");
+}
+
+ResultsDb::~ResultsDb() = default;
+
+int ResultsDb::add_config(const ConfigRecord& config) {
+  auto& d = *impl_;
+  const auto settings = parse_json(config.settings_json, "the settings of configuration " + in_quotes(config.name));
+  std::lock_guard lock(d.mutex);
+  Transaction transaction(d.db);
+  Statement find(d.db, "SELECT id, settings FROM plannerConfigs WHERE name = ?1");
+  find.run(config.name);
+  if (find.next()) {
+    if (parse_json(find.text(1), "the stored settings of configuration " + in_quotes(config.name)) != settings)
+      throw Error(d.file() + " already holds a configuration " + in_quotes(config.name) + " with other settings: " +
+                  find.text(1) + ", now " + config.settings_json);
+    return static_cast<int>(find.integer(0));
+  }
+  Statement add(d.db, "INSERT INTO plannerConfigs (name, settings) VALUES (?1, ?2)");
+  add.run(config.name, config.settings_json).finish();
+  const auto id = static_cast<int>(sqlite3_last_insert_rowid(d.db.handle()));
+  transaction.commit();
+  d.config_names[id] = config.name;
+  return id;
+}
+
+std::set<std::tuple<int, int, int>> ResultsDb::finished() const {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  std::set<std::tuple<int, int, int>> done;
+  Statement read(d.db, "SELECT experimentid, plannerid, repetition FROM runs");
+  read.run();
+  while (read.next())
+    done.emplace(d.problem_of.at(read.integer(0)), static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2)));
+  return done;
+}
+
+void ResultsDb::store(const TrialRecord& t) {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  d.check_trial(t);
+  const std::int64_t experiment = d.experiment_ids[static_cast<std::size_t>(t.problem)];
+  Transaction transaction(d.db);
+  if (d.find_run->run(experiment, t.config, t.repetition).any())
+    throw Error(d.file() + ": " + d.trial_label(t) + " is already stored");
+
+  const double optimum = d.problems[static_cast<std::size_t>(t.problem)].optimal_length;
+  const double gap = t.solved && optimum > 0 ? t.grid_length / optimum - 1.0 : kNull;
+  d.insert_run
+      ->run(experiment, t.config, t.repetition, to_sql(t.seed), t.solved ? 1 : 0, t.solved ? t.length : kNull,
+            t.solved ? t.grid_length : kNull, gap, t.turns, t.iterations, t.best_iteration, t.time_s, to_sql(t.ant_steps),
+            t.stopped_by, t.path_json)
+      .finish();
+  const std::int64_t run = sqlite3_last_insert_rowid(d.db.handle());
+  const double seconds_per_iteration = t.iterations > 0 ? t.time_s / t.iterations : 0.0;
+  for (int i = 1; i <= t.iterations; ++i)
+    d.insert_progress
+        ->run(run, i * seconds_per_iteration, i, finite_or_null(t.best_so_far[static_cast<std::size_t>(i - 1)]))
+        .finish();
+  d.add_time->run(experiment, t.time_s).finish();
+  transaction.commit();
+}
+
+std::vector<ProblemRecord> ResultsDb::problems() const {
+  std::lock_guard lock(impl_->mutex);
+  return impl_->problems;
+}
+
+std::vector<std::pair<int, ConfigRecord>> ResultsDb::configs() const {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  std::vector<std::pair<int, ConfigRecord>> all;
+  Statement read(d.db, "SELECT id, name, settings FROM plannerConfigs ORDER BY id");
+  read.run();
+  while (read.next()) all.push_back({static_cast<int>(read.integer(0)), {read.text(1), read.text(2)}});
+  return all;
+}
+
+std::vector<TrialRecord> ResultsDb::trials() const {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  std::vector<TrialRecord> all;
+  Statement runs(d.db,
+                 "SELECT id, experimentid, plannerid, repetition, seed, solved, length, grid_length, turns, iterations, "
+                 "best_iteration, time, ant_steps, stopped_by, path FROM runs "
+                 "ORDER BY experimentid, plannerid, repetition");
+  Statement progress(d.db, "SELECT best_cost FROM progress WHERE runid = ?1 ORDER BY iteration");
+  runs.run();
+  while (runs.next()) {
+    TrialRecord t;
+    t.problem = d.problem_of.at(runs.integer(1));
+    t.config = static_cast<int>(runs.integer(2));
+    t.repetition = static_cast<int>(runs.integer(3));
+    t.seed = from_sql(runs.integer(4));
+    t.solved = runs.integer(5) != 0;
+    t.length = runs.null(6) ? 0.0 : runs.real(6);
+    t.grid_length = runs.null(7) ? 0.0 : runs.real(7);
+    t.turns = static_cast<int>(runs.integer(8));
+    t.iterations = static_cast<int>(runs.integer(9));
+    t.best_iteration = static_cast<int>(runs.integer(10));
+    t.time_s = runs.real(11);
+    t.ant_steps = from_sql(runs.integer(12));
+    t.stopped_by = runs.text(13);
+    t.path_json = runs.text(14);
+    progress.run(runs.integer(0));
+    while (progress.next())
+      t.best_so_far.push_back(progress.null(0) ? std::numeric_limits<double>::infinity() : progress.real(0));
+    all.push_back(std::move(t));
+  }
+  return all;
+}
+
+std::string ResultsDb::meta(const std::string& key) const {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  Statement read(d.db, "SELECT value FROM acobench_meta WHERE key = ?1");
+  read.run(key);
+  if (!read.next()) throw Error(d.file() + ": no " + in_quotes(key) + " in acobench_meta");
+  return read.text(0);
+}
+
+void ResultsDb::set_meta(const std::string& key, const std::string& value) {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  Statement set(d.db, "INSERT OR REPLACE INTO acobench_meta (key, value) VALUES (?1, ?2)");
+  set.run(key, value).finish();
+}
+
+}  // namespace acobench

@@ -1,0 +1,109 @@
+#pragma once
+// acobench's results database: SQLite in the layout of OMPL's benchmark databases, so the tools
+// written for those (ompl_benchmark_statistics.py, Planner Arena) read it, and safe to resume.
+//
+// Mapping of an acobench experiment onto OMPL's tables (an OMPL "experiment" is one problem):
+//   experiments     one row per PROBLEM, in the order given to the constructor: id, name,
+//                   totaltime (sum of the stored trials' times, s), timelimit, memorylimit and
+//                   runcount (NULL: not ours to know), version ("aco <version>"), hostname,
+//                   cpuinfo, date (creation, UTC), seed (NULL: every trial has its own), setup
+//                   (the problem as JSON), plus the experiment property optimal_length (NULL if
+//                   unknown).
+//   plannerConfigs  one row per configuration: id, name, settings (its resolved settings, JSON).
+//   enums           OMPL's table of enum descriptions; empty, created for OMPL's tools.
+//   runs            one row per trial: id, experimentid, plannerid, repetition, seed, solved,
+//                   length, grid_length, gap, turns, iterations, best_iteration, time (s),
+//                   ant_steps, stopped_by, path (JSON waypoints); UNIQUE(experimentid, plannerid,
+//                   repetition). length, grid_length and gap are NULL when unsolved; gap is
+//                   grid_length / optimal_length - 1 (the relative excess of the grid path over
+//                   exact A* on the same graph, as acoplan reports it), NULL if the optimum is
+//                   unknown. seed holds the 64-bit seed's bits as SQLite's signed integer.
+//   progress        one row per iteration of a trial: runid, time, iteration (1-based),
+//                   best_cost (NULL until an ant arrived). OMPL's time is seconds since the run
+//                   started; the colony does not time its iterations, so time is estimated as
+//                   iteration * time / iterations. The key is (runid, iteration), not OMPL's
+//                   (runid, time): estimated times of a very fast run may coincide.
+//   acobench_meta   key/value: format_version, experiment_name and fingerprint (a canonical text
+//                   from the caller naming everything that defines the trials).
+//
+// Resuming: each trial is one transaction (its runs row with all its progress rows) in WAL mode,
+// so a process killed at any moment (SIGKILL included) leaves every committed trial whole and no
+// partial one; finished() tells a rerun what to skip. synchronous=NORMAL keeps commits across a
+// killed process; only a power cut may lose the last few.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace acobench {
+
+struct ProblemRecord {
+  std::string name;
+  std::string setup_json;  // the problem: map file, start, goal, neighbourhood...
+  double optimal_length;   // < 0: unknown (read back as -1)
+};
+
+struct ConfigRecord {
+  std::string name;
+  std::string settings_json;  // the full resolved settings
+};
+
+struct TrialRecord {
+  int problem = 0;  // index into the problems given to the constructor
+  int config = 0;   // id returned by add_config()
+  int repetition = 0;
+  std::uint64_t seed = 0;
+  bool solved = false;
+  double length = 0, grid_length = 0;  // only meaningful when solved (read back as 0 otherwise)
+  int turns = 0, iterations = 0, best_iteration = 0;
+  double time_s = 0;
+  std::uint64_t ant_steps = 0;
+  std::string stopped_by;
+  std::string path_json;            // "[[x,y],...]" or "[[x,y,z],...]"
+  std::vector<double> best_so_far;  // one per iteration; +infinity until solved (stored as NULL)
+};
+
+class ResultsDb {
+ public:
+  // Creates the database, or reopens one made with the same fingerprint (and problems). A
+  // database holding another experiment (other name or fingerprint), a file that is not an
+  // acobench database, or one of another format version is an aco::Error naming the file and
+  // what differs, and nothing in the file is touched.
+  ResultsDb(const std::filesystem::path& file, const std::string& experiment_name, const std::string& fingerprint,
+            const std::vector<ProblemRecord>& problems);
+  // Opens an existing results database for reading (reports); Error if it is not one.
+  explicit ResultsDb(const std::filesystem::path& file);
+  ~ResultsDb();
+  ResultsDb(const ResultsDb&) = delete;
+  ResultsDb& operator=(const ResultsDb&) = delete;
+
+  // The id of the configuration: the existing one if its name is stored with the same settings
+  // (compared as JSON values); an Error if the name is stored with other settings.
+  int add_config(const ConfigRecord& config);
+
+  // (problem, config id, repetition) of every stored trial.
+  std::set<std::tuple<int, int, int>> finished() const;
+
+  // Stores one trial and its progress rows in one transaction. Thread-safe. A trial already
+  // stored, an unknown problem or config, or a curve whose length is not `iterations` is an
+  // Error, and nothing is written.
+  void store(const TrialRecord& trial);
+
+  // For reports.
+  std::vector<ProblemRecord> problems() const;
+  std::vector<std::pair<int, ConfigRecord>> configs() const;  // (id, record) in insertion order
+  std::vector<TrialRecord> trials() const;                    // ordered by (problem, config, repetition)
+  std::string meta(const std::string& key) const;             // Error if the key is not stored
+  // Stores a key of acobench_meta beyond those open() writes (e.g. the ablation path).
+  void set_meta(const std::string& key, const std::string& value);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace acobench

@@ -1,0 +1,257 @@
+#include "runner.hpp"
+
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "aco/astar.hpp"
+#include "aco/error.hpp"
+#include "aco/map_io.hpp"
+#include "aco/planning.hpp"
+#include "results_db.hpp"
+
+namespace acobench {
+namespace {
+
+// A problem's map, and its graphs by neighbourhood and corner rule (built before the trials run).
+struct PreparedProblem {
+  std::unique_ptr<aco::Map> map;
+  std::map<std::pair<int, bool>, aco::Graph> graphs;
+  const aco::Graph& graph(const aco::GraphOptions& o) {
+    const std::pair<int, bool> key{static_cast<int>(o.neighbourhood), o.corner_cutting};
+    auto it = graphs.find(key);
+    if (it == graphs.end()) it = graphs.emplace(key, aco::build_graph(*map, o)).first;
+    return it->second;
+  }
+};
+
+struct PreparedConfig {
+  int id = 0;  // in the database
+  Configuration config;
+  Settings settings;
+};
+
+struct Trial {
+  int problem = 0;
+  const PreparedConfig* config = nullptr;
+  int repetition = 0;
+};
+
+void check_cell(const Problem& p, const aco::Map& map, aco::Cell c, const char* what) {
+  if (const std::string why = map.blocked_reason(c); !why.empty())
+    throw aco::Error("problem '" + p.name + "': " + what + " " + aco::to_string(c) + " is blocked (" + why + ") in " +
+                     map.name());
+}
+
+std::string path_json(const aco::Waypoints& path) {
+  const bool flat = std::all_of(path.begin(), path.end(), [](const auto& p) { return p.z() == 0.0; });
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& p : path) {
+    if (flat) j.push_back({p.x(), p.y()});
+    else j.push_back({p.x(), p.y(), p.z()});
+  }
+  return j.dump();
+}
+
+std::string settings_json(const PreparedConfig& c, aco::PluginRegistry& registry) {
+  nlohmann::json j;
+  j["keys"] = c.config.keys;
+  j["planner"] = c.settings.planner;
+  j["neighbourhood"] = static_cast<int>(c.settings.graph.neighbourhood);
+  j["corner-cutting"] = c.settings.graph.corner_cutting;
+  for (const auto& [name, value] : c.settings.colony.all()) j["colony"][name] = aco::to_string(value);
+  for (const auto& [slot, values] : aco::instantiate(registry, c.settings.pipeline).resolved) {
+    j["plugins"][slot]["plugin"] = c.settings.pipeline.slots.at(slot).plugin;
+    for (const auto& [name, value] : values.all()) j["plugins"][slot]["parameters"][name] = aco::to_string(value);
+  }
+  for (const auto& [name, value] : c.settings.planner_parameters.all()) j["planner_parameters"][name] = aco::to_string(value);
+  return j.dump();
+}
+
+class Runner {
+ public:
+  Runner(const Experiment& e, aco::PluginRegistry& registry, const RunOptions& options)
+      : e_(e), registry_(registry), options_(options) {
+    const Settings base = resolve(e.baseline, registry);
+    std::vector<ProblemRecord> records;
+    for (const Problem& p : e.problems) {
+      PreparedProblem prepared;
+      prepared.map = aco::load_map(p.map);
+      for (const auto& [c, what] : {std::pair{p.start, "start"}, std::pair{p.goal, "goal"}}) check_cell(p, *prepared.map, c, what);
+      // The optimal length, once per problem, on the baseline's graph (a 16-neighbourhood
+      // configuration may beat it: its gap is then negative).
+      const aco::Graph& graph = prepared.graph(base.graph);
+      const auto optimal = aco::astar(graph, graph.node(p.start), graph.node(p.goal));
+      nlohmann::json setup = {{"map", p.map.lexically_relative(e.file.parent_path()).generic_string()},
+                              {"start", {p.start.x, p.start.y}},
+                              {"goal", {p.goal.x, p.goal.y}},
+                              {"reference", aco::describe(base.graph)}};
+      records.push_back({p.name, setup.dump(), optimal ? optimal->length : -1.0});
+      problems_.push_back(std::move(prepared));
+    }
+    db_ = std::make_unique<ResultsDb>(options.database, e.name, e.fingerprint(), records);
+    finished_ = db_->finished();
+    // Where the maps are, for the report's pictures (not part of the identity: the folder may move).
+    db_->set_meta("experiment_file", std::filesystem::absolute(e.file).lexically_normal().string());
+  }
+
+  RunSummary run() {
+    const auto began = std::chrono::steady_clock::now();
+    RunSummary summary;
+    std::vector<const PreparedConfig*> fixed;
+    for (const auto& c : e_.configurations) fixed.push_back(&add(c));
+    std::vector<std::vector<std::string>> components;
+    if (e_.ablation_target) components = ablation_components(e_.baseline, *e_.ablation_target);
+    const std::size_t n = components.size();
+    total_ = (fixed.size() + n * (n + 1) / 2) * e_.problems.size() * e_.repetitions;
+    summary.trials = total_;
+
+    run_trials(fixed, summary);
+    // Fawcett and Hoos's ablation path: from the baseline, flip each remaining component in
+    // turn, keep the best flip, repeat until the configuration is the target.
+    Configuration current = e_.baseline;
+    std::vector<std::string> path{current.name};
+    for (int round = 1; !components.empty(); ++round) {
+      std::vector<const PreparedConfig*> candidates;
+      for (const auto& component : components) {
+        Configuration c = flip(current, *e_.ablation_target, component);
+        c.name = "ablation " + std::to_string(round) + ": " + label(component, *e_.ablation_target);
+        candidates.push_back(&add(c));
+      }
+      run_trials(candidates, summary);
+      const auto best = std::min_element(candidates.begin(), candidates.end(), [this](auto* a, auto* b) {
+        return score(*a) < score(*b);
+      }) - candidates.begin();
+      current = candidates[best]->config;
+      path.push_back(current.name);
+      components.erase(components.begin() + best);
+    }
+    if (e_.ablation_target) db_->set_meta("ablation_path", nlohmann::json(path).dump());
+    summary.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    return summary;
+  }
+
+ private:
+  const PreparedConfig& add(const Configuration& c) {
+    auto prepared = std::make_unique<PreparedConfig>();
+    prepared->config = c;
+    prepared->settings = resolve(c, registry_);
+    prepared->id = db_->add_config({c.name, settings_json(*prepared, registry_)});
+    for (auto& p : problems_) p.graph(prepared->settings.graph);
+    configs_.push_back(std::move(prepared));
+    return *configs_.back();
+  }
+
+  static std::string label(const std::vector<std::string>& component, const Configuration& target) {
+    std::string text;
+    for (const auto& k : component) {
+      if (!text.empty()) text += " ";
+      text += k + "=" + (target.keys.count(k) ? target.keys.at(k) : "default");
+    }
+    return text;
+  }
+
+  // Lower is better: failures first, then the mean over problems of the mean length relative
+  // to the optimum.
+  std::pair<int, double> score(const PreparedConfig& c) const {
+    int failures = 0;
+    double relative = 0.0;
+    for (const auto& t : scores_.at(c.id)) {
+      if (!t.first) ++failures;
+      else relative += t.second;
+    }
+    return {failures, relative};
+  }
+
+  void run_trials(const std::vector<const PreparedConfig*>& configs, RunSummary& summary) {
+    std::vector<Trial> trials;
+    for (const auto* c : configs)
+      for (int p = 0; p < static_cast<int>(e_.problems.size()); ++p)
+        for (int r = 0; r < e_.repetitions; ++r) {
+          if (finished_.count({p, c->id, r})) {
+            ++summary.skipped;
+            ++done_;
+            continue;
+          }
+          trials.push_back({p, c, r});
+        }
+    if (options_.progress) options_.progress(done_, total_);
+    std::unique_ptr<tbb::global_control> threads;
+    if (options_.threads > 0)
+      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options_.threads);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, trials.size(), 1), [&](const auto& range) {
+      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+        const TrialRecord record = run_trial(trials[i]);
+        db_->store(record);
+        const std::lock_guard lock(progress_mutex_);
+        ++done_;
+        ++summary.ran;
+        if (options_.progress) options_.progress(done_, total_);
+      }
+    });
+    // The ablation's choices need every trial's result, including those of earlier runs.
+    if (!e_.ablation_target) return;
+    scores_.clear();
+    for (const auto& t : db_->trials()) {
+      const auto& problem = db_->problems()[t.problem];
+      scores_[t.config].emplace_back(t.solved, problem.optimal_length > 0 ? t.length / problem.optimal_length : t.length);
+    }
+  }
+
+  TrialRecord run_trial(const Trial& t) {
+    const Problem& problem = e_.problems[t.problem];
+    const Settings& s = t.config->settings;
+    const aco::Graph& graph = problems_[t.problem].graphs.at({static_cast<int>(s.graph.neighbourhood), s.graph.corner_cutting});
+    aco::PlanRequest request;
+    request.planner = s.planner;
+    request.pipeline = s.pipeline;
+    request.colony = aco::colony_settings(s.colony);
+    request.colony.seed = trial_seed(e_.seed, problem.name, t.repetition);
+    request.planner_parameters = s.planner_parameters;
+    const aco::PlanOutcome o = aco::plan(registry_, graph, graph.node(problem.start), graph.node(problem.goal), request);
+    TrialRecord r;
+    r.problem = t.problem;
+    r.config = t.config->id;
+    r.repetition = t.repetition;
+    r.seed = o.seed;
+    r.solved = o.solved;
+    r.length = o.length;
+    r.grid_length = o.grid_length;
+    r.turns = o.turns;
+    r.iterations = o.iterations;
+    r.best_iteration = o.best_iteration;
+    r.time_s = o.time_ms / 1000.0;
+    r.ant_steps = o.ant_steps;
+    r.stopped_by = o.stopped_by;
+    r.path_json = path_json(o.path);
+    r.best_so_far = o.best_so_far;
+    return r;
+  }
+
+  const Experiment& e_;
+  aco::PluginRegistry& registry_;
+  RunOptions options_;
+  std::vector<PreparedProblem> problems_;
+  std::vector<std::unique_ptr<PreparedConfig>> configs_;
+  std::unique_ptr<ResultsDb> db_;
+  std::set<std::tuple<int, int, int>> finished_;
+  std::map<int, std::vector<std::pair<bool, double>>> scores_;
+  std::mutex progress_mutex_;
+  std::size_t done_ = 0;
+  std::size_t total_ = 0;
+};
+
+}  // namespace
+
+RunSummary run_experiment(const Experiment& experiment, aco::PluginRegistry& registry, const RunOptions& options) {
+  return Runner(experiment, registry, options).run();
+}
+
+}  // namespace acobench

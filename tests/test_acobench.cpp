@@ -1,0 +1,261 @@
+// acobench: experiment files, trial seeds, the ablation path, resuming after SIGKILL, reports.
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sqlite3.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "acobench/experiment.hpp"
+#include "acobench/results_db.hpp"
+#include "aco/error.hpp"
+#include "support.hpp"
+
+using Catch::Contains;
+
+namespace {
+
+std::string map1() { return (test::data_dir() / "maps/classic20/map1.txt").string(); }
+
+// An experiment file in a fresh folder; {MAP1} and {ARENA} stand for absolute paths.
+std::filesystem::path experiment(const std::string& text) {
+  std::string yaml = text;
+  for (const auto& [key, value] : {std::pair<std::string, std::string>{"{MAP1}", map1()},
+                                   {"{ARENA}", (test::data_dir() / "maps/movingai/arena.map.scen").string()}})
+    for (auto at = yaml.find(key); at != std::string::npos; at = yaml.find(key)) yaml.replace(at, key.size(), value);
+  return test::temp_file("experiment.yaml", yaml);
+}
+
+acobench::Experiment load(const std::string& text) { return acobench::load_experiment(experiment(text), test::plugins()); }
+
+const char* kSmall = R"(name: small
+seed: 7
+repetitions: 4
+problems:
+  - map: {MAP1}
+    start: [0, 0]
+    goal: [19, 19]
+settings:
+  ants: 10
+  iterations: 15
+  corner-cutting: true
+baseline:
+  name: AS
+  update: {plugin: ant_system, rho: 0.3}
+configurations:
+  - name: ACS
+    update: {plugin: acs, q0: 0.7}
+factorial:
+  beta: [3, 7]
+)";
+
+test::CommandResult run_acobench(const std::vector<std::string>& args) {
+  std::vector<std::string> argv{ACO_TEST_ACOBENCH};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return test::run(argv);
+}
+
+std::string file_bytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Every trial's identity and results, ordered, without the times.
+std::vector<std::string> trial_rows(const std::filesystem::path& db) {
+  std::vector<std::string> rows;
+  for (const auto& t : acobench::ResultsDb(db).trials()) {
+    std::ostringstream row;
+    row.precision(17);
+    row << t.problem << " " << t.config << " " << t.repetition << " " << t.seed << " " << t.solved << " " << t.length << " "
+        << t.best_iteration << " " << t.ant_steps << " " << t.path_json;
+    for (double b : t.best_so_far) row << " " << b;
+    rows.push_back(row.str());
+  }
+  return rows;
+}
+
+int count_runs(const std::filesystem::path& db) {
+  sqlite3* handle = nullptr;
+  int count = -1;
+  if (sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
+    sqlite3_stmt* statement = nullptr;
+    if (sqlite3_prepare_v2(handle, "SELECT count(*) FROM runs", -1, &statement, nullptr) == SQLITE_OK &&
+        sqlite3_step(statement) == SQLITE_ROW)
+      count = sqlite3_column_int(statement, 0);
+    sqlite3_finalize(statement);
+  }
+  sqlite3_close(handle);
+  return count;
+}
+
+}  // namespace
+
+TEST_CASE("an experiment file expands into named, factorial and baseline configurations", "[acobench]") {
+  const auto e = load(kSmall);
+  CHECK(e.name == "small");
+  CHECK(e.repetitions == 4);
+  REQUIRE(e.problems.size() == 1);
+  CHECK(e.problems[0].name == "map1");
+  REQUIRE(e.configurations.size() == 4);
+  CHECK(e.configurations[0].name == "AS");
+  CHECK(e.configurations[1].name == "ACS");
+  CHECK(e.configurations[2].name == "beta=3");
+  CHECK(e.configurations[3].name == "beta=7");
+  // A configuration inherits the common settings; a new update plugin drops the old one's rho.
+  CHECK(e.configurations[1].keys.at("ants") == "10");
+  CHECK(e.configurations[1].keys.at("update") == "acs");
+  CHECK(e.configurations[1].keys.count("update.rho") == 0);
+  CHECK(e.configurations[2].keys.at("update.rho") == "0.3");
+  const auto s = acobench::resolve(e.configurations[1], test::plugins());
+  CHECK(s.graph.corner_cutting);
+  CHECK(s.pipeline.slots.at("update").params.at("q0") == "0.7");
+  CHECK(s.colony.integer("ants") == 10);
+}
+
+TEST_CASE("a factorial over two factors gives every combination", "[acobench]") {
+  const auto e = load(std::string(kSmall) + "  update: [ant_system, max_min]\n");
+  REQUIRE(e.configurations.size() == 2 + 4);
+  CHECK(e.configurations[2].name == "beta=3,update=ant_system");
+  CHECK(e.configurations[5].name == "beta=7,update=max_min");
+  CHECK(e.configurations[5].keys.count("update.rho") == 0);
+}
+
+TEST_CASE("experiment file mistakes name the file, the line and the key", "[acobench][errors]") {
+  CHECK_THROWS_WITH(load("name: x\nproblems: [\n"), Contains("experiment.yaml:") && Contains("malformed YAML"));
+  std::string bad_plugin = kSmall;
+  bad_plugin.replace(bad_plugin.find("plugin: acs"), 11, "plugin: acz");
+  CHECK_THROWS_WITH(load(bad_plugin), Contains("experiment.yaml:17") && Contains("unknown update plugin 'acz'"));
+  std::string bad_param = kSmall;
+  bad_param.replace(bad_param.find("q0: 0.7"), 7, "qo: 0.7");
+  CHECK_THROWS_WITH(load(bad_param), Contains("experiment.yaml:17") && Contains("q0"));
+  std::string out_of_range = kSmall;
+  out_of_range.replace(out_of_range.find("rho: 0.3"), 8, "rho: 3");
+  CHECK_THROWS_WITH(load(out_of_range), Contains("experiment.yaml:14") && Contains("rho"));
+  std::string unknown_key = kSmall;
+  unknown_key.replace(unknown_key.find("ants: 10"), 8, "antz: 10");
+  CHECK_THROWS_WITH(load(unknown_key), Contains("experiment.yaml:9") && Contains("did you mean 'ants'"));
+  CHECK_THROWS_WITH(load(std::string(kSmall) + "ablation: {target: nothing}\n"), Contains("ablation target 'nothing'"));
+  CHECK_THROWS_WITH(load(std::string(kSmall) + "colour: blue\n"), Contains("unknown key 'colour'"));
+  std::string seeded = kSmall;
+  seeded.replace(seeded.find("ants: 10"), 8, "seed: 3");
+  CHECK_THROWS_WITH(load(seeded), Contains("set per trial"));
+  CHECK_THROWS_WITH(load("problems:\n  - map: {MAP1}\n    start: [0, 0]\n"), Contains("needs map, start and goal"));
+}
+
+TEST_CASE("a trial's seed depends on the master seed, the problem and the repetition only", "[acobench]") {
+  const auto a = acobench::trial_seed(1, "map1", 0);
+  CHECK(a == acobench::trial_seed(1, "map1", 0));
+  CHECK(a != acobench::trial_seed(2, "map1", 0));
+  CHECK(a != acobench::trial_seed(1, "map2", 0));
+  CHECK(a != acobench::trial_seed(1, "map1", 1));
+  CHECK(a < (std::uint64_t{1} << 63));  // within the colony's seed range
+}
+
+TEST_CASE("the ablation path flips one component at a time; a slot's plugin carries its parameters", "[acobench]") {
+  acobench::Configuration from{"from", {{"update", "ant_system"}, {"update.rho", "0.3"}, {"beta", "7"}}, {}};
+  acobench::Configuration to{"to", {{"update", "acs"}, {"update.q0", "0.7"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}};
+  const auto components = acobench::ablation_components(from, to);
+  REQUIRE(components.size() == 3);  // beta, init, update (+ update.q0, update.rho)
+  const auto update = std::find_if(components.begin(), components.end(), [](const auto& c) { return c.front() == "update"; });
+  REQUIRE(update != components.end());
+  CHECK(update->size() == 3);
+  const auto flipped = acobench::flip(from, to, *update);
+  CHECK(flipped.keys.at("update") == "acs");
+  CHECK(flipped.keys.at("update.q0") == "0.7");
+  CHECK(flipped.keys.count("update.rho") == 0);
+  CHECK(flipped.keys.at("beta") == "7");
+}
+
+TEST_CASE("acobench runs an experiment, resumes it, refuses another one's database and reports", "[acobench][slow]") {
+  const auto file = experiment(std::string(kSmall) + "ablation: {target: ACS}\n");
+  const auto db = file.parent_path() / "small.db";
+  const auto first = run_acobench({"run", file.string(), "--db", db.string(), "--threads", "1"});
+  REQUIRE(first.exit_code == 0);
+  CHECK_THAT(first.out, Contains("20 trials, 0 already in"));  // 4 configs + 1 ablation step, 4 repetitions
+  const auto again = run_acobench({"run", file.string(), "--db", db.string()});
+  REQUIRE(again.exit_code == 0);
+  CHECK_THAT(again.out, Contains("20 trials, 20 already in"));
+  CHECK_THAT(again.out, Contains("0 run"));
+
+  // The thread count does not change any result.
+  const auto db2 = file.parent_path() / "two_threads.db";
+  REQUIRE(run_acobench({"run", file.string(), "--db", db2.string(), "--threads", "2"}).exit_code == 0);
+  CHECK(trial_rows(db) == trial_rows(db2));
+
+  // Another experiment (more repetitions) must not touch this database.
+  std::string other = kSmall;
+  other.replace(other.find("repetitions: 4"), 14, "repetitions: 5");
+  const auto other_file = test::temp_file("experiment.yaml", std::string(other).replace(other.find("{MAP1}"), 6, map1()));
+  const std::string before = file_bytes(db);
+  const auto refused = run_acobench({"run", other_file.string(), "--db", db.string()});
+  CHECK(refused.exit_code == 1);
+  CHECK_THAT(refused.err, Contains("experiment file changed"));
+  CHECK(file_bytes(db) == before);
+
+  const auto out = file.parent_path() / "report";
+  const auto report = run_acobench({"report", db.string(), "--out", out.string()});
+  REQUIRE(report.exit_code == 0);
+  const std::string html = file_bytes(out / "report.html");
+  CHECK_THAT(html, Contains("class=\"boxplot\""));
+  CHECK_THAT(html, Contains("class=\"convergence\""));
+  CHECK_THAT(html, Contains("class=\"paths\""));
+  CHECK_THAT(html, Contains("Ablation path"));
+  CHECK(html.find("http://") == html.find("http://www.w3.org/2000/svg"));  // no link but the SVG namespace
+  const std::string md = file_bytes(out / "report.md");
+  CHECK_THAT(md, Contains("| ACS | 4 | 100 % |"));
+  CHECK_THAT(md, Contains("## Ranking across problems"));
+  const std::string csv = file_bytes(out / "runs.csv");
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 20);
+}
+
+TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly once", "[acobench][slow]") {
+  // Enough trials that the kill lands mid-way: 2 configurations x 150 repetitions of a few ms.
+  std::string text = kSmall;
+  text.replace(text.find("repetitions: 4"), 14, "repetitions: 150");
+  text.replace(text.find("ants: 10"), 8, "ants: 40");
+  text.replace(text.find("iterations: 15"), 14, "iterations: 60");
+  text.resize(text.find("factorial:"));
+  const auto file = experiment(text);
+  const auto killed = file.parent_path() / "killed.db", whole = file.parent_path() / "whole.db";
+  REQUIRE(run_acobench({"run", file.string(), "--db", whole.string()}).exit_code == 0);
+
+  const std::string exe = ACO_TEST_ACOBENCH, db_arg = killed.string(), file_arg = file.string();
+  std::vector<char*> argv{const_cast<char*>(exe.c_str()), const_cast<char*>("run"), const_cast<char*>(file_arg.c_str()),
+                          const_cast<char*>("--db"), const_cast<char*>(db_arg.c_str()), const_cast<char*>("--threads"),
+                          const_cast<char*>("1"), nullptr};
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  pid_t child = 0;
+  REQUIRE(posix_spawn(&child, exe.c_str(), &actions, nullptr, argv.data(), environ) == 0);
+  posix_spawn_file_actions_destroy(&actions);
+  // Kill once some trials are committed; the loop gives up after a minute rather than hang.
+  int stored = 0;
+  for (int i = 0; i < 60000 && stored < 10; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (std::filesystem::exists(killed)) stored = std::max(stored, count_runs(killed));
+  }
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+  REQUIRE(WIFSIGNALED(status));
+  const int at_kill = count_runs(killed);
+  INFO("trials stored when killed: " << at_kill);
+  CHECK(at_kill >= 10);
+  CHECK(at_kill < 300);
+
+  const auto rerun = run_acobench({"run", file.string(), "--db", killed.string()});
+  REQUIRE(rerun.exit_code == 0);
+  CHECK_THAT(rerun.out, Contains(std::to_string(at_kill) + " already in"));
+  CHECK(count_runs(killed) == 300);
+  CHECK(trial_rows(killed) == trial_rows(whole));
+}

@@ -1,0 +1,336 @@
+// acobench's results database: OMPL's layout, read-back, refusing foreign files, surviving SIGKILL.
+#include <catch2/catch.hpp>
+
+#include <signal.h>
+#include <sqlite3.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <tuple>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "acobench/results_db.hpp"
+#include "aco/error.hpp"
+#include "support.hpp"
+
+using Catch::Contains;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+const std::string kName = "ablation";
+const std::string kFingerprint = "experiment ablation\nants = 50\nmaps = map1, arena\n";
+const std::vector<acobench::ProblemRecord> kProblems{
+    {"map1", R"({"map":"data/maps/classic20/map1.txt","start":[0,0],"goal":[19,19],"neighbourhood":8})", 28.38},
+    {"arena", R"({"map":"arena.map","start":[1,2],"goal":[40,41],"neighbourhood":8})", -1.0}};
+
+fs::path fresh_db() { return test::temp_file("unused", "").parent_path() / "results.db"; }
+
+acobench::ResultsDb open(const fs::path& file, const std::string& fingerprint = kFingerprint) {
+  return acobench::ResultsDb(file, kName, fingerprint, kProblems);
+}
+
+acobench::ConfigRecord config(const std::string& name, double rho) {
+  return {name, R"({"update":")" + name + R"(","update.rho":)" + std::to_string(rho) + "}"};
+}
+
+// A trial whose values all depend on its key, solved from iteration 3 on unless `solved` is false.
+acobench::TrialRecord trial(int problem, int config_id, int repetition, bool solved = true, int iterations = 6) {
+  acobench::TrialRecord t;
+  t.problem = problem;
+  t.config = config_id;
+  t.repetition = repetition;
+  t.seed = 0xFFFF'FFFF'0000'0000ULL + static_cast<std::uint64_t>(repetition);  // above INT64_MAX
+  t.solved = solved;
+  t.length = solved ? 30.5 + repetition : 0.0;
+  t.grid_length = solved ? 31.25 + repetition : 0.0;
+  t.turns = solved ? 4 + problem : 0;
+  t.iterations = iterations;
+  t.best_iteration = solved ? 3 : 0;
+  t.time_s = 0.125 * (repetition + 1);
+  t.ant_steps = 1000 + static_cast<std::uint64_t>(repetition);
+  t.stopped_by = solved ? "stagnation" : "iterations";
+  t.path_json = solved ? "[[0,0],[5.5,4],[19,19]]" : "[]";
+  for (int i = 1; i <= iterations; ++i) t.best_so_far.push_back(solved && i >= 3 ? 40.0 - i : kInf);
+  return t;
+}
+
+void check_equal(const acobench::TrialRecord& a, const acobench::TrialRecord& b) {
+  CHECK(a.problem == b.problem);
+  CHECK(a.config == b.config);
+  CHECK(a.repetition == b.repetition);
+  CHECK(a.seed == b.seed);
+  CHECK(a.solved == b.solved);
+  CHECK(a.length == b.length);
+  CHECK(a.grid_length == b.grid_length);
+  CHECK(a.turns == b.turns);
+  CHECK(a.iterations == b.iterations);
+  CHECK(a.best_iteration == b.best_iteration);
+  CHECK(a.time_s == b.time_s);
+  CHECK(a.ant_steps == b.ant_steps);
+  CHECK(a.stopped_by == b.stopped_by);
+  CHECK(a.path_json == b.path_json);
+  CHECK(a.best_so_far == b.best_so_far);  // infinities compare equal
+}
+
+std::string bytes(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// The first column of the first row of a query, as text ("NULL" for NULL), run on the file
+// directly with SQLite.
+std::string sql_value(const fs::path& file, const std::string& sql) {
+  sqlite3* raw = nullptr;
+  const int rc = sqlite3_open_v2(file.c_str(), &raw, SQLITE_OPEN_READWRITE, nullptr);
+  std::unique_ptr<sqlite3, decltype(&sqlite3_close)> db(raw, sqlite3_close);
+  REQUIRE(rc == SQLITE_OK);
+  sqlite3_stmt* raw_statement = nullptr;
+  INFO(sql << ": " << sqlite3_errmsg(raw));
+  REQUIRE(sqlite3_prepare_v2(raw, sql.c_str(), -1, &raw_statement, nullptr) == SQLITE_OK);
+  std::unique_ptr<sqlite3_stmt, decltype(&sqlite3_finalize)> statement(raw_statement, sqlite3_finalize);
+  REQUIRE(sqlite3_step(raw_statement) == SQLITE_ROW);
+  const auto* text = reinterpret_cast<const char*>(sqlite3_column_text(raw_statement, 0));
+  return text ? text : "NULL";
+}
+
+}  // namespace
+
+TEST_CASE("a results database reads back every stored trial after reopening", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  std::vector<acobench::TrialRecord> stored;
+  int as = 0, mmas = 0;
+  {
+    auto db = open(file);
+    as = db.add_config(config("ant_system", 0.5));
+    mmas = db.add_config(config("max_min", 0.02));
+    CHECK(as != mmas);
+    // Stored out of order: trials() sorts by (problem, config, repetition).
+    for (int problem : {1, 0})
+      for (int id : {mmas, as})
+        for (int repetition : {1, 0}) {
+          stored.push_back(trial(problem, id, repetition, !(problem == 1 && repetition == 1)));
+          db.store(stored.back());
+        }
+  }
+  std::sort(stored.begin(), stored.end(), [](const auto& a, const auto& b) {
+    return std::tie(a.problem, a.config, a.repetition) < std::tie(b.problem, b.config, b.repetition);
+  });
+
+  auto db = open(file);
+  const auto problems = db.problems();
+  REQUIRE(problems.size() == 2);
+  CHECK(problems[0].name == "map1");
+  CHECK(problems[0].setup_json == kProblems[0].setup_json);
+  CHECK(problems[0].optimal_length == 28.38);
+  CHECK(problems[1].optimal_length == -1.0);
+  const auto configs = db.configs();
+  REQUIRE(configs.size() == 2);
+  CHECK(configs[0].first == as);
+  CHECK(configs[0].second.name == "ant_system");
+  CHECK(configs[1].second.settings_json == config("max_min", 0.02).settings_json);
+  CHECK(db.meta("experiment_name") == kName);
+  CHECK(db.meta("fingerprint") == kFingerprint);
+  CHECK(db.meta("format_version") == "1");
+  REQUIRE_THROWS_WITH(db.meta("colour"), Contains("no 'colour'"));
+
+  const auto read = db.trials();
+  REQUIRE(read.size() == stored.size());
+  for (std::size_t i = 0; i < read.size(); ++i) check_equal(read[i], stored[i]);
+  CHECK(read[0].best_so_far[0] == kInf);
+
+  const auto done = db.finished();
+  CHECK(done.size() == 8);
+  CHECK(done.contains({1, mmas, 1}));
+  CHECK_FALSE(done.contains({1, mmas, 2}));
+
+  // The OMPL columns: one experiment per problem, NULLs where a value does not exist.
+  CHECK(sql_value(file, "SELECT count(*) FROM experiments") == "2");
+  CHECK(sql_value(file, "SELECT totaltime FROM experiments WHERE name = 'map1'") == "0.75");  // 2 configs x (0.125 + 0.25)
+  CHECK(sql_value(file, "SELECT count(*) FROM runs WHERE length IS NULL AND gap IS NULL AND solved = 0") == "2");
+  CHECK(sql_value(file, "SELECT count(*) FROM runs r JOIN experiments e ON r.experimentid = e.id "
+                        "WHERE e.name = 'arena' AND r.gap IS NULL") == "4");  // optimum unknown
+  CHECK(std::stod(sql_value(file, "SELECT gap FROM runs r JOIN experiments e ON r.experimentid = e.id "
+                                  "WHERE e.name = 'map1' AND r.repetition = 0 LIMIT 1")) ==
+        Approx(31.25 / 28.38 - 1.0));
+  CHECK(sql_value(file, "SELECT count(*) FROM progress") == "48");
+  CHECK(sql_value(file, "SELECT count(*) FROM progress WHERE best_cost IS NULL") == "24");  // 6 solved x 2 + 2 unsolved x 6
+  // The estimated time of the last iteration is the trial's time.
+  CHECK(sql_value(file, "SELECT count(*) FROM progress p JOIN runs r ON p.runid = r.id "
+                        "WHERE p.iteration = r.iterations AND p.time != r.time") == "0");
+}
+
+TEST_CASE("a configuration name keeps one set of settings", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  auto db = open(file);
+  const int id = db.add_config({"mmas", R"({"rho":0.02,"p_best":0.05})"});
+  CHECK(db.add_config({"mmas", R"({ "p_best": 0.05, "rho": 0.02 })"}) == id);  // the same JSON value
+  REQUIRE_THROWS_WITH(db.add_config({"mmas", R"({"rho":0.1,"p_best":0.05})"}),
+                      Contains(file.string()) && Contains("'mmas' with other settings"));
+  REQUIRE_THROWS_WITH(db.add_config({"broken", "{rho: 1"}), Contains("'broken'") && Contains("not valid JSON"));
+  CHECK(db.configs().size() == 1);
+}
+
+TEST_CASE("a trial is stored once, and a malformed one not at all", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  auto db = open(file);
+  const int id = db.add_config(config("ant_system", 0.5));
+  db.store(trial(0, id, 0));
+  REQUIRE_THROWS_WITH(db.store(trial(0, id, 0)),
+                      Contains("trial (problem 'map1', config 'ant_system', repetition 0) is already stored"));
+
+  auto bad_curve = trial(0, id, 1);
+  bad_curve.best_so_far.pop_back();
+  REQUIRE_THROWS_WITH(db.store(bad_curve), Contains("5 best-so-far values for 6 iterations"));
+  auto bad_path = trial(0, id, 1);
+  bad_path.path_json = "[[0,0],";
+  REQUIRE_THROWS_WITH(db.store(bad_path), Contains("path of trial") && Contains("not valid JSON"));
+  REQUIRE_THROWS_WITH(db.store(trial(2, id, 1)), Contains("problem 2, the experiment has 2"));
+  REQUIRE_THROWS_WITH(db.store(trial(0, id + 7, 1)), Contains("configuration id " + std::to_string(id + 7)));
+
+  CHECK(db.trials().size() == 1);
+  CHECK(sql_value(file, "SELECT count(*) FROM progress") == "6");
+}
+
+TEST_CASE("a database of another experiment is refused and left as it was", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  {
+    auto db = open(file);
+    db.store(trial(0, db.add_config(config("ant_system", 0.5)), 0));
+  }
+  const std::string before = bytes(file);
+  REQUIRE(!before.empty());
+
+  SECTION("the experiment file changed") {
+    REQUIRE_THROWS_WITH(open(file, "experiment ablation\nants = 30\nmaps = map1, arena\n"),
+                        Contains(file.string()) && Contains("experiment 'ablation'") &&
+                            Contains("the experiment file changed since") &&
+                            Contains("line 2: stored 'ants = 50', now 'ants = 30'") &&
+                            Contains("nothing in it was changed"));
+  }
+  SECTION("another experiment") {
+    REQUIRE_THROWS_WITH(acobench::ResultsDb(file, "other", kFingerprint, kProblems),
+                        Contains("holds the results of experiment 'ablation', not of 'other'"));
+  }
+  SECTION("the same fingerprint with other problems") {
+    auto problems = kProblems;
+    problems[1].setup_json = R"({"map":"arena.map","start":[1,2],"goal":[40,40],"neighbourhood":8})";
+    REQUIRE_THROWS_WITH(acobench::ResultsDb(file, kName, kFingerprint, problems),
+                        Contains("problem 1 is stored as 'arena'"));
+  }
+  CHECK(bytes(file) == before);
+  CHECK_FALSE(fs::exists(file.string() + "-wal"));
+  auto db = open(file);
+  CHECK(db.trials().size() == 1);
+}
+
+TEST_CASE("a database of another format version or a bad problem is refused", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  open(file);  // creates it
+  sql_value(file, "UPDATE acobench_meta SET value = '0' WHERE key = 'format_version' RETURNING value");
+  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 1"));
+
+  const fs::path missing = fresh_db();
+  auto problems = kProblems;
+  problems[0].setup_json = R"({"map": "map1.txt",)";
+  REQUIRE_THROWS_WITH(acobench::ResultsDb(missing, kName, kFingerprint, problems),
+                      Contains("the setup of problem 'map1' is not valid JSON"));
+  CHECK_FALSE(fs::exists(missing));
+}
+
+TEST_CASE("a file that is not an acobench database is refused and left as it was", "[resultsdb]") {
+  SECTION("a text file") {
+    const std::string text = "map1, ant_system, 30.5\nmap1, max_min, 29.1\n";
+    const fs::path file = test::temp_file("results.csv", text);
+    REQUIRE_THROWS_WITH(open(file), Contains(file.string()) && Contains("is not an acobench results database") &&
+                                        Contains("file is not a database"));
+    CHECK(bytes(file) == text);
+  }
+  SECTION("another SQLite database") {
+    const fs::path file = fresh_db();
+    sqlite3* raw = nullptr;
+    REQUIRE(sqlite3_open(file.c_str(), &raw) == SQLITE_OK);
+    REQUIRE(sqlite3_exec(raw, "CREATE TABLE notes (text TEXT); INSERT INTO notes VALUES ('keep me')", nullptr,
+                         nullptr, nullptr) == SQLITE_OK);
+    sqlite3_close(raw);
+    const std::string before = bytes(file);
+    REQUIRE_THROWS_WITH(open(file), Contains("not an acobench results database (it has no acobench_meta table)"));
+    CHECK(bytes(file) == before);
+    CHECK(sql_value(file, "PRAGMA journal_mode") == "delete");
+  }
+}
+
+TEST_CASE("a results database uses write-ahead logging", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  auto db = open(file);
+  CHECK(sql_value(file, "PRAGMA journal_mode") == "wal");
+}
+
+TEST_CASE("a process killed while storing leaves whole trials, and a rerun continues", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  constexpr int kCommitted = 20;     // trials the child reports before it is killed
+  constexpr int kIterations = 2000;  // long transactions, so the kill likely lands inside one
+  int pipe_ends[2];
+  REQUIRE(pipe(pipe_ends) == 0);
+  const pid_t child = fork();
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    // Stores repetitions 0, 1, 2... and reports each commit; _exit skips the parent's cleanup.
+    close(pipe_ends[0]);
+    try {
+      auto db = open(file);
+      const int id = db.add_config(config("ant_system", 0.5));
+      for (int repetition = 0;; ++repetition) {
+        db.store(trial(repetition % 2, id, repetition, true, kIterations));
+        const char committed = 1;
+        if (write(pipe_ends[1], &committed, 1) != 1) break;
+      }
+    } catch (...) {
+    }
+    _exit(1);
+  }
+  close(pipe_ends[1]);
+  int reported = 0;
+  for (char c = 0; reported < kCommitted && read(pipe_ends[0], &c, 1) == 1;) ++reported;
+  // Killed right after a report, the child would always die between two trials; a little later,
+  // it dies anywhere, mostly inside a trial's transaction.
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  kill(child, SIGKILL);
+  int status = 0;
+  waitpid(child, &status, 0);
+  close(pipe_ends[0]);
+  REQUIRE(reported == kCommitted);
+  CHECK((WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL));
+
+  auto db = open(file);
+  CHECK(sql_value(file, "PRAGMA integrity_check") == "ok");
+  const auto done = db.finished();
+  const int stored = static_cast<int>(done.size());
+  CHECK(stored >= kCommitted);
+  CHECK(sql_value(file, "SELECT count(*) FROM runs") == std::to_string(stored));
+  CHECK(sql_value(file, "SELECT count(*) FROM (SELECT DISTINCT experimentid, plannerid, repetition FROM runs)") ==
+        std::to_string(stored));
+  CHECK(sql_value(file, "SELECT count(*) FROM runs r WHERE r.iterations != "
+                        "(SELECT count(*) FROM progress p WHERE p.runid = r.id)") == "0");
+  CHECK(sql_value(file, "SELECT count(*) FROM progress") == std::to_string(stored * kIterations));
+
+  // The rerun: the same command skips what is stored and adds the rest, once each.
+  const int id = db.add_config(config("ant_system", 0.5));
+  const int wanted = stored + 3;
+  for (int repetition = 0; repetition < wanted; ++repetition)
+    if (!done.contains({repetition % 2, id, repetition})) db.store(trial(repetition % 2, id, repetition, true, 10));
+  CHECK(db.finished().size() == static_cast<std::size_t>(wanted));
+  CHECK(sql_value(file, "SELECT max(repetition) FROM runs") == std::to_string(wanted - 1));
+}

@@ -19,19 +19,6 @@ constexpr double kPlotWidth = 420.0;
 constexpr double kPlotHeight = 300.0;
 constexpr double kMargin = 40.0;
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 void polyline(std::ostream& out, const std::vector<std::pair<double, double>>& points, const char* style) {
   if (points.size() < 2) return;
@@ -302,7 +289,7 @@ std::string render_svg(const Graph& graph, const RunPicture& pic) {
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
       << width << ' ' << height << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
-  out << "<text x=\"" << kMargin << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"14\">" << escape(pic.title) << "</text>\n";
+  out << "<text x=\"" << kMargin << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"14\">" << xml_escape(pic.title) << "</text>\n";
   draw_map(out, graph, pic, scale, terrain, heights);
   draw_convergence(out, pic, plot_left, kMargin + 10);
   if (heights) draw_height_legend(out, *heights, plot_left, legend_top);
@@ -315,6 +302,20 @@ void write_svg(const std::filesystem::path& file, const Graph& graph, const RunP
   if (!out) throw Error(file.string() + ": cannot write SVG file");
   out << render_svg(graph, picture);
   if (!out) throw Error(file.string() + ": error while writing SVG file");
+}
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace aco

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/svg.hpp"
 #include "statistics.hpp"
 
 namespace acobench {
@@ -25,19 +26,6 @@ constexpr double kCharWidth = 6.5;        // rough width of a 12 px sans-serif c
 constexpr std::array kPalette{"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
                               "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // At most `decimals` decimals, trailing zeros dropped; std::to_chars ignores the locale.
 std::string number(double value, int decimals = 1) {
@@ -120,7 +108,7 @@ void open_svg(std::ostream& out, const char* css_class, const std::string& title
       << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
   out << "<rect width=\"" << number(kWidth) << "\" height=\"" << number(kHeight) << "\" fill=\"#fff\"/>\n";
   out << "<text class=\"title\" x=\"" << number(kWidth / 2) << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">"
-      << escape(title) << "</text>\n";
+      << aco::xml_escape(title) << "</text>\n";
 }
 
 // Horizontal grid lines with their labels on the left, the axis label written upwards, the frame.
@@ -135,14 +123,14 @@ void draw_value_axis(std::ostream& out, const Frame& frame, const std::string& l
   }
   const std::string middle = number(frame.top + frame.height / 2);
   out << "<text x=\"18\" y=\"" << middle << "\" text-anchor=\"middle\" transform=\"rotate(-90 18 " << middle << ")\">"
-      << escape(label) << "</text>\n";
+      << aco::xml_escape(label) << "</text>\n";
   out << "<rect x=\"" << number(frame.left) << "\" y=\"" << number(frame.top) << "\" width=\"" << number(frame.width)
       << "\" height=\"" << number(frame.height) << "\" fill=\"none\" stroke=\"#555\"/>\n</g>\n";
 }
 
 constexpr const char* kReferenceStyle = "stroke=\"#2e7d32\" stroke-dasharray=\"6,4\"";
 
-std::string reference_text(double value, const std::string& label) { return escape(label) + ' ' + number(value, 4); }
+std::string reference_text(double value, const std::string& label) { return aco::xml_escape(label) + ' ' + number(value, 4); }
 
 // The dashed line across the frame; the label goes above its right end unless a legend names it.
 void draw_reference(std::ostream& out, const Frame& frame, const std::optional<double>& value, const std::string& label,
@@ -177,7 +165,7 @@ void draw_box(std::ostream& out, const Frame& frame, const NamedSample& sample, 
     if (v >= fence_low && v <= fence_high) whisker_low = std::min(whisker_low, v), whisker_high = std::max(whisker_high, v);
   const std::string x = number(centre), cap_left = number(centre - box_width / 4), cap_right = number(centre + box_width / 4);
   const std::string left = number(centre - box_width / 2), right = number(centre + box_width / 2);
-  out << "<g class=\"sample\"><title>" << escape(sample.name) << ": n " << std::to_string(s.n) << ", median " << number(s.median, 4)
+  out << "<g class=\"sample\"><title>" << aco::xml_escape(sample.name) << ": n " << std::to_string(s.n) << ", median " << number(s.median, 4)
       << ", quartiles " << number(s.q1, 4) << " to " << number(s.q3, 4) << "</title>\n";
   out << "<path class=\"whisker\" fill=\"none\" stroke=\"#333\" d=\"M" << x << ',' << number(frame.py(whisker_low)) << "V"
       << number(frame.py(s.q1)) << "M" << x << ',' << number(frame.py(s.q3)) << "V" << number(frame.py(whisker_high))
@@ -199,7 +187,7 @@ void draw_box(std::ostream& out, const Frame& frame, const NamedSample& sample, 
 void draw_sample_name(std::ostream& out, std::string name, double centre, double baseline, bool slanted) {
   const std::string x = number(centre), y = number(baseline);
   if (!slanted) {
-    out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"middle\">" << escape(name) << "</text>\n";
+    out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"middle\">" << aco::xml_escape(name) << "</text>\n";
     return;
   }
   if (name.size() > kLongestSlantedName) {
@@ -208,7 +196,7 @@ void draw_sample_name(std::ostream& out, std::string name, double centre, double
     name = name.substr(0, cut) + "\u2026";
   }
   out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"end\" transform=\"rotate(-45 " << x << ' ' << y << ")\">"
-      << escape(name) << "</text>\n";
+      << aco::xml_escape(name) << "</text>\n";
 }
 
 // Half-open index ranges [begin, end) where `defined(i)` holds: the pieces of a curve with gaps.
@@ -239,6 +227,8 @@ void check_band(const Series& series) {
 }
 
 }  // namespace
+
+const char* colour(std::size_t k) { return kPalette[k % kPalette.size()]; }
 
 std::string box_plot_svg(const BoxPlot& plot) {
   std::vector<Summary> summaries;
@@ -315,16 +305,16 @@ std::string line_chart_svg(const LineChart& chart) {
     out << "<text x=\"" << number(px(tick)) << "\" y=\"" << number(frame.bottom() + 16) << "\" text-anchor=\"middle\">"
         << number(tick, x_axis.decimals) << "</text>\n";
   out << "<text x=\"" << number(frame.left + frame.width / 2) << "\" y=\"" << number(frame.bottom() + 38)
-      << "\" text-anchor=\"middle\">" << escape(chart.x_label) << "</text>\n</g>\n";
+      << "\" text-anchor=\"middle\">" << aco::xml_escape(chart.x_label) << "</text>\n</g>\n";
   if (finite.empty()) no_data(out, frame);
 
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const Series& s = chart.series[k];
-    const char* colour = kPalette[k % kPalette.size()];
+    const char* stroke = colour(k);
     auto banded = [&](std::size_t i) { return std::isfinite(s.band_low[i]) && std::isfinite(s.band_high[i]); };
     const Stretches band_pieces = s.band_low.empty() ? Stretches{} : stretches(s.value.size(), banded);
     if (!band_pieces.empty()) {
-      out << "<path class=\"band\" fill=\"" << colour << "\" fill-opacity=\"0.2\" stroke=\"none\" d=\"";
+      out << "<path class=\"band\" fill=\"" << stroke << "\" fill-opacity=\"0.2\" stroke=\"none\" d=\"";
       for (const auto& [begin, end] : band_pieces) {
         for (std::size_t i = begin; i < end; ++i)
           out << (i == begin ? 'M' : 'L') << number(px(double(i + 1))) << ',' << number(frame.py(s.band_high[i]));
@@ -333,7 +323,7 @@ std::string line_chart_svg(const LineChart& chart) {
       }
       out << "\"/>\n";
     }
-    out << "<path class=\"series\" fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" d=\"";
+    out << "<path class=\"series\" fill=\"none\" stroke=\"" << stroke << "\" stroke-width=\"2\" d=\"";
     for (const auto& [begin, end] : stretches(s.value.size(), [&](std::size_t i) { return std::isfinite(s.value[i]); }))
       for (std::size_t i = begin; i < end; ++i)
         out << (i == begin ? 'M' : 'L') << number(px(double(i + 1))) << ',' << number(frame.py(s.value[i]));
@@ -350,7 +340,7 @@ std::string line_chart_svg(const LineChart& chart) {
         << "</text>\n";
   };
   for (std::size_t k = 0; k < chart.series.size(); ++k)
-    entry(k, std::string("stroke=\"") + kPalette[k % kPalette.size()] + "\" stroke-width=\"2\"", escape(chart.series[k].name));
+    entry(k, std::string("stroke=\"") + colour(k) + "\" stroke-width=\"2\"", aco::xml_escape(chart.series[k].name));
   if (chart.reference) entry(chart.series.size(), kReferenceStyle, reference_text(*chart.reference, chart.reference_label));
   out << "</g>\n</svg>\n";
   return out.str();

@@ -26,6 +26,9 @@ struct BoxPlot {
 
 std::string box_plot_svg(const BoxPlot& plot);
 
+// The k-th colour of the plots' palette (it repeats after ten), for drawings that match them.
+const char* colour(std::size_t k);
+
 // One curve of a line chart: value[i] is drawn at x = i + 1 (the iteration). A non-finite value
 // leaves a gap; the band is shaded between band_low and band_high where both are finite.
 struct Series {

@@ -11,6 +11,7 @@
 
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
+#include "aco/svg.hpp"
 #include "plots.hpp"
 #include "results_db.hpp"
 #include "statistics.hpp"
@@ -30,20 +31,6 @@ std::string fixed(double v, int decimals) {
   char text[64];
   std::snprintf(text, sizeof text, "%.*f", decimals, v);
   return text;
-}
-
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 // One configuration on one problem.
@@ -224,7 +211,7 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
   try {
     map = aco::load_map(a.experiment_dir / setup.at("map").get<std::string>());
   } catch (const std::exception& e) {
-    return "<p>map not drawn: " + html_escape(e.what()) + "</p>";
+    return "<p>map not drawn: " + aco::xml_escape(e.what()) + "</p>";
   }
   const int w = map->width(), h = map->height();
   const double scale = std::max(2.0, std::min(24.0, 480.0 / std::max(w, h)));
@@ -237,17 +224,16 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
       if (!map->passable({x, y}))
         svg << "<rect x=\"" << x * scale << "\" y=\"" << y * scale << "\" width=\"" << scale << "\" height=\"" << scale
             << "\" fill=\"#333\"/>";
-  static const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd", "#8c564b", "#e377c2", "#17becf"};
   int shown = 0;
   for (const auto& r : a.results[p]) {
     if (!r.best) continue;
-    const char* colour = colours[shown % 8];
+    const char* colour = acobench::colour(static_cast<std::size_t>(r.config));
     svg << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << std::max(1.0, scale / 5)
         << "\" stroke-opacity=\"0.8\" points=\"";
     for (const auto& point : nlohmann::json::parse(r.best->path_json))
       svg << (point[0].get<double>() / cell + 0.5) * scale << "," << (point[1].get<double>() / cell + 0.5) * scale << " ";
     svg << "\"/><text x=\"" << w * scale + 8 << "\" y=\"" << 14 + 16 * shown << "\" font-size=\"12\" fill=\"" << colour
-        << "\">" << html_escape(a.configs[r.config].second.name) << " " << fixed(r.best->length, 2) << "</text>";
+        << "\">" << aco::xml_escape(a.configs[r.config].second.name) << " " << fixed(r.best->length, 2) << "</text>";
     ++shown;
   }
   svg << "</svg>";
@@ -256,20 +242,20 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
 
 std::string html(const Analysis& a, const std::string& md_intro) {
   std::ostringstream out;
-  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>acobench: " << html_escape(a.name)
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>acobench: " << aco::xml_escape(a.name)
       << "</title><style>body{font-family:sans-serif;margin:2em;max-width:1400px}table{border-collapse:collapse;"
          "margin:1em 0}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}td:first-child,th:first-child{"
          "text-align:left}svg{margin:0.5em}</style></head><body>\n<h1>acobench report: "
-      << html_escape(a.name) << "</h1>\n<p>" << html_escape(md_intro) << "</p>\n";
+      << aco::xml_escape(a.name) << "</h1>\n<p>" << aco::xml_escape(md_intro) << "</p>\n";
   const auto cols = columns();
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
     const double optimal = a.problems[p].optimal_length;
-    out << "<h2>" << html_escape(a.problems[p].name) << " (optimal " << fixed(optimal, 4) << ")</h2>\n<table><tr><th>configuration</th>";
-    for (const auto& c : cols) out << "<th>" << html_escape(c.title) << "</th>";
+    out << "<h2>" << aco::xml_escape(a.problems[p].name) << " (optimal " << fixed(optimal, 4) << ")</h2>\n<table><tr><th>configuration</th>";
+    for (const auto& c : cols) out << "<th>" << aco::xml_escape(c.title) << "</th>";
     out << "</tr>\n";
     for (const auto& r : a.results[p]) {
-      out << "<tr><td>" << html_escape(a.configs[r.config].second.name) << "</td>";
-      for (const auto& c : cols) out << "<td>" << html_escape(c.value(r)) << "</td>";
+      out << "<tr><td>" << aco::xml_escape(a.configs[r.config].second.name) << "</td>";
+      for (const auto& c : cols) out << "<td>" << aco::xml_escape(c.value(r)) << "</td>";
       out << "</tr>\n";
     }
     out << "</table>\n";
@@ -293,7 +279,7 @@ std::string html(const Analysis& a, const std::string& md_intro) {
   if (!a.average_rank.empty()) {
     out << "<h2>Ranking across problems</h2><table><tr><th>configuration</th><th>average rank</th></tr>\n";
     for (std::size_t c = 0; c < a.configs.size(); ++c)
-      out << "<tr><td>" << html_escape(a.configs[c].second.name) << "</td><td>" << fixed(a.average_rank[c], 2) << "</td></tr>\n";
+      out << "<tr><td>" << aco::xml_escape(a.configs[c].second.name) << "</td><td>" << fixed(a.average_rank[c], 2) << "</td></tr>\n";
     out << "</table>\n";
   }
   if (!a.ablation_path.empty()) {
@@ -307,7 +293,7 @@ std::string html(const Analysis& a, const std::string& md_intro) {
       gaps.value.push_back(mean_of(g));
     }
     out << "<ol start=\"0\">";
-    for (const auto& name : a.ablation_path) out << "<li>" << html_escape(name) << "</li>";
+    for (const auto& name : a.ablation_path) out << "<li>" << aco::xml_escape(name) << "</li>";
     out << "</ol>\n" << line_chart_svg({"ablation path: mean gap to the optimum", "step", "gap %", {gaps}, std::nullopt, ""}) << "\n";
   }
   out << "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>\n</body></html>\n";

@@ -26,4 +26,7 @@ struct RunPicture {
 std::string render_svg(const Graph& graph, const RunPicture& picture);
 void write_svg(const std::filesystem::path& file, const Graph& graph, const RunPicture& picture);
 
+// Text made safe for SVG, HTML and XML: & < > " as entities.
+std::string xml_escape(const std::string& text);
+
 }  // namespace aco

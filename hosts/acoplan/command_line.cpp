@@ -2,6 +2,7 @@
 
 #include <boost/program_options.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -76,6 +77,23 @@ std::map<std::string, std::string> given(const po::variables_map& vm, std::span<
 std::optional<std::string> text(const po::variables_map& vm, const char* key) {
   if (!vm.count(key)) return std::nullopt;
   return vm[key].as<std::string>();
+}
+
+// --irace-slots "update,init": every name must be a slot; no option means all of them.
+std::vector<std::string> irace_slots(const std::optional<std::string>& option) {
+  if (!option) return {aco::kSlots.begin(), aco::kSlots.end()};
+  std::vector<std::string> slots;
+  std::istringstream in(*option);
+  for (std::string slot; std::getline(in, slot, ',');) {
+    if (slot.empty()) continue;
+    if (std::find(aco::kSlots.begin(), aco::kSlots.end(), slot) == aco::kSlots.end()) {
+      std::string message = "--irace-slots: '" + slot + "' is not a slot (slots:";
+      for (const char* known : aco::kSlots) message += std::string(" ") + known;
+      throw aco::Error(message + ")");
+    }
+    slots.push_back(slot);
+  }
+  return slots;
 }
 
 std::filesystem::path bundled_map() {
@@ -178,6 +196,13 @@ Request parse_command_line(int argc, const char* const* argv) {
       ("scen", po::value<std::string>()->value_name("FILE"),
        "Moving AI scenario file; start and goal come from --scen-index, the map from FILE minus .scen unless --map")
       ("json", po::bool_switch(), "print one JSON object instead of the readable summary")
+      ("irace", po::bool_switch(),
+       "for irace's target runner: print only the cost, the path length (mean over --repeat; 1e9 for an unsolved "
+       "run), and exit 0 unless there is an error")
+      ("dump-irace-params", po::value<std::string>()->value_name("FILE"),
+       "write irace's parameter file (colony and plugin parameters) to FILE (- = stdout) and exit")
+      ("irace-slots", po::value<std::string>()->value_name("SLOTS"),
+       "with --dump-irace-params: the slots whose plugin irace chooses, comma separated (default: all five)")
       ("svg", po::value<std::string>()->value_name("FILE"), "write a picture of the map, the path and the convergence curve")
       ("config", po::value<std::string>()->value_name("FILE"), "read options from an INI file (command line wins)")
       ("print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")
@@ -206,6 +231,12 @@ Request parse_command_line(int argc, const char* const* argv) {
     r.registry = std::make_unique<aco::PluginRegistry>(aco::PluginRegistry::default_search_dirs(dirs));
     if (first["list-plugins"].as<bool>()) {
       r.action = Request::Action::list_plugins;
+      return r;
+    }
+    if (first.count("dump-irace-params")) {
+      r.action = Request::Action::dump_irace_params;
+      r.irace_params_file = first["dump-irace-params"].as<std::string>();
+      r.irace_slots = irace_slots(text(first, "irace-slots"));
       return r;
     }
     if (first.count("describe")) {
@@ -238,7 +269,8 @@ Request parse_command_line(int argc, const char* const* argv) {
     std::ostringstream help;
     help << "acoplan: plan a path with an ant colony composed of runtime plugins.\n\n"
          << "Usage: acoplan [--map FILE --start X,Y --goal X,Y | --scen FILE --scen-index N] [options]\n\n"
-         << all << "\nExit status: 0 solved, 1 error, 3 no path found (goal unreachable or no ant arrived).\n";
+         << all
+         << "\nExit status: 0 solved, 1 error, 3 no path found (goal unreachable or no ant arrived; 0 with --irace).\n";
     r.help = help.str();
     if (vm["help"].as<bool>()) {
       r.action = Request::Action::help;
@@ -262,7 +294,9 @@ Request parse_command_line(int argc, const char* const* argv) {
     r.start = text(vm, "start");
     r.goal = text(vm, "goal");
     r.json = vm["json"].as<bool>();
+    r.irace = vm["irace"].as<bool>();
     if (r.scen && (r.start || r.goal)) throw aco::Error("give either --scen or --start/--goal, not both");
+    if (vm.count("irace-slots")) throw aco::Error("--irace-slots needs --dump-irace-params");
     if (vm.count("scen-index") && !r.scen) throw aco::Error("--scen-index needs --scen");
     if (!r.map && !r.scen) {
       // The demo problem: the bundled classic map, corner to corner.

@@ -15,11 +15,13 @@
 namespace acoplan {
 
 struct Request {
-  enum class Action { plan, help, list_plugins, describe, print_config };
+  enum class Action { plan, help, list_plugins, describe, print_config, dump_irace_params };
   Action action = Action::plan;
   std::string describe;  // plugin to describe
   std::string help;      // full --help text
   std::string config;    // the resolved configuration as a config file (--print-config)
+  std::string irace_params_file;         // --dump-irace-params: where to write the table ("-" = stdout)
+  std::vector<std::string> irace_slots;  // the slots whose plugins irace chooses (--irace-slots)
 
   std::optional<std::filesystem::path> map;
   std::optional<std::filesystem::path> scen;
@@ -27,6 +29,7 @@ struct Request {
   std::optional<std::string> goal;
   std::optional<std::filesystem::path> svg;
   bool json = false;
+  bool irace = false;  // print only the cost (mean length, kIraceUnsolvedCost if unsolved) and exit 0
 
   aco::ParameterValues run;     // planner, neighbourhood, corner-cutting, threads, scen-index, svg-pheromone, repeat,
                                 // max-slope, height-scale, cell-size

@@ -4,14 +4,17 @@
 #include <algorithm>
 #include <charconv>
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <numeric>
 
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
 #include "aco/svg.hpp"
 #include "command_line.hpp"
+#include "irace.hpp"
 #include "report.hpp"
 
 namespace {
@@ -107,6 +110,27 @@ void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco
   aco::write_svg(*r.svg, graph, picture);
 }
 
+// --irace: the mean length over the runs, an unsolved run counting as kIraceUnsolvedCost, in
+// the shortest text that reads back as the same double (so it equals --json's length).
+std::string irace_cost(const std::vector<acoplan::Outcome>& runs) {
+  const double total = std::accumulate(runs.begin(), runs.end(), 0.0, [](double sum, const acoplan::Outcome& o) {
+    return sum + (o.solved ? o.length : acoplan::kIraceUnsolvedCost);
+  });
+  char text[64];
+  const auto end = std::to_chars(text, text + sizeof text, total / static_cast<double>(runs.size())).ptr;
+  return std::string(text, end);
+}
+
+void dump_irace_params(acoplan::Request& r) {
+  const std::string table = acoplan::irace_parameters(*r.registry, r.irace_slots);
+  if (r.irace_params_file == "-") {
+    std::cout << table;
+    return;
+  }
+  std::ofstream out(r.irace_params_file);
+  if (!(out << table) || !out.flush()) throw aco::Error("--dump-irace-params: cannot write '" + r.irace_params_file + "'");
+}
+
 int plan(const acoplan::Request& r) {
   const Problem problem = load_problem(r);
   aco::GraphOptions options;
@@ -125,7 +149,10 @@ int plan(const acoplan::Request& r) {
   for (auto& o : runs)
     if (optimal) o.optimal_length = optimal->length;
 
-  if (runs.size() == 1) {
+  if (r.irace) {
+    // irace reads the last line of stdout; an unsolved run has its cost, so it is no failure.
+    std::cout << irace_cost(runs) << "\n";
+  } else if (runs.size() == 1) {
     if (r.json) std::cout << acoplan::to_json(r, graph, runs[0]).dump() << "\n";
     else std::cout << acoplan::summary(r, graph, runs[0]);
   } else {
@@ -138,7 +165,7 @@ int plan(const acoplan::Request& r) {
   });
   if (r.svg) write_picture(r, graph, *best);
   const bool all_solved = std::all_of(runs.begin(), runs.end(), [](const auto& o) { return o.solved; });
-  return all_solved ? 0 : kExitUnsolved;
+  return all_solved || r.irace ? 0 : kExitUnsolved;
 }
 
 }  // namespace
@@ -153,6 +180,7 @@ int main(int argc, char** argv) {
         std::cout << acoplan::describe_plugin(*request.registry, request.describe);
         return 0;
       case acoplan::Request::Action::print_config: std::cout << request.config; return 0;
+      case acoplan::Request::Action::dump_irace_params: dump_irace_params(request); return 0;
       case acoplan::Request::Action::plan: return plan(request);
     }
   } catch (const std::exception& e) {

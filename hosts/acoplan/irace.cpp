@@ -1,0 +1,156 @@
+#include "irace.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string_view>
+
+#include "aco/colony.hpp"
+#include "aco/error.hpp"
+#include "aco/parameters.hpp"
+
+namespace acoplan {
+namespace {
+
+// irace rounds real parameters to 4 decimal places (its default `digits`), so real bounds are
+// put on that grid, inwards: every value irace can sample is then valid for acoplan.
+constexpr double kRealUnit = 1e-4;
+// Ranges such as 0:1e12 or 1:1000000 say "no real limit"; irace samples uniformly, so they are
+// capped at this multiple of the default's magnitude (or at this value when the default is 0).
+constexpr double kCapFactor = 100;
+
+const char* const kHeader =
+    "# irace parameters for acoplan, written by acoplan --dump-irace-params from the parameter tables.\n"
+    "# name  switch  type  (domain)  [| condition]\n"
+    "# Numeric ranges: an end beyond 100 x |default| (100 if the default is 0) is capped there; an open end\n"
+    "# moves in by 1 (integers) or 0.0001 (reals, irace's default 4 digits); real bounds are rounded inwards\n"
+    "# to 4 decimals. A parameter left with no interval is listed as skipped.\n";
+
+// irace names are R identifiers: letters, digits and underscores (dots are refused by some versions).
+std::string irace_name(std::string text) {
+  std::replace_if(text.begin(), text.end(), [](unsigned char c) { return !std::isalnum(c); }, '_');
+  return text;
+}
+
+// Fixed notation without trailing zeros: at most 4 decimals, never an exponent.
+std::string number(double x) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.4f", x);
+  std::string text = buffer;
+  text.erase(text.find_last_not_of('0') + 1);
+  if (text.back() == '.') text.pop_back();
+  return text == "-0" ? "0" : text;
+}
+
+struct Domain {
+  std::string type;    // i, r or c
+  std::string values;  // "(low, high)" or "(a, b, c)"
+  std::string skipped; // why the parameter cannot be tuned, or ""
+};
+
+Domain numeric_domain(const aco::ParamSpec& spec) {
+  const bool integer = spec.type == aco::ParamType::integer;
+  const aco::NumericRange range = *aco::numeric_range(spec);
+  const double magnitude = std::abs(std::stod(spec.default_value));
+  const double cap = magnitude > 0 ? kCapFactor * magnitude : kCapFactor;
+  double low = std::max(range.low, -cap), high = std::min(range.high, cap);
+  const double unit = integer ? 1 : kRealUnit;
+  if (range.low_open && low == range.low) low += unit;
+  if (range.high_open && high == range.high) high -= unit;
+  // The tolerance keeps a bound already on the grid (0.0001 is 1.0000000000000002 units) in place.
+  low = std::ceil(low / unit - 1e-6) * unit;
+  high = std::floor(high / unit + 1e-6) * unit;
+  if (!(low < high))
+    return {"", "", std::string("range ") + spec.range + " capped at 100 x default " + spec.default_value +
+                        " leaves no interval on irace's 4-decimal grid"};
+  return {integer ? "i" : "r", std::string("(").append(number(low)).append(", ").append(number(high)).append(")"), ""};
+}
+
+Domain domain(const aco::ParamSpec& spec) {
+  switch (spec.type) {
+    case aco::ParamType::boolean: return {"c", "(true, false)", ""};
+    case aco::ParamType::categorical: {
+      std::string values;
+      for (const auto& choice : aco::choices(spec)) values += (values.empty() ? "" : ", ") + choice;
+      return {"c", "(" + values + ")", ""};
+    }
+    case aco::ParamType::integer:
+    case aco::ParamType::real: return numeric_domain(spec);
+  }
+  return {"", "", "unknown parameter type"};
+}
+
+class ParameterFile {
+ public:
+  ParameterFile() { out_ << kHeader; }
+
+  void comment(const std::string& text) { out_ << "# " << text << "\n"; }
+
+  // `option` without its dashes, e.g. "update.rho". acoplan's booleans only take a value after
+  // "=", so their switch ends with "=" (irace joins switch and value without a space).
+  void add(const std::string& name, const std::string& option, const aco::ParamSpec& spec,
+           const std::string& condition = "") {
+    const Domain d = domain(spec);
+    if (!d.skipped.empty()) return comment("skipped --" + option + ": " + d.skipped);
+    const std::string flag = "--" + option + (spec.type == aco::ParamType::boolean ? "=" : " ");
+    line(name, flag, d.type + " " + d.values, condition);
+  }
+
+  void line(const std::string& name, const std::string& flag, const std::string& domain, const std::string& condition) {
+    if (!names_.insert(name).second)
+      throw aco::Error("--dump-irace-params: two parameters would both be called '" + name + "' in irace (the second is " +
+                       flag + ")");
+    out_ << name << " \"" << flag << "\" " << domain << (condition.empty() ? "" : " | " + condition) << "\n";
+  }
+
+  std::string text() const { return out_.str(); }
+
+ private:
+  std::ostringstream out_;
+  std::set<std::string> names_;
+};
+
+void add_slot(ParameterFile& file, aco::PluginRegistry& registry, const std::string& slot) {
+  std::vector<std::pair<std::string, const aco::PluginDescriptor*>> plugins;
+  for (const auto& name : registry.names(slot)) {
+    try {
+      plugins.emplace_back(name, &registry.load(slot, name));
+    } catch (const aco::Error& e) {
+      file.comment("skipped " + slot + "/" + name + ": " + e.what());
+    }
+  }
+  if (plugins.empty()) return file.comment("no usable " + slot + " plugin found");
+  std::string names;
+  for (const auto& [name, descriptor] : plugins) names += (names.empty() ? "" : ", ") + name;
+  file.line(slot, "--" + slot + " ", "c (" + names + ")", "");
+  // A name declared by several plugins of the slot gets the plugin appended: the same name can
+  // mean different things (and ranges) in two plugins.
+  std::map<std::string, int> declared;
+  for (const auto& [name, descriptor] : plugins)
+    for (const auto& spec : descriptor->parameters()) ++declared[spec.name];
+  for (const auto& [name, descriptor] : plugins)
+    for (const auto& spec : descriptor->parameters()) {
+      const std::string irace = slot + "_" + spec.name + (declared[spec.name] > 1 ? "_" + name : "");
+      file.add(irace_name(irace), slot + "." + spec.name, spec, slot + " == \"" + name + "\"");
+    }
+}
+
+}  // namespace
+
+std::string irace_parameters(aco::PluginRegistry& registry, const std::vector<std::string>& slots) {
+  ParameterFile file;
+  file.comment("colony (seed is irace's: the target runner passes it)");
+  for (const auto& spec : aco::colony_parameters())
+    if (std::string_view(spec.name) != "seed") file.add(irace_name(spec.name), spec.name, spec);
+  for (const auto& slot : slots) {
+    file.comment(slot);
+    add_slot(file, registry, slot);
+  }
+  return file.text();
+}
+
+}  // namespace acoplan

@@ -1,0 +1,293 @@
+// Tuning hook-up: acoplan --irace (the cost line), --dump-irace-params (irace's parameter file)
+// and tools/irace/target-runner. irace itself (an R package) is not installed: these tests check
+// the file's syntax and that every value irace may sample is one acoplan accepts.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "aco/colony.hpp"
+#include "aco/parameters.hpp"
+#include "aco/pipeline.hpp"
+#include "support.hpp"
+
+using Catch::Contains;
+using nlohmann::json;
+
+namespace {
+
+const std::string map1_scen = (test::data_dir() / "maps/classic20/map1.txt.scen").string();
+const std::vector<std::string> quick{"--scen", map1_scen, "--iterations", "20", "--corner-cutting"};
+
+std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+// The only line of an --irace run's stdout, as a number.
+double irace_cost(const std::vector<std::string>& args) {
+  const auto r = test::acoplan(with(args, {"--irace"}));
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto out = lines(r.out);
+  REQUIRE(out.size() == 1);
+  std::size_t used = 0;
+  const double cost = std::stod(out[0], &used);
+  REQUIRE(used == out[0].size());
+  return cost;
+}
+
+// One line of irace's parameter file.
+struct IraceParameter {
+  std::string name, flag, type, domain, condition;
+  std::vector<std::string> values() const {
+    std::vector<std::string> result;
+    std::istringstream in(domain);
+    for (std::string v; std::getline(in, v, ',');) result.push_back(v.substr(v.find_first_not_of(' ')));
+    return result;
+  }
+};
+
+// Parses the file, checking every line against irace's syntax and every name for uniqueness.
+std::vector<IraceParameter> parse_irace_parameters(const std::string& text) {
+  static const std::regex line_syntax(R"re(^([A-Za-z][A-Za-z0-9_]*) "(--[A-Za-z0-9_.-]+[ =])" ([icr]) \(([^()]+)\)(?: \| (.+))?$)re");
+  std::vector<IraceParameter> parameters;
+  std::set<std::string> names;
+  for (const auto& line : lines(text)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::smatch m;
+    INFO(line);
+    REQUIRE(std::regex_match(line, m, line_syntax));
+    CHECK(names.insert(m[1]).second);
+    parameters.push_back({m[1], m[2], m[3], m[4], m[5]});
+  }
+  return parameters;
+}
+
+// How irace passes a parameter: switch and value joined, then split at spaces by the shell.
+std::vector<std::string> argument(const IraceParameter& p, const std::string& value) {
+  if (p.flag.back() == '=') return {p.flag + value};
+  return {p.flag.substr(0, p.flag.size() - 1), value};
+}
+
+const aco::ParamSpec& spec_named(std::span<const aco::ParamSpec> table, const std::string& name) {
+  const auto it = std::find_if(table.begin(), table.end(), [&](const auto& s) { return s.name == name; });
+  REQUIRE(it != table.end());
+  return *it;
+}
+
+}  // namespace
+
+TEST_CASE("acoplan --irace prints only the final length, the same as --json's", "[acoplan][irace]") {
+  for (const auto& seed : {"1", "2"}) {
+    const auto args = with(quick, {"--seed", seed, "--update", "acs", "--smoother", "prune"});
+    const auto r = test::acoplan(with(args, {"--json"}));
+    REQUIRE(r.exit_code == 0);
+    CHECK(irace_cost(args) == json::parse(r.out)["length"].get<double>());
+  }
+  // --repeat: the mean over the runs.
+  const auto repeated = with(quick, {"--repeat", "4"});
+  const auto r = test::acoplan(with(repeated, {"--json"}));
+  REQUIRE(r.exit_code == 0);
+  CHECK(irace_cost(repeated) == Approx(json::parse(r.out)["summary"]["length"]["mean"].get<double>()).epsilon(1e-12));
+}
+
+TEST_CASE("acoplan --irace gives an unsolved run the penalty cost and exit status 0 but errors still fail",
+          "[acoplan][irace][bad-input]") {
+  const auto walled = test::temp_file("walled.txt", "0 1 0\n0 1 0\n0 1 0\n");
+  const std::vector<std::string> unsolved{"--map", walled.string(), "--start", "0,0", "--goal", "2,2"};
+  CHECK(irace_cost(unsolved) == 1e9);
+  CHECK(irace_cost(with(unsolved, {"--repeat", "2"})) == 1e9);
+  for (const auto& bad : {std::vector<std::string>{"--irace", "--ants", "0"}, {"--irace", "--update", "nope"},
+                          {"--irace", "--map", "/nonexistent.map", "--start", "0,0", "--goal", "1,1"}}) {
+    const auto r = test::acoplan(bad);
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.empty());
+    CHECK_THAT(r.err, Contains("acoplan: error: "));
+  }
+}
+
+TEST_CASE("acoplan --dump-irace-params lists the colony and every plugin of every slot with conditions", "[acoplan][irace]") {
+  const auto r = test::acoplan({"--dump-irace-params", "-"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto parameters = parse_irace_parameters(r.out);
+  std::map<std::string, IraceParameter> by_name;
+  for (const auto& p : parameters) by_name[p.name] = p;
+
+  // The colony's table, without the seed (irace passes its own).
+  CHECK(by_name.count("seed") == 0);
+  for (const auto& p : parameters) CHECK(p.flag != "--seed ");
+  for (const auto& spec : aco::colony_parameters())
+    if (std::string(spec.name) != "seed") {
+      std::string name = spec.name;
+      std::replace(name.begin(), name.end(), '-', '_');
+      REQUIRE(by_name.count(name));
+      CHECK(by_name[name].condition.empty());
+    }
+  CHECK(by_name["same_path_stop"].flag == "--same-path-stop=");
+  CHECK(by_name["same_path_stop"].domain == "true, false");
+
+  // One categorical per slot with every plugin found, and each plugin's parameters under it.
+  std::size_t plugin_parameters = 0;
+  for (const char* slot : aco::kSlots) {
+    REQUIRE(by_name.count(slot));
+    const auto& choice = by_name[slot];
+    CHECK(choice.type == "c");
+    CHECK(choice.flag == std::string("--") + slot + " ");
+    CHECK(choice.values() == test::plugins().names(slot));
+    for (const auto& plugin : choice.values())
+      for (const auto& spec : test::plugins().load(slot, plugin).parameters()) {
+        ++plugin_parameters;
+        const std::string flag = std::string("--") + slot + "." + spec.name;
+        const std::string condition = std::string(slot) + " == \"" + plugin + "\"";
+        const auto lines = std::count_if(parameters.begin(), parameters.end(), [&](const auto& p) {
+          return p.flag.substr(0, p.flag.size() - 1) == flag && p.condition == condition;
+        });
+        const bool skipped = r.out.find("# skipped " + flag + ":") != std::string::npos;
+        INFO(flag << " | " << condition);
+        CHECK(lines + skipped == 1);
+      }
+  }
+  // Parameters several plugins share get their own names.
+  CHECK(by_name.count("update_rho_acs"));
+  CHECK(by_name.count("update_rho_max_min"));
+  CHECK(by_name["update_p_best"].condition == "update == \"max_min\"");
+  CHECK(parameters.size() > plugin_parameters);  // one line each, minus the few skipped, plus colony and slots
+}
+
+TEST_CASE("every value at the ends of a dumped range is finite and accepted by acoplan", "[acoplan][irace]") {
+  const auto r = test::acoplan({"--dump-irace-params", "-"});
+  REQUIRE(r.exit_code == 0);
+  std::map<std::string, std::string> plugin_of;  // condition -> plugin
+  for (const auto& p : parse_irace_parameters(r.out)) {
+    INFO(p.name << " " << p.domain);
+    const auto values = p.values();
+    if (p.type != "c") {
+      REQUIRE(values.size() == 2);
+      const double low = std::stod(values[0]), high = std::stod(values[1]);
+      CHECK(std::isfinite(low));
+      CHECK(std::isfinite(high));
+      CHECK(low < high);
+      if (p.type == "i") CHECK((low == std::floor(low) && high == std::floor(high)));
+    }
+    // The parameter's own table checks each end (or each choice) as acoplan would.
+    const std::string option = p.flag.substr(2, p.flag.size() - 3);
+    const auto dot = option.find('.');
+    if (dot == std::string::npos && std::find(aco::kSlots.begin(), aco::kSlots.end(), option) != aco::kSlots.end()) continue;
+    std::span<const aco::ParamSpec> table = aco::colony_parameters();
+    if (dot != std::string::npos) {
+      const std::string slot = option.substr(0, dot);
+      const std::string plugin = p.condition.substr(p.condition.find('"') + 1, p.condition.rfind('"') - p.condition.find('"') - 1);
+      table = test::plugins().load(slot, plugin).parameters();
+    }
+    const auto& spec = spec_named(table, dot == std::string::npos ? option : option.substr(dot + 1));
+    for (const auto& value : values) CHECK_NOTHROW(aco::parse_value(spec, value, option));
+  }
+  // The rule for open and unbounded ends: (0:1] starts at irace's 0.0001, 0:1e12 stops at 100 x default.
+  CHECK_THAT(r.out, Contains("update_rho_max_min \"--update.rho \" r (0.0001, 1) | update == \"max_min\""));
+  CHECK_THAT(r.out, Contains("update_p_best \"--update.p_best \" r (0.0001, 0.9999) | update == \"max_min\""));
+  CHECK_THAT(r.out, Contains("ants \"--ants \" i (1, 5000)"));
+  CHECK_THAT(r.out, Contains("# skipped --update.tau_min: range (0:1e12] capped at 100 x default 1e-6 leaves no interval"));
+}
+
+TEST_CASE("acoplan runs the lowest value of every dumped parameter, passed as irace passes it", "[acoplan][irace]") {
+  const auto parameters = parse_irace_parameters(test::acoplan({"--dump-irace-params", "-"}).out);
+  // tools/irace/forbidden.txt forbids b < a and weight_max <= weight_min: those two take their highest.
+  const std::set<std::string> highest{"init_b", "init_weight_max"};
+  auto value = [&](const IraceParameter& p) { return highest.count(p.name) ? p.values().back() : p.values().front(); };
+  std::vector<std::string> colony{"--scen", map1_scen};
+  for (const auto& p : parameters)
+    if (p.condition.empty() && std::find(aco::kSlots.begin(), aco::kSlots.end(), p.name) == aco::kSlots.end())
+      for (const auto& a : argument(p, value(p))) colony.push_back(a);
+  // Each plugin with its parameters at their lowest, in the baseline pipeline.
+  for (const char* slot : aco::kSlots)
+    for (const auto& plugin : test::plugins().names(slot)) {
+      auto args = with(colony, {std::string("--") + slot, plugin});
+      for (const auto& p : parameters)
+        if (p.condition == std::string(slot) + " == \"" + plugin + "\"")
+          for (const auto& a : argument(p, value(p))) args.push_back(a);
+      INFO(slot << " " << plugin);
+      irace_cost(args);
+    }
+}
+
+TEST_CASE("tools/irace/forbidden.txt names parameters of the dumped file", "[acoplan][irace]") {
+  std::set<std::string> names;
+  for (const auto& p : parse_irace_parameters(test::acoplan({"--dump-irace-params", "-"}).out)) names.insert(p.name);
+  std::ifstream in(test::data_dir().parent_path() / "tools/irace/forbidden.txt");
+  REQUIRE(in);
+  static const std::regex identifier("[A-Za-z][A-Za-z0-9_]*");
+  int expressions = 0;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    ++expressions;
+    const std::string code = std::regex_replace(line, std::regex("\"[^\"]*\""), "");  // drop quoted values
+    for (std::sregex_iterator it(code.begin(), code.end(), identifier), end; it != end; ++it) CHECK(names.count(it->str()));
+  }
+  CHECK(expressions == 2);
+}
+
+TEST_CASE("acoplan --irace-slots limits the tuned slots and --dump-irace-params writes files and honours --plugin-dir",
+          "[acoplan][irace][bad-input]") {
+  const auto only = test::acoplan({"--dump-irace-params", "-", "--irace-slots", "update,init"});
+  REQUIRE(only.exit_code == 0);
+  std::set<std::string> conditions, names;
+  for (const auto& p : parse_irace_parameters(only.out)) {
+    names.insert(p.name);
+    if (!p.condition.empty()) conditions.insert(p.condition.substr(0, p.condition.find(' ')));
+  }
+  CHECK(conditions == std::set<std::string>{"init", "update"});
+  CHECK(names.count("update"));
+  CHECK(names.count("init"));
+  CHECK(names.count("heuristic") == 0);
+  CHECK(names.count("ants"));
+
+  const auto file = test::temp_file("parameters.txt", "");
+  const auto written = test::acoplan({"--dump-irace-params", file.string()});
+  CHECK(written.exit_code == 0);
+  CHECK(written.out.empty());
+  std::ifstream in(file);
+  const std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(content == test::acoplan({"--dump-irace-params", "-"}).out);
+
+  // A plugin that cannot be loaded is left out with the reason; the others stay.
+  const auto bad = test::acoplan({"--dump-irace-params", "-", "--plugin-dir", ACO_TEST_BAD_PLUGIN_DIR});
+  CHECK(bad.exit_code == 0);
+  CHECK_THAT(bad.out, Contains("# skipped update/wrong_abi: ") && Contains("ABI 999"));
+  CHECK_THAT(bad.out, Contains("update \"--update \" c (acs, ant_system,"));
+
+  for (const auto& [args, expected] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--dump-irace-params", "-", "--irace-slots", "update,smooth"}, "--irace-slots: 'smooth' is not a slot"},
+           {{"--irace-slots", "update"}, "--irace-slots needs --dump-irace-params"},
+           {{"--dump-irace-params", "/nonexistent/dir/p.txt"}, "--dump-irace-params: cannot write '/nonexistent/dir/p.txt'"}}) {
+    const auto r = test::acoplan(args);
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.err, Contains(expected));
+  }
+}
+
+TEST_CASE("tools/irace/target-runner calls acoplan as irace would and prints the cost last", "[acoplan][irace]") {
+  const auto runner = (test::data_dir().parent_path() / "tools/irace/target-runner").string();
+  const auto r = test::run({"/bin/bash", runner, "3", "1", "42", map1_scen, "--ants", "20", "--update", "max_min",
+                            "--update.rho", "0.2"},
+                           {std::string("ACOPLAN=") + ACO_TEST_ACOPLAN, "ACOPLAN_OPTIONS=--iterations 20 --corner-cutting"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto direct = test::acoplan({"--scen", map1_scen, "--seed", "42", "--ants", "20", "--update", "max_min",
+                                     "--update.rho", "0.2", "--iterations", "20", "--corner-cutting", "--json"});
+  REQUIRE(direct.exit_code == 0);
+  REQUIRE(!lines(r.out).empty());
+  CHECK(std::stod(lines(r.out).back()) == json::parse(direct.out)["length"].get<double>());
+}

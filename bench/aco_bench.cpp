@@ -1,6 +1,7 @@
 // aco_bench: speed figures of the colony engine. Times whole runs with steady_clock and
 // reports medians; ns per ant step = run time / moves made by all ants.
 #include <tbb/global_control.h>
+#include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -10,6 +11,8 @@
 #include <fstream>
 #include <iostream>
 #include <numeric>
+#include <set>
+#include <sstream>
 
 #include "aco/error.hpp"
 #include "aco/fireworks.hpp"
@@ -53,6 +56,12 @@ Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::
   t.min_ms = ms.front();
   t.ns_per_step = total_ms * 1e6 / double(std::max<std::uint64_t>(total_steps, 1));
   return t;
+}
+
+// Whether two runs gave bit-identical results (the determinism promise across thread counts).
+bool same_result(const aco::ColonyResult& a, const aco::ColonyResult& b) {
+  return a.path == b.path && a.length == b.length && a.ant_steps == b.ant_steps && a.best_so_far == b.best_so_far &&
+         a.pheromone == b.pheromone;
 }
 
 struct PruneTiming {
@@ -106,31 +115,8 @@ void time_fireworks(int repeats) {
               1000.0 * std::accumulate(ms.begin(), ms.end(), 0.0) / double(evaluations), mean_length);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) try {
-  int repeats = 30;
-  std::string shared = ACO_BENCH_SHARED_DATA_DIR;
-  std::string large = "movingai/street/Berlin_0_512.map";
-  int large_index = 400;
-  int large_repeats = 5;
-  po::options_description options("aco_bench options");
-  options.add_options()("help,h", "print this help")
-      ("repeats", po::value(&repeats), "runs per small-map measurement (seeds 1..N)")
-      ("shared-data", po::value(&shared), "folder with movingai/ (default ../shared/data)")
-      ("large-map", po::value(&large), "512x512 map for the thread-scaling run, relative to --shared-data")
-      ("large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")
-      ("large-repeats", po::value(&large_repeats), "runs per thread count on the large map");
-  po::variables_map vm;
-  po::store(po::parse_command_line(argc, argv, options), vm);
-  po::notify(vm);
-  if (vm.count("help")) {
-    std::cout << options;
-    return 0;
-  }
-  if (repeats < 1 || large_repeats < 1) throw aco::Error("repeats must be >= 1");
-  aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
-
+// Classic map1 with each update rule, then each plugin swapped into the baseline pipeline.
+void time_classic(aco::PluginRegistry& registry, int repeats) {
   std::printf("== classic map1, corner cutting, 8-neighbourhood, 50 ants x 100 iterations, alpha 1, beta 7, 1 thread ==\n");
   std::printf("%-12s %10s %10s %12s %12s\n", "update", "median ms", "min ms", "ns/ant step", "mean length");
   const auto map1 = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/classic20/map1.txt");
@@ -165,10 +151,69 @@ int main(int argc, char** argv) try {
   const PruneTiming small = time_prune(registry, classic, base.last.path, 1000);
   std::printf("%-28s %9.2f us per call on the best map1 path (%zu cells -> %zu waypoints)\n", "smoother/prune",
               small.us_per_call, base.last.path.size(), small.waypoints);
+}
 
-  time_fireworks(repeats);
+struct TerrainPipeline {
+  const char* name;
+  aco::Neighbourhood neighbourhood;
+  bool bidirectional;
+  std::map<std::string, std::string> plugins;  // slot -> plugin; the other slots keep their defaults
+};
 
-  const std::filesystem::path large_file = std::filesystem::path(shared) / large;
+// Plain ACO (the default pipeline) and paper 000's full EPF-ACO, as acoplan runs it with
+// --neighbourhood 16 --search bidirectional --init potential_field --heuristic potential_field --update elite.
+const std::vector<TerrainPipeline>& terrain_pipelines() {
+  static const std::vector<TerrainPipeline> pipelines = {
+      {"plain", aco::Neighbourhood::eight, false, {}},
+      {"EPF", aco::Neighbourhood::sixteen, true,
+       {{"init", "potential_field"}, {"heuristic", "potential_field"}, {"update", "elite"}}},
+  };
+  return pipelines;
+}
+
+// Paper 000's look-alike terrains, each pipeline with 1 thread and with all threads. Returns
+// whether every pair of runs gave identical results.
+bool time_terrain(aco::PluginRegistry& registry, int repeats) {
+  const int all_threads = tbb::info::default_concurrency();
+  std::printf("\n== paper 000 look-alike terrains (data/terrain/*.asc.scen), no corner cutting, 50 ants x 100 iterations, "
+              "alpha 1, beta 7 ==\n");
+  std::printf("plain = uniform/distance/ant_system, 8-neighbourhood; EPF = 16-neighbourhood, bidirectional, "
+              "potential_field/potential_field/elite\n");
+  std::printf("%-6s %9s %-8s %8s %10s %10s %12s %12s\n", "map", "optimum", "pipeline", "threads", "median ms", "min ms",
+              "ns/ant step", "mean length");
+  bool identical = true;
+  for (const char* name : {"epf20", "epf30", "epf50"}) {
+    const auto scen_file = std::filesystem::path(ACO_BENCH_DATA_DIR) / "terrain" / (std::string(name) + ".asc.scen");
+    if (!std::filesystem::exists(scen_file)) throw aco::Error(scen_file.string() + " not found");
+    const auto scenarios = aco::load_scenarios(scen_file);
+    if (scenarios.empty()) throw aco::Error(scen_file.string() + " has no scenario");
+    const aco::Scenario& s = scenarios.front();
+    const auto map = load(aco::scenario_map_file(scen_file));
+    for (const TerrainPipeline& p : terrain_pipelines()) {
+      const aco::Graph graph = aco::build_graph(*map, {p.neighbourhood, false});
+      aco::PipelineSpec spec;
+      for (const auto& [slot, plugin] : p.plugins) spec.slots[slot].plugin = plugin;
+      aco::ColonySettings settings;
+      settings.bidirectional = p.bidirectional;
+      aco::ColonyResult one_thread;
+      for (const int threads : std::set<int>{1, all_threads}) {
+        const Timing t = time_runs(graph, s.start, s.goal, registry, spec, settings, repeats, threads);
+        std::printf("%-6s %9.2f %-8s %8d %10.2f %10.2f %12.1f %12.2f\n", name, s.optimal_length, p.name, threads,
+                    t.median_ms, t.min_ms, t.ns_per_step, t.mean_length);
+        if (threads == 1) one_thread = t.last;
+        else identical = identical && same_result(one_thread, t.last);
+      }
+    }
+  }
+  std::printf("results with 1 and %d threads identical (last seed: path, length, steps, curve, pheromone): %s\n",
+              all_threads, identical ? "yes" : "NO");
+  return identical;
+}
+
+// The thread-scaling run on a large Moving AI map. Returns whether 1 and 2 threads agree.
+bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shared, const std::string& large,
+                int large_index, int large_repeats) {
+  const std::filesystem::path large_file = shared / large;
   const auto scenarios = aco::load_scenarios(large_file.string() + ".scen");
   if (large_index < 0 || large_index >= int(scenarios.size())) throw aco::Error("--large-scen-index out of range");
   const aco::Scenario& s = scenarios[large_index];
@@ -185,16 +230,65 @@ int main(int argc, char** argv) try {
   std::printf("%-8d %10.1f %10.1f %12.1f %10.2f %8s\n", 1, one.median_ms, one.min_ms, one.ns_per_step, one.last.length, "1.00");
   std::printf("%-8d %10.1f %10.1f %12.1f %10.2f %8.2f\n", 2, two.median_ms, two.min_ms, two.ns_per_step, two.last.length,
               one.median_ms / two.median_ms);
-  const bool identical = one.last.path == two.last.path && one.last.length == two.last.length &&
-                         one.last.ant_steps == two.last.ant_steps && one.last.best_so_far == two.last.best_so_far &&
-                         one.last.pheromone == two.last.pheromone;
+  const bool identical = same_result(one.last, two.last);
   if (one.last.solved) {
-    const PruneTiming large = time_prune(registry, graph, one.last.path, 1);
-    std::printf("smoother/prune on this path: %.2f ms (%zu cells -> %zu waypoints)\n", large.us_per_call / 1000,
-                one.last.path.size(), large.waypoints);
+    const PruneTiming prune = time_prune(registry, graph, one.last.path, 1);
+    std::printf("smoother/prune on this path: %.2f ms (%zu cells -> %zu waypoints)\n", prune.us_per_call / 1000,
+                one.last.path.size(), prune.waypoints);
   }
   std::printf("results with 1 and 2 threads identical (path, length, steps, curve, pheromone): %s; solved: %s, %d iterations\n",
               identical ? "yes" : "NO", one.last.solved ? "yes" : "no", one.last.iterations);
+  return identical;
+}
+
+const std::set<std::string> kSections = {"classic", "fireworks", "terrain", "large"};
+
+// "--only terrain,large" -> {"terrain", "large"}; empty text = every section.
+std::set<std::string> parse_sections(const std::string& text) {
+  if (text.empty()) return kSections;
+  std::set<std::string> sections;
+  std::istringstream in(text);
+  for (std::string name; std::getline(in, name, ',');) {
+    if (!kSections.count(name))
+      throw aco::Error("--only: unknown section '" + name + "' (sections: classic, fireworks, terrain, large)");
+    sections.insert(name);
+  }
+  return sections;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) try {
+  int repeats = 30;
+  std::string shared = ACO_BENCH_SHARED_DATA_DIR;
+  std::string large = "movingai/street/Berlin_0_512.map";
+  int large_index = 400;
+  int large_repeats = 5;
+  std::string only;
+  po::options_description options("aco_bench options");
+  options.add_options()("help,h", "print this help")
+      ("repeats", po::value(&repeats), "runs per small-map measurement (seeds 1..N)")
+      ("only", po::value(&only), "comma-separated sections to run: classic, fireworks, terrain, large (default: all)")
+      ("shared-data", po::value(&shared), "folder with movingai/ (default ../shared/data)")
+      ("large-map", po::value(&large), "512x512 map for the thread-scaling run, relative to --shared-data")
+      ("large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")
+      ("large-repeats", po::value(&large_repeats), "runs per thread count on the large map");
+  po::variables_map vm;
+  po::store(po::parse_command_line(argc, argv, options), vm);
+  po::notify(vm);
+  if (vm.count("help")) {
+    std::cout << options;
+    return 0;
+  }
+  if (repeats < 1 || large_repeats < 1) throw aco::Error("repeats must be >= 1");
+  const std::set<std::string> sections = parse_sections(only);
+  aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
+
+  bool identical = true;
+  if (sections.count("classic")) time_classic(registry, repeats);
+  if (sections.count("fireworks")) time_fireworks(repeats);
+  if (sections.count("terrain")) identical = time_terrain(registry, repeats) && identical;
+  if (sections.count("large")) identical = time_large(registry, shared, large, large_index, large_repeats) && identical;
   return identical ? 0 : 1;
 } catch (const std::exception& e) {
   std::cerr << "aco_bench: error: " << e.what() << "\n";

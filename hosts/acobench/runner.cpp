@@ -199,8 +199,9 @@ class Runner {
     // The ablation's choices need every trial's result, including those of earlier runs.
     if (!e_.ablation_target) return;
     scores_.clear();
+    const std::vector<ProblemRecord> problems = db_->problems();
     for (const auto& t : db_->trials()) {
-      const auto& problem = db_->problems()[t.problem];
+      const ProblemRecord& problem = problems[t.problem];
       scores_[t.config].emplace_back(t.solved, problem.optimal_length > 0 ? t.length / problem.optimal_length : t.length);
     }
   }

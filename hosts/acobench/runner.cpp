@@ -98,6 +98,10 @@ class Runner {
     }
     db_ = std::make_unique<ResultsDb>(options.database, e.name, e.fingerprint(), records);
     finished_ = db_->finished();
+    for (const auto& r : records) optimal_.push_back(r.optimal_length);
+    // The ablation's choices need the results of trials an earlier, interrupted run stored.
+    if (e.ablation_target)
+      for (const auto& t : db_->trials()) add_score(t);
     // Where the maps are, for the report's pictures (not part of the identity: the folder may move).
     db_->set_meta("experiment_file", std::filesystem::absolute(e.file).lexically_normal().string());
   }
@@ -163,9 +167,9 @@ class Runner {
   std::pair<int, double> score(const PreparedConfig& c) const {
     int failures = 0;
     double relative = 0.0;
-    for (const auto& t : scores_.at(c.id)) {
-      if (!t.first) ++failures;
-      else relative += t.second;
+    for (const auto& [trial, result] : scores_.at(c.id)) {
+      if (!result.first) ++failures;
+      else relative += result.second;
     }
     return {failures, relative};
   }
@@ -191,19 +195,19 @@ class Runner {
         const TrialRecord record = run_trial(trials[i]);
         db_->store(record);
         const std::lock_guard lock(progress_mutex_);
+        if (e_.ablation_target) add_score(record);
         ++done_;
         ++summary.ran;
         if (options_.progress) options_.progress(done_, total_);
       }
     });
-    // The ablation's choices need every trial's result, including those of earlier runs.
-    if (!e_.ablation_target) return;
-    scores_.clear();
-    const std::vector<ProblemRecord> problems = db_->problems();
-    for (const auto& t : db_->trials()) {
-      const ProblemRecord& problem = problems[t.problem];
-      scores_[t.config].emplace_back(t.solved, problem.optimal_length > 0 ? t.length / problem.optimal_length : t.length);
-    }
+  }
+
+  // Keyed by (problem, repetition), so score() sums in the same order whatever order the
+  // trials finished in.
+  void add_score(const TrialRecord& t) {
+    const double optimal = optimal_[t.problem];
+    scores_[t.config][{t.problem, t.repetition}] = {t.solved, optimal > 0 ? t.length / optimal : t.length};
   }
 
   TrialRecord run_trial(const Trial& t) {
@@ -243,7 +247,9 @@ class Runner {
   std::vector<std::unique_ptr<PreparedConfig>> configs_;
   std::unique_ptr<ResultsDb> db_;
   std::set<std::tuple<int, int, int>> finished_;
-  std::map<int, std::vector<std::pair<bool, double>>> scores_;
+  std::vector<double> optimal_;  // per problem; < 0 unknown
+  // Per configuration id: (solved, length / optimum) of each (problem, repetition).
+  std::map<int, std::map<std::pair<int, int>, std::pair<bool, double>>> scores_;
   std::mutex progress_mutex_;
   std::size_t done_ = 0;
   std::size_t total_ = 0;

@@ -259,3 +259,19 @@ TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly
   CHECK(count_runs(killed) == 300);
   CHECK(trial_rows(killed) == trial_rows(whole));
 }
+
+TEST_CASE("acobench refuses a blocked start, a missing database and an unknown command", "[acobench][errors]") {
+  std::string blocked = kSmall;
+  blocked.replace(blocked.find("start: [0, 0]"), 13, "start: [6, 0]");  // an obstacle of map1
+  const auto file = experiment(blocked);
+  const auto run = run_acobench({"run", file.string(), "--db", (file.parent_path() / "x.db").string()});
+  CHECK(run.exit_code == 1);
+  CHECK_THAT(run.err, Contains("problem 'map1': start (6,0) is blocked (an obstacle)"));
+  CHECK_FALSE(std::filesystem::exists(file.parent_path() / "x.db"));
+  const auto report = run_acobench({"report", (file.parent_path() / "none.db").string()});
+  CHECK(report.exit_code == 1);
+  CHECK_THAT(report.err, Contains("no such results database"));
+  const auto unknown = run_acobench({"rn", file.string()});
+  CHECK(unknown.exit_code == 1);
+  CHECK_THAT(unknown.err, Contains("unknown command 'rn'"));
+}

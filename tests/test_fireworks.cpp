@@ -9,6 +9,7 @@
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/fireworks.hpp"
+#include "aco/map_io.hpp"
 #include "support.hpp"
 
 namespace {
@@ -179,4 +180,40 @@ TEST_CASE("acoplan --planner ifwa on the paper004 map", "[fireworks][acoplan]") 
   const auto out_of_range = test::acoplan({"--scen", scen, "--planner", "ifwa", "--ifwa.b", "2"});
   CHECK(out_of_range.exit_code == 1);
   CHECK_THAT(out_of_range.err, Catch::Contains("--ifwa.b"));
+}
+
+TEST_CASE("fireworks on a large map: block weights and the walk limit, still deterministic", "[fireworks][large]") {
+  // The classic map with max_weights 16: cells share weights in 4 x 4 blocks of 5 x 5 cells.
+  const auto map = test::classic_map(1);
+  const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
+  const auto settings = [](const std::map<std::string, std::string>& given) {
+    return aco::fireworks_settings(aco::resolve(aco::fireworks_parameters(), given, ""));
+  };
+  const auto blocks = settings({{"max_weights", "16"}, {"iterations", "10"}});
+  const auto a = aco::run_fireworks(graph, 0, graph.node({19, 19}), blocks);
+  const auto b = aco::run_fireworks(graph, 0, graph.node({19, 19}), blocks);
+  REQUIRE(a.solved);
+  CHECK(a.path == b.path);
+  CHECK(a.best_so_far == b.best_so_far);
+  CHECK(aco::path_length(graph, a.path) == Approx(a.length));
+  const auto per_cell = aco::run_fireworks(graph, 0, graph.node({19, 19}), settings({{"iterations", "10"}}));
+  CHECK(per_cell.best_so_far != a.best_so_far);
+  // The walk limit never cuts a walk on a map of at most 4096 cells...
+  const auto unlimited = aco::run_fireworks(graph, 0, graph.node({19, 19}), settings({{"iterations", "10"}, {"walk_limit", "0"}}));
+  CHECK(unlimited.best_so_far == per_cell.best_so_far);
+  // ...but does on a 193x194 map, where walks wander: the search then differs, still valid.
+  const auto file = test::shared_data_dir() / "movingai/dao/lak304d.map";
+  if (!std::filesystem::exists(file)) {
+    WARN("skipped: no Moving AI data at " << file.string());
+    return;
+  }
+  const auto large = aco::load_map(file);
+  const aco::Graph big = aco::build_graph(*large, {});
+  const aco::NodeId from = big.node({100, 166}), to = big.node({116, 42});
+  REQUIRE(aco::reachable(big, from, to));
+  const auto cut = aco::run_fireworks(big, from, to, settings({{"iterations", "5"}}));
+  const auto uncut = aco::run_fireworks(big, from, to, settings({{"iterations", "5"}, {"walk_limit", "0"}}));
+  REQUIRE(cut.solved);
+  CHECK(cut.best_so_far != uncut.best_so_far);
+  CHECK(aco::path_length(big, cut.path) == Approx(cut.length));
 }

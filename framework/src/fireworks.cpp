@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <numeric>
 
 #include "aco/error.hpp"
@@ -28,6 +29,10 @@ constexpr ParamSpec kFireworksParameters[] = {
     {"inertia_end", ParamType::real, "0.4", "0:10", "mutation inertia weight at the last generation (linear in between)"},
     {"weight_min", ParamType::real, "0.01", "(0:1e9)", "smallest node weight a_j (positive: every move stays possible)"},
     {"weight_max", ParamType::real, "1", "(0:1e9]", "largest node weight a_j"},
+    {"max_weights", ParamType::integer, "4096", "1:1000000000",
+     "most weights per firework: one per cell up to it, on larger maps one per square block of cells"},
+    {"walk_limit", ParamType::real, "3", "0:1e6",
+     "once a path is known, a decoding walk is abandoned after this many times its steps (at least 4096 moves; 0 = never)"},
 };
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -45,12 +50,15 @@ class Search {
   Search(const Graph& graph, NodeId start, NodeId goal, const FireworksSettings& settings)
       : g_(graph), start_(start), goal_(goal), s_(settings), index_(graph.num_nodes(), -1),
         attraction_(graph.num_nodes(), 0.0) {
+    std::vector<NodeId> active;  // the nodes a walk can use: those with edges
     for (NodeId n = 0; n < g_.num_nodes(); ++n) {
       if (g_.degree(n) == 0) continue;
-      index_[n] = static_cast<int>(active_.size());
-      active_.push_back(n);
+      index_[n] = static_cast<int>(active.size());
+      active.push_back(n);
       attraction_[n] = n == goal_ ? 0.0 : 1.0 / g_.distance(n, goal_);
     }
+    dimensions_ = active.size();
+    if (dimensions_ > static_cast<std::size_t>(s_.max_weights)) share_weights_by_block(active);
     // Longer than any walk without repeated nodes: each edge cost counted once per direction.
     penalty_ = std::accumulate(g_.costs.begin(), g_.costs.end(), 1.0);
   }
@@ -61,7 +69,7 @@ class Search {
     tbb::parallel_for(0, s_.fireworks, [&](int i) {
       Rng rng = Rng::stream(s_.seed, 0, static_cast<std::uint64_t>(i));
       Spark& f = fireworks[i];
-      f.weights.resize(active_.size());
+      f.weights.resize(dimensions_);
       for (double& w : f.weights) w = rng.uniform(s_.weight_min, s_.weight_max);
       evaluate(f, rng);
     });
@@ -70,6 +78,7 @@ class Search {
 
     for (int generation = 1; generation <= s_.iterations; ++generation) {
       std::vector<Spark> pool = std::move(fireworks);
+      max_moves_ = move_limit(best_so_far);
       std::vector<Spark> sparks = make_sparks(pool, generation);
       r.evaluations += sparks.size();
       std::move(sparks.begin(), sparks.end(), std::back_inserter(pool));
@@ -129,7 +138,7 @@ class Search {
     tbb::parallel_for(std::size_t{0}, pool.size(), [&](std::size_t i) {
       for (const auto& other : pool) {
         double d2 = 0.0;
-        for (std::size_t k = 0; k < active_.size(); ++k) d2 += (pool[i].weights[k] - other.weights[k]) * (pool[i].weights[k] - other.weights[k]);
+        for (std::size_t k = 0; k < dimensions_; ++k) d2 += (pool[i].weights[k] - other.weights[k]) * (pool[i].weights[k] - other.weights[k]);
         spread[i] += std::sqrt(d2);
       }
     });
@@ -145,6 +154,33 @@ class Search {
       pick = spread_left ? roulette(spread, rng) : std::find(taken.begin(), taken.end(), false) - taken.begin();
     }
     return kept;
+  }
+
+  // A decoding walk is a depth-first search guided by a_j / d(j, goal); on a large map it can
+  // wander over most of the map before it arrives. Once a path is known, walks far longer than it
+  // are abandoned (penalty fitness). Never below 4096 moves, so on maps of up to 4096 cells
+  // (every map of the papers) no walk is ever cut: a walk enters each node at most once.
+  std::size_t move_limit(const Spark& best) const {
+    if (s_.walk_limit <= 0.0 || best.path.empty()) return std::numeric_limits<std::size_t>::max();
+    return std::max<std::size_t>(4096, static_cast<std::size_t>(std::ceil(s_.walk_limit * double(best.path.size() - 1))));
+  }
+
+  // Paper 004 gives every node its own weight, which on a 512x512 map makes a firework 260,000
+  // numbers: every spark copies and mutates them all, and selection compares all pairs of them.
+  // Above max_weights the nodes of each b x b block of cells share one weight, with the
+  // smallest b that keeps the number of blocks within max_weights.
+  void share_weights_by_block(const std::vector<NodeId>& active) {
+    int side = 1;
+    const auto blocks = [&](int b) {
+      return static_cast<std::size_t>((g_.width + b - 1) / b) * static_cast<std::size_t>((g_.height + b - 1) / b);
+    };
+    while (blocks(side) > static_cast<std::size_t>(s_.max_weights)) ++side;
+    const int columns = (g_.width + side - 1) / side;
+    for (NodeId n : active) {
+      const Cell c = g_.cell(n);
+      index_[n] = (c.y / side) * columns + c.x / side;
+    }
+    dimensions_ = blocks(side);
   }
 
   // Paper 004 eq. 6: a weight outside [min, max] is mapped to min + |w| mod (max - min).
@@ -163,7 +199,12 @@ class Search {
     tried[start_] = 1;
     std::vector<double> chances;
     std::vector<NodeId> options;
+    std::size_t moves = 0;
     while (!walk.empty() && walk.back() != goal_) {
+      if (moves >= max_moves_) {
+        walk.clear();  // abandoned: as if it had backed off past the start
+        break;
+      }
       const NodeId at = walk.back();
       chances.clear();
       options.clear();
@@ -182,6 +223,7 @@ class Search {
       }
       tried[next] = 1;
       walk.push_back(next);
+      ++moves;
     }
     spark.fitness = walk.empty() ? penalty_ : path_length(g_, walk);
   }
@@ -202,7 +244,8 @@ class Search {
   NodeId start_;
   NodeId goal_;
   FireworksSettings s_;
-  std::vector<NodeId> active_;  // the nodes a firework has a weight for: those with edges
+  std::size_t dimensions_ = 0;  // weights per firework
+  std::size_t max_moves_ = std::numeric_limits<std::size_t>::max();  // per decoding walk, this generation
   std::vector<int> index_;      // node -> its weight's index in a firework, or -1
   std::vector<double> attraction_;  // per node: 1 / distance to the goal
   double penalty_ = 0.0;
@@ -226,6 +269,8 @@ FireworksSettings fireworks_settings(const ParameterValues& v) {
   s.inertia_end = v.real("inertia_end");
   s.weight_min = v.real("weight_min");
   s.weight_max = v.real("weight_max");
+  s.max_weights = static_cast<int>(v.integer("max_weights"));
+  s.walk_limit = v.real("walk_limit");
   if (s.a > s.b)
     throw Error("fireworks: a = " + to_string(ParamValue(s.a)) + " is above b = " + to_string(ParamValue(s.b)) +
                 " (the spark count bounds are [round(a m), round(b m)])");

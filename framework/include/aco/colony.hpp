@@ -25,6 +25,16 @@ struct ColonySettings {
   // Paper 000's bidirectional search: a second colony walks from the goal and ants join where
   // their walks meet. Needs a second set of strategy objects (see run_colony).
   bool bidirectional = false;
+  // Before the first iteration, forbid the cells that lie on no loop-free start-goal path
+  // (aco/dead_ends.hpp).
+  bool fill_dead_ends = false;
+  // Local search on every arrived ant's walk before the update (aco/local_search.hpp):
+  // none, loops (cut loops only) or straighten (also straight segments up to the window).
+  std::string local_search = "none";
+  int local_search_window = 64;
+  // An ant that has made walk_limit times as many moves as the best path so far has steps dies
+  // (0 = no limit): on large maps a lost ant can otherwise fill whole rooms before it backs out.
+  double walk_limit = 0.0;
 };
 
 // The colony's own parameter table (ants, iterations, alpha, beta, seed, stagnation).

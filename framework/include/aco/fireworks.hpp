@@ -3,7 +3,8 @@
 // best path seeds the colony's pheromone (plugin init/fireworks) or stands alone as a baseline
 // planner (acoplan --planner ifwa).
 //
-// A firework is one weight a_j per node, in [weight_min, weight_max]. Decoding walks from the
+// A firework is one weight a_j per node, in [weight_min, weight_max] (on maps with more nodes than
+// max_weights, one weight per square block of cells). Decoding walks from the
 // start, choosing among the untried neighbours with probability proportional to a_j / d(j, goal),
 // backing off from dead ends, until the goal; its fitness is the walk's length. Sparks come from
 // explosions (count and amplitude from fitness, radius annealed over the generations) and from
@@ -35,6 +36,8 @@ struct FireworksSettings {
   double inertia_end = 0.4;
   double weight_min = 0.01;  // range of a node weight
   double weight_max = 1.0;
+  int max_weights = 4096;    // above it, the nodes of a square block of cells share one weight
+  double walk_limit = 3.0;   // decoding walks longer than this x the best path (and 4096 moves) are abandoned
   std::uint64_t seed = 1;    // not in the table: acoplan's --seed, the plugin's context seed
 };
 

@@ -1,0 +1,51 @@
+#pragma once
+// Local search on an ant's walk (the "ACO plus local search" of Dorigo and Stuetzle, ch. 3.7): an
+// arrived ant's walk is shortened before it deposits pheromone, so the colony learns from walks
+// that are at least locally taut. It looks only along the walk and a few cells beside it; it
+// never searches the map.
+#include <cstdint>
+#include <vector>
+
+#include "aco/strategies.hpp"
+
+namespace aco {
+
+// Per-thread buffers, reused from walk to walk.
+struct WalkScratch {
+  std::vector<std::int32_t> index;   // per node: position on the walk, valid where stamp matches
+  std::vector<std::uint32_t> stamp;  // per node
+  std::uint32_t current = 0;
+  std::vector<NodeId> nodes;
+  std::vector<NodeId> segment;
+  std::vector<double> prefix;
+  void reset(int num_nodes);
+  std::uint32_t next_stamp();
+};
+
+class WalkShortener {
+ public:
+  // `forbidden`: nodes no ant may enter (the engine's mask, which may grow between iterations).
+  // `window`: the longest stretch of the walk, in nodes, replaced by one straight segment.
+  WalkShortener(const Graph& graph, const std::vector<std::uint8_t>& forbidden, int window);
+
+  // Shortens an arrived ant's walk in place (start and goal kept, never longer, still loop-free):
+  // 1. loops: where a later node of the walk is a neighbour of an earlier one, the walk jumps
+  //    there (the wiggles a backed-off or wandering ant leaves);
+  // 2. straightening: from each anchor, the farthest node (at most `window` ahead) that the
+  //    straight grid segment reaches (each step the move best aligned with the direction to the
+  //    segment's end); the stretch is replaced if the segment is cheaper.
+  // Costs O(walk length x log(window)) segment steps per ant in open space.
+  void shorten(Ant& ant, WalkScratch& scratch) const;
+
+ private:
+  void cut_loops(std::vector<NodeId>& nodes, WalkScratch& s) const;
+  void straighten(std::vector<NodeId>& nodes, WalkScratch& s) const;
+  bool straight_segment(NodeId from, NodeId to, std::vector<NodeId>& segment) const;
+
+  const Graph& g_;
+  const std::vector<std::uint8_t>& forbidden_;
+  int window_;
+  std::vector<double> inverse_length_;  // per move of the neighbourhood
+};
+
+}  // namespace aco

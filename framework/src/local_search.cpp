@@ -1,0 +1,162 @@
+#include "aco/local_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace aco {
+
+void WalkScratch::reset(int num_nodes) {
+  if (static_cast<int>(index.size()) == num_nodes) return;
+  index.assign(num_nodes, 0);
+  stamp.assign(num_nodes, 0);
+  current = 0;
+}
+
+std::uint32_t WalkScratch::next_stamp() {
+  if (++current == 0) {
+    std::fill(stamp.begin(), stamp.end(), 0);
+    current = 1;
+  }
+  return current;
+}
+
+WalkShortener::WalkShortener(const Graph& graph, const std::vector<std::uint8_t>& forbidden, int window)
+    : g_(graph), forbidden_(forbidden), window_(window) {
+  for (const Move& m : moves(graph.options.neighbourhood)) inverse_length_.push_back(1.0 / std::hypot(m.dx, m.dy));
+}
+
+namespace {
+
+void prefix_costs(const Graph& g, const std::vector<NodeId>& nodes, std::vector<double>& prefix) {
+  prefix.assign(nodes.size(), 0.0);
+  for (std::size_t k = 1; k < nodes.size(); ++k) prefix[k] = prefix[k - 1] + g.distance(nodes[k - 1], nodes[k]);
+}
+
+}  // namespace
+
+void WalkShortener::cut_loops(std::vector<NodeId>& nodes, WalkScratch& s) const {
+  const std::uint32_t stamp = s.next_stamp();
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    s.index[nodes[k]] = static_cast<std::int32_t>(k);
+    s.stamp[nodes[k]] = stamp;
+  }
+  prefix_costs(g_, nodes, s.prefix);
+  s.segment.clear();
+  const std::size_t last = nodes.size() - 1;
+  std::size_t k = 0;
+  while (k < last) {
+    s.segment.push_back(nodes[k]);
+    std::size_t next = k + 1;
+    for (EdgeId e = g_.edges_begin(nodes[k]); e < g_.edges_end(nodes[k]); ++e) {
+      const NodeId t = g_.targets[e];
+      if (s.stamp[t] != stamp) continue;
+      const auto j = static_cast<std::size_t>(s.index[t]);
+      if (j > next && g_.costs[e] < s.prefix[j] - s.prefix[k]) next = j;
+    }
+    k = next;
+  }
+  s.segment.push_back(nodes[last]);
+  nodes.swap(s.segment);
+}
+
+bool WalkShortener::straight_segment(NodeId from, NodeId to, std::vector<NodeId>& segment) const {
+  segment.clear();
+  const std::span<const Move> all = moves(g_.options.neighbourhood);
+  Cell at = g_.cell(from);
+  const Cell end = g_.cell(to);
+  NodeId node = from;
+  const int limit = 2 * (std::abs(at.x - end.x) + std::abs(at.y - end.y));
+  while (node != to) {
+    // The move best aligned with the direction to the end (largest cosine); if the graph has
+    // no such edge here, or its cell is forbidden, the straight segment is blocked.
+    const int dx = end.x - at.x, dy = end.y - at.y;
+    double best_alignment = 0.0;
+    int best = -1;
+    for (std::size_t m = 0; m < all.size(); ++m) {
+      const double alignment = (all[m].dx * dx + all[m].dy * dy) * inverse_length_[m];
+      if (alignment > best_alignment) {
+        best_alignment = alignment;
+        best = static_cast<int>(m);
+      }
+    }
+    if (best < 0 || static_cast<int>(segment.size()) >= limit) return false;
+    const EdgeId e = g_.edge_by_move(node, all[best].dx, all[best].dy);
+    if (e < 0 || forbidden_[g_.targets[e]]) return false;
+    node = g_.targets[e];
+    at = {at.x + all[best].dx, at.y + all[best].dy};
+    segment.push_back(node);
+  }
+  return true;
+}
+
+void WalkShortener::straighten(std::vector<NodeId>& nodes, WalkScratch& s) const {
+  prefix_costs(g_, nodes, s.prefix);
+  std::vector<NodeId>& out = s.nodes;
+  out.clear();
+  out.push_back(nodes[0]);
+  const std::size_t last = nodes.size() - 1;
+  // From each anchor, the farthest walk node the straight segment reaches: doubling the reach
+  // while the segment is free, then halving the step back from the first failure (greedy, like
+  // the prune smoother). The walk's own stretch is kept where the segment is not cheaper.
+  const auto free_to = [&](std::size_t k, std::size_t j) { return straight_segment(nodes[k], nodes[j], s.segment); };
+  std::size_t k = 0;
+  while (k < last) {
+    std::size_t good = k + 1, reach = 2;
+    while (reach <= static_cast<std::size_t>(window_) && k + reach <= last && free_to(k, k + reach)) {
+      good = k + reach;
+      reach *= 2;
+    }
+    std::size_t bad = std::min(last + 1, k + reach);
+    while (bad - good > 1) {
+      const std::size_t mid = good + (bad - good) / 2;
+      (free_to(k, mid) ? good : bad) = mid;
+    }
+    if (good >= k + 2 && free_to(k, good)) {
+      double cost = 0.0;
+      NodeId previous = nodes[k];
+      for (NodeId n : s.segment) {
+        cost += g_.distance(previous, n);
+        previous = n;
+      }
+      if (cost < s.prefix[good] - s.prefix[k] - 1e-9) {
+        out.insert(out.end(), s.segment.begin(), s.segment.end());
+        k = good;
+        continue;
+      }
+    }
+    out.insert(out.end(), nodes.begin() + static_cast<std::ptrdiff_t>(k) + 1, nodes.begin() + static_cast<std::ptrdiff_t>(good) + 1);
+    k = good;
+  }
+  // A straight segment may cross the rest of the walk: cut the loops that made.
+  const std::uint32_t stamp = s.next_stamp();
+  nodes.clear();
+  for (NodeId n : out) {
+    const auto at = static_cast<std::size_t>(s.index[n]);
+    if (s.stamp[n] == stamp && at < nodes.size() && nodes[at] == n) {
+      nodes.resize(at + 1);
+      continue;
+    }
+    s.stamp[n] = stamp;
+    s.index[n] = static_cast<std::int32_t>(nodes.size());
+    nodes.push_back(n);
+  }
+}
+
+void WalkShortener::shorten(Ant& ant, WalkScratch& s) const {
+  if (!ant.arrived || ant.nodes.size() < 3) return;
+  s.reset(g_.num_nodes());
+  cut_loops(ant.nodes, s);
+  if (window_ >= 2) {
+    straighten(ant.nodes, s);
+    cut_loops(ant.nodes, s);
+  }
+  ant.edges.resize(ant.nodes.size() - 1);
+  ant.length = 0.0;
+  for (std::size_t k = 0; k + 1 < ant.nodes.size(); ++k) {
+    ant.edges[k] = g_.find_edge(ant.nodes[k], ant.nodes[k + 1]);
+    ant.length += g_.costs[ant.edges[k]];
+  }
+}
+
+}  // namespace aco

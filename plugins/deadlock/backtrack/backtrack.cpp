@@ -1,0 +1,25 @@
+// Back-off (paper 004, section 3.3): an ant with nowhere to go steps back instead of dying; the
+// nodes it leaves stay in its tabu list, so it never re-enters the dead end in this walk.
+#include "aco/plugin.hpp"
+
+namespace {
+
+constexpr aco::ParamSpec kParams[] = {
+    {"steps", aco::ParamType::integer, "1", "1:1000000",
+     "nodes a stuck ant steps back at once; 1 = depth-first back-off, which on a connected map always arrives"},
+};
+
+class Backtrack final : public aco::DeadlockPolicy {
+ public:
+  explicit Backtrack(const aco::ParameterValues& p) : steps_(static_cast<int>(p.integer("steps"))) {}
+  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return steps_; }
+
+ private:
+  int steps_;
+};
+
+}  // namespace
+
+ACO_PLUGIN(deadlock, backtrack, Backtrack, "1.0",
+           "paper 004: a stuck ant steps back and keeps the dead end tabu; with steps = 1 every ant arrives on a connected map",
+           kParams)

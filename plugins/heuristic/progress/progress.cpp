@@ -1,0 +1,39 @@
+// Progress towards the goal per unit of step cost: eta_ij = f + (1 - f) (1 + r_ij) / 2 with
+// r_ij = (d(i, goal) - d(j, goal)) / c_ij in [-1, 1]. Unlike 1/d(j, goal), it does not fade with
+// the distance to the goal, so a step straight at the goal is preferred as strongly 500 cells
+// away as next to it.
+#include <algorithm>
+
+#include "aco/plugin.hpp"
+
+namespace {
+
+constexpr aco::ParamSpec kParams[] = {
+    {"floor", aco::ParamType::real, "0.3", "(0:1]",
+     "eta of a step straight away from the goal (a step straight at it has 1, a sideways step (1 + floor) / 2)"},
+};
+
+class ProgressHeuristic final : public aco::Heuristic {
+ public:
+  explicit ProgressHeuristic(const aco::ParameterValues& p) : floor_(p.real("floor")) {}
+  void compute(const aco::Context& c, std::span<double> eta) override {
+    const aco::Graph& g = *c.graph;
+    for (aco::NodeId i = 0; i < g.num_nodes(); ++i) {
+      if (g.degree(i) == 0) continue;
+      const double from = g.distance(i, c.goal);
+      for (aco::EdgeId e = g.edges_begin(i); e < g.edges_end(i); ++e) {
+        const double r = std::clamp((from - g.distance(g.targets[e], c.goal)) / g.costs[e], -1.0, 1.0);
+        eta[e] = floor_ + (1.0 - floor_) * 0.5 * (1.0 + r);
+      }
+    }
+  }
+
+ private:
+  double floor_;
+};
+
+}  // namespace
+
+ACO_PLUGIN(heuristic, progress, ProgressHeuristic, "1.0",
+           "eta = floor + (1 - floor) (1 + r) / 2, r = progress towards the goal per unit step cost: scale-free, for large maps",
+           kParams)

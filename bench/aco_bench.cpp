@@ -241,7 +241,84 @@ bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shar
   return identical;
 }
 
-const std::set<std::string> kSections = {"classic", "fireworks", "terrain", "large"};
+// The recommended 2D pipeline, as data/presets/robust.ini sets it.
+aco::PipelineSpec robust_pipeline(aco::ColonySettings& settings) {
+  aco::PipelineSpec spec;
+  spec.slots["heuristic"].plugin = "progress";
+  spec.slots["update"].plugin = "acs";
+  spec.slots["deadlock"].plugin = "backtrack";
+  settings.beta = 3;
+  settings.fill_dead_ends = true;
+  settings.local_search = "straighten";
+  settings.walk_limit = 3;
+  return spec;
+}
+
+// Every plugin and large-map engine option on a 512x512 map, 1 thread: ns per ant step against
+// two baselines. With the default pipeline (ants die when stuck) a 512x512 run does little ant
+// work, so per-step figures there mostly spread the per-run set-up (per-edge fields, heuristic
+// table) over few steps; with backtrack every ant walks to the goal. Deadlock plugins replace
+// backtrack in the second baseline. Then the recommended pipeline with 1 and 2 threads.
+bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::path& shared, const std::string& large,
+                        int large_index, int repeats) {
+  const std::filesystem::path large_file = shared / large;
+  const auto scenarios = aco::load_scenarios(large_file.string() + ".scen");
+  if (large_index < 0 || large_index >= int(scenarios.size())) throw aco::Error("--large-scen-index out of range");
+  const aco::Scenario& s = scenarios[large_index];
+  const auto big = load(large_file);
+  const aco::Graph graph = aco::build_graph(*big, {});
+  std::printf("\n== plugins on %s, scenario %d (optimum %.2f), 50 ants x 100 iterations, beta 7, 1 thread, %d runs each ==\n",
+              large.c_str(), large_index, s.optimal_length, repeats);
+  std::printf("%-32s %12s %8s %12s %12s %12s %8s\n", "slot/plugin or option", "ns/ant step", "ratio", "ms per run",
+              "ant steps", "mean length", "solved");
+  struct Row {
+    std::string name;
+    aco::PipelineSpec spec;
+    aco::ColonySettings settings;
+  };
+  aco::PipelineSpec with_backtrack;
+  with_backtrack.slots["deadlock"].plugin = "backtrack";
+  for (const auto& [label, baseline] : {std::pair{"baseline: default pipeline", aco::PipelineSpec{}},
+                                        std::pair{"baseline: ant_system + backtrack", with_backtrack}}) {
+    std::vector<Row> rows{{label, baseline, {}}};
+    for (const char* slot : aco::kSlots) {
+      if (std::string(slot) == "smoother") continue;  // once per plan, timed in the large section
+      for (const auto& name : registry.names(slot)) {
+        if (name == baseline.slots.at(slot).plugin) continue;
+        aco::PipelineSpec spec = baseline;
+        spec.slots[slot] = {name, {}};
+        rows.push_back({std::string(slot) + "/" + name, spec, {}});
+      }
+    }
+    for (const char* option : {"fill-dead-ends", "local-search straighten", "walk-limit 3"}) {
+      Row row{std::string("option ") + option, baseline, {}};
+      row.settings.fill_dead_ends = std::string(option) == "fill-dead-ends";
+      if (std::string(option) == "local-search straighten") row.settings.local_search = "straighten";
+      if (std::string(option) == "walk-limit 3") row.settings.walk_limit = 3;
+      rows.push_back(row);
+    }
+    double base_ns = 0;
+    for (const Row& row : rows) {
+      const Timing t = time_runs(graph, s.start, s.goal, registry, row.spec, row.settings, repeats, 1);
+      if (base_ns == 0) base_ns = t.ns_per_step;
+      std::printf("%-32s %12.1f %8.2f %12.1f %12llu %12.2f %8s\n", row.name.c_str(), t.ns_per_step, t.ns_per_step / base_ns,
+                  t.median_ms, static_cast<unsigned long long>(t.last.ant_steps), t.mean_length, t.last.solved ? "yes" : "no");
+    }
+  }
+  aco::ColonySettings settings;
+  const aco::PipelineSpec robust = robust_pipeline(settings);
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 2);
+  const Timing one = time_runs(graph, s.start, s.goal, registry, robust, settings, repeats, 1, true);
+  const Timing two = time_runs(graph, s.start, s.goal, registry, robust, settings, repeats, 2, true);
+  const bool identical = same_result(one.last, two.last);
+  std::printf("recommended pipeline (data/presets/robust.ini): 1 thread %.1f ms, 2 threads %.1f ms (median), speedup %.2f, "
+              "length %.2f (optimum %.2f); results with 1 and 2 threads identical: %s\n",
+              one.median_ms, two.median_ms, one.median_ms / two.median_ms, one.last.length, s.optimal_length,
+              identical ? "yes" : "NO");
+  return identical;
+}
+
+const std::set<std::string> kSections = {"classic", "fireworks", "terrain", "large", "large-plugins"};
 
 // "--only terrain,large" -> {"terrain", "large"}; empty text = every section.
 std::set<std::string> parse_sections(const std::string& text) {
@@ -250,7 +327,7 @@ std::set<std::string> parse_sections(const std::string& text) {
   std::istringstream in(text);
   for (std::string name; std::getline(in, name, ',');) {
     if (!kSections.count(name))
-      throw aco::Error("--only: unknown section '" + name + "' (sections: classic, fireworks, terrain, large)");
+      throw aco::Error("--only: unknown section '" + name + "' (sections: classic, fireworks, terrain, large, large-plugins)");
     sections.insert(name);
   }
   return sections;
@@ -264,15 +341,17 @@ int main(int argc, char** argv) try {
   std::string large = "movingai/street/Berlin_0_512.map";
   int large_index = 400;
   int large_repeats = 5;
+  int large_plugin_repeats = 3;
   std::string only;
   po::options_description options("aco_bench options");
   options.add_options()("help,h", "print this help")
       ("repeats", po::value(&repeats), "runs per small-map measurement (seeds 1..N)")
-      ("only", po::value(&only), "comma-separated sections to run: classic, fireworks, terrain, large (default: all)")
+      ("only", po::value(&only), "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins (default: all)")
       ("shared-data", po::value(&shared), "folder with movingai/ (default ../shared/data)")
       ("large-map", po::value(&large), "512x512 map for the thread-scaling run, relative to --shared-data")
       ("large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")
-      ("large-repeats", po::value(&large_repeats), "runs per thread count on the large map");
+      ("large-repeats", po::value(&large_repeats), "runs per thread count on the large map")
+      ("large-plugin-repeats", po::value(&large_plugin_repeats), "runs per plugin in the large-plugins section");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, options), vm);
   po::notify(vm);
@@ -280,7 +359,7 @@ int main(int argc, char** argv) try {
     std::cout << options;
     return 0;
   }
-  if (repeats < 1 || large_repeats < 1) throw aco::Error("repeats must be >= 1");
+  if (repeats < 1 || large_repeats < 1 || large_plugin_repeats < 1) throw aco::Error("repeats must be >= 1");
   const std::set<std::string> sections = parse_sections(only);
   aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
 
@@ -289,6 +368,8 @@ int main(int argc, char** argv) try {
   if (sections.count("fireworks")) time_fireworks(repeats);
   if (sections.count("terrain")) identical = time_terrain(registry, repeats) && identical;
   if (sections.count("large")) identical = time_large(registry, shared, large, large_index, large_repeats) && identical;
+  if (sections.count("large-plugins"))
+    identical = time_large_plugins(registry, shared, large, large_index, large_plugin_repeats) && identical;
   return identical ? 0 : 1;
 } catch (const std::exception& e) {
   std::cerr << "aco_bench: error: " << e.what() << "\n";

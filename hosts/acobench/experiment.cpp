@@ -126,7 +126,7 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
       for (int i = 0; i < count; ++i) {
         const std::size_t index = static_cast<std::size_t>(i) * scenarios.size() / count;
         const aco::Scenario& s = scenarios[index];
-        problems.push_back({prefix + "#" + std::to_string(index), aco::scenario_map_file(scen), s.start, s.goal});
+        problems.push_back({prefix + "#" + std::to_string(index), aco::scenario_map_file(scen), s.start, s.goal, s.bucket});
       }
     } else {
       only_keys(file, entry, {"map", "start", "goal", "name"}, "a problem");

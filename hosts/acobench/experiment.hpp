@@ -22,6 +22,7 @@ struct Problem {
   std::filesystem::path map;    // resolved against the experiment file's folder
   aco::Cell start;
   aco::Cell goal;
+  int bucket = -1;  // Moving AI difficulty bucket (scenario column 1) for scenario problems, else -1
 };
 
 // A configuration is a set of keys, written as on acoplan's command line without the dashes:

@@ -55,6 +55,7 @@ struct Analysis {
   std::vector<double> average_rank;          // per config
   std::vector<std::string> ablation_path;
   std::filesystem::path experiment_dir;  // the maps are relative to it
+  std::vector<int> buckets;              // per problem: Moving AI bucket, or -1
 };
 
 double mean_of(const std::vector<double>& v) {
@@ -74,6 +75,10 @@ Analysis analyse(const ResultsDb& db) {
   std::map<int, int> index;  // config id -> position
   for (std::size_t c = 0; c < a.configs.size(); ++c) index[a.configs[c].first] = static_cast<int>(c);
   a.results.assign(a.problems.size(), std::vector<Result>(a.configs.size()));
+  for (const auto& problem : a.problems) {
+    const auto setup = nlohmann::json::parse(problem.setup_json);
+    a.buckets.push_back(setup.value("bucket", -1));
+  }
   for (std::size_t p = 0; p < a.problems.size(); ++p)
     for (std::size_t c = 0; c < a.configs.size(); ++c) a.results[p][c].config = static_cast<int>(c);
   for (const auto& t : a.trials) a.results[t.problem][index.at(t.config)].runs.push_back(&t);
@@ -156,6 +161,116 @@ std::vector<Column> columns() {
   };
 }
 
+// A table of the report's summaries, written once and rendered as Markdown and as HTML.
+struct Table {
+  std::string title;
+  std::string intro;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+// Problems from one scenario file share a set name: "arena#40" belongs to "arena".
+std::string problem_set(const std::string& problem) { return problem.substr(0, problem.find('#')); }
+
+// Per problem set and configuration (when a set has several problems): solved share, gap and
+// time over all its runs; and the gap by difficulty bucket where the problems carry buckets.
+std::vector<Table> summary_tables(const Analysis& a) {
+  std::vector<std::string> sets;
+  std::map<std::string, std::vector<std::size_t>> members;
+  for (std::size_t p = 0; p < a.problems.size(); ++p) {
+    const std::string set = problem_set(a.problems[p].name);
+    if (!members.count(set)) sets.push_back(set);
+    members[set].push_back(p);
+  }
+  if (sets.size() == a.problems.size()) return {};
+  Table totals{"Summary by problem set",
+               "Over every run of every problem of the set: solved share, gap of the solved runs to the exact optimum "
+               "(mean and largest), and time per run.",
+               {"problem set", "configuration", "problems", "runs", "solved", "mean gap %", "max gap %", "mean time ms",
+                "max time ms"},
+               {}};
+  const auto gaps_of = [&](const Result& r, std::size_t p, std::vector<double>& gaps) {
+    for (double length : r.lengths) gaps.push_back(100.0 * (length / a.problems[p].optimal_length - 1.0));
+  };
+  for (const auto& set : sets)
+    for (std::size_t c = 0; c < a.configs.size(); ++c) {
+      std::vector<double> gaps, times;
+      std::size_t runs = 0, solved = 0;
+      for (std::size_t p : members[set]) {
+        const Result& r = a.results[p][c];
+        runs += r.runs.size();
+        solved += r.lengths.size();
+        for (const auto* t : r.runs) times.push_back(t->time_s * 1000.0);
+        if (a.problems[p].optimal_length > 0) gaps_of(r, p, gaps);
+      }
+      const auto largest = [](const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); };
+      totals.rows.push_back({set, a.configs[c].second.name, std::to_string(members[set].size()), std::to_string(runs),
+                             runs ? fixed(100.0 * solved / runs, 1) + " %" : "-", fixed(mean_of(gaps), 2),
+                             fixed(largest(gaps), 2), number(mean_of(times), 3), number(largest(times), 3)});
+    }
+  std::vector<Table> tables{totals};
+  Table by_bucket{"Gap by difficulty bucket",
+                  "Each problem set's scenarios in four groups of about equal size by Moving AI bucket (scenario column 1, "
+                  "optimal length / 4): mean gap % of the solved runs, and the solved share where below 100 %.",
+                  {"problem set", "buckets", "problems"},
+                  {}};
+  for (std::size_t c = 0; c < a.configs.size(); ++c) by_bucket.header.push_back(a.configs[c].second.name);
+  for (const auto& set : sets) {
+    std::vector<std::size_t> ps = members[set];
+    if (ps.size() < 4 || std::any_of(ps.begin(), ps.end(), [&](std::size_t p) { return a.buckets[p] < 0; })) continue;
+    std::stable_sort(ps.begin(), ps.end(), [&](std::size_t x, std::size_t y) { return a.buckets[x] < a.buckets[y]; });
+    for (std::size_t g = 0; g < 4; ++g) {
+      const std::size_t from = g * ps.size() / 4, to = (g + 1) * ps.size() / 4;
+      std::vector<std::string> row{set, std::to_string(a.buckets[ps[from]]) + "-" + std::to_string(a.buckets[ps[to - 1]]),
+                                   std::to_string(to - from)};
+      for (std::size_t c = 0; c < a.configs.size(); ++c) {
+        std::vector<double> gaps;
+        std::size_t runs = 0, solved = 0;
+        for (std::size_t i = from; i < to; ++i) {
+          const Result& r = a.results[ps[i]][c];
+          runs += r.runs.size();
+          solved += r.lengths.size();
+          if (a.problems[ps[i]].optimal_length > 0) gaps_of(r, ps[i], gaps);
+        }
+        std::string cell = fixed(mean_of(gaps), 2);
+        if (solved < runs) cell += " (" + fixed(runs ? 100.0 * solved / runs : 0.0, 0) + " % solved)";
+        row.push_back(cell);
+      }
+      by_bucket.rows.push_back(row);
+    }
+  }
+  if (!by_bucket.rows.empty()) tables.push_back(by_bucket);
+  return tables;
+}
+
+std::string markdown(const Table& t) {
+  std::ostringstream md;
+  md << "## " << t.title << "\n\n" << t.intro << "\n\n|";
+  for (const auto& h : t.header) md << " " << h << " |";
+  md << "\n|";
+  for (std::size_t i = 0; i < t.header.size(); ++i) md << (i < 2 ? "---|" : "---:|");
+  md << "\n";
+  for (const auto& row : t.rows) {
+    md << "|";
+    for (const auto& cell : row) md << " " << cell << " |";
+    md << "\n";
+  }
+  return md.str() + "\n";
+}
+
+std::string html(const Table& t) {
+  std::ostringstream out;
+  out << "<h2>" << aco::xml_escape(t.title) << "</h2>\n<p>" << aco::xml_escape(t.intro) << "</p>\n<table><tr>";
+  for (const auto& h : t.header) out << "<th>" << aco::xml_escape(h) << "</th>";
+  out << "</tr>\n";
+  for (const auto& row : t.rows) {
+    out << "<tr>";
+    for (const auto& cell : row) out << "<td>" << aco::xml_escape(cell) << "</td>";
+    out << "</tr>\n";
+  }
+  return out.str() + "</table>\n";
+}
+
 std::string markdown(const Analysis& a, const std::filesystem::path& database) {
   std::ostringstream md;
   md << "# acobench report: " << a.name << "\n\n"
@@ -165,6 +280,7 @@ std::string markdown(const Analysis& a, const std::filesystem::path& database) {
         "against the baseline (`"
      << (a.configs.empty() ? "" : a.configs[0].second.name)
      << "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline.\n\n";
+  for (const Table& t : summary_tables(a)) md << markdown(t);
   const auto cols = columns();
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
     md << "## " << a.problems[p].name << " (optimal " << fixed(a.problems[p].optimal_length, 4) << ")\n\n| configuration |";
@@ -247,6 +363,7 @@ std::string html(const Analysis& a, const std::string& md_intro) {
          "margin:1em 0}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}td:first-child,th:first-child{"
          "text-align:left}svg{margin:0.5em}</style></head><body>\n<h1>acobench report: "
       << aco::xml_escape(a.name) << "</h1>\n<p>" << aco::xml_escape(md_intro) << "</p>\n";
+  for (const Table& t : summary_tables(a)) out << html(t);
   const auto cols = columns();
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
     const double optimal = a.problems[p].optimal_length;

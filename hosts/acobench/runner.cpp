@@ -93,6 +93,7 @@ class Runner {
                               {"start", {p.start.x, p.start.y}},
                               {"goal", {p.goal.x, p.goal.y}},
                               {"reference", aco::describe(base.graph)}};
+      if (p.bucket >= 0) setup["bucket"] = p.bucket;
       records.push_back({p.name, setup.dump(), optimal ? optimal->length : -1.0});
       problems_.push_back(std::move(prepared));
     }

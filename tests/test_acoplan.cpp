@@ -233,3 +233,26 @@ TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acopl
   CHECK(text.exit_code == 0);
   CHECK_THAT(text.out, Contains("runs:     3 seeds (1..3), 3 solved") && Contains("best_iteration mean"));
 }
+
+// The recommended pipelines users start from (data/presets, README "Large maps") must keep loading
+// and planning; what they are worth is measured in docs/results.md, not here.
+TEST_CASE("the shipped presets load and plan with the pipeline they document", "[acoplan][presets]") {
+  const std::string room = (test::data_dir() / "maps/generated/room64-8-s2.map.scen").string();
+  const json robust = run_json({"--config", (test::data_dir() / "presets/robust.ini").string(), "--scen", room,
+                                "--scen-index", "19"});
+  CHECK(robust["solved"].get<bool>());
+  CHECK(robust["length"].get<double>() >= robust["optimal_length"].get<double>() - 1e-9);
+  CHECK(robust["pipeline"]["heuristic"]["plugin"] == "progress");
+  CHECK(robust["pipeline"]["update"]["plugin"] == "acs");
+  CHECK(robust["pipeline"]["deadlock"]["plugin"] == "backtrack");
+  CHECK(robust["colony"]["fill-dead-ends"] == true);
+  CHECK(robust["colony"]["local-search"] == "straighten");
+  CHECK(robust["colony"]["search"] == "single");
+
+  const std::string hills = (test::data_dir() / "terrain/generated/hills40-s101.asc").string();
+  const json terrain = run_json({"--config", (test::data_dir() / "presets/terrain.ini").string(), "--map", hills,
+                                 "--start", "0,0", "--goal", "39,39"});
+  CHECK(terrain["solved"].get<bool>());
+  CHECK(terrain["colony"]["search"] == "bidirectional");
+  CHECK(terrain["length"].get<double>() >= terrain["optimal_length"].get<double>() - 1e-9);
+}

@@ -1,5 +1,8 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <random>
+
 #include "aco/pipeline.hpp"
 #include "support.hpp"
 
@@ -104,4 +107,47 @@ TEST_CASE("with clear_and_tabu no ant ever enters a tabu node", "[plugin][clear_
     tabu_total += watch.forbidden_count;
   }
   CHECK(tabu_total > 0);  // the test exercised the tabu set
+}
+
+// The plugin decides reachability through a witness path instead of one search per dead ant;
+// its decisions must be exactly those of the search: forbid a dead end iff the goal stays
+// reachable from the start without it (and without everything forbidden before).
+TEST_CASE("clear_and_tabu forbids exactly the nodes a search per dead ant would", "[plugin][clear_and_tabu]") {
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 40; ++trial) {
+    const auto map = test::random_grid(rng, 12, 9);
+    const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::eight, false});
+    std::vector<aco::NodeId> open;
+    for (aco::NodeId n = 0; n < g.num_nodes(); ++n)
+      if (g.passable(n)) open.push_back(n);
+    if (open.size() < 3) continue;
+    const aco::NodeId start = open.front(), goal = open.back();
+    if (!aco::reachable(g, start, goal)) continue;
+    const auto c = test::context(g, g.cell(start), g.cell(goal));
+    auto policy = test::make<aco::DeadlockPolicy>("deadlock", "clear_and_tabu");
+    std::vector<std::uint8_t> forbidden(g.num_nodes(), 0), expected(g.num_nodes(), 0);
+    std::vector<double> tau(g.num_edges(), 1.0);
+    for (int iteration = 0; iteration < 6; ++iteration) {
+      std::vector<aco::Ant> ants(5);
+      for (auto& a : ants) a.nodes = {start, open[rng() % open.size()]};
+      policy->after_iteration(c, {ants, nullptr, nullptr}, tau, forbidden);
+      for (const auto& a : ants) {
+        const aco::NodeId n = a.nodes.back();
+        if (n == start || expected[n]) continue;
+        // Reference: a breadth-first search of the graph without the node and the tabu set
+        // (not of a map with those cells blocked: a blocked cell would also remove the diagonal
+        // moves beside it).
+        std::vector<std::uint8_t> seen = expected;
+        seen[n] = 1;
+        std::vector<aco::NodeId> queue{start};
+        seen[start] = 1;
+        for (std::size_t head = 0; head < queue.size(); ++head)
+          for (aco::EdgeId e = g.edges_begin(queue[head]); e < g.edges_end(queue[head]); ++e)
+            if (!seen[g.targets[e]]) seen[g.targets[e]] = 1, queue.push_back(g.targets[e]);
+        const bool goal_reached = std::find(queue.begin(), queue.end(), goal) != queue.end();
+        if (goal_reached) expected[n] = 1;
+      }
+      REQUIRE(forbidden == expected);
+    }
+  }
 }

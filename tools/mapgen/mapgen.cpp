@@ -3,11 +3,15 @@
 // Moving AI .map files, each with a one-line .scen whose optimal length is exact A* on the
 // 8-neighbourhood without corner cutting.
 //
+// aco_mapgen --benchmark OUTDIR writes the generated validation maps of data/maps/generated
+// (random, room and maze maps, 20 scenarios each; see write_benchmark).
+//
 // The papers' maps exist only as figures; these maps imitate them (obstacle kinds, placement,
 // random density), they are not the originals. See data/maps/papers/README.md.
 //
 // Deterministic: fixed seeds, aco::Rng only (no std:: distributions, no clock), so two runs write
 // byte-identical files.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -17,7 +21,9 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <optional>
+#include <queue>
 #include <string>
 #include <vector>
 
@@ -310,22 +316,30 @@ void write_file(const std::filesystem::path& file, const std::string& text) {
   if (!out.flush()) throw aco::Error(file.string() + ": write failed");
 }
 
-void write_map(const PaperMap& m, const std::filesystem::path& dir) {
-  if (const auto why = problem(m); !why.empty()) throw aco::Error(m.name + ": " + why);
-  const auto& g = m.grid;
+std::string movingai_map_text(const OccupancyGrid& g) {
   std::string map =
       "type octile\nheight " + std::to_string(g.height()) + "\nwidth " + std::to_string(g.width()) + "\nmap\n";
   for (int y = 0; y < g.height(); ++y) {
     for (int x = 0; x < g.width(); ++x) map += g.blocked({x, y}) ? '@' : '.';
     map += '\n';
   }
+  return map;
+}
+
+// One .scen line (without the "version 1" header): bucket, map file, size, start, goal, length.
+std::string scenario_line(int bucket, const std::string& map_name, const OccupancyGrid& g, Cell start, Cell goal,
+                          double length) {
+  return std::to_string(bucket) + "\t" + map_name + ".map\t" + std::to_string(g.width()) + "\t" +
+         std::to_string(g.height()) + "\t" + std::to_string(start.x) + "\t" + std::to_string(start.y) + "\t" +
+         std::to_string(goal.x) + "\t" + std::to_string(goal.y) + "\t" + format_length(length) + "\n";
+}
+
+void write_map(const PaperMap& m, const std::filesystem::path& dir) {
+  if (const auto why = problem(m); !why.empty()) throw aco::Error(m.name + ": " + why);
+  const auto& g = m.grid;
   const double length = *optimal_length(g, m.start, m.goal, kScenarioGraph);
-  const std::string scen = "version 1\n0\t" + m.name + ".map\t" + std::to_string(g.width()) + "\t" +
-                           std::to_string(g.height()) + "\t" + std::to_string(m.start.x) + "\t" +
-                           std::to_string(m.start.y) + "\t" + std::to_string(m.goal.x) + "\t" +
-                           std::to_string(m.goal.y) + "\t" + format_length(length) + "\n";
-  write_file(dir / (m.name + ".map"), map);
-  write_file(dir / (m.name + ".map.scen"), scen);
+  write_file(dir / (m.name + ".map"), movingai_map_text(g));
+  write_file(dir / (m.name + ".map.scen"), "version 1\n" + scenario_line(0, m.name, g, m.start, m.goal, length));
 
   const double cut = *optimal_length(g, m.start, m.goal, {aco::Neighbourhood::eight, true});
   const double four = *optimal_length(g, m.start, m.goal, {aco::Neighbourhood::four, false});
@@ -335,16 +349,242 @@ void write_map(const PaperMap& m, const std::filesystem::path& dir) {
             << format_length(cut) << ", 4-conn " << format_length(four) << "\n";
 }
 
+// ---------------------------------------------------------------------------------------------
+// Validation maps (--benchmark): random, room and maze maps in the style of the Moving AI families,
+// at sizes and parameters the recommended pipelines were not tuned on, each with a .scen of
+// scenarios spread over the path lengths, so that quality can be measured on maps nobody looked at
+// while choosing settings.
+
+// Each cell blocked with probability `density`.
+OccupancyGrid random_map(int size, double density, aco::Rng& rng, const std::string& name) {
+  OccupancyGrid g(size, size, name);
+  scatter(g, rng, density, [](Cell) { return false; });
+  return g;
+}
+
+// Square rooms of `room` cells (walls included) on a grid; a spanning tree of doors (random
+// depth-first order) keeps every room reachable, and every other wall has a door with
+// probability `extra_doors`. A door is one free cell at a random place along the wall.
+OccupancyGrid room_map(int size, int room, double extra_doors, aco::Rng& rng, const std::string& name) {
+  OccupancyGrid g(size, size, name);
+  const int rooms = size / room;
+  for (int k = 1; k < rooms; ++k) {
+    fill_rect(g, k * room - 1, 0, k * room - 1, size - 1);
+    fill_rect(g, 0, k * room - 1, size - 1, k * room - 1);
+  }
+  // Wall between room (i, j) and its right (horizontal) or lower neighbour: open one cell of it.
+  const auto open_door = [&](int i, int j, bool horizontal) {
+    const int along = static_cast<int>(rng.below(room - 1));
+    if (horizontal) g.set_blocked({(i + 1) * room - 1, j * room + along}, false);
+    else g.set_blocked({i * room + along, (j + 1) * room - 1}, false);
+  };
+  std::vector<char> visited(rooms * rooms, 0);
+  std::vector<char> door_h(rooms * rooms, 0), door_v(rooms * rooms, 0);
+  std::vector<std::pair<int, int>> stack{{0, 0}};
+  visited[0] = 1;
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    std::vector<std::pair<int, int>> next;
+    for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      const int a = i + di, b = j + dj;
+      if (a >= 0 && b >= 0 && a < rooms && b < rooms && !visited[b * rooms + a]) next.push_back({a, b});
+    }
+    if (next.empty()) {
+      stack.pop_back();
+      continue;
+    }
+    const auto [a, b] = next[rng.below(next.size())];
+    const int lo_i = std::min(i, a), lo_j = std::min(j, b);
+    (a != i ? door_h : door_v)[lo_j * rooms + lo_i] = 1;
+    visited[b * rooms + a] = 1;
+    stack.push_back({a, b});
+  }
+  for (int j = 0; j < rooms; ++j)
+    for (int i = 0; i < rooms; ++i) {
+      if (i + 1 < rooms && (door_h[j * rooms + i] || rng.uniform() < extra_doors)) open_door(i, j, true);
+      if (j + 1 < rooms && (door_v[j * rooms + i] || rng.uniform() < extra_doors)) open_door(i, j, false);
+    }
+  return g;
+}
+
+// A maze with corridors `corridor` cells wide and one-cell walls: a perfect maze (random
+// depth-first backtracker), then every remaining wall between two corridor cells opened with
+// probability `loops`. Loops matter: in a perfect maze every cell off the solution lies in a dead
+// end, which dead-end filling removes before the first ant starts.
+OccupancyGrid maze_map(int size, int corridor, double loops, aco::Rng& rng, const std::string& name) {
+  OccupancyGrid g(size, size, name);
+  fill_rect(g, 0, 0, size - 1, size - 1);
+  const int pitch = corridor + 1;
+  const int cells = (size - 1) / pitch;
+  // Clear a rectangle of corridor: cell (i, j), or the wall from it to its right/lower neighbour.
+  const auto carve = [&](int i, int j, int di, int dj) {
+    const int x0 = 1 + i * pitch, y0 = 1 + j * pitch;
+    const int x1 = x0 + corridor - 1 + di * pitch, y1 = y0 + corridor - 1 + dj * pitch;
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) g.set_blocked({x, y}, false);
+  };
+  std::vector<char> visited(cells * cells, 0);
+  std::vector<char> open_h(cells * cells, 0), open_v(cells * cells, 0);
+  std::vector<std::pair<int, int>> stack{{0, 0}};
+  visited[0] = 1;
+  carve(0, 0, 0, 0);
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    std::vector<std::pair<int, int>> next;
+    for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      const int a = i + di, b = j + dj;
+      if (a >= 0 && b >= 0 && a < cells && b < cells && !visited[b * cells + a]) next.push_back({a, b});
+    }
+    if (next.empty()) {
+      stack.pop_back();
+      continue;
+    }
+    const auto [a, b] = next[rng.below(next.size())];
+    const int lo_i = std::min(i, a), lo_j = std::min(j, b);
+    (a != i ? open_h : open_v)[lo_j * cells + lo_i] = 1;
+    carve(lo_i, lo_j, a != i ? 1 : 0, b != j ? 1 : 0);
+    visited[b * cells + a] = 1;
+    stack.push_back({a, b});
+  }
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      if (i + 1 < cells && !open_h[j * cells + i] && rng.uniform() < loops) carve(i, j, 1, 0);
+      if (j + 1 < cells && !open_v[j * cells + i] && rng.uniform() < loops) carve(i, j, 0, 1);
+    }
+  return g;
+}
+
+// Exact distances from `from` over the graph (Dijkstra); infinity where unreachable. Used only to
+// choose goals at given distances, never by a planner.
+std::vector<double> distances_from(const aco::Graph& graph, aco::NodeId from) {
+  std::vector<double> d(graph.num_nodes(), std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, aco::NodeId>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  d[from] = 0.0;
+  open.push({0.0, from});
+  while (!open.empty()) {
+    const auto [dist, n] = open.top();
+    open.pop();
+    if (dist > d[n]) continue;
+    for (aco::EdgeId e = graph.edges_begin(n); e != graph.edges_end(n); ++e) {
+      const aco::NodeId m = graph.targets[e];
+      if (dist + graph.costs[e] < d[m]) {
+        d[m] = dist + graph.costs[e];
+        open.push({d[m], m});
+      }
+    }
+  }
+  return d;
+}
+
+// The nodes of the largest connected part of the map (8-neighbourhood, no corner cutting).
+std::vector<aco::NodeId> largest_component(const aco::Graph& graph) {
+  std::vector<int> label(graph.num_nodes(), -1);
+  std::vector<aco::NodeId> best, current, queue;
+  for (aco::NodeId s = 0; s < graph.num_nodes(); ++s) {
+    if (label[s] >= 0 || !graph.passable(s)) continue;
+    current.clear();
+    queue.assign(1, s);
+    label[s] = s;
+    while (!queue.empty()) {
+      const aco::NodeId n = queue.back();
+      queue.pop_back();
+      current.push_back(n);
+      for (aco::EdgeId e = graph.edges_begin(n); e != graph.edges_end(n); ++e)
+        if (label[graph.targets[e]] < 0) {
+          label[graph.targets[e]] = s;
+          queue.push_back(graph.targets[e]);
+        }
+    }
+    if (current.size() > best.size()) best = current;
+  }
+  std::sort(best.begin(), best.end());
+  return best;
+}
+
+// `count` scenarios in the largest connected part: the k-th from a random start to the node whose
+// distance is closest to a random fraction in [k/count, (k+1)/count) of that start's farthest
+// distance, so short and long problems are equally represented. Bucket = floor(length / 4) as in
+// Moving AI's files; lengths are exact A* on the scenario graph.
+std::string scenarios(const OccupancyGrid& g, int count, aco::Rng& rng) {
+  const aco::Graph graph = aco::build_graph(g, kScenarioGraph);
+  const std::vector<aco::NodeId> part = largest_component(graph);
+  if (part.size() < 2) throw aco::Error(g.name() + ": no two connected free cells");
+  std::string text = "version 1\n";
+  for (int k = 0; k < count; ++k) {
+    const aco::NodeId start = part[rng.below(part.size())];
+    const std::vector<double> d = distances_from(graph, start);
+    double farthest = 0.0;
+    for (aco::NodeId n : part) farthest = std::max(farthest, d[n]);
+    const double target = (k + rng.uniform()) / count * farthest;
+    aco::NodeId goal = -1;
+    for (aco::NodeId n : part)
+      if (n != start && (goal < 0 || std::abs(d[n] - target) < std::abs(d[goal] - target))) goal = n;
+    const double length = *optimal_length(g, graph.cell(start), graph.cell(goal), kScenarioGraph);
+    text += scenario_line(static_cast<int>(length / 4.0), g.name(), g, graph.cell(start), graph.cell(goal), length);
+  }
+  return text;
+}
+
+// The validation set: three families at 32x32, 64x64 and 512x512, three seeds for the small maps
+// and two for the large ones, 20 scenarios each. The tuning maps were Moving AI's random512-10,
+// 8room/64room, maze512-1 (perfect, corridor 1), so the parameters here differ: 25 % and 20 %
+// obstacles, 32-cell rooms, corridors 2 and 4 cells wide with loops.
+// first_seed shifts every seed, for a tuning set disjoint from the shipped one.
+void write_benchmark(const std::filesystem::path& dir, int first_seed) {
+  constexpr int kScenarios = 20;
+  struct Spec {
+    std::string family;
+    int size;
+  };
+  const std::vector<Spec> specs{{"random", 32}, {"random", 64}, {"random", 512}, {"room", 32}, {"room", 64},
+                                {"room", 512},  {"maze", 32},   {"maze", 64},    {"maze", 512}};
+  for (const auto& spec : specs) {
+    const int seeds = spec.size <= 64 ? 3 : 2;
+    for (int seed = first_seed; seed < first_seed + seeds; ++seed) {
+      aco::Rng rng(static_cast<std::uint64_t>(spec.size) * 1000 + seed);
+      std::string name;
+      std::optional<OccupancyGrid> grid;
+      if (spec.family == "random") {
+        const double density = spec.size <= 64 ? 0.25 : 0.20;
+        name = "random" + std::to_string(spec.size) + "-" + std::to_string(static_cast<int>(density * 100)) + "-s" +
+               std::to_string(seed);
+        grid = random_map(spec.size, density, rng, name);
+      } else if (spec.family == "room") {
+        const int room = spec.size <= 64 ? 8 : 32;
+        name = "room" + std::to_string(spec.size) + "-" + std::to_string(room) + "-s" + std::to_string(seed);
+        grid = room_map(spec.size, room, 0.3, rng, name);
+      } else {
+        const int corridor = spec.size <= 32 ? 1 : spec.size <= 64 ? 2 : 4;
+        name = "maze" + std::to_string(spec.size) + "-" + std::to_string(corridor) + "-s" + std::to_string(seed);
+        grid = maze_map(spec.size, corridor, 0.05, rng, name);
+      }
+      write_file(dir / (name + ".map"), movingai_map_text(*grid));
+      write_file(dir / (name + ".map.scen"), scenarios(*grid, kScenarios, rng));
+      std::cout << name << ": " << spec.size << "x" << spec.size << ", " << blocked_cells(*grid) << " blocked, "
+                << kScenarios << " scenarios\n";
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2 && argc != 3) {
+  const bool benchmark = (argc == 3 || argc == 4) && std::string(argv[1]) == "--benchmark";
+  if (!benchmark && argc != 2 && argc != 3) {
     std::cerr << "usage: aco_mapgen OUTDIR [TERRAIN_OUTDIR]\n"
+                 "       aco_mapgen --benchmark OUTDIR [FIRST_SEED]\n"
                  "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR,\n"
-                 "and paper004 into TERRAIN_OUTDIR if given (data/terrain)\n";
+                 "and paper004 into TERRAIN_OUTDIR if given (data/terrain); with --benchmark, the generated\n"
+                 "random, room and maze validation maps with 20 scenarios each (data/maps/generated)\n";
     return 1;
   }
   try {
+    if (benchmark) {
+      std::filesystem::create_directories(argv[2]);
+      write_benchmark(argv[2], argc == 4 ? std::stoi(argv[3]) : 1);
+      return 0;
+    }
     const std::filesystem::path dir = argv[1];
     std::filesystem::create_directories(dir);
     for (const auto& make : {paper001, paper002, paper003_20, paper003_15}) write_map(make(), dir);

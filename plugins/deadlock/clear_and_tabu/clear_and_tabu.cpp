@@ -33,55 +33,68 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
  private:
   // The paper forbids every dead-end node. An ant can also get stuck in open space, walled in by
   // its own tabu list, and forbidding such a node could cut the only corridor to the goal; so a
-  // node is forbidden only if the goal stays reachable without it. Two local tests settle almost
-  // every case without a search of the map (on a 512x512 map one search per dead ant cost more
-  // than the ants): a node with at most one open neighbour is a true dead end, and a node whose
-  // open neighbours are all connected among themselves cannot separate anything, since every
-  // path through it can go round it. Only the remaining nodes (corridor cells) need a search.
+  // node is forbidden only if the goal stays reachable without it. One search of the map per
+  // dead ant cost more than the ants on a 512x512 map, so the plugin keeps one open start-goal
+  // path as a witness: a node off it can go, since the witness survives without it. For a node
+  // on it, a small search for a way round it between its two witness neighbours repairs the
+  // witness; only if none is found nearby is the whole map searched. The answers are the same as
+  // a search per node.
   bool keeps_goal_reachable(const aco::Context& c, const std::vector<std::uint8_t>& forbidden, aco::NodeId node) {
-    const aco::Graph& g = *c.graph;
-    open_.clear();
-    for (aco::EdgeId e = g.edges_begin(node); e < g.edges_end(node); ++e)
-      if (!forbidden[g.targets[e]]) open_.push_back(g.targets[e]);
-    if (open_.size() <= 1 || neighbours_connected(g)) return true;
-    return reachable_without(c, forbidden, node);
-  }
-
-  // Whether the open neighbours form one group through edges among themselves.
-  bool neighbours_connected(const aco::Graph& g) {
-    std::vector<std::uint8_t> reached(open_.size(), 0);
-    std::vector<std::size_t> stack{0};
-    reached[0] = 1;
-    std::size_t count = 1;
-    while (!stack.empty()) {
-      const aco::NodeId n = open_[stack.back()];
-      stack.pop_back();
-      for (std::size_t j = 0; j < open_.size(); ++j)
-        if (!reached[j] && g.find_edge(n, open_[j]) >= 0) {
-          reached[j] = 1;
-          ++count;
-          stack.push_back(j);
-        }
+    if (c.graph != graph_) graph_ = c.graph, seen_.clear(), witness_.clear();  // a new map
+    if (seen_.size() != forbidden.size()) {
+      seen_.assign(forbidden.size(), 0), stamp_ = 0;
+      on_witness_.assign(forbidden.size(), -1);
+      parent_.assign(forbidden.size(), -1);
     }
-    return count == open_.size();
+    if (!witness_valid(c, forbidden)) {
+      if (!search(c, forbidden, c.start, c.goal, -1, kWholeMap)) return false;
+      set_witness(found_);
+    }
+    if (on_witness_[node] < 0) return true;
+    if (node == c.goal) return false;
+    const int at = on_witness_[node];
+    if (search(c, forbidden, witness_[at - 1], witness_[at + 1], node, kNearby)) {
+      std::vector<aco::NodeId> walk(witness_.begin(), witness_.begin() + at - 1);
+      walk.insert(walk.end(), found_.begin(), found_.end());
+      walk.insert(walk.end(), witness_.begin() + at + 2, witness_.end());
+      set_witness(walk);
+      return true;
+    }
+    if (!search(c, forbidden, c.start, c.goal, node, kWholeMap)) return false;
+    set_witness(found_);
+    return true;
   }
 
-  // Breadth-first search from the start avoiding forbidden nodes and `node`; stamps instead of
-  // a fresh visited array per search.
-  bool reachable_without(const aco::Context& c, const std::vector<std::uint8_t>& forbidden, aco::NodeId node) {
+  bool witness_valid(const aco::Context& c, const std::vector<std::uint8_t>& forbidden) const {
+    if (witness_.empty() || witness_.front() != c.start || witness_.back() != c.goal) return false;
+    return std::none_of(witness_.begin(), witness_.end(), [&](aco::NodeId n) { return forbidden[n] != 0; });
+  }
+
+  // Breadth-first search from `from` to `to` avoiding forbidden nodes and `avoid` (-1: none),
+  // giving up after `limit` nodes; on success the path is in found_. Stamps instead of fresh
+  // arrays per search.
+  bool search(const aco::Context& c, const std::vector<std::uint8_t>& forbidden, aco::NodeId from, aco::NodeId to,
+              aco::NodeId avoid, std::size_t limit) {
     const aco::Graph& g = *c.graph;
-    if (seen_.size() != forbidden.size()) seen_.assign(forbidden.size(), 0), stamp_ = 0;
     if (++stamp_ == 0) std::fill(seen_.begin(), seen_.end(), 0), stamp_ = 1;
     queue_.clear();
-    queue_.push_back(c.start);
-    seen_[c.start] = seen_[node] = stamp_;
-    for (std::size_t head = 0; head < queue_.size(); ++head) {
+    queue_.push_back(from);
+    seen_[from] = stamp_;
+    if (avoid >= 0) seen_[avoid] = stamp_;
+    for (std::size_t head = 0; head < queue_.size() && head < limit; ++head) {
       const aco::NodeId n = queue_[head];
-      if (n == c.goal) return true;
+      if (n == to) {
+        found_.clear();
+        for (aco::NodeId m = n; m != from; m = parent_[m]) found_.push_back(m);
+        found_.push_back(from);
+        std::reverse(found_.begin(), found_.end());
+        return true;
+      }
       for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) {
         const aco::NodeId t = g.targets[e];
         if (seen_[t] != stamp_ && !forbidden[t]) {
           seen_[t] = stamp_;
+          parent_[t] = n;
           queue_.push_back(t);
         }
       }
@@ -89,7 +102,29 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
     return false;
   }
 
-  std::vector<aco::NodeId> open_;
+  // The walk with its loops cut out (a repaired witness may cross itself) becomes the witness.
+  void set_witness(const std::vector<aco::NodeId>& walk) {
+    for (aco::NodeId n : witness_) on_witness_[n] = -1;
+    witness_.clear();
+    for (aco::NodeId n : walk) {
+      if (on_witness_[n] >= 0) {  // a loop back to n: drop everything after n's first visit
+        const auto keep = static_cast<std::size_t>(on_witness_[n]) + 1;
+        for (std::size_t i = keep; i < witness_.size(); ++i) on_witness_[witness_[i]] = -1;
+        witness_.resize(keep);
+        continue;
+      }
+      on_witness_[n] = static_cast<std::int32_t>(witness_.size());
+      witness_.push_back(n);
+    }
+  }
+
+  static constexpr std::size_t kNearby = 1024;  // nodes a repair search may visit
+  static constexpr std::size_t kWholeMap = static_cast<std::size_t>(-1);
+  const aco::Graph* graph_ = nullptr;
+  std::vector<aco::NodeId> witness_;         // an open start-goal path, or empty
+  std::vector<std::int32_t> on_witness_;     // per node: its position on the witness, or -1
+  std::vector<aco::NodeId> found_;           // the path of the last successful search
+  std::vector<aco::NodeId> parent_;          // per node: BFS predecessor, valid where seen_ is current
   std::vector<std::uint32_t> seen_;
   std::uint32_t stamp_ = 0;
   std::vector<aco::NodeId> queue_;

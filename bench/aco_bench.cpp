@@ -210,15 +210,30 @@ bool time_terrain(aco::PluginRegistry& registry, int repeats) {
   return identical;
 }
 
-// The thread-scaling run on a large Moving AI map. Returns whether 1 and 2 threads agree.
-bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shared, const std::string& large,
-                int large_index, int large_repeats) {
+// The large map's scenario and its graph (8-neighbourhood, no corner cutting).
+struct LargeProblem {
+  aco::Scenario scenario;
+  std::unique_ptr<aco::Map> map;
+  aco::Graph graph;
+};
+
+std::unique_ptr<LargeProblem> load_large(const std::filesystem::path& shared, const std::string& large, int large_index) {
   const std::filesystem::path large_file = shared / large;
   const auto scenarios = aco::load_scenarios(large_file.string() + ".scen");
   if (large_index < 0 || large_index >= int(scenarios.size())) throw aco::Error("--large-scen-index out of range");
-  const aco::Scenario& s = scenarios[large_index];
-  const auto big = load(large_file);
-  const aco::Graph graph = aco::build_graph(*big, {});
+  auto p = std::make_unique<LargeProblem>();
+  p->scenario = scenarios[large_index];
+  p->map = load(large_file);
+  p->graph = aco::build_graph(*p->map, {});
+  return p;
+}
+
+// The thread-scaling run on a large Moving AI map. Returns whether 1 and 2 threads agree.
+bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shared, const std::string& large,
+                int large_index, int large_repeats) {
+  const auto problem = load_large(shared, large, large_index);
+  const aco::Scenario& s = problem->scenario;
+  const aco::Graph& graph = problem->graph;
   std::printf("\n== %s (%dx%d, %d edges), scenario %d: %s -> %s, optimum %.2f; ant_system defaults ==\n", large.c_str(),
               graph.width, graph.height, graph.num_edges(), large_index, aco::to_string(s.start).c_str(),
               aco::to_string(s.goal).c_str(), s.optimal_length);
@@ -261,12 +276,9 @@ aco::PipelineSpec robust_pipeline(aco::ColonySettings& settings) {
 // backtrack in the second baseline. Then the recommended pipeline with 1 and 2 threads.
 bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::path& shared, const std::string& large,
                         int large_index, int repeats) {
-  const std::filesystem::path large_file = shared / large;
-  const auto scenarios = aco::load_scenarios(large_file.string() + ".scen");
-  if (large_index < 0 || large_index >= int(scenarios.size())) throw aco::Error("--large-scen-index out of range");
-  const aco::Scenario& s = scenarios[large_index];
-  const auto big = load(large_file);
-  const aco::Graph graph = aco::build_graph(*big, {});
+  const auto problem = load_large(shared, large, large_index);
+  const aco::Scenario& s = problem->scenario;
+  const aco::Graph& graph = problem->graph;
   std::printf("\n== plugins on %s, scenario %d (optimum %.2f), 50 ants x 100 iterations, beta 7, 1 thread, %d runs each ==\n",
               large.c_str(), large_index, s.optimal_length, repeats);
   std::printf("per ant step = (time of 100 iterations - time of the first) / (steps of 100 - steps of the first), same\n"

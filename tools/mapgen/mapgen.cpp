@@ -362,6 +362,36 @@ OccupancyGrid random_map(int size, double density, aco::Rng& rng, const std::str
   return g;
 }
 
+// A random spanning tree of an n x n grid of cells (depth-first, random order of neighbours):
+// per cell, whether the edge to its right (h) and to its lower (v) neighbour is in the tree.
+struct SpanningTree {
+  std::vector<char> h, v;
+};
+
+SpanningTree random_spanning_tree(int n, aco::Rng& rng) {
+  SpanningTree tree{std::vector<char>(n * n, 0), std::vector<char>(n * n, 0)};
+  std::vector<char> visited(n * n, 0);
+  std::vector<std::pair<int, int>> stack{{0, 0}};
+  visited[0] = 1;
+  while (!stack.empty()) {
+    const auto [i, j] = stack.back();
+    std::vector<std::pair<int, int>> next;
+    for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+      const int a = i + di, b = j + dj;
+      if (a >= 0 && b >= 0 && a < n && b < n && !visited[b * n + a]) next.push_back({a, b});
+    }
+    if (next.empty()) {
+      stack.pop_back();
+      continue;
+    }
+    const auto [a, b] = next[rng.below(next.size())];
+    (a != i ? tree.h : tree.v)[std::min(j, b) * n + std::min(i, a)] = 1;
+    visited[b * n + a] = 1;
+    stack.push_back({a, b});
+  }
+  return tree;
+}
+
 // Square rooms of `room` cells (walls included) on a grid; a spanning tree of doors (random
 // depth-first order) keeps every room reachable, and every other wall has a door with
 // probability `extra_doors`. A door is one free cell at a random place along the wall.
@@ -378,31 +408,11 @@ OccupancyGrid room_map(int size, int room, double extra_doors, aco::Rng& rng, co
     if (horizontal) g.set_blocked({(i + 1) * room - 1, j * room + along}, false);
     else g.set_blocked({i * room + along, (j + 1) * room - 1}, false);
   };
-  std::vector<char> visited(rooms * rooms, 0);
-  std::vector<char> door_h(rooms * rooms, 0), door_v(rooms * rooms, 0);
-  std::vector<std::pair<int, int>> stack{{0, 0}};
-  visited[0] = 1;
-  while (!stack.empty()) {
-    const auto [i, j] = stack.back();
-    std::vector<std::pair<int, int>> next;
-    for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-      const int a = i + di, b = j + dj;
-      if (a >= 0 && b >= 0 && a < rooms && b < rooms && !visited[b * rooms + a]) next.push_back({a, b});
-    }
-    if (next.empty()) {
-      stack.pop_back();
-      continue;
-    }
-    const auto [a, b] = next[rng.below(next.size())];
-    const int lo_i = std::min(i, a), lo_j = std::min(j, b);
-    (a != i ? door_h : door_v)[lo_j * rooms + lo_i] = 1;
-    visited[b * rooms + a] = 1;
-    stack.push_back({a, b});
-  }
+  const SpanningTree doors = random_spanning_tree(rooms, rng);
   for (int j = 0; j < rooms; ++j)
     for (int i = 0; i < rooms; ++i) {
-      if (i + 1 < rooms && (door_h[j * rooms + i] || rng.uniform() < extra_doors)) open_door(i, j, true);
-      if (j + 1 < rooms && (door_v[j * rooms + i] || rng.uniform() < extra_doors)) open_door(i, j, false);
+      if (i + 1 < rooms && (doors.h[j * rooms + i] || rng.uniform() < extra_doors)) open_door(i, j, true);
+      if (j + 1 < rooms && (doors.v[j * rooms + i] || rng.uniform() < extra_doors)) open_door(i, j, false);
     }
   return g;
 }
@@ -423,33 +433,17 @@ OccupancyGrid maze_map(int size, int corridor, double loops, aco::Rng& rng, cons
     for (int y = y0; y <= y1; ++y)
       for (int x = x0; x <= x1; ++x) g.set_blocked({x, y}, false);
   };
-  std::vector<char> visited(cells * cells, 0);
-  std::vector<char> open_h(cells * cells, 0), open_v(cells * cells, 0);
-  std::vector<std::pair<int, int>> stack{{0, 0}};
-  visited[0] = 1;
-  carve(0, 0, 0, 0);
-  while (!stack.empty()) {
-    const auto [i, j] = stack.back();
-    std::vector<std::pair<int, int>> next;
-    for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-      const int a = i + di, b = j + dj;
-      if (a >= 0 && b >= 0 && a < cells && b < cells && !visited[b * cells + a]) next.push_back({a, b});
-    }
-    if (next.empty()) {
-      stack.pop_back();
-      continue;
-    }
-    const auto [a, b] = next[rng.below(next.size())];
-    const int lo_i = std::min(i, a), lo_j = std::min(j, b);
-    (a != i ? open_h : open_v)[lo_j * cells + lo_i] = 1;
-    carve(lo_i, lo_j, a != i ? 1 : 0, b != j ? 1 : 0);
-    visited[b * cells + a] = 1;
-    stack.push_back({a, b});
-  }
+  const SpanningTree open = random_spanning_tree(cells, rng);
   for (int j = 0; j < cells; ++j)
     for (int i = 0; i < cells; ++i) {
-      if (i + 1 < cells && !open_h[j * cells + i] && rng.uniform() < loops) carve(i, j, 1, 0);
-      if (j + 1 < cells && !open_v[j * cells + i] && rng.uniform() < loops) carve(i, j, 0, 1);
+      carve(i, j, 0, 0);
+      if (open.h[j * cells + i]) carve(i, j, 1, 0);
+      if (open.v[j * cells + i]) carve(i, j, 0, 1);
+    }
+  for (int j = 0; j < cells; ++j)
+    for (int i = 0; i < cells; ++i) {
+      if (i + 1 < cells && !open.h[j * cells + i] && rng.uniform() < loops) carve(i, j, 1, 0);
+      if (j + 1 < cells && !open.v[j * cells + i] && rng.uniform() < loops) carve(i, j, 0, 1);
     }
   return g;
 }

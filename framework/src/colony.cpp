@@ -5,10 +5,13 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <array>
+#include <atomic>
 #include <cstdint>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numeric>
 
 #ifdef __linux__
@@ -132,13 +135,18 @@ class Colony {
       throw Error("the update plugin's exploitation probability q0 is not within [0, 1]");
     uses_walk_ = p_.heuristic->uses_walk();
     compute_heuristic();
+    by_node_ = p_.heuristic->varies_by_iteration() && p_.heuristic->updates_by_node();
+    if (by_node_) {
+      fresh_ = std::make_unique<std::atomic<int>[]>(static_cast<std::size_t>(g_.num_nodes()));
+      for (NodeId n = 0; n < g_.num_nodes(); ++n) fresh_[n].store(context_.iteration, std::memory_order_relaxed);
+    }
   }
 
   void prepare(int iteration) {
     context_.iteration = iteration;
     if (s_.walk_limit > 0.0 && has_best_)
       max_moves_ = static_cast<std::uint64_t>(std::ceil(s_.walk_limit * static_cast<double>(best_.edges.size())));
-    if (iteration > 0 && p_.heuristic->varies_by_iteration()) compute_heuristic();
+    if (iteration > 0 && p_.heuristic->varies_by_iteration() && !by_node_) compute_heuristic();
   }
 
   Scratch& local_scratch() { return scratch_->local(); }
@@ -204,9 +212,28 @@ class Colony {
  private:
   void compute_heuristic() {
     p_.heuristic->compute_powered(context_, eta_beta_);
-    for (std::size_t e = 0; e < eta_beta_.size(); ++e)
+    check_heuristic(0, eta_beta_.size());
+  }
+
+  void check_heuristic(std::size_t first, std::size_t last) const {
+    for (std::size_t e = first; e < last; ++e)
       if (!(eta_beta_[e] >= 0.0 && std::isfinite(eta_beta_[e])))
         fail_value("heuristic^beta", "the heuristic plugin", eta_beta_[e], e);
+  }
+
+  // Brings node n's edges to the current iteration (heuristics that update by node). Ants on
+  // other threads may stand on n at the same time: the first takes n's lock and updates, the
+  // others wait for it; the acquire/release pair publishes the values to every later reader.
+  void update_heuristic(NodeId n) const {
+    const int now = context_.iteration;
+    if (fresh_[n].load(std::memory_order_acquire) == now) return;
+    std::lock_guard lock(update_locks_[static_cast<std::size_t>(n) % update_locks_.size()]);
+    const int since = fresh_[n].load(std::memory_order_relaxed);
+    if (since == now) return;
+    const EdgeId first = g_.offsets[n], last = g_.offsets[n + 1];
+    p_.heuristic->update_node(context_, n, since, {eta_beta_.data() + first, static_cast<std::size_t>(last - first)});
+    check_heuristic(first, last);
+    fresh_[n].store(now, std::memory_order_release);
   }
 
   [[noreturn]] void fail_value(const char* what, const char* source, double value, std::size_t e) const {
@@ -231,6 +258,7 @@ class Colony {
     const double alpha = s_.alpha;  // unused when kAlphaOne
     for (;;) {
       const NodeId current = ant.nodes.back();
+      if (by_node_) update_heuristic(current);
       int n = 0;
       double total = 0.0;
       bool negative = false;
@@ -302,7 +330,12 @@ class Colony {
   ColonySettings s_;
   Context context_;
   std::vector<double> tau_;
-  std::vector<double> eta_beta_;
+  // Mutable for heuristics that update by node: the (const, multi-threaded) construction brings
+  // a node's eta^beta up to date when an ant first stands on it in an iteration.
+  mutable std::vector<double> eta_beta_;
+  bool by_node_ = false;
+  std::unique_ptr<std::atomic<int>[]> fresh_;  // per node: the iteration its eta^beta is for
+  mutable std::array<std::mutex, 64> update_locks_;
   std::vector<std::uint8_t> forbidden_;
   std::unique_ptr<ScratchPool> scratch_;
   WalkShortener shortener_;

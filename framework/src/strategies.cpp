@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "aco/error.hpp"
+
 namespace aco {
 
 // Out-of-line destructors give each interface one home for its vtable and type_info (in
@@ -24,6 +26,10 @@ void Heuristic::compute_powered(const Context& context, std::span<double> eta_be
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, eta_beta.size(), 16384), [&](const auto& range) {
     for (std::size_t e = range.begin(); e != range.end(); ++e) eta_beta[e] = std::pow(eta_beta[e], context.beta);
   });
+}
+
+void Heuristic::update_node(const Context&, NodeId, int, std::span<double>) const {
+  throw Error("the heuristic plugin says it updates by node but does not implement update_node()");
 }
 
 void Heuristic::step_factors(const Context&, const Ant&, std::span<const EdgeId>, std::span<double> factors) const {

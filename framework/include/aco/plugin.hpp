@@ -21,7 +21,8 @@ namespace aco {
 // Bump on any change to the strategy interfaces, Context, Ant, Iteration, ParameterValues,
 // Map or Graph (plugins read them through Context), or the descriptor below.
 // 3: Map::blocked_reason() changed Map's vtable.
-inline constexpr std::uint32_t kPluginAbiVersion = 3;
+// 4: Heuristic::updates_by_node() and update_node() (lazy heuristic updates on large maps).
+inline constexpr std::uint32_t kPluginAbiVersion = 4;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
 

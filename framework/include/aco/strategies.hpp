@@ -67,6 +67,18 @@ class BOOST_SYMBOL_VISIBLE Heuristic : public Strategy {
   // eta^beta more cheaply than a pow() per edge (see heuristic/adaptive).
   virtual void compute_powered(const Context& context, std::span<double> eta_beta);
 
+  // A heuristic that changes every iteration costs a pass over every edge per iteration, more
+  // than the ants' work on a large map. It may return true here and implement update_node(): the
+  // engine then calls compute_powered() in the first iteration only and afterwards brings eta^beta
+  // up to date node by node, for the nodes the ants stand on, the first time they do in an
+  // iteration.
+  virtual bool updates_by_node() const { return false; }
+  // eta_beta: the out-edges of `node` (from graph.offsets[node]), holding eta^beta as it was in
+  // iteration `since` (< context.iteration). Sets them to what compute_powered() gives for
+  // context.iteration, bit for bit. Called from construction threads, never twice at once for
+  // one node, and only after compute_powered() ran for the run's first iteration.
+  virtual void update_node(const Context& context, NodeId node, int since, std::span<double> eta_beta) const;
+
   // A heuristic that depends on the ant's own walk (its heading, say) returns true here; the
   // engine then calls step_factors() once per step with all candidate edges, never once per
   // candidate. `ant` holds the walk so far (nodes and edges). factors[i] multiplies candidate

@@ -44,24 +44,33 @@ class AdaptiveHeuristic final : public aco::Heuristic {
       }
       return;
     }
-    if (exponent_) {
-      for (std::size_t e = 0; e < eta_beta.size(); ++e) eta_beta[e] *= step_[e];
-    } else {
-      // (base * w)^beta: the same factor (w_now / w_before)^beta for every edge.
-      const double f = std::pow(weight(c) / weight_before(c), c.beta);
-      for (double& v : eta_beta) v *= f;
-    }
+    advance(c, c.iteration - 1, 0, eta_beta);
+  }
+
+  // The same multiplications, in the same order, for the iterations a node missed.
+  bool updates_by_node() const override { return true; }
+  void update_node(const aco::Context& c, aco::NodeId node, int since, std::span<double> eta_beta) const override {
+    advance(c, since, c.graph->offsets[node], eta_beta);
   }
 
  private:
-  static double weight(const aco::Context& c) {
-    const double nc = c.iteration + 1, nc_max = c.max_iterations;
-    return 1.0 + (nc_max - nc) / nc_max;
+  // Brings eta^beta of the edges first, first + 1, ... from iteration `since` to c.iteration.
+  void advance(const aco::Context& c, int since, aco::EdgeId first, std::span<double> eta_beta) const {
+    for (int it = since + 1; it <= c.iteration; ++it) {
+      if (exponent_) {
+        for (std::size_t i = 0; i < eta_beta.size(); ++i) eta_beta[i] *= step_[first + i];
+      } else {
+        // (base * w)^beta: the same factor (w_now / w_before)^beta for every edge.
+        const double f = std::pow(weight(it, c.max_iterations) / weight(it - 1, c.max_iterations), c.beta);
+        for (double& v : eta_beta) v *= f;
+      }
+    }
   }
-  static double weight_before(const aco::Context& c) {
-    aco::Context previous = c;
-    previous.iteration -= 1;
-    return weight(previous);
+
+  static double weight(const aco::Context& c) { return weight(c.iteration, c.max_iterations); }
+  static double weight(int iteration, int max_iterations) {
+    const double nc = iteration + 1, nc_max = max_iterations;
+    return 1.0 + (nc_max - nc) / nc_max;
   }
 
   bool exponent_;

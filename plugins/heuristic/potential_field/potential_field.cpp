@@ -39,19 +39,30 @@ class PotentialFieldHeuristic final : public aco::Heuristic {
       base_beta_.resize(base_.size());
       for (std::size_t e = 0; e < base_.size(); ++e) base_beta_[e] = std::pow(base_[e], beta_);
     }
-    const double w = weight(c);
+    powered(weight(c), 0, eta_beta);
+  }
+
+  // Only w changes between iterations, so a node's edges need nothing from earlier iterations.
+  bool updates_by_node() const override { return true; }
+  void update_node(const aco::Context& c, aco::NodeId node, int, std::span<double> eta_beta) const override {
+    powered(weight(c), c.graph->offsets[node], eta_beta);
+  }
+
+ private:
+  // eta^beta of the edges first, first + 1, ... for the weight w.
+  void powered(double w, aco::EdgeId first, std::span<double> eta_beta) const {
     const bool whole = beta_ >= 0.0 && beta_ <= 64.0 && beta_ == std::floor(beta_);
-    for (std::size_t e = 0; e < eta_beta.size(); ++e) {
+    for (std::size_t i = 0; i < eta_beta.size(); ++i) {
+      const std::size_t e = first + i;
       if (boost_[e] == 0.0 || w == 0.0) {
-        eta_beta[e] = base_beta_[e];
+        eta_beta[i] = base_beta_[e];
       } else {
         const double factor = 1.0 + w * boost_[e];
-        eta_beta[e] = base_beta_[e] * (whole ? whole_power(factor, static_cast<int>(beta_)) : std::pow(factor, beta_));
+        eta_beta[i] = base_beta_[e] * (whole ? whole_power(factor, static_cast<int>(beta_)) : std::pow(factor, beta_));
       }
     }
   }
 
- private:
   // w(it) = ((it_max - it) / it_max)^3 with it = iteration + 1: just under 1 in the first
   // iteration, 0 in the last.
   static double weight(const aco::Context& c) {

@@ -18,6 +18,7 @@
 #include "aco/fireworks.hpp"
 #include "aco/map_io.hpp"
 #include "aco/pipeline.hpp"
+#include "aco/run_spec.hpp"
 
 namespace po = boost::program_options;
 
@@ -35,8 +36,9 @@ struct Timing {
 
 // Runs the colony `repeats` times with seeds 1..repeats inside an arena of `threads` threads.
 Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::PluginRegistry& registry,
-                 const aco::PipelineSpec& spec, aco::ColonySettings settings, int repeats, int threads,
+                 const aco::Keys& plugins, aco::ColonySettings settings, int repeats, int threads,
                  bool same_seed = false) {
+  const aco::PipelineSpec spec = aco::resolve_run(plugins, registry).pipeline;
   std::vector<double> ms;
   Timing t;
   tbb::task_arena arena(threads);
@@ -58,6 +60,13 @@ Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::
   return t;
 }
 
+// `keys` with `slot` set to `plugin`, without the parameters of the slot's previous plugin.
+aco::Keys swapped(aco::Keys keys, const std::string& slot, const std::string& plugin) {
+  std::erase_if(keys, [&](const auto& kv) { return kv.first.rfind(slot + ".", 0) == 0; });
+  keys[slot] = plugin;
+  return keys;
+}
+
 // Whether two runs gave bit-identical results (the determinism promise across thread counts).
 bool same_result(const aco::ColonyResult& a, const aco::ColonyResult& b) {
   return a.path == b.path && a.length == b.length && a.ant_steps == b.ant_steps && a.best_so_far == b.best_so_far &&
@@ -72,9 +81,7 @@ struct PruneTiming {
 // The prune smoother on a grid path, timed over `calls` calls.
 PruneTiming time_prune(aco::PluginRegistry& registry, const aco::Graph& graph, const std::vector<aco::NodeId>& path,
                        int calls) {
-  aco::PipelineSpec spec;
-  spec.slots["smoother"].plugin = "prune";
-  const auto pipeline = aco::instantiate(registry, spec);
+  const auto pipeline = aco::instantiate(registry, aco::resolve_run({{"smoother", "prune"}}, registry).pipeline);
   aco::Context context;
   context.graph = &graph;
   context.start = path.front();
@@ -122,9 +129,8 @@ void time_classic(aco::PluginRegistry& registry, int repeats) {
   const auto map1 = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/classic20/map1.txt");
   const aco::Graph classic = aco::build_graph(*map1, {aco::Neighbourhood::eight, true});
   for (const char* update : {"ant_system", "max_min", "acs"}) {
-    aco::PipelineSpec spec;
-    spec.slots["update"].plugin = update;
-    if (std::string(update) != "max_min") spec.slots["update"].params = {{"rho", "0.3"}, {"q", "1"}};
+    aco::Keys spec{{"update", update}};
+    if (std::string(update) != "max_min") spec.insert({{"update.rho", "0.3"}, {"update.q", "1"}});
     const Timing t = time_runs(classic, {0, 0}, {19, 19}, registry, spec, {}, repeats, 1);
     std::printf("%-12s %10.3f %10.3f %12.1f %12.4f\n", update, t.median_ms, t.min_ms, t.ns_per_step, t.mean_length);
   }
@@ -132,16 +138,13 @@ void time_classic(aco::PluginRegistry& registry, int repeats) {
   // Each plugin swapped into the baseline pipeline (the other slots stay at their defaults).
   std::printf("\n== plugins on classic map1 (same setting, 1 thread): ns per ant step against the ant_system baseline ==\n");
   std::printf("%-28s %12s %8s %12s\n", "slot/plugin", "ns/ant step", "ratio", "mean length");
-  aco::PipelineSpec baseline;
-  baseline.slots["update"].params = {{"rho", "0.3"}, {"q", "1"}};
+  const aco::Keys baseline{{"update.rho", "0.3"}, {"update.q", "1"}};
   const Timing base = time_runs(classic, {0, 0}, {19, 19}, registry, baseline, {}, repeats, 1);
   std::printf("%-28s %12.1f %8.2f %12.4f\n", "(baseline)", base.ns_per_step, 1.0, base.mean_length);
   for (const char* slot : aco::kSlots) {
     for (const auto& name : registry.names(slot)) {
       if (name == aco::default_plugin(slot)) continue;
-      aco::PipelineSpec spec = baseline;
-      spec.slots[slot] = {name, {}};
-      const Timing t = time_runs(classic, {0, 0}, {19, 19}, registry, spec, {}, repeats, 1);
+      const Timing t = time_runs(classic, {0, 0}, {19, 19}, registry, swapped(baseline, slot, name), {}, repeats, 1);
       std::printf("%-28s %12.1f %8.2f %12.4f\n", (std::string(slot) + "/" + name).c_str(), t.ns_per_step,
                   t.ns_per_step / base.ns_per_step, t.mean_length);
     }
@@ -191,8 +194,8 @@ bool time_terrain(aco::PluginRegistry& registry, int repeats) {
     const auto map = load(aco::scenario_map_file(scen_file));
     for (const TerrainPipeline& p : terrain_pipelines()) {
       const aco::Graph graph = aco::build_graph(*map, {p.neighbourhood, false});
-      aco::PipelineSpec spec;
-      for (const auto& [slot, plugin] : p.plugins) spec.slots[slot].plugin = plugin;
+      aco::Keys spec;
+      for (const auto& [slot, plugin] : p.plugins) spec[slot] = plugin;
       aco::ColonySettings settings;
       settings.bidirectional = p.bidirectional;
       aco::ColonyResult one_thread;
@@ -238,7 +241,7 @@ bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shar
               graph.width, graph.height, graph.num_edges(), large_index, aco::to_string(s.start).c_str(),
               aco::to_string(s.goal).c_str(), s.optimal_length);
   std::printf("%-8s %10s %10s %12s %10s %8s\n", "threads", "median ms", "min ms", "ns/ant step", "length", "speedup");
-  const aco::PipelineSpec defaults;
+  const aco::Keys defaults;
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 2);
   const Timing one = time_runs(graph, s.start, s.goal, registry, defaults, {}, large_repeats, 1, true);
   const Timing two = time_runs(graph, s.start, s.goal, registry, defaults, {}, large_repeats, 2, true);
@@ -257,11 +260,8 @@ bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shar
 }
 
 // The recommended 2D pipeline, as data/presets/robust.ini sets it.
-aco::PipelineSpec robust_pipeline(aco::ColonySettings& settings) {
-  aco::PipelineSpec spec;
-  spec.slots["heuristic"] = {"progress", {{"floor", "0.5"}}};
-  spec.slots["update"].plugin = "acs";
-  spec.slots["deadlock"].plugin = "backtrack";
+aco::Keys robust_pipeline(aco::ColonySettings& settings) {
+  const aco::Keys spec{{"heuristic", "progress"}, {"heuristic.floor", "0.5"}, {"update", "acs"}, {"deadlock", "backtrack"}};
   settings.beta = 3;
   settings.fill_dead_ends = true;
   settings.local_search = "straighten";
@@ -288,21 +288,19 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
               "ns/step all", "1st it. ms", "ms per run", "ant steps", "mean length", "solved");
   struct Row {
     std::string name;
-    aco::PipelineSpec spec;
+    aco::Keys spec;
     aco::ColonySettings settings;
   };
-  aco::PipelineSpec with_backtrack;
-  with_backtrack.slots["deadlock"].plugin = "backtrack";
-  for (const auto& [label, baseline] : {std::pair{"baseline: default pipeline", aco::PipelineSpec{}},
+  const aco::Keys with_backtrack{{"deadlock", "backtrack"}};
+  for (const auto& [label, baseline] : {std::pair{"baseline: default pipeline", aco::Keys{}},
                                         std::pair{"baseline: ant_system + backtrack", with_backtrack}}) {
     std::vector<Row> rows{{label, baseline, {}}};
     for (const char* slot : aco::kSlots) {
       if (std::string(slot) == "smoother") continue;  // once per plan, timed in the large section
       for (const auto& name : registry.names(slot)) {
-        if (name == baseline.slots.at(slot).plugin) continue;
-        aco::PipelineSpec spec = baseline;
-        spec.slots[slot] = {name, {}};
-        rows.push_back({std::string(slot) + "/" + name, spec, {}});
+        const auto chosen = baseline.find(slot);
+        if (name == (chosen != baseline.end() ? chosen->second : aco::default_plugin(slot))) continue;
+        rows.push_back({std::string(slot) + "/" + name, swapped(baseline, slot, name), {}});
       }
     }
     for (const char* option : {"fill-dead-ends", "local-search straighten", "walk-limit 4"}) {
@@ -327,7 +325,7 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
     }
   }
   aco::ColonySettings settings;
-  const aco::PipelineSpec robust = robust_pipeline(settings);
+  const aco::Keys robust = robust_pipeline(settings);
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 2);
   const Timing one = time_runs(graph, s.start, s.goal, registry, robust, settings, repeats, 1, true);
   const Timing two = time_runs(graph, s.start, s.goal, registry, robust, settings, repeats, 2, true);

@@ -21,7 +21,7 @@ grep -q "heuristic/my_heuristic  0.1" <<< "$listed"
 out=$("$acoplan" --plugin-dir "$work/build/plugins" --init my_init --heuristic my_heuristic --heuristic.value 2 \
       --update my_update --deadlock my_deadlock --smoother my_smoother --json)
 grep -q '"solved":true' <<< "$out"
-grep -q '"heuristic":{"params":{"value":2.0},"plugin":"my_heuristic"}' <<< "$out"
+grep -q '"heuristic":"my_heuristic","heuristic.value":2.0' <<< "$out"
 # The installed host uses the plugins installed next to it.
 described=$("$acoplan" --describe update/max_min)
 grep -q "file: $work/prefix/lib/aco/plugins/aco_update_max_min.so" <<< "$described"

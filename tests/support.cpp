@@ -130,6 +130,8 @@ CommandResult run(const std::vector<std::string>& argv, const std::vector<std::s
   return result;
 }
 
+aco::PipelineSpec pipeline(const aco::Keys& keys) { return aco::resolve_run(keys, plugins()).pipeline; }
+
 CommandResult acoplan(const std::vector<std::string>& args, const std::vector<std::string>& env) {
   std::vector<std::string> argv{ACO_TEST_ACOPLAN};
   argv.insert(argv.end(), args.begin(), args.end());

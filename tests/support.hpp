@@ -13,6 +13,7 @@
 #include "aco/map.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/plugin_registry.hpp"
+#include "aco/run_spec.hpp"
 
 namespace test {
 
@@ -52,6 +53,9 @@ aco::Context context(const aco::Graph& graph, aco::Cell start, aco::Cell goal, i
 
 // An arrived ant following the given cells (consecutive cells must be neighbours).
 aco::Ant ant(const aco::Graph& graph, const std::vector<aco::Cell>& cells);
+
+// A pipeline from run keys ({{"update", "acs"}, {"update.rho", "0.2"}}), other slots at their defaults.
+aco::PipelineSpec pipeline(const aco::Keys& keys);
 
 // The baseline strategies (uniform, distance, ant_system, discard) as one pipeline.
 struct Baseline {

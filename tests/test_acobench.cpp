@@ -8,12 +8,15 @@
 
 #include <catch2/catch.hpp>
 #include <chrono>
+#include <cmath>
+#include <nlohmann/json.hpp>
 #include <fstream>
 #include <sstream>
 #include <thread>
 
 #include "acobench/experiment.hpp"
 #include "acobench/results_db.hpp"
+#include "acobench/runner.hpp"
 #include "aco/error.hpp"
 #include "support.hpp"
 
@@ -116,8 +119,8 @@ TEST_CASE("an experiment file expands into named, factorial and baseline configu
   CHECK(e.configurations[2].keys.at("update.rho") == "0.3");
   const auto s = acobench::resolve(e.configurations[1], test::plugins());
   CHECK(s.graph.corner_cutting);
-  CHECK(s.pipeline.slots.at("update").params.at("q0") == "0.7");
-  CHECK(s.colony.integer("ants") == 10);
+  CHECK(s.pipeline.at("update").parameters.real("q0") == 0.7);
+  CHECK(s.colony.ants == 10);
 }
 
 TEST_CASE("a factorial over two factors gives every combination", "[acobench]") {
@@ -266,7 +269,7 @@ TEST_CASE("acobench refuses a blocked start, a missing database and an unknown c
   const auto file = experiment(blocked);
   const auto run = run_acobench({"run", file.string(), "--db", (file.parent_path() / "x.db").string()});
   CHECK(run.exit_code == 1);
-  CHECK_THAT(run.err, Contains("problem 'map1': start (6,0) is blocked (an obstacle)"));
+  CHECK_THAT(run.err, Contains("problem 'map1': start (6,0) is blocked: an obstacle"));
   CHECK_FALSE(std::filesystem::exists(file.parent_path() / "x.db"));
   const auto report = run_acobench({"report", (file.parent_path() / "none.db").string()});
   CHECK(report.exit_code == 1);
@@ -274,4 +277,41 @@ TEST_CASE("acobench refuses a blocked start, a missing database and an unknown c
   const auto unknown = run_acobench({"rn", file.string()});
   CHECK(unknown.exit_code == 1);
   CHECK_THAT(unknown.err, Contains("unknown command 'rn'"));
+}
+
+TEST_CASE("an experiment sets terrain keys per configuration: max-slope limits the paths", "[acobench][terrain]") {
+  const auto file = test::temp_file("terrain.yaml", "name: slopes\nseed: 3\nrepetitions: 2\nproblems:\n  - {scen: " +
+                                                      (test::data_dir() / "terrain/epf30.asc.scen").string() +
+                                                      ", count: 1}\nsettings: {ants: 20, iterations: 20}\n"
+                                                      "configurations:\n  - {name: slope60, max-slope: 60}\n"
+                                                      "  - {name: slope50, max-slope: 50}\n");
+  const auto e = acobench::load_experiment(file, test::plugins());
+  REQUIRE(e.configurations.size() == 3);
+  CHECK(acobench::resolve(e.configurations[1], test::plugins()).problem.terrain.max_slope_deg == 60.0);
+  const auto db_file = file.parent_path() / "slopes.db";
+  const auto summary = acobench::run_experiment(e, test::plugins(), {db_file, 2, {}});
+  CHECK(summary.ran == 6);
+  const acobench::ResultsDb db(db_file);
+  const auto configs = db.configs();
+  REQUIRE(configs.size() == 3);
+  CHECK_THAT(configs[1].second.settings_json, Contains("\"max-slope\":60.0"));
+  int solved[3] = {0, 0, 0};
+  double steepest = 0;
+  for (const auto& t : db.trials()) {
+    const int c = t.config - configs[0].first;
+    solved[c] += t.solved;
+    if (c != 1 || !t.solved) continue;
+    const auto path = nlohmann::json::parse(t.path_json);
+    for (std::size_t i = 1; i < path.size(); ++i) {
+      const double dx = path[i][0].get<double>() - path[i - 1][0].get<double>();
+      const double dy = path[i][1].get<double>() - path[i - 1][1].get<double>();
+      const double dz = path[i][2].get<double>() - path[i - 1][2].get<double>();
+      steepest = std::max(steepest, std::atan2(std::abs(dz), std::hypot(dx, dy)) * 180.0 / M_PI);
+    }
+  }
+  CHECK(solved[0] == 2);
+  CHECK(solved[1] == 2);
+  CHECK(solved[2] == 0);  // at 50 degrees the goal cannot be reached from the start
+  CHECK(steepest > 0.0);
+  CHECK(steepest <= 60.0);
 }

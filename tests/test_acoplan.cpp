@@ -60,8 +60,11 @@ TEST_CASE("acoplan --json reports every documented field", "[acoplan]") {
   CHECK(j["grid_length"].get<double>() >= j["optimal_length"].get<double>() - 1e-9);
   CHECK(j["optimal_length"].get<double>() == Approx(34.3848).margin(1e-4));
   CHECK(j["convergence"].size() == 100);
-  CHECK(j["pipeline"]["update"]["plugin"] == "ant_system");
-  CHECK(j["pipeline"]["update"]["params"]["rho"] == 0.3);
+  // The configuration: every run key with its resolved value, as --print-config and acobench name them.
+  CHECK(j["config"]["update"] == "ant_system");
+  CHECK(j["config"]["update.rho"] == 0.3);
+  CHECK(j["config"]["corner-cutting"] == true);
+  CHECK(j["config"]["seed"] == 3);
 }
 
 TEST_CASE("acoplan is deterministic for a seed, whatever the thread count", "[acoplan][determinism]") {
@@ -99,8 +102,8 @@ TEST_CASE("acoplan plans Moving AI scenarios and the exact reference", "[acoplan
 
 TEST_CASE("acoplan composes plugins and parameters from the command line and a config file", "[acoplan]") {
   const json mmas = run_json({"--update", "max_min", "--update.rho", "0.2", "--update.p_best", "0.1", "--iterations", "30"});
-  CHECK(mmas["pipeline"]["update"]["plugin"] == "max_min");
-  CHECK(mmas["pipeline"]["update"]["params"]["rho"] == 0.2);
+  CHECK(mmas["config"]["update"] == "max_min");
+  CHECK(mmas["config"]["update.rho"] == 0.2);
   CHECK(mmas["iterations"] == 30);
 
   const auto printed = test::acoplan({"--update", "acs", "--update.q0", "0.5", "--ants", "20", "--print-config"});
@@ -113,7 +116,7 @@ TEST_CASE("acoplan composes plugins and parameters from the command line and a c
   direct.erase("time_ms");
   CHECK(from_file == direct);
   // The command line wins over the file.
-  CHECK(run_json({"--config", config.string(), "--ants", "7"})["colony"]["ants"] == 7);
+  CHECK(run_json({"--config", config.string(), "--ants", "7"})["config"]["ants"] == 7);
 }
 
 TEST_CASE("acoplan lists and describes plugins, and prints help with plugin options", "[acoplan]") {
@@ -164,7 +167,7 @@ TEST_CASE("acoplan rejects blocked, out-of-range and malformed start and goal ce
   expect_error({"--map", map1, "--start", "-1,0", "--goal", "19,19"}, "start (-1,0) is outside");
   expect_error({"--map", map1, "--start", "3", "--goal", "19,19"}, "--start: '3' is not a cell");
   expect_error({"--map", map1}, "--start and --goal are required");
-  expect_error({"--scen", arena_scen, "--scen-index", "100000"}, "--scen-index 100000 is out of range");
+  expect_error({"--scen", arena_scen, "--scen-index", "100000"}, "scen-index 100000 is out of range");
   expect_error({"--scen", arena_scen, "--start", "1,1"}, "either --scen or --start/--goal");
 }
 
@@ -225,7 +228,7 @@ TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acopl
   CHECK(s["length"]["mean"].get<double>() == Approx(mean));
   CHECK(s["length"]["sd"].get<double>() == Approx(std::sqrt(sum_sq / 5)).margin(1e-12));
   CHECK(s["turns"].contains("max"));
-  CHECK(j["pipeline"]["update"]["plugin"] == "ant_system");
+  CHECK(j["config"]["update"] == "ant_system");
   // Run 3 of the repetition is the same as a single run with its seed.
   json single = run_json({"--seed", "13", "--iterations", "30", "--corner-cutting"});
   CHECK(single["grid_path"] == j["runs"][3]["grid_path"]);
@@ -242,17 +245,17 @@ TEST_CASE("the shipped presets load and plan with the pipeline they document", "
                                 "--scen-index", "19"});
   CHECK(robust["solved"].get<bool>());
   CHECK(robust["length"].get<double>() >= robust["optimal_length"].get<double>() - 1e-9);
-  CHECK(robust["pipeline"]["heuristic"]["plugin"] == "progress");
-  CHECK(robust["pipeline"]["update"]["plugin"] == "acs");
-  CHECK(robust["pipeline"]["deadlock"]["plugin"] == "backtrack");
-  CHECK(robust["colony"]["fill-dead-ends"] == true);
-  CHECK(robust["colony"]["local-search"] == "straighten");
-  CHECK(robust["colony"]["search"] == "single");
+  CHECK(robust["config"]["heuristic"] == "progress");
+  CHECK(robust["config"]["update"] == "acs");
+  CHECK(robust["config"]["deadlock"] == "backtrack");
+  CHECK(robust["config"]["fill-dead-ends"] == true);
+  CHECK(robust["config"]["local-search"] == "straighten");
+  CHECK(robust["config"]["search"] == "single");
 
   const std::string hills = (test::data_dir() / "terrain/generated/hills40-s101.asc").string();
   const json terrain = run_json({"--config", (test::data_dir() / "presets/terrain.ini").string(), "--map", hills,
                                  "--start", "0,0", "--goal", "39,39"});
   CHECK(terrain["solved"].get<bool>());
-  CHECK(terrain["colony"]["search"] == "bidirectional");
+  CHECK(terrain["config"]["search"] == "bidirectional");
   CHECK(terrain["length"].get<double>() >= terrain["optimal_length"].get<double>() - 1e-9);
 }

@@ -65,13 +65,11 @@ TEST_CASE("plugins of papers 001, 002 and 003 compose in any slot", "[compositio
   for (const auto& problem : problems) {
     const aco::Graph g = aco::build_graph(*problem.map, problem.options);
     for (const auto& combination : combinations) {
-      aco::PipelineSpec spec;
-      spec.slots["init"].plugin = combination.init;
-      spec.slots["heuristic"].plugin = combination.heuristic;
-      spec.slots["update"].plugin = combination.update;
-      spec.slots["deadlock"].plugin = combination.deadlock;
-      spec.slots["smoother"].plugin = combination.smoother;
-      const auto p = aco::instantiate(test::plugins(), spec);
+      const auto p = aco::instantiate(test::plugins(), test::pipeline({{"init", combination.init},
+                                                                        {"heuristic", combination.heuristic},
+                                                                        {"update", combination.update},
+                                                                        {"deadlock", combination.deadlock},
+                                                                        {"smoother", combination.smoother}}));
       aco::ColonySettings s;
       s.iterations = 40;
       const aco::NodeId start = g.node(problem.start), goal = g.node(problem.goal);
@@ -91,5 +89,5 @@ TEST_CASE("acoplan runs a cross-paper pipeline from the command line", "[composi
                                 "--smoother", "prune", "--corner-cutting", "--same-path-stop", "--json"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  CHECK_THAT(r.out, Contains("\"solved\":true") && Contains("\"plugin\":\"prune\"") && Contains("\"gamma\":3.0"));
+  CHECK_THAT(r.out, Contains("\"solved\":true") && Contains("\"smoother\":\"prune\"") && Contains("\"heuristic.gamma\":3.0"));
 }

@@ -160,13 +160,13 @@ TEST_CASE("acoplan --planner ifwa on the paper004 map", "[fireworks][acoplan]") 
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  CHECK(j.at("planner") == "ifwa");
+  CHECK(j.at("config").at("planner") == "ifwa");
   CHECK(j.at("solved").get<bool>());
   CHECK(j.at("iterations") == 10);
   CHECK(j.at("convergence").size() == 10u);
   CHECK(j.at("best_iteration").get<int>() >= 1);
-  CHECK(j.at("ifwa").at("iterations") == 10);
-  CHECK(j.at("ifwa").at("radius") == 3.0);
+  CHECK(j.at("config").at("ifwa.iterations") == 10);
+  CHECK(j.at("config").at("ifwa.radius") == 3.0);
   CHECK(j.at("length").get<double>() >= j.at("optimal_length").get<double>() - 1e-9);
   CHECK(j.at("grid_path").front() == nlohmann::json::array({0, 0}));
   CHECK(j.at("grid_path").back() == nlohmann::json::array({19, 19}));

@@ -262,10 +262,7 @@ TEST_CASE("the large-map options give bit-identical results for any thread count
   const aco::Graph graph = aco::build_graph(*map, {});
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
   for (const bool bidirectional : {false, true}) {
-    aco::PipelineSpec spec;
-    spec.slots["heuristic"].plugin = "progress";
-    spec.slots["update"].plugin = "acs";
-    spec.slots["deadlock"].plugin = "backtrack";
+    const aco::PipelineSpec spec = test::pipeline({{"heuristic", "progress"}, {"update", "acs"}, {"deadlock", "backtrack"}});
     aco::ColonySettings s;
     s.ants = 30;
     s.iterations = 15;

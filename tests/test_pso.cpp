@@ -135,12 +135,12 @@ TEST_CASE("acoplan --planner pso on the paper004 map", "[pso][acoplan]") {
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
-  CHECK(j.at("planner") == "pso");
+  CHECK(j.at("config").at("planner") == "pso");
   CHECK(j.at("solved").get<bool>());
   CHECK(j.at("iterations") == 30);
   CHECK(j.at("convergence").size() == 30u);
   CHECK(j.at("evaluations") == 50 * 31);
-  CHECK(j.at("pso").at("particles") == 50);
+  CHECK(j.at("config").at("pso.particles") == 50);
   CHECK(j.at("length").get<double>() >= j.at("optimal_length").get<double>() - 1e-9);
 
   const auto summary = test::acoplan({"--scen", scen, "--planner", "pso", "--pso.iterations", "30", "--seed", "2"});

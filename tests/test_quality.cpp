@@ -18,9 +18,9 @@ struct Problem {
 
 aco::ColonyResult plan(const Problem& p, aco::Cell start, aco::Cell goal, const std::string& update,
                        std::map<std::string, std::string> params, std::uint64_t seed) {
-  aco::PipelineSpec spec;
-  spec.slots["update"] = {update, std::move(params)};
-  const auto pipeline = aco::instantiate(test::plugins(), spec);
+  aco::Keys keys{{"update", update}};
+  for (const auto& [name, value] : params) keys["update." + name] = value;
+  const auto pipeline = aco::instantiate(test::plugins(), test::pipeline(keys));
   aco::ColonySettings s;  // 50 ants, 100 iterations, alpha 1, beta 7
   s.seed = seed;
   return aco::run_colony(p.graph, p.graph.node(start), p.graph.node(goal), pipeline.colony(), s);

@@ -37,7 +37,10 @@ std::string format_number(double v) {
   std::ostringstream s;
   s.precision(12);
   s << v;
-  return s.str();
+  // Readable for the usual values, exact for the rest: the text must read back as v.
+  if (std::stod(s.str()) == v) return s.str();
+  char exact[64];
+  return std::string(exact, std::to_chars(exact, exact + sizeof exact, v).ptr);
 }
 
 std::string describe_range(const NumericRange& r) {
@@ -70,6 +73,8 @@ const char* to_string(ParamType type) {
   }
   return "?";
 }
+
+KeyError::~KeyError() = default;
 
 std::string to_string(const ParamValue& value) {
   return std::visit(
@@ -193,7 +198,13 @@ ParameterValues resolve(std::span<const ParamSpec> table, const std::map<std::st
   for (const ParamSpec& spec : table) {
     names.push_back(spec.name);
     const auto it = given.find(spec.name);
-    values.set(spec.name, parse_value(spec, it == given.end() ? spec.default_value : it->second, key_prefix + spec.name));
+    try {
+      values.set(spec.name, parse_value(spec, it == given.end() ? spec.default_value : it->second, key_prefix + spec.name));
+    } catch (const KeyError&) {
+      throw;
+    } catch (const Error& e) {
+      throw KeyError(key_prefix + spec.name, e.what());
+    }
   }
   for (const auto& [name, text] : given) {
     if (values.contains(name)) continue;
@@ -205,7 +216,7 @@ ParameterValues resolve(std::span<const ParamSpec> table, const std::map<std::st
       for (std::size_t i = 0; i < names.size(); ++i) message += (i ? ", " : "") + key_prefix + names[i];
       message += ")";
     }
-    throw Error(message);
+    throw KeyError(key_prefix + name, message);
   }
   return values;
 }

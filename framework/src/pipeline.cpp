@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "aco/error.hpp"
+
 namespace aco {
 
 const char* default_plugin(const std::string& slot) {
@@ -13,26 +15,13 @@ const char* default_plugin(const std::string& slot) {
   throw Error("unknown slot '" + slot + "'");
 }
 
-PipelineSpec::PipelineSpec() {
-  for (const char* slot : kSlots) slots[slot].plugin = default_plugin(slot);
-}
-
 LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec) {
-  for (const auto& [slot, choice] : spec.slots)
-    if (std::find(kSlots.begin(), kSlots.end(), slot) == kSlots.end()) {
-      const std::vector<std::string> known(kSlots.begin(), kSlots.end());
-      const auto near = nearest(slot, known);
-      throw Error("unknown slot '" + slot + "'" + (near.empty() ? "" : "; did you mean '" + near + "'?"));
-    }
   LoadedPipeline loaded;
   auto make = [&](const char* slot, auto& target) {
     using Interface = typename std::remove_reference_t<decltype(target)>::element_type;
-    const auto it = spec.slots.find(slot);
-    const SlotChoice choice = it != spec.slots.end() ? it->second : SlotChoice{default_plugin(slot), {}};
-    const PluginDescriptor& descriptor = registry.load(slot, choice.plugin);
-    ParameterValues values = resolve(descriptor.parameters(), choice.params, "--" + std::string(slot) + ".");
-    target = registry.create<Interface>(slot, choice.plugin, values);
-    loaded.resolved[slot] = std::move(values);
+    const auto it = spec.find(slot);
+    if (it == spec.end()) throw Error(std::string("the pipeline has no plugin for the slot '") + slot + "'");
+    target = registry.create<Interface>(slot, it->second.plugin, it->second.parameters);
   };
   make("init", loaded.init);
   make("heuristic", loaded.heuristic);

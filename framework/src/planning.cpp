@@ -21,7 +21,7 @@ std::span<const ParamSpec> planner_parameters(const std::string& planner) {
 namespace {
 
 // A baseline planner's search, with the run's seed.
-PlannerResult run_baseline(const PlanRequest& request, const Graph& graph, NodeId start, NodeId goal) {
+PlannerResult run_baseline(const RunSpec& request, const Graph& graph, NodeId start, NodeId goal) {
   if (request.planner == "ifwa") {
     FireworksSettings s = fireworks_settings(request.planner_parameters);
     s.seed = request.colony.seed;
@@ -34,13 +34,12 @@ PlannerResult run_baseline(const PlanRequest& request, const Graph& graph, NodeI
 
 }  // namespace
 
-PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const PlanRequest& request) {
+PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const RunSpec& request) {
   const LoadedPipeline pipeline = instantiate(registry, request.pipeline);
   PlanOutcome o;
   o.seed = request.colony.seed;
   o.start = start;
   o.goal = goal;
-  o.resolved = pipeline.resolved;
   const auto began = std::chrono::steady_clock::now();
   if (!reachable(graph, start, goal)) {
     o.reason = "goal " + to_string(graph.cell(goal)) + " is not reachable from start " + to_string(graph.cell(start)) +
@@ -84,7 +83,7 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
     o.grid_length = path_length(graph, o.grid_path);
     o.path = pipeline.smoother->smooth(context, o.grid_path);
     if (o.path.empty() || o.path.front() != graph.positions[start] || o.path.back() != graph.positions[goal])
-      throw Error("the smoother plugin '" + request.pipeline.slots.at("smoother").plugin +
+      throw Error("the smoother plugin '" + request.pipeline.at("smoother").plugin +
                   "' returned a path that does not run from start to goal");
     o.length = polyline_length(o.path);
     o.turns = count_turns(o.path);

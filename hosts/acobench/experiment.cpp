@@ -17,11 +17,6 @@
 namespace acobench {
 namespace {
 
-constexpr aco::ParamSpec kGraphParameters[] = {
-    {"neighbourhood", aco::ParamType::categorical, "8", "4,8,16", "moves per cell"},
-    {"corner-cutting", aco::ParamType::boolean, "false", "", "diagonal steps may pass between two blocked cells"},
-};
-
 std::string where(const std::filesystem::path& file, const YAML::Node& node) {
   return file.string() + ":" + std::to_string(node.Mark().line + 1);
 }
@@ -175,12 +170,6 @@ std::vector<Configuration> factorial(const std::filesystem::path& file, const YA
   return configs;
 }
 
-std::string join(const std::vector<std::string>& names) {
-  std::string text;
-  for (const auto& n : names) text += (text.empty() ? "" : ", ") + n;
-  return text;
-}
-
 std::string key_origin(const Configuration& config, const std::string& key) {
   const auto it = config.origins.find(key);
   return it != config.origins.end() && !it->second.empty() ? it->second + ": " : "";
@@ -188,79 +177,19 @@ std::string key_origin(const Configuration& config, const std::string& key) {
 
 }  // namespace
 
-Settings resolve(const Configuration& config, aco::PluginRegistry& registry) {
-  const auto fail_key = [&config](const std::string& key, const std::string& message) -> void {
-    throw aco::Error(key_origin(config, key) + "configuration '" + config.name + "': " + message);
+aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry) {
+  const auto fail_key = [&config](const std::string& key, const std::string& message) {
+    return aco::Error(key_origin(config, key) + "configuration '" + config.name + "': " + message);
   };
-  Settings s;
-  std::map<std::string, std::string> graph, colony;
-  std::map<std::string, std::string> planner_keys;
-  std::vector<std::string> known = {"planner"};
-  for (const auto& spec : kGraphParameters) known.push_back(spec.name);
-  for (const auto& spec : aco::colony_parameters()) known.push_back(spec.name);
-  for (const char* slot : aco::kSlots) known.push_back(slot);
-
-  if (config.keys.count("planner")) {
-    s.planner = config.keys.at("planner");
-    const auto names = aco::planner_names();
-    if (std::find(names.begin(), names.end(), s.planner) == names.end())
-      fail_key("planner", "unknown planner '" + s.planner + "' (available: " + join(names) + ")");
+  for (const char* key : {"map", "scen", "scen-index", "start", "goal"})
+    if (config.keys.count(key))
+      throw fail_key(key, "'" + std::string(key) + "' belongs to the problems: list them under 'problems'");
+  if (config.keys.count("seed")) throw fail_key("seed", "'seed' is set per trial from the experiment's seed, not per configuration");
+  try {
+    return aco::resolve_run(config.keys, registry);
+  } catch (const aco::KeyError& e) {
+    throw fail_key(e.key(), e.what());
   }
-  for (const char* slot : aco::kSlots) {
-    if (!config.keys.count(slot)) continue;
-    s.pipeline.slots[slot].plugin = config.keys.at(slot);
-    try {
-      registry.load(slot, s.pipeline.slots[slot].plugin);
-    } catch (const aco::Error& e) {
-      fail_key(slot, e.what());
-    }
-  }
-  for (const auto& [key, value] : config.keys) {
-    const auto dot = key.find('.');
-    try {
-      if (key == "planner" || std::find(aco::kSlots.begin(), aco::kSlots.end(), key) != aco::kSlots.end()) continue;
-      if (key == "seed") fail_key(key, "'seed' is set per trial from the experiment's seed, not per configuration");
-      if (dot != std::string::npos) {
-        const std::string owner = key.substr(0, dot), name = key.substr(dot + 1);
-        if (s.pipeline.slots.count(owner)) {
-          const auto table = registry.load(owner, s.pipeline.slots.at(owner).plugin).parameters();
-          aco::resolve(table, {{name, value}}, owner + ".");
-          s.pipeline.slots[owner].params[name] = value;
-          continue;
-        }
-        if (owner == s.planner && !aco::planner_parameters(owner).empty()) {
-          aco::resolve(aco::planner_parameters(owner), {{name, value}}, owner + ".");
-          planner_keys[name] = value;
-          continue;
-        }
-        fail_key(key, "'" + key + "' belongs to neither a slot nor the planner '" + s.planner + "'");
-      }
-      if (std::any_of(std::begin(kGraphParameters), std::end(kGraphParameters), [&](const auto& p) { return key == p.name; })) {
-        aco::resolve(kGraphParameters, {{key, value}}, "");
-        graph[key] = value;
-        continue;
-      }
-      const auto colony_table = aco::colony_parameters();
-      if (std::any_of(colony_table.begin(), colony_table.end(), [&](const auto& p) { return key == p.name; })) {
-        aco::resolve(colony_table, {{key, value}}, "");
-        colony[key] = value;
-        continue;
-      }
-      std::string message = "unknown key '" + key + "'";
-      if (const auto near = aco::nearest(key, known); !near.empty()) message += "; did you mean '" + near + "'?";
-      fail_key(key, message);
-    } catch (const aco::Error& e) {
-      const std::string text = e.what();
-      if (text.find("configuration '") != std::string::npos) throw;
-      fail_key(key, text);
-    }
-  }
-  const auto g = aco::resolve(kGraphParameters, graph, "");
-  s.graph.neighbourhood = static_cast<aco::Neighbourhood>(std::stoi(g.text("neighbourhood")));
-  s.graph.corner_cutting = g.boolean("corner-cutting");
-  s.colony = aco::resolve(aco::colony_parameters(), colony, "");
-  s.planner_parameters = aco::resolve(aco::planner_parameters(s.planner), planner_keys, s.planner + ".");
-  return s;
 }
 
 Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistry& registry) {

@@ -11,7 +11,7 @@
 
 #include "aco/graph.hpp"
 #include "aco/parameters.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/run_spec.hpp"
 #include "aco/map.hpp"
 #include "aco/plugin_registry.hpp"
 
@@ -25,10 +25,11 @@ struct Problem {
   int bucket = -1;  // Moving AI difficulty bucket (scenario column 1) for scenario problems, else -1
 };
 
-// A configuration is a set of keys, written as on acoplan's command line without the dashes:
-// "planner", "neighbourhood", "corner-cutting", colony parameters ("ants", "beta", "search"),
-// slots ("update") and plugin parameters ("update.rho"). Keys it does not set keep their
-// defaults; every key and value is checked when the experiment is loaded.
+// A configuration is a set of run keys (aco/run_spec.hpp), written as on acoplan's command line
+// without the dashes: "planner", "neighbourhood", "max-slope", colony parameters ("ants",
+// "search"), slots ("update") and plugin parameters ("update.rho"); every key but the problem's
+// (map, scen, start, goal: the experiment's problems) and the seed (set per trial). Keys it does
+// not set keep their defaults; every key and value is checked when the experiment is loaded.
 struct Configuration {
   std::string name;
   std::map<std::string, std::string> keys;
@@ -54,16 +55,9 @@ struct Experiment {
 // Loads and checks an experiment file. Errors name the file, the line and the key.
 Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistry& registry);
 
-// A configuration's keys sorted into what a trial needs, every key and value checked against
-// the plugins' and the colony's tables (aco::Error naming the key and the nearest valid one).
-struct Settings {
-  std::string planner = "aco";
-  aco::GraphOptions graph;
-  aco::ParameterValues colony;  // the colony's table, defaults filled in
-  aco::PipelineSpec pipeline;
-  aco::ParameterValues planner_parameters;  // of a baseline planner (ifwa, pso), defaults filled in
-};
-Settings resolve(const Configuration& config, aco::PluginRegistry& registry);
+// A configuration's keys resolved into a run (aco::resolve_run, without a problem: the trials
+// take it from the problem list). Errors name the file, the line, the configuration and the key.
+aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry);
 
 // The seed of a trial: a hash of the master seed, the problem's name and the repetition, so
 // that a trial gives the same result whenever and wherever it runs, and every configuration

@@ -20,14 +20,31 @@
 namespace acobench {
 namespace {
 
-// A problem's map, and its graphs by neighbourhood and corner rule (built before the trials run).
+// A problem's maps by terrain options, and their graphs by neighbourhood and corner rule (built
+// before the trials run). Loading checks start and goal as acoplan does (aco::load_problem).
 struct PreparedProblem {
-  std::unique_ptr<aco::Map> map;
-  std::map<std::pair<int, bool>, aco::Graph> graphs;
-  const aco::Graph& graph(const aco::GraphOptions& o) {
-    const std::pair<int, bool> key{static_cast<int>(o.neighbourhood), o.corner_cutting};
-    auto it = graphs.find(key);
-    if (it == graphs.end()) it = graphs.emplace(key, aco::build_graph(*map, o)).first;
+  using TerrainKey = std::tuple<double, double, double>;
+  using GraphKey = std::tuple<TerrainKey, int, bool>;
+  aco::ProblemSpec spec;
+  std::map<TerrainKey, aco::LoadedProblem> maps;
+  std::map<GraphKey, aco::Graph> graphs;
+
+  static TerrainKey terrain_key(const aco::TerrainOptions& t) { return {t.max_slope_deg, t.height_scale, t.cell_size}; }
+  static GraphKey graph_key(const aco::RunSpec& run) {
+    return {terrain_key(run.problem.terrain), static_cast<int>(run.graph.neighbourhood), run.graph.corner_cutting};
+  }
+  const aco::Map& map(const aco::TerrainOptions& terrain) {
+    auto it = maps.find(terrain_key(terrain));
+    if (it == maps.end()) {
+      aco::ProblemSpec with = spec;
+      with.terrain = terrain;
+      it = maps.emplace(terrain_key(terrain), aco::load_problem(with)).first;
+    }
+    return *it->second.map;
+  }
+  const aco::Graph& graph(const aco::RunSpec& run) {
+    auto it = graphs.find(graph_key(run));
+    if (it == graphs.end()) it = graphs.emplace(graph_key(run), aco::build_graph(map(run.problem.terrain), run.graph)).first;
     return it->second;
   }
 };
@@ -35,7 +52,7 @@ struct PreparedProblem {
 struct PreparedConfig {
   int id = 0;  // in the database
   Configuration config;
-  Settings settings;
+  aco::RunSpec run;
 };
 
 struct Trial {
@@ -43,12 +60,6 @@ struct Trial {
   const PreparedConfig* config = nullptr;
   int repetition = 0;
 };
-
-void check_cell(const Problem& p, const aco::Map& map, aco::Cell c, const char* what) {
-  if (const std::string why = map.blocked_reason(c); !why.empty())
-    throw aco::Error("problem '" + p.name + "': " + what + " " + aco::to_string(c) + " is blocked (" + why + ") in " +
-                     map.name());
-}
 
 std::string path_json(const aco::Waypoints& path) {
   const bool flat = std::all_of(path.begin(), path.end(), [](const auto& p) { return p.z() == 0.0; });
@@ -60,18 +71,12 @@ std::string path_json(const aco::Waypoints& path) {
   return j.dump();
 }
 
-std::string settings_json(const PreparedConfig& c, aco::PluginRegistry& registry) {
+// The configuration as the database stores it: the keys as written, and the resolved run (every
+// key, the same names as acoplan's --json and --print-config).
+std::string settings_json(const PreparedConfig& c) {
   nlohmann::json j;
   j["keys"] = c.config.keys;
-  j["planner"] = c.settings.planner;
-  j["neighbourhood"] = static_cast<int>(c.settings.graph.neighbourhood);
-  j["corner-cutting"] = c.settings.graph.corner_cutting;
-  for (const auto& [name, value] : c.settings.colony.all()) j["colony"][name] = aco::to_string(value);
-  for (const auto& [slot, values] : aco::instantiate(registry, c.settings.pipeline).resolved) {
-    j["plugins"][slot]["plugin"] = c.settings.pipeline.slots.at(slot).plugin;
-    for (const auto& [name, value] : values.all()) j["plugins"][slot]["parameters"][name] = aco::to_string(value);
-  }
-  for (const auto& [name, value] : c.settings.planner_parameters.all()) j["planner_parameters"][name] = aco::to_string(value);
+  j["run"] = nlohmann::ordered_json::parse(aco::to_json(c.run));
   return j.dump();
 }
 
@@ -79,15 +84,22 @@ class Runner {
  public:
   Runner(const Experiment& e, aco::PluginRegistry& registry, const RunOptions& options)
       : e_(e), registry_(registry), options_(options) {
-    const Settings base = resolve(e.baseline, registry);
+    const aco::RunSpec base = resolve(e.baseline, registry);
     std::vector<ProblemRecord> records;
     for (const Problem& p : e.problems) {
       PreparedProblem prepared;
-      prepared.map = aco::load_map(p.map);
-      for (const auto& [c, what] : {std::pair{p.start, "start"}, std::pair{p.goal, "goal"}}) check_cell(p, *prepared.map, c, what);
+      prepared.spec.map = p.map;
+      prepared.spec.start = p.start;
+      prepared.spec.goal = p.goal;
       // The optimal length, once per problem, on the baseline's graph (a 16-neighbourhood
       // configuration may beat it: its gap is then negative).
-      const aco::Graph& graph = prepared.graph(base.graph);
+      const aco::Graph& graph = [&]() -> const aco::Graph& {
+        try {
+          return prepared.graph(base);
+        } catch (const aco::Error& error) {
+          throw aco::Error("problem '" + p.name + "': " + error.what());
+        }
+      }();
       const auto optimal = aco::astar(graph, graph.node(p.start), graph.node(p.goal));
       nlohmann::json setup = {{"map", p.map.lexically_relative(e.file.parent_path()).generic_string()},
                               {"start", {p.start.x, p.start.y}},
@@ -147,9 +159,15 @@ class Runner {
   const PreparedConfig& add(const Configuration& c) {
     auto prepared = std::make_unique<PreparedConfig>();
     prepared->config = c;
-    prepared->settings = resolve(c, registry_);
-    prepared->id = db_->add_config({c.name, settings_json(*prepared, registry_)});
-    for (auto& p : problems_) p.graph(prepared->settings.graph);
+    prepared->run = resolve(c, registry_);
+    prepared->id = db_->add_config({c.name, settings_json(*prepared)});
+    for (std::size_t p = 0; p < problems_.size(); ++p) {
+      try {
+        problems_[p].graph(prepared->run);
+      } catch (const aco::Error& error) {
+        throw aco::Error("problem '" + e_.problems[p].name + "', configuration '" + c.name + "': " + error.what());
+      }
+    }
     configs_.push_back(std::move(prepared));
     return *configs_.back();
   }
@@ -213,15 +231,10 @@ class Runner {
 
   TrialRecord run_trial(const Trial& t) {
     const Problem& problem = e_.problems[t.problem];
-    const Settings& s = t.config->settings;
-    const aco::Graph& graph = problems_[t.problem].graphs.at({static_cast<int>(s.graph.neighbourhood), s.graph.corner_cutting});
-    aco::PlanRequest request;
-    request.planner = s.planner;
-    request.pipeline = s.pipeline;
-    request.colony = aco::colony_settings(s.colony);
-    request.colony.seed = trial_seed(e_.seed, problem.name, t.repetition);
-    request.planner_parameters = s.planner_parameters;
-    const aco::PlanOutcome o = aco::plan(registry_, graph, graph.node(problem.start), graph.node(problem.goal), request);
+    aco::RunSpec run = t.config->run;
+    const aco::Graph& graph = problems_[t.problem].graphs.at(PreparedProblem::graph_key(run));
+    run.colony.seed = trial_seed(e_.seed, problem.name, t.repetition);
+    const aco::PlanOutcome o = aco::plan(registry_, graph, graph.node(problem.start), graph.node(problem.goal), run);
     TrialRecord r;
     r.problem = t.problem;
     r.config = t.config->id;

@@ -21,24 +21,12 @@ std::vector<std::string> baseline_planners() {
   return names;
 }
 
-constexpr aco::ParamSpec kRunParameters[] = {
-    {"planner", aco::ParamType::categorical, "aco", "aco,astar,ifwa,pso",
-     "aco = the colony; astar = exact shortest path on the same graph (reference); ifwa = improved fireworks "
-     "(paper 004); pso = particle swarm over waypoints (paper 000's baseline)"},
-    {"neighbourhood", aco::ParamType::categorical, "8", "4,8,16",
-     "moves per cell: 4 straight, 8 with diagonals, 16 with knight moves"},
-    {"corner-cutting", aco::ParamType::boolean, "false", "",
-     "let a diagonal step pass between two blocked side cells (the MATLAB code's rule; off = Moving AI rule)"},
+// acoplan's own settings; everything else is a run key (aco/run_spec.hpp).
+constexpr aco::ParamSpec kHostParameters[] = {
     {"threads", aco::ParamType::integer, "0", "0:1024", "worker threads, 0 = all cores; results do not depend on it"},
-    {"scen-index", aco::ParamType::integer, "0", "0:1000000000", "which problem of --scen to plan (0-based)"},
     {"svg-pheromone", aco::ParamType::boolean, "false", "", "also draw the final pheromone field in the --svg picture"},
     {"repeat", aco::ParamType::integer, "1", "1:1000000",
      "plan N times with seeds seed, seed+1, ...; print mean and standard deviation (--svg shows the best run)"},
-    {"max-slope", aco::ParamType::real, "90", "0:90",
-     "terrain maps (.asc, .pgm): steepest slope in degrees a step or a cell may have; 90 = no limit"},
-    {"height-scale", aco::ParamType::real, "1", "(0:1e12]", "PGM height images: height = grey value * X"},
-    {"cell-size", aco::ParamType::real, "1", "(0:1e12]",
-     "PGM height images: horizontal size of a cell, in the heights' units (.asc files give their own)"},
 };
 
 std::string type_hint(const aco::ParamSpec& spec) {
@@ -66,12 +54,11 @@ void add_table(po::options_description& group, std::span<const aco::ParamSpec> t
   }
 }
 
-std::map<std::string, std::string> given(const po::variables_map& vm, std::span<const aco::ParamSpec> table,
-                                         const std::string& prefix) {
-  std::map<std::string, std::string> texts;
+// The options of `table` that were given, as run keys ("update.rho" -> "0.3").
+void collect(const po::variables_map& vm, std::span<const aco::ParamSpec> table, const std::string& prefix,
+             aco::Keys& keys) {
   for (const auto& spec : table)
-    if (vm.count(prefix + spec.name)) texts[spec.name] = vm[prefix + spec.name].as<std::string>();
-  return texts;
+    if (vm.count(prefix + spec.name)) keys[prefix + spec.name] = vm[prefix + spec.name].as<std::string>();
 }
 
 std::optional<std::string> text(const po::variables_map& vm, const char* key) {
@@ -125,7 +112,7 @@ po::variables_map parse(const po::options_description& options, int argc, const 
 }
 
 std::string unknown_option_message(const po::unknown_option& e, const po::options_description& options,
-                                   const aco::PipelineSpec& pipeline) {
+                                   const aco::Keys& slots) {
   std::string name = e.get_option_name();
   name.erase(0, name.find_first_not_of('-'));
   std::vector<std::string> keys;
@@ -134,12 +121,12 @@ std::string unknown_option_message(const po::unknown_option& e, const po::option
   if (const auto near = aco::nearest(name, keys); !near.empty()) message += "; did you mean '--" + near + "'?";
   const auto dot = name.find('.');
   if (dot != std::string::npos) {
-    const auto slot = pipeline.slots.find(name.substr(0, dot));
-    if (slot != pipeline.slots.end()) {
+    const auto slot = slots.find(name.substr(0, dot));
+    if (slot != slots.end()) {
       std::vector<std::string> params;
       for (const auto& key : keys)
         if (key.rfind(slot->first + ".", 0) == 0) params.push_back(key.substr(dot + 1));
-      message += " (the " + slot->first + " plugin '" + slot->second.plugin + "' has ";
+      message += " (the " + slot->first + " plugin '" + slot->second + "' has ";
       if (params.empty()) message += "no parameters)";
       else {
         message += "parameters:";
@@ -151,33 +138,22 @@ std::string unknown_option_message(const po::unknown_option& e, const po::option
   return message;
 }
 
-void print_section(std::ostream& out, std::span<const aco::ParamSpec> table, const aco::ParameterValues& values,
-                   const std::string& skip = "") {
-  for (const auto& spec : table)
-    if (spec.name != skip) out << spec.name << " = " << aco::to_string(values.all().at(spec.name)) << "\n";
-}
-
-std::string config_file(const Request& r, const std::map<std::string, std::pair<std::span<const aco::ParamSpec>, aco::ParameterValues>>& plugins) {
+// The resolved run as a config file: acoplan's settings and the run's plain keys first, then one
+// [section] per slot or planner with its parameters (INI's "update.rho" is "rho" under [update]).
+std::string config_file(const Request& r) {
   std::ostringstream out;
   out << "# acoplan configuration; run it again with: acoplan --config FILE\n";
-  if (r.map) out << "map = " << r.map->string() << "\n";
-  if (r.scen) out << "scen = " << r.scen->string() << "\n";
-  if (r.start) out << "start = " << *r.start << "\n";
-  if (r.goal) out << "goal = " << *r.goal << "\n";
-  print_section(out, kRunParameters, r.run, r.scen ? "" : "scen-index");
-  print_section(out, aco::colony_parameters(), r.colony);
-  for (const char* slot : aco::kSlots) out << slot << " = " << r.pipeline.slots.at(slot).plugin << "\n";
-  for (const char* slot : aco::kSlots) {
-    const auto& [table, values] = plugins.at(slot);
-    if (table.empty()) continue;
-    out << "\n[" << slot << "]\n";
-    print_section(out, table, values);
+  for (const auto& [name, value] : r.host.all()) out << name << " = " << aco::to_string(value) << "\n";
+  const auto values = aco::run_values(r.run);
+  std::string section;
+  for (const auto& [key, value] : values)
+    if (key.find('.') == std::string::npos) out << key << " = " << aco::to_string(value) << "\n";
+  for (const auto& [key, value] : values) {
+    const auto dot = key.find('.');
+    if (dot == std::string::npos) continue;
+    if (key.substr(0, dot) != section) out << "\n[" << (section = key.substr(0, dot)) << "]\n";
+    out << key.substr(dot + 1) << " = " << aco::to_string(value) << "\n";
   }
-  for (const auto& planner : baseline_planners())
-    if (r.run.text("planner") == planner) {
-      out << "\n[" << planner << "]\n";
-      print_section(out, aco::planner_parameters(planner), r.baselines.at(planner));
-    }
   return out.str();
 }
 
@@ -210,7 +186,11 @@ Request parse_command_line(int argc, const char* const* argv) {
       ("describe", po::value<std::string>()->value_name("NAME"), "print a plugin's parameter table and exit")
       ("plugin-dir", po::value<std::vector<std::string>>()->composing()->value_name("DIR"),
        "also search DIR for plugins (before ACO_PLUGIN_PATH and the default folders)");
-  add_table(general, kRunParameters, "");
+  add_table(general, kHostParameters, "");
+  po::options_description problem("Problem and graph");
+  add_table(problem, std::span(&aco::planner_parameter(), 1), "");
+  add_table(problem, aco::problem_parameters(), "");
+  add_table(problem, aco::graph_parameters(), "");
   po::options_description colony("Colony");
   add_table(colony, aco::colony_parameters(), "");
   po::options_description baselines("Baseline planners (--planner ifwa|pso)");
@@ -220,7 +200,7 @@ Request parse_command_line(int argc, const char* const* argv) {
     slots.add_options()(slot, po::value<std::string>()->value_name("PLUGIN"),
                         (std::string(slot) + " plugin [default " + aco::default_plugin(slot) + "]").c_str());
   po::options_description base;
-  base.add(general).add(colony).add(baselines).add(slots);
+  base.add(general).add(problem).add(colony).add(baselines).add(slots);
 
   try {
     // Pass 1: which plugins, and where to find them; their options are not known yet.
@@ -244,27 +224,25 @@ Request parse_command_line(int argc, const char* const* argv) {
       r.describe = first["describe"].as<std::string>();
       return r;
     }
-    for (const char* slot : aco::kSlots)
-      if (auto name = text(first, slot)) r.pipeline.slots[slot].plugin = *name;
+    aco::Keys plugins;  // slot -> plugin
+    for (const char* slot : aco::kSlots) plugins[slot] = text(first, slot).value_or(aco::default_plugin(slot));
 
     // Pass 2: every option known; anything left over is a mistake.
     po::options_description all;
     all.add(base);
-    std::map<std::string, std::pair<std::span<const aco::ParamSpec>, aco::ParameterValues>> plugins;
     std::vector<std::unique_ptr<po::options_description>> groups;
     for (const char* slot : aco::kSlots) {
-      const auto& name = r.pipeline.slots[slot].plugin;
+      const auto& name = plugins[slot];
       const aco::PluginDescriptor& d = r.registry->load(slot, name);
       groups.push_back(std::make_unique<po::options_description>(std::string(slot) + " plugin '" + name + "'"));
       add_table(*groups.back(), d.parameters(), std::string(slot) + ".");
       all.add(*groups.back());
-      plugins[slot].first = d.parameters();
     }
     po::variables_map vm;
     try {
       vm = parse(all, argc, argv, false);
     } catch (const po::unknown_option& e) {
-      throw aco::Error(unknown_option_message(e, all, r.pipeline));
+      throw aco::Error(unknown_option_message(e, all, plugins));
     }
     std::ostringstream help;
     help << "acoplan: plan a path with an ant colony composed of runtime plugins.\n\n"
@@ -276,38 +254,37 @@ Request parse_command_line(int argc, const char* const* argv) {
       r.action = Request::Action::help;
       return r;
     }
-    r.run = aco::resolve(kRunParameters, given(vm, kRunParameters, ""), "--");
-    r.colony = aco::resolve(aco::colony_parameters(), given(vm, aco::colony_parameters(), ""), "--");
-    for (const auto& planner : baseline_planners()) {
-      const std::string prefix = planner + ".";
-      const auto table = aco::planner_parameters(planner);
-      r.baselines[planner] = aco::resolve(table, given(vm, table, prefix), "--" + prefix);
-    }
+    aco::Keys keys;
+    for (const char* key : {"map", "scen", "start", "goal"})
+      if (auto v = text(vm, key)) keys[key] = *v;
+    collect(vm, std::span(&aco::planner_parameter(), 1), "", keys);
+    collect(vm, aco::problem_parameters(), "", keys);
+    collect(vm, aco::graph_parameters(), "", keys);
+    collect(vm, aco::colony_parameters(), "", keys);
+    for (const auto& planner : baseline_planners()) collect(vm, aco::planner_parameters(planner), planner + ".", keys);
     for (const char* slot : aco::kSlots) {
-      auto& choice = r.pipeline.slots[slot];
-      choice.params = given(vm, plugins[slot].first, std::string(slot) + ".");
-      plugins[slot].second = aco::resolve(plugins[slot].first, choice.params, "--" + std::string(slot) + ".");
+      if (vm.count(slot)) keys[slot] = plugins[slot];
+      collect(vm, r.registry->load(slot, plugins[slot]).parameters(), std::string(slot) + ".", keys);
     }
-    if (auto v = text(vm, "map")) r.map = *v;
-    if (auto v = text(vm, "scen")) r.scen = *v;
+    if (vm.count("irace-slots")) throw aco::Error("--irace-slots needs --dump-irace-params");
+    if (!keys.count("map") && !keys.count("scen")) {
+      // The demo problem: the bundled classic map, corner to corner.
+      keys["map"] = bundled_map().string();
+      keys.emplace("start", "0,0");
+      keys.emplace("goal", "19,19");
+    }
+    if (!keys.count("scen") && (!keys.count("start") || !keys.count("goal")))
+      throw aco::Error("--start and --goal are required with --map (or use --scen)");
+    r.run = aco::resolve_run(keys, *r.registry, "--");
+    aco::Keys host;
+    collect(vm, kHostParameters, "", host);
+    r.host = aco::resolve(kHostParameters, host, "--");
     if (auto v = text(vm, "svg")) r.svg = *v;
-    r.start = text(vm, "start");
-    r.goal = text(vm, "goal");
     r.json = vm["json"].as<bool>();
     r.irace = vm["irace"].as<bool>();
-    if (r.scen && (r.start || r.goal)) throw aco::Error("give either --scen or --start/--goal, not both");
-    if (vm.count("irace-slots")) throw aco::Error("--irace-slots needs --dump-irace-params");
-    if (vm.count("scen-index") && !r.scen) throw aco::Error("--scen-index needs --scen");
-    if (!r.map && !r.scen) {
-      // The demo problem: the bundled classic map, corner to corner.
-      r.map = bundled_map();
-      if (!r.start) r.start = "0,0";
-      if (!r.goal) r.goal = "19,19";
-    }
-    if (!r.scen && (!r.start || !r.goal)) throw aco::Error("--start and --goal are required with --map (or use --scen)");
     if (vm["print-config"].as<bool>()) {
       r.action = Request::Action::print_config;
-      r.config = config_file(r, plugins);
+      r.config = config_file(r);
     }
   } catch (const po::error& e) {
     throw aco::Error(e.what());

@@ -1,6 +1,7 @@
 #pragma once
-// acoplan's options: host settings, the colony's table, one slot flag per strategy, and one
-// option group per loaded plugin built from its parameter table (--update.rho ...).
+// acoplan's options: its own settings, then the run's keys (aco/run_spec.hpp) as options: the
+// problem, the graph, the planner, the colony, one flag per slot, and one option group per loaded
+// plugin and per baseline planner built from its parameter table (--update.rho ...).
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -8,8 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "aco/colony.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/run_spec.hpp"
 #include "aco/plugin_registry.hpp"
 
 namespace acoplan {
@@ -23,19 +23,12 @@ struct Request {
   std::string irace_params_file;         // --dump-irace-params: where to write the table ("-" = stdout)
   std::vector<std::string> irace_slots;  // the slots whose plugins irace chooses (--irace-slots)
 
-  std::optional<std::filesystem::path> map;
-  std::optional<std::filesystem::path> scen;
-  std::optional<std::string> start;
-  std::optional<std::string> goal;
   std::optional<std::filesystem::path> svg;
   bool json = false;
   bool irace = false;  // print only the cost (mean length, kIraceUnsolvedCost if unsolved) and exit 0
 
-  aco::ParameterValues run;     // planner, neighbourhood, corner-cutting, threads, scen-index, svg-pheromone, repeat,
-                                // max-slope, height-scale, cell-size
-  aco::ParameterValues colony;  // ants, iterations, alpha, beta, seed, stagnation
-  std::map<std::string, aco::ParameterValues> baselines;  // "ifwa", "pso" -> that planner's parameters
-  aco::PipelineSpec pipeline;
+  aco::ParameterValues host;  // acoplan's own settings: threads, svg-pheromone, repeat
+  aco::RunSpec run;           // everything else, resolved once
   std::unique_ptr<aco::PluginRegistry> registry;
 };
 

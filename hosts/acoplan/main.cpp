@@ -22,76 +22,11 @@ namespace {
 constexpr int kExitError = 1;
 constexpr int kExitUnsolved = 3;
 
-struct Problem {
-  std::unique_ptr<aco::Map> map;
-  aco::Cell start;
-  aco::Cell goal;
-};
-
-aco::Cell parse_cell(const std::string& text, const char* option) {
-  aco::Cell c;
-  const auto comma = text.find(',');
-  auto whole = [](std::string_view s, int& v) {
-    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    return ec == std::errc() && p == s.data() + s.size();
-  };
-  if (comma == std::string::npos || !whole(std::string_view(text).substr(0, comma), c.x) ||
-      !whole(std::string_view(text).substr(comma + 1), c.y))
-    throw aco::Error(std::string(option) + ": '" + text + "' is not a cell; expected X,Y such as 3,7");
-  return c;
-}
-
-void check_cell(const aco::Map& map, aco::Cell c, const char* what) {
-  if (!map.contains(c))
-    throw aco::Error(std::string(what) + " " + aco::to_string(c) + " is outside the " + std::to_string(map.width()) + "x" +
-                     std::to_string(map.height()) + " map " + map.name());
-  if (!map.passable(c))
-    throw aco::Error(std::string(what) + " " + aco::to_string(c) + " is blocked: " + map.blocked_reason(c) + " (" +
-                     map.name() + ")");
-}
-
-Problem load_problem(const acoplan::Request& r) {
-  Problem p;
-  aco::TerrainOptions terrain;
-  terrain.max_slope_deg = r.run.real("max-slope");
-  terrain.height_scale = r.run.real("height-scale");
-  terrain.cell_size = r.run.real("cell-size");
-  if (r.scen) {
-    const auto scenarios = aco::load_scenarios(*r.scen);
-    const auto index = r.run.integer("scen-index");
-    if (index >= static_cast<std::int64_t>(scenarios.size()))
-      throw aco::Error("--scen-index " + std::to_string(index) + " is out of range: " + r.scen->string() + " has " +
-                       std::to_string(scenarios.size()) + " scenarios");
-    const aco::Scenario& s = scenarios[index];
-    p.map = aco::load_map(r.map ? *r.map : aco::scenario_map_file(*r.scen), terrain);
-    if (p.map->width() != s.width || p.map->height() != s.height)
-      throw aco::Error(r.scen->string() + ": scenario " + std::to_string(index) + " is for a " + std::to_string(s.width) +
-                       "x" + std::to_string(s.height) + " map, but " + p.map->name() + " is " +
-                       std::to_string(p.map->width()) + "x" + std::to_string(p.map->height()));
-    p.start = s.start;
-    p.goal = s.goal;
-  } else {
-    p.map = aco::load_map(*r.map, terrain);
-    p.start = parse_cell(*r.start, "--start");
-    p.goal = parse_cell(*r.goal, "--goal");
-  }
-  check_cell(*p.map, p.start, "start");
-  check_cell(*p.map, p.goal, "goal");
-  return p;
-}
-
 // One planning run: the colony (or a reference planner), then the smoother.
-acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, const Problem& problem,
-                           const aco::ColonySettings& settings) {
-  aco::PlanRequest request;
-  request.planner = r.run.text("planner");
-  request.pipeline = r.pipeline;
-  request.colony = settings;
-  if (const auto baseline = r.baselines.find(request.planner); baseline != r.baselines.end())
-    request.planner_parameters = baseline->second;
+acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, const aco::LoadedProblem& problem,
+                           const aco::RunSpec& run) {
   acoplan::Outcome o;
-  static_cast<aco::PlanOutcome&>(o) =
-      aco::plan(*r.registry, graph, graph.node(problem.start), graph.node(problem.goal), request);
+  static_cast<aco::PlanOutcome&>(o) = aco::plan(*r.registry, graph, graph.node(problem.start), graph.node(problem.goal), run);
   return o;
 }
 
@@ -103,7 +38,7 @@ void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco
   picture.goal = o.goal;
   picture.grid_path = o.grid_path;
   picture.path = o.path;
-  if (r.run.boolean("svg-pheromone")) picture.pheromone = o.pheromone;
+  if (r.host.boolean("svg-pheromone")) picture.pheromone = o.pheromone;
   picture.best_so_far = o.best_so_far;
   picture.iteration_best = o.iteration_best;
   picture.optimal_length = o.optimal_length.value_or(0.0);
@@ -132,19 +67,16 @@ void dump_irace_params(acoplan::Request& r) {
 }
 
 int plan(const acoplan::Request& r) {
-  const Problem problem = load_problem(r);
-  aco::GraphOptions options;
-  options.neighbourhood = static_cast<aco::Neighbourhood>(std::stoi(r.run.text("neighbourhood")));
-  options.corner_cutting = r.run.boolean("corner-cutting");
-  const aco::Graph graph = aco::build_graph(*problem.map, options);
+  const aco::LoadedProblem problem = aco::load_problem(r.run.problem);
+  const aco::Graph graph = aco::build_graph(*problem.map, r.run.graph);
   std::unique_ptr<tbb::global_control> threads;
-  if (const auto n = r.run.integer("threads"); n > 0)
+  if (const auto n = r.host.integer("threads"); n > 0)
     threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, n);
 
   // --repeat N: the same problem with seeds seed, seed+1, ..., seed+N-1.
-  aco::ColonySettings settings = aco::colony_settings(r.colony);
+  aco::RunSpec run = r.run;
   std::vector<acoplan::Outcome> runs;
-  for (std::int64_t i = 0; i < r.run.integer("repeat"); ++i, ++settings.seed) runs.push_back(plan_once(r, graph, problem, settings));
+  for (std::int64_t i = 0; i < r.host.integer("repeat"); ++i, ++run.colony.seed) runs.push_back(plan_once(r, graph, problem, run));
   const auto optimal = aco::astar(graph, graph.node(problem.start), graph.node(problem.goal));
   for (auto& o : runs)
     if (optimal) o.optimal_length = optimal->length;

@@ -19,16 +19,6 @@ nlohmann::json cell(const aco::Graph& g, aco::NodeId n) {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-nlohmann::json value(const aco::ParamValue& v) {
-  return std::visit([](const auto& x) { return nlohmann::json(x); }, v);
-}
-
-nlohmann::json values(const aco::ParameterValues& p) {
-  nlohmann::json object = nlohmann::json::object();
-  for (const auto& [name, v] : p.all()) object[name] = value(v);
-  return object;
-}
-
 std::string cell_text(const aco::Graph& g, aco::NodeId n) { return aco::to_string(g.cell(n)); }
 
 std::string map_line(const aco::Graph& graph) {
@@ -37,25 +27,21 @@ std::string map_line(const aco::Graph& graph) {
 }
 
 std::string pipeline_lines(const Request& request) {
+  const aco::RunSpec& run = request.run;
   std::ostringstream out;
-  const std::string planner = request.run.text("planner");
-  if (planner != "aco") {
-    out << "planner:  " << planner << ", smoother=" << request.pipeline.slots.at("smoother").plugin;
-    if (const auto baseline = request.baselines.find(planner); baseline != request.baselines.end()) {
-      for (const auto& [name, v] : baseline->second.all()) out << " " << planner << "." << name << "=" << aco::to_string(v);
-      out << ", seed " << request.colony.integer("seed");
+  if (run.planner != "aco") {
+    out << "planner:  " << run.planner << ", smoother=" << run.pipeline.at("smoother").plugin;
+    if (!run.planner_parameters.all().empty()) {
+      for (const auto& [name, v] : run.planner_parameters.all()) out << " " << run.planner << "." << name << "=" << aco::to_string(v);
+      out << ", seed " << run.colony.seed;
     }
     out << "\n";
     return out.str();
   }
-  out << "colony:   " << request.colony.integer("ants") << " ants x " << request.colony.integer("iterations")
-      << " iterations, alpha " << aco::to_string(request.colony.all().at("alpha")) << ", beta "
-      << aco::to_string(request.colony.all().at("beta")) << ", seed " << request.colony.integer("seed") << "\n";
+  out << "colony:   " << run.colony.ants << " ants x " << run.colony.iterations << " iterations, alpha "
+      << aco::to_string(run.colony.alpha) << ", beta " << aco::to_string(run.colony.beta) << ", seed " << run.colony.seed << "\n";
   out << "pipeline:";
-  for (const char* slot : aco::kSlots) {
-    out << " " << slot << "=" << request.pipeline.slots.at(slot).plugin;
-    for (const auto& [name, text] : request.pipeline.slots.at(slot).params) out << " " << slot << "." << name << "=" << text;
-  }
+  for (const char* slot : aco::kSlots) out << " " << slot << "=" << run.pipeline.at(slot).plugin;
   out << "\n";
   return out.str();
 }
@@ -87,22 +73,16 @@ nlohmann::json run_json(const aco::Graph& graph, const Outcome& o) {
   return j;
 }
 
-// The configuration shared by all runs.
+// The configuration shared by all runs (the run's keys, as acobench's database stores them),
+// and the problem as loaded.
 nlohmann::json config_json(const Request& request, const aco::Graph& graph, const Outcome& o) {
   nlohmann::json j;
-  j["planner"] = request.run.text("planner");
+  j["config"] = nlohmann::ordered_json::parse(aco::to_json(request.run));
   j["map"] = graph.map->name();
   j["width"] = graph.width;
   j["height"] = graph.height;
   j["start"] = cell(graph, o.start);
   j["goal"] = cell(graph, o.goal);
-  j["neighbourhood"] = static_cast<int>(graph.options.neighbourhood);
-  j["corner_cutting"] = graph.options.corner_cutting;
-  j["colony"] = values(request.colony);
-  if (const auto baseline = request.baselines.find(request.run.text("planner")); baseline != request.baselines.end())
-    j[baseline->first] = values(baseline->second);
-  for (const auto& [slot, params] : o.resolved)
-    j["pipeline"][slot] = {{"plugin", request.pipeline.slots.at(slot).plugin}, {"params", values(params)}};
   return j;
 }
 
@@ -201,7 +181,7 @@ std::string summary(const Request& request, const aco::Graph& graph, const Outco
   out << map_line(graph);
   out << "problem:  start " << cell_text(graph, o.start) << " -> goal " << cell_text(graph, o.goal) << "\n";
   out << pipeline_lines(request);
-  const std::string planner = request.run.text("planner");
+  const std::string planner = request.run.planner;
   if (!o.solved) {
     out << "result:   NOT SOLVED: " << o.reason << "\n";
     return out.str();

@@ -89,8 +89,7 @@ TEST_CASE("with clear_and_tabu no ant ever enters a tabu node", "[plugin][clear_
       "............",
   });
   const aco::Graph g = aco::build_graph(map, {});
-  aco::PipelineSpec spec;
-  spec.slots["deadlock"].plugin = "clear_and_tabu";
+  const aco::PipelineSpec spec = test::pipeline({{"deadlock", "clear_and_tabu"}});
   int tabu_total = 0;
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     auto p = aco::instantiate(test::plugins(), spec);

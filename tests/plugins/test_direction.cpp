@@ -86,9 +86,7 @@ TEST_CASE("direction gives fewer turns than distance on an open map", "[plugin][
   auto mean_turns = [&](const std::string& heuristic) {
     double turns = 0;
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
-      aco::PipelineSpec spec;
-      spec.slots["heuristic"].plugin = heuristic;
-      const auto p = aco::instantiate(test::plugins(), spec);
+      const auto p = aco::instantiate(test::plugins(), test::pipeline({{"heuristic", heuristic}}));
       aco::ColonySettings s;
       s.seed = seed;
       s.iterations = 50;

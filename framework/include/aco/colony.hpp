@@ -37,9 +37,11 @@ struct ColonySettings {
   double walk_limit = 0.0;
 };
 
-// The colony's own parameter table (ants, iterations, alpha, beta, seed, stagnation).
+// The colony's parameter table (ants, iterations, alpha, beta, seed, ...; defaults from the
+// struct), reading resolved values into settings and writing them back.
 std::span<const ParamSpec> colony_parameters();
 ColonySettings colony_settings(const ParameterValues& values);
+ParameterValues colony_values(const ColonySettings& settings);
 
 // Borrowed strategies; init, heuristic, update and deadlock are all required.
 struct Pipeline {

@@ -2,6 +2,8 @@
 // Parameter tables (OMPL style): every plugin, and the colony itself, declares its parameters
 // as plain data; hosts turn them into command-line options and config-file keys.
 #include <boost/config.hpp>
+
+#include "aco/error.hpp"
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -61,8 +63,19 @@ ParamValue parse_value(const ParamSpec& spec, const std::string& text, const std
 // Throws if a table is malformed: duplicate names, bad range, default outside its range.
 void check_table(std::span<const ParamSpec> table, const std::string& owner);
 
+// An error about one key, which it names as the host writes it ("--update.rho", "update.rho").
+class BOOST_SYMBOL_VISIBLE KeyError : public Error {
+ public:
+  KeyError(std::string key, const std::string& message) : Error(message), key_(std::move(key)) {}
+  ~KeyError() override;
+  const std::string& key() const { return key_; }
+
+ private:
+  std::string key_;
+};
+
 // Defaults of a table overridden by the given texts. An unknown name is an error naming the
-// nearest valid one; `key_prefix` ("--update.") is used in messages.
+// nearest valid one; `key_prefix` ("--update.") is used in messages. Throws KeyError.
 ParameterValues resolve(std::span<const ParamSpec> table, const std::map<std::string, std::string>& given,
                         const std::string& key_prefix);
 

@@ -10,6 +10,7 @@
 #include "aco/colony.hpp"
 #include "aco/path.hpp"
 #include "aco/pipeline.hpp"
+#include "aco/run_spec.hpp"
 
 namespace aco {
 
@@ -19,13 +20,6 @@ std::vector<std::string> planner_names();
 // A planner's own parameter table (empty for aco, whose settings are the colony's and the
 // plugins', and for astar). Throws for an unknown planner.
 std::span<const ParamSpec> planner_parameters(const std::string& planner);
-
-struct PlanRequest {
-  std::string planner = "aco";
-  PipelineSpec pipeline;                          // the smoother applies to every planner
-  ColonySettings colony;                          // seed, iterations... (its seed seeds every planner)
-  ParameterValues planner_parameters;  // resolved from planner_parameters(planner); empty for aco, astar
-};
 
 struct PlanOutcome {
   std::uint64_t seed = 0;
@@ -47,10 +41,11 @@ struct PlanOutcome {
   std::vector<double> best_so_far;
   std::vector<double> iteration_best;
   std::vector<double> pheromone;
-  std::map<std::string, ParameterValues> resolved;  // slot (or planner) -> every parameter
 };
 
 // Plans once. An unreachable goal is an unsolved outcome with its reason, not an error.
-PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const PlanRequest& request);
+// The run's problem is not read: `graph`, `start` and `goal` are its (hosts load and check it
+// with load_problem()); its colony seed seeds every planner.
+PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const RunSpec& run);
 
 }  // namespace aco

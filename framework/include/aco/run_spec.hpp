@@ -1,0 +1,88 @@
+#pragma once
+// One run's whole configuration as typed, resolved values: the problem, the graph, the planner
+// and its parameters, the colony settings, and one plugin per slot with its parameters. Hosts
+// only produce keys (acoplan from its command line and config file, acobench from experiment
+// files); resolve_run() checks every key and value, once. Nothing after it parses text.
+//
+// Keys are acoplan's options without the dashes, and the same everywhere (INI of
+// --print-config, --json, acobench's experiment files and database): "map", "start",
+// "max-slope", "neighbourhood", "planner", "ants", "update", "update.rho", "ifwa.radius".
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "aco/colony.hpp"
+#include "aco/error.hpp"
+#include "aco/graph.hpp"
+#include "aco/map.hpp"
+#include "aco/parameters.hpp"
+#include "aco/pipeline.hpp"
+#include "aco/plugin_registry.hpp"
+#include "aco/terrain.hpp"
+
+namespace aco {
+
+struct ProblemSpec {
+  std::filesystem::path map;   // empty: none given (acoplan then plans its bundled demo)
+  std::filesystem::path scen;  // Moving AI scenario file; empty: start and goal are cells
+  int scen_index = 0;
+  std::optional<Cell> start;
+  std::optional<Cell> goal;
+  TerrainOptions terrain;
+};
+
+struct RunSpec {
+  ProblemSpec problem;
+  GraphOptions graph;
+  std::string planner = "aco";
+  ParameterValues planner_parameters;  // the planner's own table (empty for aco and astar)
+  ColonySettings colony;
+  PipelineSpec pipeline;  // every slot of kSlots
+};
+
+using Keys = std::map<std::string, std::string>;
+
+// The problem keys: map, scen, scen-index, start, goal (text), max-slope, height-scale, cell-size.
+std::span<const ParamSpec> problem_parameters();
+// The graph keys: neighbourhood, corner-cutting.
+std::span<const ParamSpec> graph_parameters();
+// The planner key, its values from planner_names().
+const ParamSpec& planner_parameter();
+
+// Keys -> RunSpec. Every key must be known and every value valid for its table; slots default
+// to default_plugin(), every other key to its table's default. `key_prefix` ("--" for acoplan)
+// goes before a key in messages; a failure throws KeyError naming the key (the nearest valid key
+// when it is unknown).
+RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix = "");
+
+// Every key of a run with its resolved value, defaults included, in a readable order (problem,
+// graph, planner, colony, slots, each slot's parameters after it); resolve_run() of them gives
+// the same RunSpec. Problem keys that are not set (no map, no scen...) are left out.
+std::vector<std::pair<std::string, ParamValue>> run_values(const RunSpec& spec);
+Keys to_keys(const RunSpec& spec);  // the same as text
+
+// The RunSpec as one JSON object with typed values ({"ants": 50, "update": "acs",
+// "update.rho": 0.3, ...}, the keys of to_keys()), and back (checked by resolve_run()).
+std::string to_json(const RunSpec& spec);
+RunSpec run_spec_from_json(const std::string& json, PluginRegistry& registry);
+
+struct LoadedProblem {
+  std::unique_ptr<Map> map;
+  Cell start;
+  Cell goal;
+};
+// Loads the map with the terrain options, takes start and goal from the scenario (whose map it
+// is unless `map` is set) or the cells, and checks both cells: an Error says which cell is
+// outside or blocked, and why.
+LoadedProblem load_problem(const ProblemSpec& problem);
+// Throws an Error if `cell` ("start", "goal") is outside the map or blocked, naming the reason.
+void check_cell(const Map& map, Cell cell, const std::string& what);
+
+// "X,Y" -> cell; throws naming `key`.
+Cell parse_cell(const std::string& text, const std::string& key);
+
+}  // namespace aco

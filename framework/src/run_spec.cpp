@@ -1,0 +1,281 @@
+#include "aco/run_spec.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <nlohmann/json.hpp>
+
+#include "aco/map_io.hpp"
+#include "aco/pipeline.hpp"
+#include "aco/planning.hpp"
+#include "aco/settings_table.hpp"
+
+namespace aco {
+namespace {
+
+// Problem keys whose values are text, not a table's parameter: files and cells.
+const std::vector<std::string> kProblemTexts = {"map", "scen", "start", "goal"};
+
+constexpr ParamSpec kScenIndex = {"scen-index", ParamType::integer, "0", "0:1000000000",
+                                  "which problem of --scen to plan (0-based)"};
+
+const SettingsTable<TerrainOptions>& terrain_table() {
+  using T = TerrainOptions;
+  static const SettingsTable<T> table({
+      field("max-slope", &T::max_slope_deg, "0:90",
+            "terrain maps (.asc, .pgm): steepest slope in degrees a step or a cell may have; 90 = no limit"),
+      field("height-scale", &T::height_scale, "(0:1e12]", "PGM height images: height = grey value * X"),
+      field("cell-size", &T::cell_size, "(0:1e12]",
+            "PGM height images: horizontal size of a cell, in the heights' units (.asc files give their own)"),
+  });
+  return table;
+}
+
+const SettingsTable<GraphOptions>& graph_table() {
+  using G = GraphOptions;
+  static const SettingsTable<G> table({
+      choice("neighbourhood", &G::neighbourhood, {"4", "8", "16"},
+             {Neighbourhood::four, Neighbourhood::eight, Neighbourhood::sixteen},
+             "moves per cell: 4 straight, 8 with diagonals, 16 with knight moves"),
+      field("corner-cutting", &G::corner_cutting, "",
+            "let a diagonal step pass between two blocked side cells (the MATLAB code's rule; off = Moving AI rule)"),
+  });
+  return table;
+}
+
+bool is_slot(const std::string& key) { return std::find(kSlots.begin(), kSlots.end(), key) != kSlots.end(); }
+
+bool in_table(std::span<const ParamSpec> table, const std::string& key) {
+  return std::any_of(table.begin(), table.end(), [&](const ParamSpec& p) { return key == p.name; });
+}
+
+// The planners with a parameter table of their own (their keys are "<planner>.<name>").
+std::vector<std::string> planners_with_parameters() {
+  std::vector<std::string> names;
+  for (const auto& name : planner_names())
+    if (!planner_parameters(name).empty()) names.push_back(name);
+  return names;
+}
+
+// Every key a run can have, for "did you mean" (plugin parameters of the chosen plugins).
+std::vector<std::string> known_keys(const RunSpec& spec, PluginRegistry& registry) {
+  std::vector<std::string> keys = kProblemTexts;
+  keys.push_back(kScenIndex.name);
+  keys.push_back(planner_parameter().name);
+  for (auto table : {terrain_table().parameters(), graph_table().parameters(), colony_parameters()})
+    for (const auto& p : table) keys.push_back(p.name);
+  for (const char* slot : kSlots) {
+    keys.push_back(slot);
+    for (const auto& p : registry.load(slot, spec.pipeline.at(slot).plugin).parameters())
+      keys.push_back(std::string(slot) + "." + p.name);
+  }
+  for (const auto& planner : planners_with_parameters())
+    for (const auto& p : planner_parameters(planner)) keys.push_back(planner + "." + p.name);
+  return keys;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, ParamValue>> run_values(const RunSpec& spec) {
+  std::vector<std::pair<std::string, ParamValue>> keys;
+  const ProblemSpec& p = spec.problem;
+  if (!p.map.empty()) keys.emplace_back("map", p.map.string());
+  if (!p.scen.empty()) {
+    keys.emplace_back("scen", p.scen.string());
+    keys.emplace_back("scen-index", std::int64_t{p.scen_index});
+  }
+  if (p.start) keys.emplace_back("start", to_string(*p.start).substr(1, to_string(*p.start).size() - 2));
+  if (p.goal) keys.emplace_back("goal", to_string(*p.goal).substr(1, to_string(*p.goal).size() - 2));
+  auto add = [&keys](const std::string& prefix, const ParameterValues& values) {
+    for (const auto& [name, value] : values.all()) keys.emplace_back(prefix + name, value);
+  };
+  add("", terrain_table().write(p.terrain));
+  add("", graph_table().write(spec.graph));
+  keys.emplace_back("planner", spec.planner);
+  add(spec.planner + ".", spec.planner_parameters);
+  add("", colony_values(spec.colony));
+  for (const char* slot : kSlots) {
+    const SlotSpec& choice = spec.pipeline.at(slot);
+    keys.emplace_back(slot, choice.plugin);
+    add(std::string(slot) + ".", choice.parameters);
+  }
+  return keys;
+}
+
+std::span<const ParamSpec> problem_parameters() {
+  static const std::vector<ParamSpec> table = [] {
+    std::vector<ParamSpec> t{kScenIndex};
+    for (const auto& p : terrain_table().parameters()) t.push_back(p);
+    return t;
+  }();
+  return table;
+}
+
+std::span<const ParamSpec> graph_parameters() { return graph_table().parameters(); }
+
+const ParamSpec& planner_parameter() {
+  static const std::string names = [] {
+    std::string text;
+    for (const auto& name : planner_names()) text += (text.empty() ? "" : ",") + name;
+    return text;
+  }();
+  static const ParamSpec spec = {
+      "planner", ParamType::categorical, "aco", names.c_str(),
+      "aco = the colony; astar = exact shortest path on the same graph (reference); ifwa = improved fireworks "
+      "(paper 004); pso = particle swarm over waypoints (paper 000's baseline)"};
+  return spec;
+}
+
+Cell parse_cell(const std::string& text, const std::string& key) {
+  Cell c;
+  const auto comma = text.find(',');
+  auto whole = [](std::string_view s, int& v) {
+    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return ec == std::errc() && p == s.data() + s.size();
+  };
+  if (comma == std::string::npos || !whole(std::string_view(text).substr(0, comma), c.x) ||
+      !whole(std::string_view(text).substr(comma + 1), c.y))
+    throw KeyError(key, key + ": '" + text + "' is not a cell; expected X,Y such as 3,7");
+  return c;
+}
+
+void check_cell(const Map& map, Cell c, const std::string& what) {
+  if (!map.contains(c))
+    throw Error(what + " " + to_string(c) + " is outside the " + std::to_string(map.width()) + "x" +
+                std::to_string(map.height()) + " map " + map.name());
+  if (!map.passable(c)) throw Error(what + " " + to_string(c) + " is blocked: " + map.blocked_reason(c) + " (" + map.name() + ")");
+}
+
+LoadedProblem load_problem(const ProblemSpec& spec) {
+  LoadedProblem p;
+  if (!spec.scen.empty()) {
+    const auto scenarios = load_scenarios(spec.scen);
+    if (spec.scen_index >= static_cast<int>(scenarios.size()))
+      throw Error("scen-index " + std::to_string(spec.scen_index) + " is out of range: " + spec.scen.string() + " has " +
+                  std::to_string(scenarios.size()) + " scenarios");
+    const Scenario& s = scenarios[spec.scen_index];
+    p.map = load_map(spec.map.empty() ? scenario_map_file(spec.scen) : spec.map, spec.terrain);
+    if (p.map->width() != s.width || p.map->height() != s.height)
+      throw Error(spec.scen.string() + ": scenario " + std::to_string(spec.scen_index) + " is for a " +
+                  std::to_string(s.width) + "x" + std::to_string(s.height) + " map, but " + p.map->name() + " is " +
+                  std::to_string(p.map->width()) + "x" + std::to_string(p.map->height()));
+    p.start = s.start;
+    p.goal = s.goal;
+  } else {
+    if (spec.map.empty() || !spec.start || !spec.goal) throw Error("a problem needs a map with start and goal, or a scenario");
+    p.map = load_map(spec.map, spec.terrain);
+    p.start = *spec.start;
+    p.goal = *spec.goal;
+  }
+  check_cell(*p.map, p.start, "start");
+  check_cell(*p.map, p.goal, "goal");
+  return p;
+}
+
+RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix) {
+  RunSpec spec;
+  // Sorted by owner: the plugins first, since their tables decide which dotted keys exist.
+  Keys problem, graph, colony, planner;
+  std::map<std::string, Keys> slots;
+  if (const auto it = keys.find("planner"); it != keys.end())
+    spec.planner = std::get<std::string>(parse_value(planner_parameter(), it->second, key_prefix + "planner"));
+  for (const char* slot : kSlots) {
+    const auto it = keys.find(slot);
+    spec.pipeline[slot].plugin = it != keys.end() ? it->second : default_plugin(slot);
+    try {
+      registry.load(slot, spec.pipeline[slot].plugin);
+    } catch (const Error& e) {
+      throw KeyError(key_prefix + slot, key_prefix + slot + ": " + e.what());
+    }
+  }
+  auto unknown = [&](const std::string& key, std::string message) {
+    if (const auto near = nearest(key, known_keys(spec, registry)); !near.empty())
+      message += "; did you mean '" + key_prefix + near + "'?";
+    throw KeyError(key_prefix + key, message);
+  };
+  for (const auto& [key, value] : keys) {
+    if (key == "planner" || is_slot(key)) continue;
+    const auto dot = key.find('.');
+    if (dot != std::string::npos) {
+      const std::string owner = key.substr(0, dot), name = key.substr(dot + 1);
+      if (is_slot(owner)) {
+        slots[owner][name] = value;
+      } else if (const auto with = planners_with_parameters(); std::find(with.begin(), with.end(), owner) != with.end()) {
+        if (owner != spec.planner)
+          throw KeyError(key_prefix + key, key_prefix + key + " is a parameter of the planner '" + owner +
+                                               "', but the planner is '" + spec.planner + "'");
+        planner[name] = value;
+      } else {
+        unknown(key, "unknown key '" + key_prefix + key + "'");
+      }
+    } else if (std::find(kProblemTexts.begin(), kProblemTexts.end(), key) != kProblemTexts.end() ||
+               in_table(problem_parameters(), key)) {
+      problem[key] = value;
+    } else if (in_table(graph_parameters(), key)) {
+      graph[key] = value;
+    } else if (in_table(colony_parameters(), key)) {
+      colony[key] = value;
+    } else {
+      unknown(key, "unknown key '" + key_prefix + key + "'");
+    }
+  }
+
+  ProblemSpec& p = spec.problem;
+  if (problem.count("map")) p.map = problem.at("map");
+  if (problem.count("scen")) p.scen = problem.at("scen");
+  if (problem.count("start")) p.start = parse_cell(problem.at("start"), key_prefix + "start");
+  if (problem.count("goal")) p.goal = parse_cell(problem.at("goal"), key_prefix + "goal");
+  if (!p.scen.empty() && (p.start || p.goal))
+    throw KeyError(key_prefix + "scen", "give either " + key_prefix + "scen or " + key_prefix + "start/" + key_prefix +
+                                            "goal, not both");
+  if (problem.count("scen-index") && p.scen.empty())
+    throw KeyError(key_prefix + "scen-index", key_prefix + "scen-index needs " + key_prefix + "scen");
+  Keys numbers;
+  for (const auto& [key, value] : problem)
+    if (in_table(problem_parameters(), key)) numbers[key] = value;
+  const ParameterValues problem_values = resolve(problem_parameters(), numbers, key_prefix);
+  p.scen_index = static_cast<int>(problem_values.integer("scen-index"));
+  p.terrain = terrain_table().read(problem_values);
+  spec.graph = graph_table().read(resolve(graph_parameters(), graph, key_prefix));
+  spec.colony = colony_settings(resolve(colony_parameters(), colony, key_prefix));
+  spec.planner_parameters = resolve(planner_parameters(spec.planner), planner, key_prefix + spec.planner + ".");
+  for (const char* slot : kSlots) {
+    SlotSpec& choice = spec.pipeline[slot];
+    const auto table = registry.load(slot, choice.plugin).parameters();
+    choice.parameters = resolve(table, slots[slot], key_prefix + slot + ".");
+  }
+  return spec;
+}
+
+Keys to_keys(const RunSpec& spec) {
+  Keys keys;
+  for (const auto& [key, value] : run_values(spec)) keys[key] = to_string(value);
+  return keys;
+}
+
+std::string to_json(const RunSpec& spec) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (const auto& [key, value] : run_values(spec))
+    j[key] = std::visit([](const auto& v) { return nlohmann::ordered_json(v); }, value);
+  return j.dump();
+}
+
+RunSpec run_spec_from_json(const std::string& text, PluginRegistry& registry) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(std::string("a run's configuration is not valid JSON: ") + e.what());
+  }
+  if (!j.is_object()) throw Error("a run's configuration must be a JSON object of keys");
+  Keys keys;
+  for (const auto& [key, value] : j.items()) {
+    if (value.is_string()) keys[key] = value.get<std::string>();
+    else if (value.is_boolean()) keys[key] = value.get<bool>() ? "true" : "false";
+    else if (value.is_number_integer()) keys[key] = std::to_string(value.get<std::int64_t>());
+    else if (value.is_number()) keys[key] = to_string(ParamValue(value.get<double>()));
+    else throw KeyError(key, "key '" + key + "' must be a string, a number or a boolean");
+  }
+  return resolve_run(keys, registry);
+}
+
+}  // namespace aco

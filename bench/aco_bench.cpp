@@ -15,7 +15,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
-#include "aco/fireworks.hpp"
+#include "ifwa/fireworks.hpp"
 #include "aco/map_io.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/run_spec.hpp"

@@ -8,7 +8,7 @@
 
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
-#include "aco/fireworks.hpp"
+#include "ifwa/fireworks.hpp"
 #include "aco/map_io.hpp"
 #include "support.hpp"
 

@@ -46,6 +46,9 @@ json results_only(const json& run) {
   json kept = json::object();
   for (const auto& key : kResultKeys)
     if (run.contains(key)) kept[key] = run[key];
+  // Since planners report their own measures, only the colony reports ant steps; the others
+  // (and runs that never started: unreachable goal) made none, which the recording wrote as 0.
+  if (!run.contains("runs") && !kept.contains("ant_steps")) kept["ant_steps"] = 0;
   if (run.contains("runs"))
     for (const auto& each : run["runs"]) kept["runs"].push_back(results_only(each));
   return kept;

@@ -6,7 +6,7 @@
 
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
-#include "aco/pso.hpp"
+#include "pso/pso.hpp"
 #include "support.hpp"
 
 namespace {

@@ -319,15 +319,7 @@ class Colony {
     if (exploitation_ > 0.0 && rng.uniform() < exploitation_)
       return static_cast<int>(std::max_element(weights, weights + n) - weights);
     if (!(total > 0.0)) return static_cast<int>(rng.below(n));  // every weight underflowed to 0
-    double r = rng.uniform() * total;
-    int last_positive = 0;
-    for (int i = 0; i < n; ++i) {
-      if (weights[i] <= 0.0) continue;
-      r -= weights[i];
-      if (r < 0.0) return i;
-      last_positive = i;
-    }
-    return last_positive;  // rounding left r just above 0
+    return static_cast<int>(roulette(rng, {weights, static_cast<std::size_t>(n)}, total));
   }
 
   const Graph& g_;

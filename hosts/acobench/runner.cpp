@@ -240,17 +240,17 @@ class Runner {
     r.config = t.config->id;
     r.repetition = t.repetition;
     r.seed = o.seed;
-    r.solved = o.solved;
+    r.solved = o.solved();
     r.length = o.length;
-    r.grid_length = o.grid_length;
+    r.grid_length = o.search.length;
     r.turns = o.turns;
-    r.iterations = o.iterations;
-    r.best_iteration = o.best_iteration;
+    r.iterations = o.search.iterations;
+    r.best_iteration = o.search.best_iteration;
     r.time_s = o.time_ms / 1000.0;
-    r.ant_steps = o.ant_steps;
-    r.stopped_by = o.stopped_by;
+    r.ant_steps = static_cast<std::uint64_t>(o.count("ant_steps"));
+    r.stopped_by = o.text("stopped_by");
     r.path_json = path_json(o.path);
-    r.best_so_far = o.best_so_far;
+    r.best_so_far = o.search.best_so_far;
     return r;
   }
 

@@ -32,14 +32,14 @@ acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, c
 
 void write_picture(const acoplan::Request& r, const aco::Graph& graph, const acoplan::Outcome& o) {
   aco::RunPicture picture;
-  picture.title = graph.map->name() + ": " + (o.solved ? "length " + std::to_string(o.length) : "not solved") +
+  picture.title = graph.map->name() + ": " + (o.solved() ? "length " + std::to_string(o.length) : "not solved") +
                   ", seed " + std::to_string(o.seed);
   picture.start = o.start;
   picture.goal = o.goal;
-  picture.grid_path = o.grid_path;
+  picture.grid_path = o.search.path;
   picture.path = o.path;
   if (r.host.boolean("svg-pheromone")) picture.pheromone = o.pheromone;
-  picture.best_so_far = o.best_so_far;
+  picture.best_so_far = o.search.best_so_far;
   picture.iteration_best = o.iteration_best;
   picture.optimal_length = o.optimal_length.value_or(0.0);
   aco::write_svg(*r.svg, graph, picture);
@@ -49,7 +49,7 @@ void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco
 // the shortest text that reads back as the same double (so it equals --json's length).
 std::string irace_cost(const std::vector<acoplan::Outcome>& runs) {
   const double total = std::accumulate(runs.begin(), runs.end(), 0.0, [](double sum, const acoplan::Outcome& o) {
-    return sum + (o.solved ? o.length : acoplan::kIraceUnsolvedCost);
+    return sum + (o.solved() ? o.length : acoplan::kIraceUnsolvedCost);
   });
   char text[64];
   const auto end = std::to_chars(text, text + sizeof text, total / static_cast<double>(runs.size())).ptr;
@@ -93,10 +93,10 @@ int plan(const acoplan::Request& r) {
   }
   // The picture shows the best run: the shortest solved one, else the first.
   const auto best = std::min_element(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
-    return a.solved != b.solved ? a.solved : a.length < b.length;
+    return a.solved() != b.solved() ? a.solved() : a.length < b.length;
   });
   if (r.svg) write_picture(r, graph, *best);
-  const bool all_solved = std::all_of(runs.begin(), runs.end(), [](const auto& o) { return o.solved; });
+  const bool all_solved = std::all_of(runs.begin(), runs.end(), [](const auto& o) { return o.solved(); });
   return all_solved || r.irace ? 0 : kExitUnsolved;
 }
 

@@ -51,25 +51,24 @@ nlohmann::json run_json(const aco::Graph& graph, const Outcome& o) {
   bool three_d = false;
   for (const auto& p : graph.positions) three_d = three_d || p.z() != 0.0;
   nlohmann::json j;
-  j["solved"] = o.solved;
-  j["length"] = o.solved ? nlohmann::json(o.length) : nlohmann::json(nullptr);
+  j["solved"] = o.solved();
+  j["length"] = o.solved() ? nlohmann::json(o.length) : nlohmann::json(nullptr);
   j["path"] = nlohmann::json::array();
   for (const auto& p : o.path) j["path"].push_back(point(p, three_d));
-  j["grid_length"] = o.solved ? nlohmann::json(o.grid_length) : nlohmann::json(nullptr);
+  j["grid_length"] = o.solved() ? nlohmann::json(o.search.length) : nlohmann::json(nullptr);
   j["grid_path"] = nlohmann::json::array();
-  for (aco::NodeId n : o.grid_path) j["grid_path"].push_back(cell(graph, n));
+  for (aco::NodeId n : o.search.path) j["grid_path"].push_back(cell(graph, n));
   j["turns"] = o.turns;
-  j["iterations"] = o.iterations;
-  j["best_iteration"] = o.best_iteration;
+  j["iterations"] = o.search.iterations;
+  j["best_iteration"] = o.search.best_iteration;
   j["time_ms"] = o.time_ms;
   j["seed"] = o.seed;
-  if (!o.solved) j["reason"] = o.reason;
-  j["ant_steps"] = o.ant_steps;
-  if (o.evaluations > 0) j["evaluations"] = o.evaluations;
-  if (!o.stopped_by.empty()) j["stopped_by"] = o.stopped_by;
+  if (!o.solved()) j["reason"] = o.reason;
+  for (const auto& [name, value] : o.properties)
+    j[name] = std::visit([](const auto& v) { return nlohmann::json(v); }, value);
   j["optimal_length"] = o.optimal_length ? nlohmann::json(*o.optimal_length) : nlohmann::json(nullptr);
   j["convergence"] = nlohmann::json::array();
-  for (double v : o.best_so_far) j["convergence"].push_back(number_or_null(v));
+  for (double v : o.search.best_so_far) j["convergence"].push_back(number_or_null(v));
   return j;
 }
 
@@ -109,13 +108,13 @@ std::vector<std::pair<std::string, Stats>> measures(const std::vector<Outcome>& 
   std::map<std::string, std::vector<double>> v;
   for (const auto& o : runs) {
     v["time_ms"].push_back(o.time_ms);
-    if (!o.solved) continue;
+    if (!o.solved()) continue;
     v["length"].push_back(o.length);
-    v["grid_length"].push_back(o.grid_length);
-    v["cells"].push_back(double(o.grid_path.size()));
+    v["grid_length"].push_back(o.search.length);
+    v["cells"].push_back(double(o.search.path.size()));
     v["turns"].push_back(o.turns);
-    v["best_iteration"].push_back(o.best_iteration);
-    v["iterations"].push_back(o.iterations);
+    v["best_iteration"].push_back(o.search.best_iteration);
+    v["iterations"].push_back(o.search.iterations);
   }
   std::vector<std::pair<std::string, Stats>> result;
   for (const char* name : {"length", "grid_length", "cells", "turns", "best_iteration", "iterations", "time_ms"})
@@ -137,7 +136,7 @@ nlohmann::json to_json(const Request& request, const aco::Graph& graph, const st
   int solved = 0;
   for (const auto& o : runs) {
     j["runs"].push_back(run_json(graph, o));
-    solved += o.solved;
+    solved += o.solved();
   }
   nlohmann::json& s = j["summary"];
   s["runs"] = runs.size();
@@ -159,7 +158,7 @@ std::string summary(const Request& request, const aco::Graph& graph, const std::
   out << "\n";
   out << pipeline_lines(request);
   int solved = 0;
-  for (const auto& o : runs) solved += o.solved;
+  for (const auto& o : runs) solved += o.solved();
   out << "runs:     " << runs.size() << " seeds (" << first.seed << ".." << runs.back().seed << "), " << solved << " solved\n";
   out << std::fixed;
   for (const auto& [name, st] : measures(runs)) {
@@ -182,33 +181,34 @@ std::string summary(const Request& request, const aco::Graph& graph, const Outco
   out << "problem:  start " << cell_text(graph, o.start) << " -> goal " << cell_text(graph, o.goal) << "\n";
   out << pipeline_lines(request);
   const std::string planner = request.run.planner;
-  if (!o.solved) {
+  if (!o.solved()) {
     out << "result:   NOT SOLVED: " << o.reason << "\n";
     return out.str();
   }
-  out << "result:   length " << o.length << " (grid path " << o.grid_length << "), " << o.turns << " turns, "
+  out << "result:   length " << o.length << " (grid path " << o.search.length << "), " << o.turns << " turns, "
       << o.path.size() << " waypoints\n";
   if (o.optimal_length) {
     out << "optimum:  " << *o.optimal_length << " (A* on the same graph), gap " << std::setprecision(2)
-        << 100.0 * (o.grid_length - *o.optimal_length) / *o.optimal_length << " % for the grid path\n"
+        << 100.0 * (o.search.length - *o.optimal_length) / *o.optimal_length << " % for the grid path\n"
         << std::setprecision(4);
   }
   if (planner == "aco") {
-    out << "search:   best found at iteration " << o.best_iteration << " of " << o.iterations << " (stopped by "
-        << o.stopped_by << "), " << o.ant_steps
+    out << "search:   best found at iteration " << o.search.best_iteration << " of " << o.search.iterations << " (stopped by "
+        << o.text("stopped_by") << "), " << o.count("ant_steps")
         << " ant steps, " << std::setprecision(2) << o.time_ms << " ms";
-    if (o.ant_steps > 0) out << " (" << std::setprecision(1) << o.time_ms * 1e6 / double(o.ant_steps) << " ns per ant step)";
+    if (o.count("ant_steps") > 0)
+      out << " (" << std::setprecision(1) << o.time_ms * 1e6 / double(o.count("ant_steps")) << " ns per ant step)";
     out << "\n";
-  } else if (o.evaluations > 0) {
-    out << "search:   best found at iteration " << o.best_iteration << " of " << o.iterations << ", " << o.evaluations
+  } else if (o.count("evaluations") > 0) {
+    out << "search:   best found at iteration " << o.search.best_iteration << " of " << o.search.iterations << ", " << o.count("evaluations")
         << " evaluations, " << std::setprecision(2) << o.time_ms << " ms\n";
   } else {
     out << "search:   " << std::setprecision(2) << o.time_ms << " ms\n";
   }
   out << "path:    ";
-  for (aco::NodeId n : o.grid_path) out << " " << cell_text(graph, n);
+  for (aco::NodeId n : o.search.path) out << " " << cell_text(graph, n);
   out << "\n";
-  if (o.path != aco::to_waypoints(graph, o.grid_path)) {
+  if (o.path != aco::to_waypoints(graph, o.search.path)) {
     out << "smoothed:" << std::setprecision(2);
     for (const auto& p : o.path) out << " (" << p.x() << "," << p.y() << ")";
     out << "\n";

@@ -1,7 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include "aco/error.hpp"
-#include "aco/fireworks.hpp"
+#include "ifwa/fireworks.hpp"
 #include "aco/rng.hpp"
 #include "support.hpp"
 

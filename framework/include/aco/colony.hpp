@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "aco/parameters.hpp"
+#include "aco/search_result.hpp"
 #include "aco/strategies.hpp"
 
 namespace aco {
@@ -51,14 +52,7 @@ struct Pipeline {
   DeadlockPolicy* deadlock = nullptr;
 };
 
-struct ColonyResult {
-  static constexpr double none = std::numeric_limits<double>::infinity();
-  bool solved = false;
-  std::vector<NodeId> path;  // best path found, start to goal
-  double length = none;
-  int iterations = 0;      // iterations run
-  int best_iteration = 0;  // first iteration (1-based) whose best reached the final length; 0 if unsolved
-  std::vector<double> best_so_far;     // per iteration (none until an ant arrives)
+struct ColonyResult : SearchResult {
   std::vector<double> iteration_best;  // per iteration (none if no ant arrived)
   std::vector<int> arrived;            // per iteration: ants that reached the goal
   std::uint64_t ant_steps = 0;         // moves made by all ants, backtracking included

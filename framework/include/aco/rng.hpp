@@ -2,7 +2,9 @@
 // Small, fast, platform-independent random numbers. std:: distributions are not used because
 // their output differs between standard libraries; results must be reproducible everywhere.
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace aco {
 
@@ -55,5 +57,19 @@ class Rng {
   static constexpr std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
   std::uint64_t s_[4];
 };
+
+// Roulette-wheel selection: index i with probability weights[i] / total, total being their sum
+// (> 0). Never an index of weight <= 0: rounding that leaves the draw just above 0 at the end
+// picks the last positive one. One draw from `rng`.
+inline std::size_t roulette(Rng& rng, std::span<const double> weights, double total) {
+  double r = rng.uniform() * total;
+  std::size_t last_positive = 0;
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    if (weights[i] <= 0.0) continue;
+    if ((r -= weights[i]) < 0.0) return i;
+    last_positive = i;
+  }
+  return last_positive;
+}
 
 }  // namespace aco

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "aco/fireworks.hpp"
+#include "ifwa/fireworks.hpp"
 #include "aco/plugin.hpp"
 #include "aco/rng.hpp"
 

@@ -238,6 +238,13 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
   spec.graph = graph_table().read(resolve(graph_parameters(), graph, key_prefix));
   spec.colony = colony_settings(resolve(colony_parameters(), colony, key_prefix));
   spec.planner_parameters = resolve(planner_parameters(spec.planner), planner, key_prefix + spec.planner + ".");
+  if (const auto check = find_planner(spec.planner).check) {
+    try {
+      check(spec.planner_parameters);
+    } catch (const Error& e) {
+      throw KeyError(key_prefix + spec.planner, e.what());
+    }
+  }
   for (const char* slot : kSlots) {
     SlotSpec& choice = spec.pipeline[slot];
     const auto table = registry.load(slot, choice.plugin).parameters();

@@ -19,7 +19,7 @@
 
 #include "aco/graph.hpp"
 #include "aco/parameters.hpp"
-#include "aco/planner_result.hpp"
+#include "aco/search_result.hpp"
 
 namespace aco {
 

@@ -1,4 +1,4 @@
-#include "aco/pso.hpp"
+#include "pso/pso.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -8,21 +8,26 @@
 
 #include "aco/error.hpp"
 #include "aco/rng.hpp"
+#include "aco/settings_table.hpp"
 
 namespace aco {
 namespace {
 
-constexpr ParamSpec kPsoParameters[] = {
-    {"particles", ParamType::integer, "50", "1:1000000", "particles in the swarm"},
-    {"iterations", ParamType::integer, "100", "1:100000000", "swarm updates after the initial swarm"},
-    {"waypoints", ParamType::integer, "3", "1:1000", "intermediate waypoints K per particle"},
-    {"inertia", ParamType::real, "0.7298", "0:2", "inertia weight w on the previous velocity"},
-    {"c1", ParamType::real, "1.49618", "0:10", "cognitive coefficient: pull towards the particle's own best"},
-    {"c2", ParamType::real, "1.49618", "0:10", "social coefficient: pull towards the swarm's best"},
-    {"max_velocity", ParamType::real, "0.2", "(0:10]",
-     "velocity clamp per coordinate and iteration, as a fraction of the map's width (x) or height (y)"},
-    {"penalty", ParamType::real, "100", "(0:1e12]", "fitness added per step into or across a blocked cell"},
-};
+const SettingsTable<PsoSettings>& pso_table() {
+  using P = PsoSettings;
+  static const SettingsTable<P> table({
+      field("particles", &P::particles, "1:1000000", "particles in the swarm"),
+      field("iterations", &P::iterations, "1:100000000", "swarm updates after the initial swarm"),
+      field("waypoints", &P::waypoints, "1:1000", "intermediate waypoints K per particle"),
+      field("inertia", &P::inertia, "0:2", "inertia weight w on the previous velocity"),
+      field("c1", &P::c1, "0:10", "cognitive coefficient: pull towards the particle's own best"),
+      field("c2", &P::c2, "0:10", "social coefficient: pull towards the swarm's best"),
+      field("max_velocity", &P::max_velocity, "(0:10]",
+            "velocity clamp per coordinate and iteration, as a fraction of the map's width (x) or height (y)"),
+      field("penalty", &P::penalty, "(0:1e12]", "fitness added per step into or across a blocked cell"),
+  });
+  return table;
+}
 
 long squared(long v) { return v * v; }
 
@@ -125,20 +130,8 @@ class Swarm {
 
 }  // namespace
 
-std::span<const ParamSpec> pso_parameters() { return kPsoParameters; }
-
-PsoSettings pso_settings(const ParameterValues& v) {
-  PsoSettings s;
-  s.particles = static_cast<int>(v.integer("particles"));
-  s.iterations = static_cast<int>(v.integer("iterations"));
-  s.waypoints = static_cast<int>(v.integer("waypoints"));
-  s.inertia = v.real("inertia");
-  s.c1 = v.real("c1");
-  s.c2 = v.real("c2");
-  s.max_velocity = v.real("max_velocity");
-  s.penalty = v.real("penalty");
-  return s;
-}
+std::span<const ParamSpec> pso_parameters() { return pso_table().parameters(); }
+PsoSettings pso_settings(const ParameterValues& v) { return pso_table().read(v); }
 
 WaypointWalk walk_waypoints(const Graph& g, std::span<const Cell> cells) {
   WaypointWalk w;

@@ -1,4 +1,4 @@
-#include "aco/fireworks.hpp"
+#include "ifwa/fireworks.hpp"
 
 #include <tbb/parallel_for.h>
 
@@ -10,30 +10,35 @@
 
 #include "aco/error.hpp"
 #include "aco/rng.hpp"
+#include "aco/settings_table.hpp"
 
 namespace aco {
 namespace {
 
-constexpr ParamSpec kFireworksParameters[] = {
-    {"iterations", ParamType::integer, "50", "1:1000000", "generations G_max"},
-    {"fireworks", ParamType::integer, "15", "1:100000", "fireworks kept from one generation to the next"},
-    {"mutation_sparks", ParamType::integer, "10", "0:100000", "Gaussian mutation sparks per generation"},
-    {"sparks", ParamType::integer, "5", "1:100000", "explosion count m: sparks shared out among the fireworks by fitness"},
-    {"radius", ParamType::real, "3", "(0:1e9]", "explosion radius A^ (largest amplitude) at the first generation"},
-    {"radius_end", ParamType::real, "0.1", "(0:1]",
-     "annealing: the radius cools geometrically to radius x radius_end at the last generation (1 = constant)"},
-    {"a", ParamType::real, "0.3", "0:1", "each firework makes at least round(a m) explosion sparks"},
-    {"b", ParamType::real, "0.5", "0:1", "each firework makes at most round(b m) explosion sparks (a <= b)"},
-    {"inertia_start", ParamType::real, "0.9", "0:10",
-     "mutation inertia weight w at the first generation: a mutated weight is multiplied by 1 + w N(0,1)"},
-    {"inertia_end", ParamType::real, "0.4", "0:10", "mutation inertia weight at the last generation (linear in between)"},
-    {"weight_min", ParamType::real, "0.01", "(0:1e9)", "smallest node weight a_j (positive: every move stays possible)"},
-    {"weight_max", ParamType::real, "1", "(0:1e9]", "largest node weight a_j"},
-    {"max_weights", ParamType::integer, "4096", "1:1000000000",
-     "most weights per firework: one per cell up to it, on larger maps one per square block of cells"},
-    {"walk_limit", ParamType::real, "3", "0:1e6",
-     "once a path is known, a decoding walk is abandoned after this many times its steps (at least 4096 moves; 0 = never)"},
-};
+const SettingsTable<FireworksSettings>& fireworks_table() {
+  using F = FireworksSettings;
+  static const SettingsTable<F> table({
+      field("iterations", &F::iterations, "1:1000000", "generations G_max"),
+      field("fireworks", &F::fireworks, "1:100000", "fireworks kept from one generation to the next"),
+      field("mutation_sparks", &F::mutation_sparks, "0:100000", "Gaussian mutation sparks per generation"),
+      field("sparks", &F::sparks, "1:100000", "explosion count m: sparks shared out among the fireworks by fitness"),
+      field("radius", &F::radius, "(0:1e9]", "explosion radius A^ (largest amplitude) at the first generation"),
+      field("radius_end", &F::radius_end, "(0:1]",
+            "annealing: the radius cools geometrically to radius x radius_end at the last generation (1 = constant)"),
+      field("a", &F::a, "0:1", "each firework makes at least round(a m) explosion sparks"),
+      field("b", &F::b, "0:1", "each firework makes at most round(b m) explosion sparks (a <= b)"),
+      field("inertia_start", &F::inertia_start, "0:10",
+            "mutation inertia weight w at the first generation: a mutated weight is multiplied by 1 + w N(0,1)"),
+      field("inertia_end", &F::inertia_end, "0:10", "mutation inertia weight at the last generation (linear in between)"),
+      field("weight_min", &F::weight_min, "(0:1e9)", "smallest node weight a_j (positive: every move stays possible)"),
+      field("weight_max", &F::weight_max, "(0:1e9]", "largest node weight a_j"),
+      field("max_weights", &F::max_weights, "1:1000000000",
+            "most weights per firework: one per cell up to it, on larger maps one per square block of cells"),
+      field("walk_limit", &F::walk_limit, "0:1e6",
+            "once a path is known, a decoding walk is abandoned after this many times its steps (at least 4096 moves; 0 = never)"),
+  });
+  return table;
+}
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
@@ -151,7 +156,7 @@ class Search {
       spread[pick] = 0.0;
       // Candidates identical to all others have no spread: then the next fittest one.
       const bool spread_left = std::any_of(spread.begin(), spread.end(), [](double v) { return v > 0.0; });
-      pick = spread_left ? roulette(spread, rng) : std::find(taken.begin(), taken.end(), false) - taken.begin();
+      pick = spread_left ? roulette(rng, spread, std::accumulate(spread.begin(), spread.end(), 0.0)) : std::find(taken.begin(), taken.end(), false) - taken.begin();
     }
     return kept;
   }
@@ -216,7 +221,7 @@ class Search {
         options.push_back(j);
         chances.push_back(spark.weights[index_[j]] * attraction_[j]);
       }
-      if (next < 0 && !options.empty()) next = options[roulette(chances, rng)];
+      if (next < 0 && !options.empty()) next = options[roulette(rng, chances, std::accumulate(chances.begin(), chances.end(), 0.0))];
       if (next < 0) {
         walk.pop_back();
         continue;
@@ -226,18 +231,6 @@ class Search {
       ++moves;
     }
     spark.fitness = walk.empty() ? penalty_ : path_length(g_, walk);
-  }
-
-  // Index drawn with probability chances[i] / sum; never one with chance 0 (needs one positive).
-  static std::size_t roulette(const std::vector<double>& chances, Rng& rng) {
-    double r = rng.uniform() * std::accumulate(chances.begin(), chances.end(), 0.0);
-    std::size_t last_positive = 0;
-    for (std::size_t i = 0; i < chances.size(); ++i) {
-      if (chances[i] <= 0.0) continue;
-      if ((r -= chances[i]) < 0.0) return i;
-      last_positive = i;
-    }
-    return last_positive;  // rounding left r just above 0
   }
 
   const Graph& g_;
@@ -253,24 +246,10 @@ class Search {
 
 }  // namespace
 
-std::span<const ParamSpec> fireworks_parameters() { return kFireworksParameters; }
+std::span<const ParamSpec> fireworks_parameters() { return fireworks_table().parameters(); }
 
 FireworksSettings fireworks_settings(const ParameterValues& v) {
-  FireworksSettings s;
-  s.iterations = static_cast<int>(v.integer("iterations"));
-  s.fireworks = static_cast<int>(v.integer("fireworks"));
-  s.mutation_sparks = static_cast<int>(v.integer("mutation_sparks"));
-  s.sparks = static_cast<int>(v.integer("sparks"));
-  s.radius = v.real("radius");
-  s.radius_end = v.real("radius_end");
-  s.a = v.real("a");
-  s.b = v.real("b");
-  s.inertia_start = v.real("inertia_start");
-  s.inertia_end = v.real("inertia_end");
-  s.weight_min = v.real("weight_min");
-  s.weight_max = v.real("weight_max");
-  s.max_weights = static_cast<int>(v.integer("max_weights"));
-  s.walk_limit = v.real("walk_limit");
+  const FireworksSettings s = fireworks_table().read(v);
   if (s.a > s.b)
     throw Error("fireworks: a = " + to_string(ParamValue(s.a)) + " is above b = " + to_string(ParamValue(s.b)) +
                 " (the spark count bounds are [round(a m), round(b m)])");

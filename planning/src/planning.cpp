@@ -1,0 +1,120 @@
+#include "aco/planning.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "aco/astar.hpp"
+#include "aco/colony.hpp"
+#include "aco/error.hpp"
+#include "ifwa/fireworks.hpp"
+#include "pso/pso.hpp"
+
+namespace aco {
+namespace {
+
+std::span<const ParamSpec> no_parameters() { return {}; }
+
+void run_aco(const PlanContext& c, PlanOutcome& o) {
+  ColonyResult colony = run_colony(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony);
+  o.properties["ant_steps"] = static_cast<std::int64_t>(colony.ant_steps);
+  o.properties["stopped_by"] = colony.stopped_by;
+  o.iteration_best = std::move(colony.iteration_best);
+  o.pheromone = std::move(colony.pheromone);
+  o.search = std::move(static_cast<SearchResult&>(colony));
+  if (!o.search.solved)
+    o.reason = "no ant reached the goal in " + std::to_string(o.search.iterations) +
+               " iterations (try more ants or iterations, or another deadlock policy)";
+}
+
+void run_astar(const PlanContext& c, PlanOutcome& o) {
+  o.search.path = astar(c.graph, c.start, c.goal)->nodes;
+  o.search.solved = true;
+}
+
+// IFWA and PSO: their own settings, the run's seed.
+template <class Settings, class Result>
+void run_baseline(const PlanContext& c, PlanOutcome& o, Settings settings, Result (*search)(const Graph&, NodeId, NodeId, const Settings&)) {
+  settings.seed = c.run.colony.seed;
+  PlannerResult result = search(c.graph, c.start, c.goal, settings);
+  o.properties["evaluations"] = static_cast<std::int64_t>(result.evaluations);
+  o.search = std::move(static_cast<SearchResult&>(result));
+  if (!o.search.solved)
+    o.reason = "no feasible path found in " + std::to_string(o.search.iterations) + " iterations (try more iterations or particles)";
+}
+
+void run_ifwa(const PlanContext& c, PlanOutcome& o) {
+  run_baseline(c, o, fireworks_settings(c.run.planner_parameters), run_fireworks);
+}
+void run_pso(const PlanContext& c, PlanOutcome& o) { run_baseline(c, o, pso_settings(c.run.planner_parameters), aco::run_pso); }
+
+const Planner kPlanners[] = {
+    {"aco", "the colony", no_parameters, nullptr, run_aco},
+    {"astar", "exact shortest path on the same graph (reference)", no_parameters, nullptr, run_astar},
+    {"ifwa", "improved fireworks (paper 004)", fireworks_parameters,
+     [](const ParameterValues& v) { fireworks_settings(v); }, run_ifwa},
+    {"pso", "particle swarm over waypoints (paper 000's baseline)", pso_parameters, nullptr, run_pso},
+};
+
+}  // namespace
+
+std::int64_t PlanOutcome::count(const std::string& property) const {
+  const auto it = properties.find(property);
+  return it == properties.end() ? 0 : std::get<std::int64_t>(it->second);
+}
+
+std::string PlanOutcome::text(const std::string& property) const {
+  const auto it = properties.find(property);
+  return it == properties.end() ? "" : std::get<std::string>(it->second);
+}
+
+std::span<const Planner> planners() { return kPlanners; }
+
+const Planner& find_planner(const std::string& name) {
+  for (const Planner& p : kPlanners)
+    if (name == p.name) return p;
+  std::string known;
+  for (const Planner& p : kPlanners) known += (known.empty() ? "" : ", ") + std::string(p.name);
+  throw Error("unknown planner '" + name + "' (planners: " + known + ")");
+}
+
+std::vector<std::string> planner_names() {
+  std::vector<std::string> names;
+  for (const Planner& p : kPlanners) names.push_back(p.name);
+  return names;
+}
+
+std::span<const ParamSpec> planner_parameters(const std::string& planner) { return find_planner(planner).parameters(); }
+
+PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const RunSpec& run) {
+  const Planner& planner = find_planner(run.planner);
+  const LoadedPipeline pipeline = instantiate(registry, run.pipeline);
+  PlanOutcome o;
+  o.seed = run.colony.seed;
+  o.start = start;
+  o.goal = goal;
+  const auto began = std::chrono::steady_clock::now();
+  if (!reachable(graph, start, goal)) {
+    o.reason = "goal " + to_string(graph.cell(goal)) + " is not reachable from start " + to_string(graph.cell(start)) +
+               " (" + describe(graph.options) + ")";
+  } else {
+    planner.run({registry, graph, start, goal, run, pipeline}, o);
+  }
+  if (o.search.solved) {
+    Context context;
+    context.graph = &graph;
+    context.start = start;
+    context.goal = goal;
+    context.seed = run.colony.seed;
+    o.search.length = path_length(graph, o.search.path);
+    o.path = pipeline.smoother->smooth(context, o.search.path);
+    if (o.path.empty() || o.path.front() != graph.positions[start] || o.path.back() != graph.positions[goal])
+      throw Error("the smoother plugin '" + run.pipeline.at("smoother").plugin +
+                  "' returned a path that does not run from start to goal");
+    o.length = polyline_length(o.path);
+    o.turns = count_turns(o.path);
+  }
+  o.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
+  return o;
+}
+
+}  // namespace aco

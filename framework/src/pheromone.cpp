@@ -20,6 +20,14 @@ void for_each_chunk(std::span<double> tau, Body body) {
 
 }  // namespace
 
+std::vector<const Ant*> arrived_by_length(std::span<const Ant> ants) {
+  std::vector<const Ant*> ranked;
+  for (const Ant& ant : ants)
+    if (ant.arrived) ranked.push_back(&ant);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const Ant* x, const Ant* y) { return x->length < y->length; });
+  return ranked;
+}
+
 void evaporate(std::span<double> tau, double rho) {
   const double keep = 1.0 - rho;
   for_each_chunk(tau, [keep](double& t) { t *= keep; });

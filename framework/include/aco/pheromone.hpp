@@ -19,6 +19,9 @@ BOOST_SYMBOL_VISIBLE void clamp(std::span<double> tau, double low, double high);
 // Multiplies the field so its mean over edges is `mean`, keeping its shape.
 BOOST_SYMBOL_VISIBLE void rescale_mean(std::span<double> tau, double mean);
 
+// The arrived ants, shortest first; ties keep ant order, so the ranking is deterministic.
+BOOST_SYMBOL_VISIBLE std::vector<const Ant*> arrived_by_length(std::span<const Ant> ants);
+
 // tau += amount on every edge of the ant's walk.
 inline void deposit(std::span<double> tau, const Ant& ant, double amount) {
   for (EdgeId e : ant.edges) tau[e] += amount;

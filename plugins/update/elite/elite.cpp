@@ -45,16 +45,11 @@ class EliteUpdate final : public aco::PheromoneUpdate {
   void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
     local_.apply(it.ants, tau);
     aco::evaporate(tau, rho_);
-    std::vector<const aco::Ant*> arrived;
     for (const aco::Ant& ant : it.ants)
-      if (ant.arrived) {
-        aco::deposit(tau, ant, q_ / ant.length);
-        arrived.push_back(&ant);
-      }
-    // The shortest ants are the elite; ties go to the lower ant index (stable sort), so the
-    // choice does not depend on anything but the ants.
+      if (ant.arrived) aco::deposit(tau, ant, q_ / ant.length);
+    // The shortest ants are the elite; ties go to the lower ant index.
+    const std::vector<const aco::Ant*> arrived = aco::arrived_by_length(it.ants);
     const std::size_t elites = elite_count(arrived.size());
-    std::stable_sort(arrived.begin(), arrived.end(), [](const aco::Ant* x, const aco::Ant* y) { return x->length < y->length; });
     const double progress = double(c.iteration + 1) / c.max_iterations;
     const double elite_q = elite_q_ * progress * progress * progress;
     for (std::size_t k = 0; k < elites; ++k) aco::deposit(tau, *arrived[k], elite_q / arrived[k]->length);

@@ -37,11 +37,7 @@ class WolfPackUpdate final : public aco::PheromoneUpdate {
 
   void update(const aco::Context&, const aco::Iteration& it, std::span<double> tau) override {
     aco::evaporate(tau, rho_);
-    std::vector<const aco::Ant*> ranked;
-    for (const aco::Ant& ant : it.ants)
-      if (ant.arrived) ranked.push_back(&ant);
-    // Shortest first; ties keep ant order, so the ranking is deterministic.
-    std::stable_sort(ranked.begin(), ranked.end(), [](const aco::Ant* x, const aco::Ant* y) { return x->length < y->length; });
+    const std::vector<const aco::Ant*> ranked = aco::arrived_by_length(it.ants);
     const std::size_t n = ranked.size();
     if (n > 0) {
       const double best = ranked.front()->length, worst = ranked.back()->length, spread = worst - best;

@@ -1,9 +1,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "aco/plugin.hpp"
+#include "acoplan/acoplan.hpp"
 #include "support.hpp"
 
 using Catch::Contains;
@@ -258,4 +260,33 @@ TEST_CASE("the shipped presets load and plan with the pipeline they document", "
   CHECK(terrain["solved"].get<bool>());
   CHECK(terrain["config"]["search"] == "bidirectional");
   CHECK(terrain["length"].get<double>() >= terrain["optimal_length"].get<double>() - 1e-9);
+}
+
+TEST_CASE("acoplan in-process: the command line resolves into one RunSpec, run() writes the result", "[acoplan]") {
+  const std::vector<std::string> args = {"acoplan", "--map", map1, "--start", "0,0", "--goal", "19,19", "--update", "max_min",
+                                         "--update.rho", "0.05", "--ants", "12", "--iterations", "8", "--seed", "5",
+                                         "--threads", "1", "--json"};
+  std::vector<const char*> argv;
+  for (const auto& a : args) argv.push_back(a.c_str());
+  acoplan::Request request = acoplan::parse_command_line(static_cast<int>(argv.size()), argv.data());
+  CHECK(request.action == acoplan::Request::Action::plan);
+  CHECK(request.run.pipeline.at("update").plugin == "max_min");
+  CHECK(request.run.pipeline.at("update").parameters.real("rho") == 0.05);
+  CHECK(request.run.colony.ants == 12);
+  CHECK(request.run.problem.goal == aco::Cell{19, 19});
+  CHECK(request.host.integer("threads") == 1);
+  std::ostringstream out;
+  const int status = acoplan::run(request, out);
+  CHECK((status == 0 || status == acoplan::kExitUnsolved));
+  const json j = json::parse(out.str());
+  CHECK(j["config"]["update.rho"] == 0.05);
+  CHECK(j["seed"] == 5);
+  CHECK(j["convergence"].size() == 8);
+  // The same run through the binary gives the same result.
+  std::vector<std::string> binary_args(args.begin() + 1, args.end());
+  json binary = run_json({binary_args.begin(), binary_args.end() - 1});
+  json in_process = j;
+  binary.erase("time_ms");
+  in_process.erase("time_ms");
+  CHECK(binary == in_process);
 }

@@ -1,122 +1,14 @@
 // acoplan: one planning run, composed from runtime plugins on the command line.
-#include <tbb/global_control.h>
-
-#include <algorithm>
-#include <charconv>
-#include <chrono>
-#include <fstream>
 #include <iostream>
-#include <memory>
-#include <numeric>
 
-#include "aco/astar.hpp"
-#include "aco/error.hpp"
-#include "aco/map_io.hpp"
-#include "aco/svg.hpp"
-#include "command_line.hpp"
-#include "irace.hpp"
-#include "report.hpp"
-
-namespace {
-
-constexpr int kExitError = 1;
-constexpr int kExitUnsolved = 3;
-
-// One planning run: the colony (or a reference planner), then the smoother.
-acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, const aco::LoadedProblem& problem,
-                           const aco::RunSpec& run) {
-  acoplan::Outcome o;
-  static_cast<aco::PlanOutcome&>(o) = aco::plan(*r.registry, graph, graph.node(problem.start), graph.node(problem.goal), run);
-  return o;
-}
-
-void write_picture(const acoplan::Request& r, const aco::Graph& graph, const acoplan::Outcome& o) {
-  aco::RunPicture picture;
-  picture.title = graph.map->name() + ": " + (o.solved() ? "length " + std::to_string(o.length) : "not solved") +
-                  ", seed " + std::to_string(o.seed);
-  picture.start = o.start;
-  picture.goal = o.goal;
-  picture.grid_path = o.search.path;
-  picture.path = o.path;
-  if (r.host.boolean("svg-pheromone")) picture.pheromone = o.pheromone;
-  picture.best_so_far = o.search.best_so_far;
-  picture.iteration_best = o.iteration_best;
-  picture.optimal_length = o.optimal_length.value_or(0.0);
-  aco::write_svg(*r.svg, graph, picture);
-}
-
-// --irace: the mean length over the runs, an unsolved run counting as kIraceUnsolvedCost, in
-// the shortest text that reads back as the same double (so it equals --json's length).
-std::string irace_cost(const std::vector<acoplan::Outcome>& runs) {
-  const double total = std::accumulate(runs.begin(), runs.end(), 0.0, [](double sum, const acoplan::Outcome& o) {
-    return sum + (o.solved() ? o.length : acoplan::kIraceUnsolvedCost);
-  });
-  char text[64];
-  const auto end = std::to_chars(text, text + sizeof text, total / static_cast<double>(runs.size())).ptr;
-  return std::string(text, end);
-}
-
-void dump_irace_params(acoplan::Request& r) {
-  const std::string table = acoplan::irace_parameters(*r.registry, r.irace_slots);
-  if (r.irace_params_file == "-") {
-    std::cout << table;
-    return;
-  }
-  std::ofstream out(r.irace_params_file);
-  if (!(out << table) || !out.flush()) throw aco::Error("--dump-irace-params: cannot write '" + r.irace_params_file + "'");
-}
-
-int plan(const acoplan::Request& r) {
-  const aco::LoadedProblem problem = aco::load_problem(r.run.problem);
-  const aco::Graph graph = aco::build_graph(*problem.map, r.run.graph);
-  std::unique_ptr<tbb::global_control> threads;
-  if (const auto n = r.host.integer("threads"); n > 0)
-    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, n);
-
-  // --repeat N: the same problem with seeds seed, seed+1, ..., seed+N-1.
-  aco::RunSpec run = r.run;
-  std::vector<acoplan::Outcome> runs;
-  for (std::int64_t i = 0; i < r.host.integer("repeat"); ++i, ++run.colony.seed) runs.push_back(plan_once(r, graph, problem, run));
-  const auto optimal = aco::astar(graph, graph.node(problem.start), graph.node(problem.goal));
-  for (auto& o : runs)
-    if (optimal) o.optimal_length = optimal->length;
-
-  if (r.irace) {
-    // irace reads the last line of stdout; an unsolved run has its cost, so it is no failure.
-    std::cout << irace_cost(runs) << "\n";
-  } else if (runs.size() == 1) {
-    if (r.json) std::cout << acoplan::to_json(r, graph, runs[0]).dump() << "\n";
-    else std::cout << acoplan::summary(r, graph, runs[0]);
-  } else {
-    if (r.json) std::cout << acoplan::to_json(r, graph, runs).dump() << "\n";
-    else std::cout << acoplan::summary(r, graph, runs);
-  }
-  // The picture shows the best run: the shortest solved one, else the first.
-  const auto best = std::min_element(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
-    return a.solved() != b.solved() ? a.solved() : a.length < b.length;
-  });
-  if (r.svg) write_picture(r, graph, *best);
-  const bool all_solved = std::all_of(runs.begin(), runs.end(), [](const auto& o) { return o.solved(); });
-  return all_solved || r.irace ? 0 : kExitUnsolved;
-}
-
-}  // namespace
+#include "acoplan.hpp"
 
 int main(int argc, char** argv) {
   try {
     acoplan::Request request = acoplan::parse_command_line(argc, argv);
-    switch (request.action) {
-      case acoplan::Request::Action::help: std::cout << request.help; return 0;
-      case acoplan::Request::Action::list_plugins: std::cout << acoplan::list_plugins(*request.registry); return 0;
-      case acoplan::Request::Action::describe:
-        std::cout << acoplan::describe_plugin(*request.registry, request.describe);
-        return 0;
-      case acoplan::Request::Action::print_config: std::cout << request.config; return 0;
-      case acoplan::Request::Action::dump_irace_params: dump_irace_params(request); return 0;
-      case acoplan::Request::Action::plan: return plan(request);
-    }
+    return acoplan::run(request, std::cout);
   } catch (const std::exception& e) {
     std::cerr << "acoplan: error: " << e.what() << "\n";
   }
-  return kExitError;
+  return acoplan::kExitError;
 }

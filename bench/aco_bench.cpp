@@ -263,6 +263,7 @@ bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shar
 aco::Keys robust_pipeline(aco::ColonySettings& settings) {
   const aco::Keys spec{{"heuristic", "progress"}, {"heuristic.floor", "0.5"}, {"update", "acs"}, {"deadlock", "backtrack"}};
   settings.beta = 3;
+  settings.q0 = 0.7;
   settings.fill_dead_ends = true;
   settings.local_search = "straighten";
   settings.walk_limit = 4;

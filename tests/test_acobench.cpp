@@ -53,7 +53,8 @@ baseline:
   update: {plugin: ant_system, rho: 0.3}
 configurations:
   - name: ACS
-    update: {plugin: acs, q0: 0.7}
+    update: {plugin: acs, xi: 0.2}
+    q0: 0.7
 factorial:
   beta: [3, 7]
 )";
@@ -119,7 +120,8 @@ TEST_CASE("an experiment file expands into named, factorial and baseline configu
   CHECK(e.configurations[2].keys.at("update.rho") == "0.3");
   const auto s = acobench::resolve(e.configurations[1], test::plugins());
   CHECK(s.graph.corner_cutting);
-  CHECK(s.pipeline.at("update").parameters.real("q0") == 0.7);
+  CHECK(s.pipeline.at("update").parameters.real("xi") == 0.2);
+  CHECK(s.colony.q0 == 0.7);
   CHECK(s.colony.ants == 10);
 }
 
@@ -137,8 +139,8 @@ TEST_CASE("experiment file mistakes name the file, the line and the key", "[acob
   bad_plugin.replace(bad_plugin.find("plugin: acs"), 11, "plugin: acz");
   CHECK_THROWS_WITH(load(bad_plugin), Contains("experiment.yaml:17") && Contains("unknown update plugin 'acz'"));
   std::string bad_param = kSmall;
-  bad_param.replace(bad_param.find("q0: 0.7"), 7, "qo: 0.7");
-  CHECK_THROWS_WITH(load(bad_param), Contains("experiment.yaml:17") && Contains("q0"));
+  bad_param.replace(bad_param.find("xi: 0.2"), 7, "x1: 0.2");
+  CHECK_THROWS_WITH(load(bad_param), Contains("experiment.yaml:17") && Contains("update.xi"));
   std::string out_of_range = kSmall;
   out_of_range.replace(out_of_range.find("rho: 0.3"), 8, "rho: 3");
   CHECK_THROWS_WITH(load(out_of_range), Contains("experiment.yaml:14") && Contains("rho"));
@@ -164,15 +166,15 @@ TEST_CASE("a trial's seed depends on the master seed, the problem and the repeti
 
 TEST_CASE("the ablation path flips one component at a time; a slot's plugin carries its parameters", "[acobench]") {
   acobench::Configuration from{"from", {{"update", "ant_system"}, {"update.rho", "0.3"}, {"beta", "7"}}, {}};
-  acobench::Configuration to{"to", {{"update", "acs"}, {"update.q0", "0.7"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}};
+  acobench::Configuration to{"to", {{"update", "acs"}, {"update.xi", "0.2"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}};
   const auto components = acobench::ablation_components(from, to);
-  REQUIRE(components.size() == 3);  // beta, init, update (+ update.q0, update.rho)
+  REQUIRE(components.size() == 3);  // beta, init, update (+ update.xi, update.rho)
   const auto update = std::find_if(components.begin(), components.end(), [](const auto& c) { return c.front() == "update"; });
   REQUIRE(update != components.end());
   CHECK(update->size() == 3);
   const auto flipped = acobench::flip(from, to, *update);
   CHECK(flipped.keys.at("update") == "acs");
-  CHECK(flipped.keys.at("update.q0") == "0.7");
+  CHECK(flipped.keys.at("update.xi") == "0.2");
   CHECK(flipped.keys.count("update.rho") == 0);
   CHECK(flipped.keys.at("beta") == "7");
 }
@@ -182,10 +184,10 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   const auto db = file.parent_path() / "small.db";
   const auto first = run_acobench({"run", file.string(), "--db", db.string(), "--threads", "1"});
   REQUIRE(first.exit_code == 0);
-  CHECK_THAT(first.out, Contains("20 trials, 0 already in"));  // 4 configs + 1 ablation step, 4 repetitions
+  CHECK_THAT(first.out, Contains("28 trials, 0 already in"));  // 4 configs + 2 + 1 ablation candidates (update, q0), 4 repetitions
   const auto again = run_acobench({"run", file.string(), "--db", db.string()});
   REQUIRE(again.exit_code == 0);
-  CHECK_THAT(again.out, Contains("20 trials, 20 already in"));
+  CHECK_THAT(again.out, Contains("28 trials, 28 already in"));
   CHECK_THAT(again.out, Contains("0 run"));
 
   // The thread count does not change any result.
@@ -216,7 +218,7 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   CHECK_THAT(md, Contains("| ACS | 4 | 100 % |"));
   CHECK_THAT(md, Contains("## Ranking across problems"));
   const std::string csv = file_bytes(out / "runs.csv");
-  CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 20);
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 28);
 }
 
 TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly once", "[acobench][slow]") {

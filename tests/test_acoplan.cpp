@@ -108,12 +108,12 @@ TEST_CASE("acoplan composes plugins and parameters from the command line and a c
   CHECK(mmas["config"]["update.rho"] == 0.2);
   CHECK(mmas["iterations"] == 30);
 
-  const auto printed = test::acoplan({"--update", "acs", "--update.q0", "0.5", "--ants", "20", "--print-config"});
+  const auto printed = test::acoplan({"--update", "acs", "--q0", "0.5", "--update.xi", "0.3", "--ants", "20", "--print-config"});
   REQUIRE(printed.exit_code == 0);
-  CHECK_THAT(printed.out, Contains("update = acs") && Contains("[update]") && Contains("q0 = 0.5") && Contains("ants = 20"));
+  CHECK_THAT(printed.out, Contains("update = acs") && Contains("[update]") && Contains("xi = 0.3") && Contains("q0 = 0.5") && Contains("ants = 20"));
   const auto config = test::temp_file("run.ini", printed.out);
   json from_file = run_json({"--config", config.string()});
-  json direct = run_json({"--update", "acs", "--update.q0", "0.5", "--ants", "20"});
+  json direct = run_json({"--update", "acs", "--q0", "0.5", "--update.xi", "0.3", "--ants", "20"});
   from_file.erase("time_ms");
   direct.erase("time_ms");
   CHECK(from_file == direct);
@@ -132,7 +132,7 @@ TEST_CASE("acoplan lists and describes plugins, and prints help with plugin opti
   CHECK_THAT(described.out, Contains("update/max_min") && Contains("p_best") && Contains("(0:1)"));
   const auto help = test::acoplan({"--update", "acs", "--help"});
   CHECK(help.exit_code == 0);
-  CHECK_THAT(help.out, Contains("--update.q0") && Contains("--ants") && Contains("--init.tau0"));
+  CHECK_THAT(help.out, Contains("--update.xi") && Contains("--q0") && Contains("--ants") && Contains("--init.tau0"));
   expect_error({"--describe", "max_mn"}, "no plugin named 'max_mn'; did you mean 'update/max_min'?");
 }
 

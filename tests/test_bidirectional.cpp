@@ -128,7 +128,9 @@ TEST_CASE("the bidirectional search finds the classic map's paths and composes w
     };
     Baseline forward, backward;
     const aco::Pipeline fp = make_pipeline(forward), bp = make_pipeline(backward);
-    const auto result = aco::run_colony(graph, 0, graph.node({19, 19}), fp, bidirectional(50, 60), &bp);
+    aco::ColonySettings s = bidirectional(50, 60);
+    if (std::string(update) == "acs") s.q0 = 0.7;
+    const auto result = aco::run_colony(graph, 0, graph.node({19, 19}), fp, s, &bp);
     REQUIRE(result.solved);
     CHECK(result.length < optimum * 1.10);
     CHECK(result.path.front() == 0);

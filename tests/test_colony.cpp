@@ -249,3 +249,29 @@ TEST_CASE("the same-path rule stops once that fraction of an iteration's ants sh
   CHECK(largest(recorder.ants.back()) >= 25);
   for (std::size_t it = 0; it + 1 < recorder.ants.size(); ++it) CHECK(largest(recorder.ants[it]) < 25);
 }
+
+TEST_CASE("q0: with probability q0 an ant takes its best candidate (q0 = 1: every ant walks the greedy path)",
+          "[colony][q0]") {
+  const auto map = test::classic_map(1);
+  const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
+  auto paths_of_first_iteration = [&](double q0) {
+    Baseline b;
+    RecordingUpdate recording(*b.update);
+    aco::Pipeline p = b.pipeline();
+    p.update = &recording;
+    aco::ColonySettings s;
+    s.ants = 20;
+    s.iterations = 1;
+    s.q0 = q0;
+    aco::run_colony(graph, 0, graph.node({19, 19}), p, s);
+    std::set<std::vector<aco::NodeId>> paths;
+    for (const aco::Ant& ant : recording.ants.at(0)) paths.insert(ant.nodes);
+    return paths;
+  };
+  CHECK(paths_of_first_iteration(1.0).size() == 1);  // uniform pheromone: the heuristic's argmax every step
+  CHECK(paths_of_first_iteration(0.0).size() > 10);
+  aco::ColonySettings bad;
+  bad.q0 = 1.5;
+  Baseline b;
+  CHECK_THROWS_WITH(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), bad), Contains("q0 must be in [0, 1]"));
+}

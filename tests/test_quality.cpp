@@ -16,6 +16,7 @@ struct Problem {
   Problem(aco::OccupancyGrid m, aco::GraphOptions options) : map(std::move(m)), graph(aco::build_graph(map, options)) {}
 };
 
+// acs runs with its q0 of 0.7 (a colony setting).
 aco::ColonyResult plan(const Problem& p, aco::Cell start, aco::Cell goal, const std::string& update,
                        std::map<std::string, std::string> params, std::uint64_t seed) {
   aco::Keys keys{{"update", update}};
@@ -23,6 +24,7 @@ aco::ColonyResult plan(const Problem& p, aco::Cell start, aco::Cell goal, const 
   const auto pipeline = aco::instantiate(test::plugins(), test::pipeline(keys));
   aco::ColonySettings s;  // 50 ants, 100 iterations, alpha 1, beta 7
   s.seed = seed;
+  if (update == "acs") s.q0 = 0.7;
   return aco::run_colony(p.graph, p.graph.node(start), p.graph.node(goal), pipeline.colony(), s);
 }
 

@@ -28,7 +28,7 @@ TEST_CASE("resolve_run types every key once; to_keys and JSON give the same run 
   const aco::Keys keys{{"map", "m.map"},          {"start", "1,2"},         {"goal", "30,4"},
                        {"max-slope", "35"},        {"neighbourhood", "16"},  {"corner-cutting", "true"},
                        {"ants", "20"},             {"search", "bidirectional"}, {"update", "acs"},
-                       {"update.q0", "0.25"},      {"heuristic", "progress"}, {"beta", "0.1234567890123456"}};
+                       {"q0", "0.25"},      {"heuristic", "progress"}, {"beta", "0.1234567890123456"}};
   const aco::RunSpec run = resolve(keys);
   CHECK(run.problem.map == "m.map");
   CHECK(run.problem.start == aco::Cell{1, 2});
@@ -41,17 +41,17 @@ TEST_CASE("resolve_run types every key once; to_keys and JSON give the same run 
   CHECK(run.colony.beta == 0.1234567890123456);
   CHECK(run.colony.iterations == aco::ColonySettings{}.iterations);  // defaults from the struct
   CHECK(run.pipeline.at("update").plugin == "acs");
-  CHECK(run.pipeline.at("update").parameters.real("q0") == 0.25);
+  CHECK(run.colony.q0 == 0.25);
   CHECK(run.pipeline.at("update").parameters.real("rho") == 0.3);  // the plugin's default
   CHECK(run.pipeline.at("init").plugin == "uniform");
 
   const aco::Keys written = aco::to_keys(run);
-  CHECK(written.at("update.q0") == "0.25");
+  CHECK(written.at("q0") == "0.25");
   CHECK(written.at("search") == "bidirectional");
   CHECK(written.at("start") == "1,2");
   CHECK(aco::to_keys(resolve(written)) == written);
   const std::string json = aco::to_json(run);
-  CHECK_THAT(json, Contains("\"ants\":20") && Contains("\"update.q0\":0.25") && Contains("\"corner-cutting\":true"));
+  CHECK_THAT(json, Contains("\"ants\":20") && Contains("\"q0\":0.25") && Contains("\"corner-cutting\":true"));
   CHECK(aco::to_keys(aco::run_spec_from_json(json, test::plugins())) == written);
 }
 
@@ -59,8 +59,8 @@ TEST_CASE("resolve_run names the key of every mistake", "[run_spec][errors]") {
   std::string key;
   CHECK_THAT(key_error({{"antz", "3"}}, &key), Contains("unknown key '--antz'") && Contains("did you mean '--ants'?"));
   CHECK(key == "--antz");
-  CHECK_THAT(key_error({{"update", "acs"}, {"update.qo", "0.5"}}, &key), Contains("did you mean '--update.q0'?"));
-  CHECK(key == "--update.qo");
+  CHECK_THAT(key_error({{"update", "acs"}, {"update.x1", "0.5"}}, &key), Contains("did you mean '--update.xi'?"));
+  CHECK(key == "--update.x1");
   CHECK_THAT(key_error({{"beta", "99"}}, &key), Contains("--beta: 99 is outside the range [0, 50]"));
   CHECK(key == "--beta");
   CHECK_THAT(key_error({{"update", "nope"}}, &key), Contains("--update: ") && Contains("nope"));

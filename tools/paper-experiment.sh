@@ -35,7 +35,7 @@ case "$paper" in
       run "$scen: PSO (50 particles, 100 iterations)" --scen "$scen" --planner pso
       run "$scen: classic ACO (ant_system rho 0.2)" "${common[@]}" --update.rho 0.2
       run "$scen: EPF-ACO (potential-field init + heuristic, elite, bidirectional, 16-nbhd)" "${common[@]}" \
-        --neighbourhood 16 --search bidirectional --init potential_field --heuristic potential_field --update elite
+        --neighbourhood 16 --search bidirectional --init potential_field --heuristic potential_field --update elite --q0 0.8
     done
     ;;
   001)

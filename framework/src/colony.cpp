@@ -35,6 +35,9 @@ const SettingsTable<ColonySettings>& colony_table() {
       field("alpha", &S::alpha, "0:20", "pheromone exponent in the transition rule"),
       field("beta", &S::beta, "0:50", "heuristic exponent in the transition rule"),
       field("seed", &S::seed, "0:9.2e18", "random seed: a run is a pure function of its inputs and this seed"),
+      field("q0", &S::q0, "0:1",
+            "probability that an ant takes its best candidate instead of the roulette (Ant Colony System's q0; "
+            "0 = classic rule)"),
       field("stagnation", &S::stagnation, "0:100000000",
             "stop after this many iterations without a shorter path (0 = run every iteration)"),
       field("same-path-stop", &S::same_path_stop, "",
@@ -135,9 +138,6 @@ class Colony {
   void begin() {
     p_.init->initialize(context_, tau_);
     p_.update->start(context_, tau_);
-    exploitation_ = p_.update->exploitation();
-    if (!(exploitation_ >= 0.0 && exploitation_ <= 1.0))
-      throw Error("the update plugin's exploitation probability q0 is not within [0, 1]");
     uses_walk_ = p_.heuristic->uses_walk();
     compute_heuristic();
     by_node_ = p_.heuristic->varies_by_iteration() && p_.heuristic->updates_by_node();
@@ -316,7 +316,7 @@ class Colony {
 
   // Pseudo-random proportional rule: with probability q0 the best candidate, else the roulette.
   int choose(Rng& rng, int n, const double* weights, double total) const {
-    if (exploitation_ > 0.0 && rng.uniform() < exploitation_)
+    if (s_.q0 > 0.0 && rng.uniform() < s_.q0)
       return static_cast<int>(std::max_element(weights, weights + n) - weights);
     if (!(total > 0.0)) return static_cast<int>(rng.below(n));  // every weight underflowed to 0
     return static_cast<int>(roulette(rng, {weights, static_cast<std::size_t>(n)}, total));
@@ -337,7 +337,6 @@ class Colony {
   std::unique_ptr<ScratchPool> scratch_;
   WalkShortener shortener_;
   bool local_search_ = false;
-  double exploitation_ = 0.0;
   bool uses_walk_ = false;
   std::uint64_t max_moves_ = std::numeric_limits<std::uint64_t>::max();
   Ant best_;
@@ -509,6 +508,7 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const Pipeline&
     throw Error("alpha and beta must be finite and >= 0");
   if (s.stagnation < 0) throw Error("stagnation must be >= 0");
   if (!(s.same_path_fraction > 0 && s.same_path_fraction <= 1)) throw Error("same-path-fraction must be in (0, 1]");
+  if (!(s.q0 >= 0 && s.q0 <= 1)) throw Error("q0 must be in [0, 1]");
 }
 
 }  // namespace

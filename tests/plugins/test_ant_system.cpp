@@ -7,7 +7,6 @@ TEST_CASE("ant_system evaporates everywhere and every arrived ant deposits Q/L",
   const auto map = test::grid({"...", "...", "..."});
   const aco::Graph graph = aco::build_graph(map, {});
   auto update = test::make<aco::PheromoneUpdate>("update", "ant_system", {{"rho", "0.5"}, {"q", "2"}});
-  CHECK(update->exploitation() == 0.0);
   std::vector<double> tau(graph.num_edges(), 1.0);
   // A: the diagonal (length 2 sqrt 2). B: along the top and down the right side (length 4).
   const aco::Ant a = test::ant(graph, {{0, 0}, {1, 1}, {2, 2}});

@@ -171,6 +171,7 @@ TEST_CASE("paper 000 plugins together solve classic map1, bit-identically for an
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   aco::ColonySettings settings;
   settings.seed = 3;
+  settings.q0 = 0.8;  // paper 000's exploitation
   std::vector<aco::ColonyResult> results;
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
   for (int threads : {1, 2, 4}) {

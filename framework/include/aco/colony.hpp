@@ -19,6 +19,9 @@ struct ColonySettings {
   double alpha = 1.0;
   double beta = 7.0;
   std::uint64_t seed = 1;
+  // Ant Colony System's pseudo-random proportional rule (a construction rule, hence here): with
+  // probability q0 an ant takes its best candidate instead of spinning the roulette. 0 = classic.
+  double q0 = 0.0;
   int stagnation = 0;  // stop after this many iterations without improvement; 0 = run them all
   // Paper 001's rule: stop once this fraction of an iteration's ants walked one and the same path.
   bool same_path_stop = false;

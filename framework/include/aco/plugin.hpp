@@ -22,7 +22,8 @@ namespace aco {
 // Map or Graph (plugins read them through Context), or the descriptor below.
 // 3: Map::blocked_reason() changed Map's vtable.
 // 4: Heuristic::updates_by_node() and update_node() (lazy heuristic updates on large maps).
-inline constexpr std::uint32_t kPluginAbiVersion = 4;
+// 5: PheromoneUpdate::exploitation() removed: q0 is the colony setting ColonySettings::q0.
+inline constexpr std::uint32_t kPluginAbiVersion = 5;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
 

@@ -96,9 +96,6 @@ class BOOST_SYMBOL_VISIBLE PheromoneUpdate : public Strategy {
   // Called once after the init plugin set the pheromone. An update rule that fixes the
   // pheromone scale (ACS's tau0) may rescale the field here, keeping the init plugin's shape.
   virtual void start(const Context& context, std::span<double> tau);
-  // Probability q0 that an ant takes the best candidate instead of spinning the roulette
-  // (Ant Colony System's pseudo-random proportional rule). 0 = classic rule.
-  virtual double exploitation() const { return 0.0; }
 };
 
 // Slot "deadlock": what happens to an ant that is not at the goal and has nowhere to go.

@@ -1,5 +1,5 @@
-// Ant Colony System (Dorigo and Gambardella 1997): pseudo-random proportional rule, local
-// update towards tau0, global update on the best-so-far path only.
+// Ant Colony System (Dorigo and Gambardella 1997): local update towards tau0, global update on
+// the best-so-far path only. Its pseudo-random proportional rule is the colony setting q0.
 #include "aco/pheromone.hpp"
 #include "aco/plugin.hpp"
 
@@ -8,7 +8,6 @@ namespace {
 constexpr aco::ParamSpec kParams[] = {
     {"rho", aco::ParamType::real, "0.3", "(0:1]", "global evaporation on the best-so-far path"},
     {"xi", aco::ParamType::real, "0.1", "0:1", "local evaporation: every edge an ant used moves towards tau0 by xi"},
-    {"q0", aco::ParamType::real, "0.7", "0:1", "probability of taking the best candidate instead of the roulette"},
     {"q", aco::ParamType::real, "1", "(0:1e12]", "deposit constant Q: the best-so-far path receives rho * Q / L"},
     {"tau0", aco::ParamType::real, "0", "0:1e12",
      "mean initial pheromone; 0 = Q / d(start, goal)^2, the grid analogue of ACS's 1 / (n * L_nn)"},
@@ -17,9 +16,7 @@ constexpr aco::ParamSpec kParams[] = {
 class AcsUpdate final : public aco::PheromoneUpdate {
  public:
   explicit AcsUpdate(const aco::ParameterValues& p)
-      : rho_(p.real("rho")), q0_(p.real("q0")), q_(p.real("q")), tau0_(p.real("tau0")), local_(p.real("xi")) {}
-
-  double exploitation() const override { return q0_; }
+      : rho_(p.real("rho")), q_(p.real("q")), tau0_(p.real("tau0")), local_(p.real("xi")) {}
 
   void start(const aco::Context& c, std::span<double> tau) override {
     const double straight = c.graph->distance(c.start, c.goal);
@@ -35,7 +32,6 @@ class AcsUpdate final : public aco::PheromoneUpdate {
 
  private:
   double rho_;
-  double q0_;
   double q_;
   double tau0_;
   aco::LocalUpdate local_;
@@ -44,5 +40,5 @@ class AcsUpdate final : public aco::PheromoneUpdate {
 }  // namespace
 
 ACO_PLUGIN(update, acs, AcsUpdate, "1.0",
-           "Ant Colony System: q0 exploitation, local update towards tau0, global update on the best-so-far path",
+           "Ant Colony System: local update towards tau0, global update on the best-so-far path (use with --q0 0.7)",
            kParams)

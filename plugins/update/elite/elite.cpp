@@ -1,6 +1,7 @@
-// Elite update (paper 000, eq. 10-11) in the paper's Ant Colony System set-up: q0 exploitation,
-// local update of walked edges, then tau <- (1 - rho) * tau + d_tau + d_tau_elite, where every
-// arrived ant deposits Q / L_k and the best elite_fraction of them also elite_q * (it/it_max)^3 / L_k.
+// Elite update (paper 000, eq. 10-11) in the paper's Ant Colony System set-up (with the colony
+// setting q0 = 0.8, the paper's exploitation): local update of walked edges, then
+// tau <- (1 - rho) * tau + d_tau + d_tau_elite, where every arrived ant deposits Q / L_k and the
+// best elite_fraction of them also elite_q * (it/it_max)^3 / L_k.
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -18,7 +19,6 @@ constexpr aco::ParamSpec kParams[] = {
      "share of the arrived ants (the shortest) that are elite: max(1, floor(fraction * arrived)); 0 = no elite"},
     {"elite_q", aco::ParamType::real, "1", "0:1e12",
      "elite deposit constant: an elite ant also deposits elite_q * (it / it_max)^3 / L"},
-    {"q0", aco::ParamType::real, "0.8", "0:1", "probability of taking the best candidate instead of the roulette (paper 000: 0.8)"},
     {"local_rho", aco::ParamType::real, "0.1", "0:1",
      "local evaporation: every edge an ant walked moves towards its starting value by this much (paper 000: 0.1)"},
     {"tau0", aco::ParamType::real, "0", "0:1e12",
@@ -32,11 +32,8 @@ class EliteUpdate final : public aco::PheromoneUpdate {
         q_(p.real("q")),
         elite_fraction_(p.real("elite_fraction")),
         elite_q_(p.real("elite_q")),
-        q0_(p.real("q0")),
         tau0_(p.real("tau0")),
         local_(p.real("local_rho")) {}
-
-  double exploitation() const override { return q0_; }
 
   void start(const aco::Context& c, std::span<double> tau) override {
     local_.start(tau, tau0_ > 0.0 ? tau0_ : c.ants * q_ / c.graph->distance(c.start, c.goal));
@@ -67,7 +64,6 @@ class EliteUpdate final : public aco::PheromoneUpdate {
   double q_;
   double elite_fraction_;
   double elite_q_;
-  double q0_;
   double tau0_;
   aco::LocalUpdate local_;
 };
@@ -75,5 +71,5 @@ class EliteUpdate final : public aco::PheromoneUpdate {
 }  // namespace
 
 ACO_PLUGIN(update, elite, EliteUpdate, "1.0",
-           "paper 000: ACS-style q0 and local update; every arrived ant deposits Q/L, the best 5 % also (it/it_max)^3 / L",
+           "paper 000 (with --q0 0.8): ACS-style local update; every arrived ant deposits Q/L, the best 5 % also (it/it_max)^3 / L",
            kParams)

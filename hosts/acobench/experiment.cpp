@@ -86,6 +86,7 @@ void read_keys(const std::filesystem::path& file, const YAML::Node& node, Config
 Configuration overlay(const Configuration& base, const Configuration& changes, const std::string& name) {
   Configuration c = base;
   c.name = name;
+  c.run.reset();
   // A new plugin for a slot drops the old plugin's parameters.
   for (const auto& [key, value] : changes.keys)
     if (std::find(aco::kSlots.begin(), aco::kSlots.end(), key) != aco::kSlots.end() && c.keys.count(key) &&
@@ -238,10 +239,11 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
     e.ablation_target = *it;
   }
   std::set<std::string> names;
-  for (const auto& c : e.configurations) {
+  for (auto& c : e.configurations) {
     if (!names.insert(c.name).second) throw aco::Error(file.string() + ": two configurations are named '" + c.name + "'");
-    resolve(c, registry);
+    c.run = resolve(c, registry);
   }
+  e.baseline.run = e.configurations.front().run;
   return e;
 }
 
@@ -292,6 +294,7 @@ std::vector<std::vector<std::string>> ablation_components(const Configuration& f
 
 Configuration flip(const Configuration& config, const Configuration& target, const std::vector<std::string>& component) {
   Configuration c = config;
+  c.run.reset();
   for (const auto& k : component) {
     if (target.keys.count(k)) {
       c.keys[k] = target.keys.at(k);

@@ -35,6 +35,9 @@ struct Configuration {
   std::map<std::string, std::string> keys;
   // Where each key was written ("file:line"), for error messages; not part of the identity.
   std::map<std::string, std::string> origins;
+  // The keys resolved, once, when the file is loaded (empty for configurations made later, such
+  // as the ablation path's flips, which resolve when they are added to the run).
+  std::optional<aco::RunSpec> run;
 };
 
 struct Experiment {

@@ -84,7 +84,7 @@ class Runner {
  public:
   Runner(const Experiment& e, aco::PluginRegistry& registry, const RunOptions& options)
       : e_(e), registry_(registry), options_(options) {
-    const aco::RunSpec base = resolve(e.baseline, registry);
+    const aco::RunSpec base = e.baseline.run ? *e.baseline.run : resolve(e.baseline, registry);
     std::vector<ProblemRecord> records;
     for (const Problem& p : e.problems) {
       PreparedProblem prepared;
@@ -159,7 +159,7 @@ class Runner {
   const PreparedConfig& add(const Configuration& c) {
     auto prepared = std::make_unique<PreparedConfig>();
     prepared->config = c;
-    prepared->run = resolve(c, registry_);
+    prepared->run = c.run ? *c.run : resolve(c, registry_);
     prepared->id = db_->add_config({c.name, settings_json(*prepared)});
     for (std::size_t p = 0; p < problems_.size(); ++p) {
       try {

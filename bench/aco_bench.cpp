@@ -38,7 +38,9 @@ struct Timing {
 Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::PluginRegistry& registry,
                  const aco::Keys& plugins, aco::ColonySettings settings, int repeats, int threads,
                  bool same_seed = false) {
-  const aco::PipelineSpec spec = aco::resolve_run(plugins, registry).pipeline;
+  const aco::RunSpec run = aco::resolve_run(plugins, registry);
+  const aco::PipelineSpec& spec = run.pipeline;
+  if (plugins.count("q0")) settings.q0 = run.colony.q0;
   std::vector<double> ms;
   Timing t;
   tbb::task_arena arena(threads);
@@ -60,11 +62,19 @@ Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::
   return t;
 }
 
+// acs and elite run with the q0 their READMEs give (0.7, 0.8): a colony setting, not theirs.
+aco::Keys with_their_q0(aco::Keys keys) {
+  const auto update = keys.find("update");
+  if (update != keys.end() && update->second == "acs") keys["q0"] = "0.7";
+  if (update != keys.end() && update->second == "elite") keys["q0"] = "0.8";
+  return keys;
+}
+
 // `keys` with `slot` set to `plugin`, without the parameters of the slot's previous plugin.
 aco::Keys swapped(aco::Keys keys, const std::string& slot, const std::string& plugin) {
   std::erase_if(keys, [&](const auto& kv) { return kv.first.rfind(slot + ".", 0) == 0; });
   keys[slot] = plugin;
-  return keys;
+  return with_their_q0(keys);
 }
 
 // Whether two runs gave bit-identical results (the determinism promise across thread counts).
@@ -129,7 +139,7 @@ void time_classic(aco::PluginRegistry& registry, int repeats) {
   const auto map1 = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/classic20/map1.txt");
   const aco::Graph classic = aco::build_graph(*map1, {aco::Neighbourhood::eight, true});
   for (const char* update : {"ant_system", "max_min", "acs"}) {
-    aco::Keys spec{{"update", update}};
+    aco::Keys spec = with_their_q0({{"update", update}});
     if (std::string(update) != "max_min") spec.insert({{"update.rho", "0.3"}, {"update.q", "1"}});
     const Timing t = time_runs(classic, {0, 0}, {19, 19}, registry, spec, {}, repeats, 1);
     std::printf("%-12s %10.3f %10.3f %12.1f %12.4f\n", update, t.median_ms, t.min_ms, t.ns_per_step, t.mean_length);

@@ -22,40 +22,10 @@
 #include "aco/error.hpp"
 #include "aco/local_search.hpp"
 #include "aco/rng.hpp"
-#include "aco/settings_table.hpp"
 
 namespace aco {
 namespace {
 
-const SettingsTable<ColonySettings>& colony_table() {
-  using S = ColonySettings;
-  static const SettingsTable<S> table({
-      field("ants", &S::ants, "1:1000000", "ants per iteration"),
-      field("iterations", &S::iterations, "1:100000000", "maximum number of iterations"),
-      field("alpha", &S::alpha, "0:20", "pheromone exponent in the transition rule"),
-      field("beta", &S::beta, "0:50", "heuristic exponent in the transition rule"),
-      field("seed", &S::seed, "0:9.2e18", "random seed: a run is a pure function of its inputs and this seed"),
-      field("q0", &S::q0, "0:1",
-            "probability that an ant takes its best candidate instead of the roulette (Ant Colony System's q0; "
-            "0 = classic rule)"),
-      field("stagnation", &S::stagnation, "0:100000000",
-            "stop after this many iterations without a shorter path (0 = run every iteration)"),
-      field("same-path-stop", &S::same_path_stop, "",
-            "stop once same-path-fraction of an iteration's ants walked the same path (paper 001)"),
-      field("same-path-fraction", &S::same_path_fraction, "(0:1]", "fraction of the ants for --same-path-stop"),
-      choice("search", &S::bidirectional, {"single", "bidirectional"}, {false, true},
-             "single = one colony from start to goal; bidirectional = two colonies meeting halfway (paper 000)"),
-      field("fill-dead-ends", &S::fill_dead_ends, "",
-            "forbid, before the first iteration, every cell that lies on no loop-free start-goal path (dead-end filling)"),
-      field("local-search", &S::local_search, "none,loops,straighten",
-            "shorten each arrived ant's walk before the update: cut its loops, or also straighten stretches of it"),
-      field("local-search-window", &S::local_search_window, "2:4096",
-            "longest stretch of a walk, in nodes, that straighten replaces by one straight segment"),
-      field("walk-limit", &S::walk_limit, "0:1e6",
-            "an ant dies after this many times as many moves as the best path so far has steps (0 = no limit)"),
-  });
-  return table;
-}
 
 // Asks the kernel to back a large, untouched buffer with transparent huge pages. On a 512x512 map
 // a per-edge field is 16 MB; faulting it in 4 kB pages costs tens of milliseconds per run, more
@@ -513,9 +483,6 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const Pipeline&
 
 }  // namespace
 
-std::span<const ParamSpec> colony_parameters() { return colony_table().parameters(); }
-ColonySettings colony_settings(const ParameterValues& values) { return colony_table().read(values); }
-ParameterValues colony_values(const ColonySettings& settings) { return colony_table().write(settings); }
 
 ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
                         const ColonySettings& settings, const Pipeline* backward) {

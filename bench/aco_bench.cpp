@@ -269,15 +269,16 @@ bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shar
   return identical;
 }
 
-// The recommended 2D pipeline, as data/presets/robust.ini sets it.
-aco::Keys robust_pipeline(aco::ColonySettings& settings) {
-  const aco::Keys spec{{"heuristic", "progress"}, {"heuristic.floor", "0.5"}, {"update", "acs"}, {"deadlock", "backtrack"}};
-  settings.beta = 3;
-  settings.q0 = 0.7;
-  settings.fill_dead_ends = true;
-  settings.local_search = "straighten";
-  settings.walk_limit = 4;
-  return spec;
+// The recommended 2D pipeline: data/presets/robust.ini read as run keys (INI's "rho" under
+// [update] is the key "update.rho"), so the benchmark times what the preset says.
+aco::Keys robust_preset() {
+  const std::string file = std::string(ACO_BENCH_DATA_DIR) + "/presets/robust.ini";
+  std::ifstream in(file);
+  if (!in) throw aco::Error("cannot open " + file);
+  aco::Keys keys;
+  for (const auto& option : po::parse_config_file(in, po::options_description(), true).options)
+    keys[option.string_key] = option.value.front();
+  return keys;
 }
 
 // Every plugin and large-map engine option on a 512x512 map, 1 thread: ns per ant step against
@@ -335,8 +336,8 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
                   t.mean_length, t.last.solved ? "yes" : "no");
     }
   }
-  aco::ColonySettings settings;
-  const aco::Keys robust = robust_pipeline(settings);
+  const aco::Keys robust = robust_preset();
+  const aco::ColonySettings settings = aco::resolve_run(robust, registry).colony;
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 2);
   const Timing one = time_runs(graph, s.start, s.goal, registry, robust, settings, repeats, 1, true);
   const Timing two = time_runs(graph, s.start, s.goal, registry, robust, settings, repeats, 2, true);

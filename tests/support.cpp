@@ -5,6 +5,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <atomic>
@@ -128,6 +130,16 @@ CommandResult run(const std::vector<std::string>& argv, const std::vector<std::s
   result.err = slurp(err);
   std::filesystem::remove_all(dir);
   return result;
+}
+
+void check_same_run(const aco::ColonyResult& a, const aco::ColonyResult& b) {
+  CHECK(a.path == b.path);
+  CHECK(a.length == b.length);  // exact, not approximate
+  CHECK(a.best_so_far == b.best_so_far);
+  CHECK(a.iteration_best == b.iteration_best);
+  CHECK(a.arrived == b.arrived);
+  CHECK(a.ant_steps == b.ant_steps);
+  CHECK(a.pheromone == b.pheromone);
 }
 
 aco::PipelineSpec pipeline(const aco::Keys& keys) { return aco::resolve_run(keys, plugins()).pipeline; }

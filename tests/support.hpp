@@ -51,6 +51,10 @@ bool reference_segment_clear(const aco::Map& map, aco::Cell a, aco::Cell b, bool
 aco::Context context(const aco::Graph& graph, aco::Cell start, aco::Cell goal, int iteration = 0,
                      int max_iterations = 100);
 
+// Checks (Catch CHECKs) that two colony runs are the same bit for bit: path, length, curves,
+// arrivals, ant steps and final pheromone, every double compared exactly.
+void check_same_run(const aco::ColonyResult& a, const aco::ColonyResult& b);
+
 // An arrived ant following the given cells (consecutive cells must be neighbours).
 aco::Ant ant(const aco::Graph& graph, const std::vector<aco::Cell>& cells);
 

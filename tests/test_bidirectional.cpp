@@ -107,12 +107,7 @@ TEST_CASE("the bidirectional search is bit-identical for any thread count", "[bi
     });
   }
   REQUIRE(results[0].solved);
-  for (std::size_t i = 1; i < results.size(); ++i) {
-    CHECK(results[i].path == results[0].path);
-    CHECK(results[i].best_so_far == results[0].best_so_far);
-    CHECK(results[i].ant_steps == results[0].ant_steps);
-    CHECK(results[i].pheromone == results[0].pheromone);
-  }
+  for (std::size_t i = 1; i < results.size(); ++i) test::check_same_run(results[i], results[0]);
 }
 
 TEST_CASE("the bidirectional search finds the classic map's paths and composes with other plugins", "[bidirectional]") {

@@ -54,14 +54,7 @@ TEST_CASE("results are bit-identical for any thread count", "[colony][determinis
     tbb::task_arena arena(threads);
     arena.execute([&] { results.push_back(aco::run_colony(graph, graph.node({3, 3}), graph.node({44, 40}), b.pipeline(), settings)); });
   }
-  for (std::size_t i = 1; i < results.size(); ++i) {
-    CHECK(results[i].path == results[0].path);
-    CHECK(results[i].length == results[0].length);  // exact, not approximate
-    CHECK(results[i].best_so_far == results[0].best_so_far);
-    CHECK(results[i].iteration_best == results[0].iteration_best);
-    CHECK(results[i].ant_steps == results[0].ant_steps);
-    CHECK(results[i].pheromone == results[0].pheromone);
-  }
+  for (std::size_t i = 1; i < results.size(); ++i) test::check_same_run(results[i], results[0]);
   REQUIRE(results[0].solved);
 }
 

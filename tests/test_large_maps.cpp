@@ -281,13 +281,7 @@ TEST_CASE("the large-map options give bit-identical results for any thread count
       });
     }
     REQUIRE(results[0].solved);
-    for (std::size_t i = 1; i < results.size(); ++i) {
-      CHECK(results[i].path == results[0].path);
-      CHECK(results[i].length == results[0].length);
-      CHECK(results[i].best_so_far == results[0].best_so_far);
-      CHECK(results[i].ant_steps == results[0].ant_steps);
-      CHECK(results[i].pheromone == results[0].pheromone);
-    }
+    for (std::size_t i = 1; i < results.size(); ++i) test::check_same_run(results[i], results[0]);
   }
 }
 
@@ -338,12 +332,8 @@ TEST_CASE("heuristics updated node by node give the runs of a whole table per it
     const auto reference = run(false, 1);
     REQUIRE(reference.solved);
     for (int threads : {1, 2}) {
-      const auto lazy = run(true, threads);
-      CHECK(lazy.path == reference.path);
-      CHECK(lazy.length == reference.length);
-      CHECK(lazy.best_so_far == reference.best_so_far);
-      CHECK(lazy.ant_steps == reference.ant_steps);
-      CHECK(lazy.pheromone == reference.pheromone);
+      INFO(threads << " threads");
+      test::check_same_run(run(true, threads), reference);
     }
   }
 }

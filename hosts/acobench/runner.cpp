@@ -1,6 +1,5 @@
 #include "runner.hpp"
 
-#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -15,6 +14,7 @@
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
 #include "aco/planning.hpp"
+#include "aco/thread_limit.hpp"
 #include "results_db.hpp"
 
 namespace acobench {
@@ -25,6 +25,7 @@ namespace {
 struct PreparedProblem {
   using TerrainKey = std::tuple<double, double, double>;
   using GraphKey = std::tuple<TerrainKey, int, bool>;
+  std::string name;
   aco::ProblemSpec spec;
   std::map<TerrainKey, aco::LoadedProblem> maps;
   std::map<GraphKey, aco::Graph> graphs;
@@ -42,10 +43,15 @@ struct PreparedProblem {
     }
     return *it->second.map;
   }
+  // Errors (a map that does not load, a blocked start with these terrain options) name the problem.
   const aco::Graph& graph(const aco::RunSpec& run) {
     auto it = graphs.find(graph_key(run));
-    if (it == graphs.end()) it = graphs.emplace(graph_key(run), aco::build_graph(map(run.problem.terrain), run.graph)).first;
-    return it->second;
+    if (it != graphs.end()) return it->second;
+    try {
+      return graphs.emplace(graph_key(run), aco::build_graph(map(run.problem.terrain), run.graph)).first->second;
+    } catch (const aco::Error& error) {
+      throw aco::Error("problem '" + name + "': " + error.what());
+    }
   }
 };
 
@@ -88,18 +94,13 @@ class Runner {
     std::vector<ProblemRecord> records;
     for (const Problem& p : e.problems) {
       PreparedProblem prepared;
+      prepared.name = p.name;
       prepared.spec.map = p.map;
       prepared.spec.start = p.start;
       prepared.spec.goal = p.goal;
       // The optimal length, once per problem, on the baseline's graph (a 16-neighbourhood
       // configuration may beat it: its gap is then negative).
-      const aco::Graph& graph = [&]() -> const aco::Graph& {
-        try {
-          return prepared.graph(base);
-        } catch (const aco::Error& error) {
-          throw aco::Error("problem '" + p.name + "': " + error.what());
-        }
-      }();
+      const aco::Graph& graph = prepared.graph(base);
       const auto optimal = aco::astar(graph, graph.node(p.start), graph.node(p.goal));
       nlohmann::json setup = {{"map", p.map.lexically_relative(e.file.parent_path()).generic_string()},
                               {"start", {p.start.x, p.start.y}},
@@ -161,12 +162,10 @@ class Runner {
     prepared->config = c;
     prepared->run = c.run ? *c.run : resolve(c, registry_);
     prepared->id = db_->add_config({c.name, settings_json(*prepared)});
-    for (std::size_t p = 0; p < problems_.size(); ++p) {
-      try {
-        problems_[p].graph(prepared->run);
-      } catch (const aco::Error& error) {
-        throw aco::Error("problem '" + e_.problems[p].name + "', configuration '" + c.name + "': " + error.what());
-      }
+    try {
+      for (auto& p : problems_) p.graph(prepared->run);
+    } catch (const aco::Error& error) {
+      throw aco::Error("configuration '" + c.name + "', " + error.what());
     }
     configs_.push_back(std::move(prepared));
     return *configs_.back();
@@ -206,9 +205,7 @@ class Runner {
           trials.push_back({p, c, r});
         }
     if (options_.progress) options_.progress(done_, total_);
-    std::unique_ptr<tbb::global_control> threads;
-    if (options_.threads > 0)
-      threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, options_.threads);
+    const aco::ThreadLimit threads(options_.threads);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, trials.size(), 1), [&](const auto& range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         const TrialRecord record = run_trial(trials[i]);

@@ -1,7 +1,5 @@
 #include "acoplan.hpp"
 
-#include <tbb/global_control.h>
-
 #include <algorithm>
 #include <charconv>
 #include <fstream>
@@ -11,6 +9,7 @@
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/svg.hpp"
+#include "aco/thread_limit.hpp"
 #include "irace.hpp"
 #include "report.hpp"
 
@@ -64,9 +63,7 @@ void dump_irace_params(acoplan::Request& r, std::ostream& out) {
 int plan(const acoplan::Request& r, std::ostream& out) {
   const aco::LoadedProblem problem = aco::load_problem(r.run.problem);
   const aco::Graph graph = aco::build_graph(*problem.map, r.run.graph);
-  std::unique_ptr<tbb::global_control> threads;
-  if (const auto n = r.host.integer("threads"); n > 0)
-    threads = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, n);
+  const aco::ThreadLimit threads(r.host.integer("threads"));
 
   // --repeat N: the same problem with seeds seed, seed+1, ..., seed+N-1.
   aco::RunSpec run = r.run;

@@ -13,14 +13,6 @@ namespace acoplan {
 namespace po = boost::program_options;
 namespace {
 
-// The planners with their own parameter table (--ifwa.radius ...).
-std::vector<std::string> baseline_planners() {
-  std::vector<std::string> names;
-  for (const auto& name : aco::planner_names())
-    if (!aco::planner_parameters(name).empty()) names.push_back(name);
-  return names;
-}
-
 // acoplan's own settings; everything else is a run key (aco/run_spec.hpp).
 constexpr aco::ParamSpec kHostParameters[] = {
     {"threads", aco::ParamType::integer, "0", "0:1024", "worker threads, 0 = all cores; results do not depend on it"},
@@ -194,7 +186,7 @@ Request parse_command_line(int argc, const char* const* argv) {
   po::options_description colony("Colony");
   add_table(colony, aco::colony_parameters(), "");
   po::options_description baselines("Baseline planners (--planner ifwa|pso)");
-  for (const auto& planner : baseline_planners()) add_table(baselines, aco::planner_parameters(planner), planner + ".");
+  for (const auto& planner : aco::planners_with_parameters()) add_table(baselines, aco::planner_parameters(planner), planner + ".");
   po::options_description slots("Strategies (one plugin per slot; see --list-plugins)");
   for (const char* slot : aco::kSlots)
     slots.add_options()(slot, po::value<std::string>()->value_name("PLUGIN"),
@@ -261,7 +253,7 @@ Request parse_command_line(int argc, const char* const* argv) {
     collect(vm, aco::problem_parameters(), "", keys);
     collect(vm, aco::graph_parameters(), "", keys);
     collect(vm, aco::colony_parameters(), "", keys);
-    for (const auto& planner : baseline_planners()) collect(vm, aco::planner_parameters(planner), planner + ".", keys);
+    for (const auto& planner : aco::planners_with_parameters()) collect(vm, aco::planner_parameters(planner), planner + ".", keys);
     for (const char* slot : aco::kSlots) {
       if (vm.count(slot)) keys[slot] = plugins[slot];
       collect(vm, r.registry->load(slot, plugins[slot]).parameters(), std::string(slot) + ".", keys);

@@ -83,6 +83,13 @@ std::vector<std::string> planner_names() {
   return names;
 }
 
+std::vector<std::string> planners_with_parameters() {
+  std::vector<std::string> names;
+  for (const Planner& p : kPlanners)
+    if (!p.parameters().empty()) names.push_back(p.name);
+  return names;
+}
+
 std::span<const ParamSpec> planner_parameters(const std::string& planner) { return find_planner(planner).parameters(); }
 
 PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const RunSpec& run) {

@@ -48,14 +48,6 @@ bool in_table(std::span<const ParamSpec> table, const std::string& key) {
   return std::any_of(table.begin(), table.end(), [&](const ParamSpec& p) { return key == p.name; });
 }
 
-// The planners with a parameter table of their own (their keys are "<planner>.<name>").
-std::vector<std::string> planners_with_parameters() {
-  std::vector<std::string> names;
-  for (const auto& name : planner_names())
-    if (!planner_parameters(name).empty()) names.push_back(name);
-  return names;
-}
-
 // Every key a run can have, for "did you mean" (plugin parameters of the chosen plugins).
 std::vector<std::string> known_keys(const RunSpec& spec, PluginRegistry& registry) {
   std::vector<std::string> keys = kProblemTexts;
@@ -83,8 +75,9 @@ std::vector<std::pair<std::string, ParamValue>> run_values(const RunSpec& spec) 
     keys.emplace_back("scen", p.scen.string());
     keys.emplace_back("scen-index", std::int64_t{p.scen_index});
   }
-  if (p.start) keys.emplace_back("start", to_string(*p.start).substr(1, to_string(*p.start).size() - 2));
-  if (p.goal) keys.emplace_back("goal", to_string(*p.goal).substr(1, to_string(*p.goal).size() - 2));
+  // Cells as the keys take them: "X,Y".
+  for (const auto& [key, cell] : {std::pair{"start", p.start}, std::pair{"goal", p.goal}})
+    if (cell) keys.emplace_back(key, std::to_string(cell->x) + "," + std::to_string(cell->y));
   auto add = [&keys](const std::string& prefix, const ParameterValues& values) {
     for (const auto& [name, value] : values.all()) keys.emplace_back(prefix + name, value);
   };
@@ -113,15 +106,18 @@ std::span<const ParamSpec> problem_parameters() {
 std::span<const ParamSpec> graph_parameters() { return graph_table().parameters(); }
 
 const ParamSpec& planner_parameter() {
-  static const std::string names = [] {
-    std::string text;
-    for (const auto& name : planner_names()) text += (text.empty() ? "" : ",") + name;
-    return text;
+  // Values and help from the planner table: "aco,astar,..." and "aco = the colony; astar = ...".
+  static const std::pair<std::string, std::string> names_and_help = [] {
+    std::string names, help;
+    for (const Planner& p : planners()) {
+      if (!names.empty()) names += ",", help += "; ";
+      names += p.name;
+      help.append(p.name).append(" = ").append(p.help);
+    }
+    return std::pair{names, help};
   }();
-  static const ParamSpec spec = {
-      "planner", ParamType::categorical, "aco", names.c_str(),
-      "aco = the colony; astar = exact shortest path on the same graph (reference); ifwa = improved fireworks "
-      "(paper 004); pso = particle swarm over waypoints (paper 000's baseline)"};
+  static const ParamSpec spec = {"planner", ParamType::categorical, "aco", names_and_help.first.c_str(),
+                                 names_and_help.second.c_str()};
   return spec;
 }
 

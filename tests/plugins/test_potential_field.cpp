@@ -185,11 +185,5 @@ TEST_CASE("paper 000 plugins together solve classic map1, bit-identically for an
   }
   REQUIRE(results[0].solved);
   CHECK(results[0].length < 1.05 * 34.3848);  // within 5 % of the optimum
-  for (std::size_t i = 1; i < results.size(); ++i) {
-    CHECK(results[i].path == results[0].path);
-    CHECK(results[i].length == results[0].length);
-    CHECK(results[i].best_so_far == results[0].best_so_far);
-    CHECK(results[i].ant_steps == results[0].ant_steps);
-    CHECK(results[i].pheromone == results[0].pheromone);
-  }
+  for (std::size_t i = 1; i < results.size(); ++i) test::check_same_run(results[i], results[0]);
 }

@@ -63,6 +63,7 @@ struct Planner {
 std::span<const Planner> planners();
 const Planner& find_planner(const std::string& name);  // Error naming the planners for an unknown name
 std::vector<std::string> planner_names();
+std::vector<std::string> planners_with_parameters();  // those with keys "<planner>.<parameter>"
 std::span<const ParamSpec> planner_parameters(const std::string& planner);
 
 // Plans once. An unreachable goal is an unsolved outcome with its reason, not an error. The

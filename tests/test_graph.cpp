@@ -1,6 +1,7 @@
 // The CSR graph: neighbourhoods, corner rule, knight moves, reverse edges, path measures.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <string>
@@ -278,6 +279,38 @@ TEST_CASE("reachable across a wall", "[graph]") {
     CHECK_FALSE(aco::reachable(build(map, aco::Neighbourhood::eight, false), 0, 14));
     CHECK(aco::reachable(build(map, aco::Neighbourhood::eight, true), 0, 14));
   }
+}
+
+TEST_CASE("BreadthFirstSearch: fewest steps round blocked and avoided nodes, within a node limit", "[graph]") {
+  // The only way from the left half to the right half is the gap at (2, 2).
+  const auto map = test::grid({"..#..", "..#..", "....."});
+  const auto g = build(map, aco::Neighbourhood::four, false);
+  const aco::NodeId from = g.node({0, 0}), to = g.node({4, 0}), gap = g.node({2, 2});
+  aco::BreadthFirstSearch search;
+  REQUIRE(search.find(g, from, to));
+  const auto& path = search.path();
+  CHECK(path.front() == from);
+  CHECK(path.back() == to);
+  CHECK(path.size() == 9);  // 8 steps: down 2, across 4, up 2
+  CHECK(std::find(path.begin(), path.end(), gap) != path.end());
+  CHECK(aco::path_length(g, path) == Approx(8.0));
+
+  CHECK_FALSE(search.find(g, from, to, {}, gap));  // avoiding the gap cuts the map in two
+  std::vector<std::uint8_t> blocked(g.num_nodes(), 0);
+  blocked[gap] = 1;
+  CHECK_FALSE(search.find(g, from, to, blocked));
+  blocked[gap] = 0;
+  blocked[g.node({0, 1})] = 1;  // the way down column 1 stays open, as short
+  REQUIRE(search.find(g, from, to, blocked));
+  CHECK(search.path().size() == 9);
+  CHECK(std::find(search.path().begin(), search.path().end(), g.node({0, 1})) == search.path().end());
+
+  // The left half holds 6 nodes and the goal is 8 steps away: 6 nodes taken from the queue
+  // cannot reach it, the whole map can.
+  CHECK_FALSE(search.find(g, from, to, {}, -1, 6));
+  CHECK(search.find(g, from, to, {}, -1, g.num_nodes()));
+  // Many searches with one object (stamps) answer as fresh ones do.
+  for (int i = 0; i < 300; ++i) REQUIRE(search.find(g, to, from) == aco::reachable(g, to, from));
 }
 
 TEST_CASE("path_length sums step costs and rejects non-neighbours", "[graph]") {

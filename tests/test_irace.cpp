@@ -199,7 +199,7 @@ TEST_CASE("every value at the ends of a dumped range is finite and accepted by a
   CHECK_THAT(r.out, Contains("update_rho_max_min \"--update.rho \" r (0.0001, 1) | update == \"max_min\""));
   CHECK_THAT(r.out, Contains("update_p_best \"--update.p_best \" r (0.0001, 0.9999) | update == \"max_min\""));
   CHECK_THAT(r.out, Contains("ants \"--ants \" i (1, 5000)"));
-  CHECK_THAT(r.out, Contains("# skipped --update.tau_min: range (0:1e12] capped at 100 x default 1e-6 leaves no interval"));
+  CHECK_THAT(r.out, Contains("# skipped --update.tau_min: range (0:1e12] capped at 100 x default 1e-06 leaves no interval"));
 }
 
 TEST_CASE("acoplan runs the lowest value of every dumped parameter, passed as irace passes it", "[acoplan][irace]") {

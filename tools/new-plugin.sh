@@ -10,18 +10,18 @@ kind=$1 name=$2 dir=$3
 [[ "$name" =~ ^[a-z][a-z0-9_]*$ ]] || { echo "new-plugin: NAME must be lower_case_with_underscores" >&2; exit 2; }
 case "$kind" in
   init) interface=PheromoneInit; method='  void initialize(const aco::Context&, std::span<double> tau) override {
-    for (double& t : tau) t = value_;
+    for (double& t : tau) t = p_.value;
   }' ;;
   heuristic) interface=Heuristic; method='  void compute(const aco::Context& c, std::span<double> eta) override {
     const aco::Graph& g = *c.graph;
-    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) eta[e] = value_ / (1.0 + g.distance(g.targets[e], c.goal));
+    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) eta[e] = p_.value / (1.0 + g.distance(g.targets[e], c.goal));
   }' ;;
   update) interface=PheromoneUpdate; method='  void update(const aco::Context&, const aco::Iteration& it, std::span<double> tau) override {
     aco::evaporate(tau, 0.1);
-    if (it.best) aco::deposit(tau, *it.best, value_ / it.best->length);
+    if (it.best) aco::deposit(tau, *it.best, p_.value / it.best->length);
   }' ;;
   deadlock) interface=DeadlockPolicy; method='  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override {
-    return static_cast<int>(value_);  // nodes to step back; 0 lets the ant die
+    return static_cast<int>(p_.value);  // nodes to step back; 0 lets the ant die
   }' ;;
   smoother) interface=Smoother; method='  std::vector<Eigen::Vector3d> smooth(const aco::Context& c, std::span<const aco::NodeId> path) const override {
     return aco::to_waypoints(*c.graph, path);
@@ -44,17 +44,22 @@ cat > "$dir/${name}.cpp" <<CPP
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"value", aco::ParamType::real, "1", "(0:1e6]", "an example parameter (--${kind}.value)"},
+// The parameters, their defaults, and their table: name, member, range, help.
+struct Parameters {
+  double value = 1.0;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("value", &Parameters::value, "(0:1e6]", "an example parameter (--${kind}.value)"),
+});
 
 class Plugin final : public aco::${interface} {
  public:
-  explicit Plugin(const aco::ParameterValues& p) : value_(p.real("value")) {}
+  explicit Plugin(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 ${method}
 
  private:
-  double value_;
+  Parameters p_;
 };
 
 }  // namespace

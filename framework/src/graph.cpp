@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <deque>
 
 #include "aco/error.hpp"
 
@@ -124,19 +123,35 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   return g;
 }
 
-bool reachable(const Graph& graph, NodeId start, NodeId goal) {
-  std::vector<std::uint8_t> seen(graph.num_nodes(), 0);
-  std::deque<NodeId> queue{start};
-  seen[start] = 1;
-  while (!queue.empty()) {
-    const NodeId n = queue.front();
-    queue.pop_front();
-    if (n == goal) return true;
+bool reachable(const Graph& graph, NodeId start, NodeId goal) { return BreadthFirstSearch().find(graph, start, goal); }
+
+bool BreadthFirstSearch::find(const Graph& graph, NodeId from, NodeId to, std::span<const std::uint8_t> blocked,
+                              NodeId avoid, std::size_t limit) {
+  if (seen_.size() != static_cast<std::size_t>(graph.num_nodes())) {
+    seen_.assign(graph.num_nodes(), 0);
+    parent_.assign(graph.num_nodes(), -1);
+    stamp_ = 0;
+  }
+  if (++stamp_ == 0) std::fill(seen_.begin(), seen_.end(), 0), stamp_ = 1;
+  queue_.clear();
+  queue_.push_back(from);
+  seen_[from] = stamp_;
+  if (avoid >= 0) seen_[avoid] = stamp_;
+  for (std::size_t head = 0; head < queue_.size() && head < limit; ++head) {
+    const NodeId n = queue_[head];
+    if (n == to) {
+      path_.clear();
+      for (NodeId m = n; m != from; m = parent_[m]) path_.push_back(m);
+      path_.push_back(from);
+      std::reverse(path_.begin(), path_.end());
+      return true;
+    }
     for (EdgeId e = graph.edges_begin(n); e < graph.edges_end(n); ++e) {
       const NodeId m = graph.targets[e];
-      if (!seen[m]) {
-        seen[m] = 1;
-        queue.push_back(m);
+      if (seen_[m] != stamp_ && (blocked.empty() || !blocked[m])) {
+        seen_[m] = stamp_;
+        parent_[m] = n;
+        queue_.push_back(m);
       }
     }
   }

@@ -8,10 +8,6 @@
 
 namespace aco {
 
-PotentialFieldGains potential_field_gains(const ParameterValues& values) {
-  return {values.real("k"), values.real("theta"), values.real("rho0")};
-}
-
 std::vector<Eigen::Vector2d> potential_forces(const Graph& graph, NodeId start, NodeId goal,
                                               const PotentialFieldGains& gains) {
   std::vector<Eigen::Vector2d> forces(graph.num_nodes(), Eigen::Vector2d::Zero());

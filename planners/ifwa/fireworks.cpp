@@ -13,7 +13,6 @@
 #include "aco/settings_table.hpp"
 
 namespace aco {
-namespace {
 
 const SettingsTable<FireworksSettings>& fireworks_table() {
   using F = FireworksSettings;
@@ -39,6 +38,8 @@ const SettingsTable<FireworksSettings>& fireworks_table() {
   });
   return table;
 }
+
+namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
@@ -250,13 +251,17 @@ std::span<const ParamSpec> fireworks_parameters() { return fireworks_table().par
 
 FireworksSettings fireworks_settings(const ParameterValues& v) {
   const FireworksSettings s = fireworks_table().read(v);
+  check(s);
+  return s;
+}
+
+void check(const FireworksSettings& s) {
   if (s.a > s.b)
     throw Error("fireworks: a = " + to_string(ParamValue(s.a)) + " is above b = " + to_string(ParamValue(s.b)) +
                 " (the spark count bounds are [round(a m), round(b m)])");
   if (s.weight_min >= s.weight_max)
     throw Error("fireworks: weight_min = " + to_string(ParamValue(s.weight_min)) + " must be below weight_max = " +
                 to_string(ParamValue(s.weight_max)));
-  return s;
 }
 
 std::vector<int> explosion_counts(std::span<const double> fitness, int m, double a, double b) {

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "aco/graph.hpp"
-#include "aco/parameters.hpp"
+#include "aco/settings_table.hpp"
 #include "aco/search_result.hpp"
 
 namespace aco {
@@ -41,10 +41,12 @@ struct FireworksSettings {
   std::uint64_t seed = 1;    // not in the table: acoplan's --seed, the plugin's context seed
 };
 
-// The table of every setting but the seed (paper 004's set-up as defaults).
+// The table of every setting but the seed (paper 004's set-up as defaults), and its rows.
+const SettingsTable<FireworksSettings>& fireworks_table();
 std::span<const ParamSpec> fireworks_parameters();
-// Throws Error if the values are inconsistent (a > b, weight_min >= weight_max).
+// Throw Error if the values are inconsistent (a > b, weight_min >= weight_max).
 FireworksSettings fireworks_settings(const ParameterValues& values);
+void check(const FireworksSettings& settings);
 
 // Runs IFWA from start to goal. Throws Error on a bad start, goal or setting. Unsolved when the
 // goal cannot be reached: every walk then ends in a dead end and gets the penalty fitness.

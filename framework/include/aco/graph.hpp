@@ -73,6 +73,26 @@ Graph build_graph(const Map& map, const GraphOptions& options);
 // Whether goal can be reached from start at all (breadth-first search).
 bool reachable(const Graph& graph, NodeId start, NodeId goal);
 
+// Breadth-first search for a path that avoids some nodes. One object serves many searches on a
+// graph without clearing per-node arrays in between (stamps), as a plugin searching once per
+// dead ant needs.
+class BOOST_SYMBOL_VISIBLE BreadthFirstSearch {
+ public:
+  // A shortest-in-steps path from `from` to `to` entering no node n with blocked[n] != 0 (an
+  // empty span blocks none) and not `avoid` (-1: none). Gives up after taking `limit` nodes from
+  // the queue. On success path() is the path, from first.
+  bool find(const Graph& graph, NodeId from, NodeId to, std::span<const std::uint8_t> blocked = {}, NodeId avoid = -1,
+            std::size_t limit = static_cast<std::size_t>(-1));
+  const std::vector<NodeId>& path() const { return path_; }
+
+ private:
+  std::vector<std::uint32_t> seen_;  // per node: the stamp of the last search that queued it
+  std::uint32_t stamp_ = 0;
+  std::vector<NodeId> parent_;  // per node: its predecessor, valid where seen_ is current
+  std::vector<NodeId> queue_;
+  std::vector<NodeId> path_;
+};
+
 // Length of a node path (sum of step costs); throws if two consecutive nodes are not neighbours.
 double path_length(const Graph& graph, std::span<const NodeId> path);
 

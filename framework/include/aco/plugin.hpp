@@ -4,7 +4,10 @@
 //
 //   ACO_PLUGIN(update, ant_system, AntSystemUpdate, "1.0", "Ant System: ...", kParams)
 //
-// The class needs a constructor taking `const aco::ParameterValues&`. The macro exports, under
+// The class needs a constructor taking `const aco::ParameterValues&`; kParams is its parameter
+// table: a SettingsTable over a struct of the parameters (see settings_table.hpp; the
+// constructor then reads the struct with kParams.read(values)), or an array of ParamSpec rows
+// read by name (aco::no_parameters for none). The macro exports, under
 // the Boost.DLL alias aco_plugin__<kind>__<name>, a plain-data descriptor: the host reads its
 // ABI version before it touches any C++ type, and lists plugins from the alias names alone,
 // without loading them.
@@ -14,6 +17,7 @@
 #include <type_traits>
 
 #include "aco/parameters.hpp"
+#include "aco/settings_table.hpp"
 #include "aco/strategies.hpp"
 
 namespace aco {
@@ -45,6 +49,13 @@ struct PluginDescriptor {
 
 inline constexpr std::span<const ParamSpec> no_parameters{};
 
+// ACO_PLUGIN's PARAMS: ParamSpec rows as they are, or a settings table's rows.
+inline std::span<const ParamSpec> parameter_rows(std::span<const ParamSpec> rows) { return rows; }
+template <class Settings>
+std::span<const ParamSpec> parameter_rows(const SettingsTable<Settings>& table) {
+  return table.parameters();
+}
+
 // The slots, by the identifier used in ACO_PLUGIN.
 namespace slot {
 struct init { using interface = PheromoneInit; };
@@ -66,7 +77,7 @@ struct smoother { using interface = Smoother; };
   static_assert(std::is_base_of_v<::aco::slot::KIND::interface, CLASS>,                                   \
                 #CLASS " does not implement the interface of slot '" #KIND "'");                          \
   ::aco::Strategy* aco_plugin_create(const ::aco::ParameterValues& values) { return new CLASS(values); } \
-  const ::std::span<const ::aco::ParamSpec> aco_plugin_params{PARAMS};                                    \
+  const ::std::span<const ::aco::ParamSpec> aco_plugin_params{::aco::parameter_rows(PARAMS)};                                    \
   const ::aco::PluginDescriptor aco_plugin_descriptor{                                                    \
       ::aco::kPluginMagic, ACO_PLUGIN_ABI_VERSION, __GXX_ABI_VERSION, #KIND, #NAME, VERSION, SUMMARY,      \
       aco_plugin_params.data(), aco_plugin_params.size(), &aco_plugin_create};                            \

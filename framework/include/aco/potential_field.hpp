@@ -16,13 +16,12 @@
 //   maps) push as the highest ground, h = 1. Cells at or below z0 do not push. Normalising
 //   the excess height keeps theta unit-free, the same on flat maps and on terrain.
 #include <Eigen/Core>
-#include <array>
 #include <boost/config.hpp>
 #include <cstddef>
 #include <vector>
 
 #include "aco/graph.hpp"
-#include "aco/parameters.hpp"
+#include "aco/settings_table.hpp"
 
 namespace aco {
 
@@ -32,25 +31,18 @@ struct PotentialFieldGains {
   double rho0 = 2.0;   // repulsion range, in map units (paper 000: 2)
 };
 
-// The parameter rows k, theta and rho0, for the tables of plugins that use the field.
-inline constexpr std::array<ParamSpec, 3> kPotentialFieldParams{{
-    {"k", ParamType::real, "1", "0:1e6", "attraction gain: the pull towards the goal, the same at any distance"},
-    {"theta", ParamType::real, "1", "0:1e6",
-     "repulsion gain: a cell at distance rho <= rho0 pushes with theta * h * (1/rho - 1/rho0) / rho^2, h its "
-     "normalised height above the start (1 for obstacles)"},
-    {"rho0", ParamType::real, "2", "(0:1e3]", "repulsion range in map units (paper 000: 2)"},
-}};
-
-// A plugin's own parameter rows followed by kPotentialFieldParams, as one table.
-template <std::size_t N>
-constexpr std::array<ParamSpec, N + 3> with_potential_field_params(const std::array<ParamSpec, N>& own) {
-  std::array<ParamSpec, N + 3> table{};
-  for (std::size_t i = 0; i < N; ++i) table[i] = own[i];
-  for (std::size_t i = 0; i < 3; ++i) table[N + i] = kPotentialFieldParams[i];
-  return table;
+// The parameters k, theta and rho0, for the tables of plugins that use the field (through
+// nested(), see settings_table.hpp).
+inline std::vector<SettingsField<PotentialFieldGains>> potential_field_fields() {
+  using G = PotentialFieldGains;
+  return {
+      field("k", &G::k, "0:1e6", "attraction gain: the pull towards the goal, the same at any distance"),
+      field("theta", &G::theta, "0:1e6",
+            "repulsion gain: a cell at distance rho <= rho0 pushes with theta * h * (1/rho - 1/rho0) / rho^2, h its "
+            "normalised height above the start (1 for obstacles)"),
+      field("rho0", &G::rho0, "(0:1e3]", "repulsion range in map units (paper 000: 2)"),
+  };
 }
-
-BOOST_SYMBOL_VISIBLE PotentialFieldGains potential_field_gains(const ParameterValues& values);
 
 // F_tot of every node, in the map plane; zero for blocked cells.
 BOOST_SYMBOL_VISIBLE std::vector<Eigen::Vector2d> potential_forces(const Graph& graph, NodeId start, NodeId goal,

@@ -8,6 +8,10 @@
 //       choice("search", &ColonySettings::bidirectional, {"single", "bidirectional"}, "..."),
 //   });
 //   ColonySettings s = table.read(values);
+//
+// A plugin declares its parameters the same way (a struct, its table, ACO_PLUGIN(..., kParams));
+// a group of fields shared by several owners (the potential field's gains) joins a table
+// through nested().
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -75,10 +79,26 @@ SettingsField<Settings> choice(const char* name, Member Settings::*member, std::
   return f;
 }
 
+// The fields of a group (a struct of its own, with its own table) as fields of the struct that
+// holds the group in `member`.
+template <class Settings, class Group>
+std::vector<SettingsField<Settings>> nested(Group Settings::*member, const std::vector<SettingsField<Group>>& group) {
+  std::vector<SettingsField<Settings>> fields;
+  for (const auto& f : group) {
+    fields.push_back({f.name, f.type, f.range, f.help,
+                      [member, get = f.get](const Settings& s) { return get(s.*member); },
+                      [member, set = f.set](Settings& s, const ParamValue& v) { set(s.*member, v); }});
+  }
+  return fields;
+}
+
 template <class Settings>
 class SettingsTable {
  public:
-  explicit SettingsTable(std::vector<SettingsField<Settings>> fields) : fields_(std::move(fields)) {
+  // The owner's own fields, then those of a shared group (see nested()).
+  explicit SettingsTable(std::vector<SettingsField<Settings>> fields, std::vector<SettingsField<Settings>> group = {})
+      : fields_(std::move(fields)) {
+    fields_.insert(fields_.end(), group.begin(), group.end());
     const Settings defaults{};
     defaults_.reserve(fields_.size());
     for (const auto& f : fields_) defaults_.push_back(to_string(f.get(defaults)));
@@ -88,6 +108,7 @@ class SettingsTable {
   SettingsTable(const SettingsTable&) = delete;  // specs_ points into defaults_ and fields_
 
   std::span<const ParamSpec> parameters() const { return specs_; }
+  const std::vector<SettingsField<Settings>>& fields() const { return fields_; }
 
   // `values` must hold every key of the table (as resolve() gives them).
   Settings read(const ParameterValues& values) const {

@@ -4,18 +4,22 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"steps", aco::ParamType::integer, "1", "1:1000000",
-     "nodes a stuck ant steps back at once; 1 = depth-first back-off, which on a connected map always arrives"},
+struct Parameters {
+  int steps = 1;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("steps", &Parameters::steps, "1:1000000",
+               "nodes a stuck ant steps back at once; 1 = depth-first back-off, which on a connected map always arrives"),
+});
 
 class Backtrack final : public aco::DeadlockPolicy {
  public:
-  explicit Backtrack(const aco::ParameterValues& p) : steps_(static_cast<int>(p.integer("steps"))) {}
-  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return steps_; }
+  explicit Backtrack(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
+  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return p_.steps; }
 
  private:
-  int steps_;
+  Parameters p_;
 };
 
 }  // namespace

@@ -5,14 +5,19 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"h", aco::ParamType::integer, "3", "1:1000000", "how many of the dead ant's last nodes are penalised"},
-    {"penalty", aco::ParamType::real, "0.1", "0:1", "the pheromone of every edge into those nodes is multiplied by this"},
+struct Parameters {
+  std::int64_t h = 3;
+  double penalty = 0.1;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("h", &Parameters::h, "1:1000000", "how many of the dead ant's last nodes are penalised"),
+    aco::field("penalty", &Parameters::penalty, "0:1", "the pheromone of every edge into those nodes is multiplied by this"),
+});
 
 class BacktrackPenalty final : public aco::DeadlockPolicy {
  public:
-  explicit BacktrackPenalty(const aco::ParameterValues& p) : h_(p.integer("h")), penalty_(p.real("penalty")) {}
+  explicit BacktrackPenalty(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }
 
@@ -22,17 +27,16 @@ class BacktrackPenalty final : public aco::DeadlockPolicy {
     for (const aco::Ant& ant : it.ants) {
       if (ant.arrived) continue;
       // The last h nodes of the walk, never the start.
-      const std::size_t first = ant.nodes.size() > std::size_t(h_) ? ant.nodes.size() - h_ : 1;
+      const std::size_t first = ant.nodes.size() > std::size_t(p_.h) ? ant.nodes.size() - p_.h : 1;
       for (std::size_t i = first; i < ant.nodes.size(); ++i) {
         const aco::NodeId n = ant.nodes[i];
-        for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) tau[g.reverse[e]] *= penalty_;
+        for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) tau[g.reverse[e]] *= p_.penalty;
       }
     }
   }
 
  private:
-  std::int64_t h_;
-  double penalty_;
+  Parameters p_;
 };
 
 }  // namespace

@@ -8,14 +8,18 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"keep", aco::ParamType::real, "0", "0:1",
-     "share of the pheromone kept on the dead ant's edges (0 = cleared, as in the paper)"},
+struct Parameters {
+  double keep = 0.0;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("keep", &Parameters::keep, "0:1",
+               "share of the pheromone kept on the dead ant's edges (0 = cleared, as in the paper)"),
+});
 
 class ClearAndTabu final : public aco::DeadlockPolicy {
  public:
-  explicit ClearAndTabu(const aco::ParameterValues& p) : keep_(p.real("keep")) {}
+  explicit ClearAndTabu(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }
 
@@ -23,7 +27,7 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
                        std::vector<std::uint8_t>& forbidden) override {
     for (const aco::Ant& ant : it.ants) {
       if (ant.arrived) continue;
-      for (aco::EdgeId e : ant.edges) tau[e] *= keep_;
+      for (aco::EdgeId e : ant.edges) tau[e] *= p_.keep;
       const aco::NodeId dead_end = ant.nodes.back();
       if (dead_end != c.start && !forbidden[dead_end] && keeps_goal_reachable(c, forbidden, dead_end))
         forbidden[dead_end] = 1;
@@ -40,66 +44,33 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
   // witness; only if none is found nearby is the whole map searched. The answers are the same as
   // a search per node.
   bool keeps_goal_reachable(const aco::Context& c, const std::vector<std::uint8_t>& forbidden, aco::NodeId node) {
-    if (c.graph != graph_) graph_ = c.graph, seen_.clear(), witness_.clear();  // a new map
-    if (seen_.size() != forbidden.size()) {
-      seen_.assign(forbidden.size(), 0), stamp_ = 0;
+    if (c.graph != graph_ || on_witness_.size() != forbidden.size()) {  // a new map
+      graph_ = c.graph;
+      witness_.clear();
       on_witness_.assign(forbidden.size(), -1);
-      parent_.assign(forbidden.size(), -1);
     }
     if (!witness_valid(c, forbidden)) {
-      if (!search(c, forbidden, c.start, c.goal, -1, kWholeMap)) return false;
-      set_witness(found_);
+      if (!search_.find(*c.graph, c.start, c.goal, forbidden, -1, kWholeMap)) return false;
+      set_witness(search_.path());
     }
     if (on_witness_[node] < 0) return true;
     if (node == c.goal) return false;
     const int at = on_witness_[node];
-    if (search(c, forbidden, witness_[at - 1], witness_[at + 1], node, kNearby)) {
+    if (search_.find(*c.graph, witness_[at - 1], witness_[at + 1], forbidden, node, kNearby)) {
       std::vector<aco::NodeId> walk(witness_.begin(), witness_.begin() + at - 1);
-      walk.insert(walk.end(), found_.begin(), found_.end());
+      walk.insert(walk.end(), search_.path().begin(), search_.path().end());
       walk.insert(walk.end(), witness_.begin() + at + 2, witness_.end());
       set_witness(walk);
       return true;
     }
-    if (!search(c, forbidden, c.start, c.goal, node, kWholeMap)) return false;
-    set_witness(found_);
+    if (!search_.find(*c.graph, c.start, c.goal, forbidden, node, kWholeMap)) return false;
+    set_witness(search_.path());
     return true;
   }
 
   bool witness_valid(const aco::Context& c, const std::vector<std::uint8_t>& forbidden) const {
     if (witness_.empty() || witness_.front() != c.start || witness_.back() != c.goal) return false;
     return std::none_of(witness_.begin(), witness_.end(), [&](aco::NodeId n) { return forbidden[n] != 0; });
-  }
-
-  // Breadth-first search from `from` to `to` avoiding forbidden nodes and `avoid` (-1: none),
-  // giving up after `limit` nodes; on success the path is in found_. Stamps instead of fresh
-  // arrays per search.
-  bool search(const aco::Context& c, const std::vector<std::uint8_t>& forbidden, aco::NodeId from, aco::NodeId to,
-              aco::NodeId avoid, std::size_t limit) {
-    const aco::Graph& g = *c.graph;
-    if (++stamp_ == 0) std::fill(seen_.begin(), seen_.end(), 0), stamp_ = 1;
-    queue_.clear();
-    queue_.push_back(from);
-    seen_[from] = stamp_;
-    if (avoid >= 0) seen_[avoid] = stamp_;
-    for (std::size_t head = 0; head < queue_.size() && head < limit; ++head) {
-      const aco::NodeId n = queue_[head];
-      if (n == to) {
-        found_.clear();
-        for (aco::NodeId m = n; m != from; m = parent_[m]) found_.push_back(m);
-        found_.push_back(from);
-        std::reverse(found_.begin(), found_.end());
-        return true;
-      }
-      for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) {
-        const aco::NodeId t = g.targets[e];
-        if (seen_[t] != stamp_ && !forbidden[t]) {
-          seen_[t] = stamp_;
-          parent_[t] = n;
-          queue_.push_back(t);
-        }
-      }
-    }
-    return false;
   }
 
   // The walk with its loops cut out (a repaired witness may cross itself) becomes the witness.
@@ -123,12 +94,8 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
   const aco::Graph* graph_ = nullptr;
   std::vector<aco::NodeId> witness_;         // an open start-goal path, or empty
   std::vector<std::int32_t> on_witness_;     // per node: its position on the witness, or -1
-  std::vector<aco::NodeId> found_;           // the path of the last successful search
-  std::vector<aco::NodeId> parent_;          // per node: BFS predecessor, valid where seen_ is current
-  std::vector<std::uint32_t> seen_;
-  std::uint32_t stamp_ = 0;
-  std::vector<aco::NodeId> queue_;
-  double keep_;
+  aco::BreadthFirstSearch search_;          // its path() is that of the last successful search
+  Parameters p_;
 };
 
 }  // namespace

@@ -7,15 +7,19 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"fade", aco::ParamType::categorical, "exponent", "exponent,factor",
-     "how w(Nc) applies: eta = base^w (exponent: the heuristic's weight halves over the run) or eta = base * w "
-     "(factor: eq. 9 read literally; w is the same for every candidate and cancels in the transition rule)"},
+struct Parameters {
+  bool exponent = true;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::choice("fade", &Parameters::exponent, {"exponent", "factor"}, {true, false},
+                "how w(Nc) applies: eta = base^w (exponent: the heuristic's weight halves over the run) or eta = base * w "
+                "(factor: eq. 9 read literally; w is the same for every candidate and cancels in the transition rule)"),
+});
 
 class AdaptiveHeuristic final : public aco::Heuristic {
  public:
-  explicit AdaptiveHeuristic(const aco::ParameterValues& p) : exponent_(p.text("fade") == "exponent") {}
+  explicit AdaptiveHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   bool varies_by_iteration() const override { return true; }
 
@@ -24,7 +28,7 @@ class AdaptiveHeuristic final : public aco::Heuristic {
     const aco::Graph& g = *c.graph;
     for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
       const double base = 1.0 / (g.costs[e] + g.distance(g.targets[e], c.goal));
-      eta[e] = exponent_ ? std::pow(base, w) : base * w;
+      eta[e] = p_.exponent ? std::pow(base, w) : base * w;
     }
   }
 
@@ -40,7 +44,7 @@ class AdaptiveHeuristic final : public aco::Heuristic {
       for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
         const double base = 1.0 / (g.costs[e] + g.distance(g.targets[e], c.goal));
         eta_beta[e] = std::pow(eta_beta[e], c.beta);
-        step_[e] = exponent_ ? std::pow(base, c.beta * dw) : 0.0;
+        step_[e] = p_.exponent ? std::pow(base, c.beta * dw) : 0.0;
       }
       return;
     }
@@ -57,7 +61,7 @@ class AdaptiveHeuristic final : public aco::Heuristic {
   // Brings eta^beta of the edges first, first + 1, ... from iteration `since` to c.iteration.
   void advance(const aco::Context& c, int since, aco::EdgeId first, std::span<double> eta_beta) const {
     for (int it = since + 1; it <= c.iteration; ++it) {
-      if (exponent_) {
+      if (p_.exponent) {
         for (std::size_t i = 0; i < eta_beta.size(); ++i) eta_beta[i] *= step_[first + i];
       } else {
         // (base * w)^beta: the same factor (w_now / w_before)^beta for every edge.
@@ -73,7 +77,7 @@ class AdaptiveHeuristic final : public aco::Heuristic {
     return 1.0 + (nc_max - nc) / nc_max;
   }
 
-  bool exponent_;
+  Parameters p_;
   std::vector<double> step_;  // per edge: what eta^beta is multiplied by each iteration (exponent)
 };
 

@@ -9,12 +9,18 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"gamma", aco::ParamType::real, "20", "0:1000", "weight of the heading change, in cells: a U-turn adds gamma to d"},
-    {"distance", aco::ParamType::categorical, "goal", "goal,step",
-     "d: distance from the next node to the goal (goal), or the step length d_ab (step, eq. 6 read literally)"},
-    {"min_distance", aco::ParamType::real, "0.01", "(0:1]", "floor of d, so stepping onto the goal stays finite"},
+struct Parameters {
+  double gamma = 20.0;
+  bool to_goal = true;
+  double min_distance = 0.01;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("gamma", &Parameters::gamma, "0:1000", "weight of the heading change, in cells: a U-turn adds gamma to d"),
+    aco::choice("distance", &Parameters::to_goal, {"goal", "step"}, {true, false},
+                "d: distance from the next node to the goal (goal), or the step length d_ab (step, eq. 6 read literally)"),
+    aco::field("min_distance", &Parameters::min_distance, "(0:1]", "floor of d, so stepping onto the goal stays finite"),
+});
 
 // Moves are told apart by (dx, dy) in [-2, 2]^2, the reach of a 16-neighbourhood.
 constexpr int kMoveKinds = 25;
@@ -22,8 +28,7 @@ int move_kind(aco::Cell from, aco::Cell to) { return (to.x - from.x + 2) * 5 + (
 
 class DirectionHeuristic final : public aco::Heuristic {
  public:
-  explicit DirectionHeuristic(const aco::ParameterValues& p)
-      : gamma_(p.real("gamma")), to_goal_(p.text("distance") == "goal"), min_distance_(p.real("min_distance")) {}
+  explicit DirectionHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   bool uses_walk() const override { return true; }
 
@@ -34,20 +39,20 @@ class DirectionHeuristic final : public aco::Heuristic {
     graph_ = &g;
     build_turn_classes();
     move_.resize(g.num_edges());
-    const int keys = to_goal_ ? g.num_nodes() : kMoveKinds;
+    const int keys = p_.to_goal ? g.num_nodes() : kMoveKinds;
     std::vector<double> d(keys, 1.0);
     for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
       const aco::NodeId from = g.source(e), to = g.targets[e];
       move_[e] = static_cast<std::uint8_t>(move_kind(g.cell(from), g.cell(to)));
-      const double dist = to_goal_ ? g.distance(to, c.goal) : g.costs[e];
-      d[key(e)] = std::max(dist, min_distance_);
+      const double dist = p_.to_goal ? g.distance(to, c.goal) : g.costs[e];
+      d[key(e)] = std::max(dist, p_.min_distance);
       eta[e] = 1.0 / d[key(e)];
     }
     // factor = (eta with the turn / eta without)^beta = (d / (d + gamma * turn))^beta
     factor_.assign(static_cast<std::size_t>(keys) * turn_values_.size(), 1.0);
     for (int k = 0; k < keys; ++k)
       for (std::size_t t = 0; t < turn_values_.size(); ++t)
-        factor_[k * turn_values_.size() + t] = std::pow(d[k] / (d[k] + gamma_ * turn_values_[t]), c.beta);
+        factor_[k * turn_values_.size() + t] = std::pow(d[k] / (d[k] + p_.gamma * turn_values_[t]), c.beta);
   }
 
   void step_factors(const aco::Context&, const aco::Ant& ant, std::span<const aco::EdgeId> candidates,
@@ -58,7 +63,7 @@ class DirectionHeuristic final : public aco::Heuristic {
     }
     const std::uint8_t* turn = &turn_class_[move_[ant.edges.back()] * kMoveKinds];
     const std::size_t classes = turn_values_.size();
-    if (to_goal_) {
+    if (p_.to_goal) {
       const aco::NodeId* targets = graph_->targets.data();
       for (std::size_t i = 0; i < candidates.size(); ++i)
         factors[i] = factor_[targets[candidates[i]] * classes + turn[move_[candidates[i]]]];
@@ -70,7 +75,7 @@ class DirectionHeuristic final : public aco::Heuristic {
 
  private:
   std::size_t key(aco::EdgeId e) const {
-    return to_goal_ ? static_cast<std::size_t>(graph_->targets[e]) : static_cast<std::size_t>(move_[e]);
+    return p_.to_goal ? static_cast<std::size_t>(graph_->targets[e]) : static_cast<std::size_t>(move_[e]);
   }
 
   // |dtheta| / pi for every pair of move kinds, as a small class index: 5 classes on an
@@ -91,9 +96,7 @@ class DirectionHeuristic final : public aco::Heuristic {
     }
   }
 
-  double gamma_;
-  bool to_goal_;
-  double min_distance_;
+  Parameters p_;
   const aco::Graph* graph_ = nullptr;
   std::vector<std::uint8_t> move_;         // per edge: its move kind
   std::vector<double> turn_values_;        // |dtheta| / pi of each turn class

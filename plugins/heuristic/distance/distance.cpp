@@ -5,22 +5,27 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"min_distance", aco::ParamType::real, "0.01", "(0:1]",
-     "d(j, goal) is floored at this value, so stepping onto the goal gets eta = 1/min_distance (100, as in the MATLAB code)"},
+struct Parameters {
+  double min_distance = 0.01;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("min_distance", &Parameters::min_distance, "(0:1]",
+               "d(j, goal) is floored at this value, so stepping onto the goal gets eta = 1/min_distance (100, as in the "
+               "MATLAB code)"),
+});
 
 class DistanceHeuristic final : public aco::Heuristic {
  public:
-  explicit DistanceHeuristic(const aco::ParameterValues& p) : min_distance_(p.real("min_distance")) {}
+  explicit DistanceHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
   void compute(const aco::Context& c, std::span<double> eta) override {
     const aco::Graph& g = *c.graph;
     for (aco::EdgeId e = 0; e < g.num_edges(); ++e)
-      eta[e] = 1.0 / std::max(g.distance(g.targets[e], c.goal), min_distance_);
+      eta[e] = 1.0 / std::max(g.distance(g.targets[e], c.goal), p_.min_distance);
   }
 
  private:
-  double min_distance_;
+  Parameters p_;
 };
 
 }  // namespace

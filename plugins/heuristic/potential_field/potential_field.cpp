@@ -11,17 +11,25 @@
 
 namespace {
 
-constexpr auto kParams = aco::with_potential_field_params(std::array<aco::ParamSpec, 2>{{
-    {"a", aco::ParamType::real, "0.1", "0:1e6",
-     "weight of the force term: a move along the force gets eta x (1 + a) in the first iteration"},
-    {"min_distance", aco::ParamType::real, "0.01", "(0:1]",
-     "d(j, goal) is floored at this value, so stepping onto the goal gets 1/min_distance (as in heuristic/distance)"},
-}});
+struct Parameters {
+  double a = 0.1;
+  double min_distance = 0.01;
+  aco::PotentialFieldGains gains;
+};
+
+const aco::SettingsTable<Parameters> kParams(
+    {
+        aco::field("a", &Parameters::a, "0:1e6",
+                   "weight of the force term: a move along the force gets eta x (1 + a) in the first iteration"),
+        aco::field("min_distance", &Parameters::min_distance, "(0:1]",
+                   "d(j, goal) is floored at this value, so stepping onto the goal gets 1/min_distance (as in "
+                   "heuristic/distance)"),
+    },
+    aco::nested(&Parameters::gains, aco::potential_field_fields()));
 
 class PotentialFieldHeuristic final : public aco::Heuristic {
  public:
-  explicit PotentialFieldHeuristic(const aco::ParameterValues& p)
-      : a_(p.real("a")), min_distance_(p.real("min_distance")), gains_(aco::potential_field_gains(p)) {}
+  explicit PotentialFieldHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   bool varies_by_iteration() const override { return true; }
 
@@ -85,21 +93,19 @@ class PotentialFieldHeuristic final : public aco::Heuristic {
     graph_ = &g;
     start_ = c.start;
     goal_ = c.goal;
-    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, gains_);
+    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, p_.gains);
     base_.resize(g.num_edges());
     boost_.resize(g.num_edges());
     for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
-      base_[e] = 1.0 / std::max(g.distance(g.targets[e], c.goal), min_distance_);
+      base_[e] = 1.0 / std::max(g.distance(g.targets[e], c.goal), p_.min_distance);
       const Eigen::Vector2d& force = forces[g.source(e)];
       const double strength = force.norm();
-      boost_[e] = strength > 0.0 ? a_ * std::max(0.0, force.dot(aco::planar_direction(g, e)) / strength) : 0.0;
+      boost_[e] = strength > 0.0 ? p_.a * std::max(0.0, force.dot(aco::planar_direction(g, e)) / strength) : 0.0;
     }
     return true;
   }
 
-  double a_;
-  double min_distance_;
-  aco::PotentialFieldGains gains_;
+  Parameters p_;
   const aco::Graph* graph_ = nullptr;
   aco::NodeId start_ = -1;
   aco::NodeId goal_ = -1;

@@ -8,14 +8,18 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"floor", aco::ParamType::real, "0.3", "(0:1]",
-     "eta of a step straight away from the goal (a step straight at it has 1, a sideways step (1 + floor) / 2)"},
+struct Parameters {
+  double floor = 0.3;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("floor", &Parameters::floor, "(0:1]",
+               "eta of a step straight away from the goal (a step straight at it has 1, a sideways step (1 + floor) / 2)"),
+});
 
 class ProgressHeuristic final : public aco::Heuristic {
  public:
-  explicit ProgressHeuristic(const aco::ParameterValues& p) : floor_(p.real("floor")) {}
+  explicit ProgressHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
   void compute(const aco::Context& c, std::span<double> eta) override {
     const aco::Graph& g = *c.graph;
     for (aco::NodeId i = 0; i < g.num_nodes(); ++i) {
@@ -23,13 +27,13 @@ class ProgressHeuristic final : public aco::Heuristic {
       const double from = g.distance(i, c.goal);
       for (aco::EdgeId e = g.edges_begin(i); e < g.edges_end(i); ++e) {
         const double r = std::clamp((from - g.distance(g.targets[e], c.goal)) / g.costs[e], -1.0, 1.0);
-        eta[e] = floor_ + (1.0 - floor_) * 0.5 * (1.0 + r);
+        eta[e] = p_.floor + (1.0 - p_.floor) * 0.5 * (1.0 + r);
       }
     }
   }
 
  private:
-  double floor_;
+  Parameters p_;
 };
 
 }  // namespace

@@ -11,41 +11,43 @@
 namespace {
 
 // The plugin's own parameters, then the whole fireworks table (built when the library loads).
-const std::vector<aco::ParamSpec> kParams = [] {
-  std::vector<aco::ParamSpec> table{
-      {"tau0", aco::ParamType::real, "8", "(0:1e12]", "pheromone of every edge before the increment (uniform's default)"},
-      {"q", aco::ParamType::real, "320", "0:1e12",
-       "increment constant Q: each edge of the fireworks' best path gets Q / L_best more (320: about tau0 on a 20x20 map)"},
-  };
-  const auto search = aco::fireworks_parameters();
-  table.insert(table.end(), search.begin(), search.end());
-  return table;
-}();
+struct Parameters {
+  double tau0 = 8.0;
+  double q = 320.0;
+  aco::FireworksSettings search;
+};
+
+// The plugin's own parameters, then the whole fireworks table.
+const aco::SettingsTable<Parameters> kParams(
+    {
+        aco::field("tau0", &Parameters::tau0, "(0:1e12]", "pheromone of every edge before the increment (uniform's default)"),
+        aco::field("q", &Parameters::q, "0:1e12",
+                   "increment constant Q: each edge of the fireworks' best path gets Q / L_best more (320: about tau0 on a "
+                   "20x20 map)"),
+    },
+    aco::nested(&Parameters::search, aco::fireworks_table().fields()));
 
 class FireworksInit final : public aco::PheromoneInit {
  public:
-  explicit FireworksInit(const aco::ParameterValues& p)
-      : tau0_(p.real("tau0")), q_(p.real("q")), search_(aco::fireworks_settings(p)) {}
+  explicit FireworksInit(const aco::ParameterValues& values) : p_(kParams.read(values)) { aco::check(p_.search); }
 
   void initialize(const aco::Context& c, std::span<double> tau) override {
-    std::fill(tau.begin(), tau.end(), tau0_);
+    std::fill(tau.begin(), tau.end(), p_.tau0);
     const aco::PlannerResult best = aco::run_fireworks(*c.graph, c.start, c.goal, settings(c));
     if (!best.solved || best.length <= 0.0) return;  // nothing to seed: unreachable goal, or start == goal
-    for (std::size_t i = 1; i < best.path.size(); ++i) tau[c.graph->find_edge(best.path[i - 1], best.path[i])] += q_ / best.length;
+    for (std::size_t i = 1; i < best.path.size(); ++i) tau[c.graph->find_edge(best.path[i - 1], best.path[i])] += p_.q / best.length;
   }
 
   // The search's seed is derived from the run's, so the fireworks and the ants (which key their
   // streams the same way) never draw the same numbers.
   aco::FireworksSettings settings(const aco::Context& c) const {
-    aco::FireworksSettings s = search_;
+    aco::FireworksSettings s = p_.search;
     s.seed = aco::splitmix64(c.seed);
     return s;
   }
 
  private:
-  double tau0_;
-  double q_;
-  aco::FireworksSettings search_;
+  Parameters p_;
 };
 
 }  // namespace

@@ -5,18 +5,22 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"gamma", aco::ParamType::real, "8", "(0:1e12]",
-     "enhancement coefficient: a cell with 8 free neighbours gets gamma (8 = the uniform plugin's tau0)"},
+struct Parameters {
+  double gamma = 8.0;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("gamma", &Parameters::gamma, "(0:1e12]",
+               "enhancement coefficient: a cell with 8 free neighbours gets gamma (8 = the uniform plugin's tau0)"),
+});
 
 class ObstacleDensityInit final : public aco::PheromoneInit {
  public:
-  explicit ObstacleDensityInit(const aco::ParameterValues& p) : gamma_(p.real("gamma")) {}
+  explicit ObstacleDensityInit(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   void initialize(const aco::Context& c, std::span<double> tau) override {
     const aco::Graph& g = *c.graph;
-    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) tau[e] = gamma_ * free_share(*g.map, g.cell(g.targets[e]));
+    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) tau[e] = p_.gamma * free_share(*g.map, g.cell(g.targets[e]));
   }
 
   static double free_share(const aco::Map& map, aco::Cell j) {
@@ -28,7 +32,7 @@ class ObstacleDensityInit final : public aco::PheromoneInit {
   }
 
  private:
-  double gamma_;
+  Parameters p_;
 };
 
 }  // namespace

@@ -10,33 +10,39 @@
 
 namespace {
 
-constexpr auto kParams = aco::with_potential_field_params(std::array<aco::ParamSpec, 2>{{
-    {"tau0", aco::ParamType::real, "8", "(0:1e12]", "pheromone of a move along a full-strength force (8 = the uniform plugin's tau0)"},
-    {"floor", aco::ParamType::real, "0.1", "(0:1]",
-     "share of tau0 a move straight against a full-strength force keeps; 1 = uniform"},
-}});
+struct Parameters {
+  double tau0 = 8.0;
+  double floor = 0.1;
+  aco::PotentialFieldGains gains;
+};
+
+const aco::SettingsTable<Parameters> kParams(
+    {
+        aco::field("tau0", &Parameters::tau0, "(0:1e12]",
+                   "pheromone of a move along a full-strength force (8 = the uniform plugin's tau0)"),
+        aco::field("floor", &Parameters::floor, "(0:1]",
+                   "share of tau0 a move straight against a full-strength force keeps; 1 = uniform"),
+    },
+    aco::nested(&Parameters::gains, aco::potential_field_fields()));
 
 class PotentialFieldInit final : public aco::PheromoneInit {
  public:
-  explicit PotentialFieldInit(const aco::ParameterValues& p)
-      : tau0_(p.real("tau0")), floor_(p.real("floor")), gains_(aco::potential_field_gains(p)) {}
+  explicit PotentialFieldInit(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   void initialize(const aco::Context& c, std::span<double> tau) override {
     const aco::Graph& g = *c.graph;
-    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, gains_);
+    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, p_.gains);
     // The force is measured against k, its strength in the open; with k = 0 against theta.
-    const double unit = gains_.k > 0.0 ? gains_.k : std::max(gains_.theta, 1e-300);
+    const double unit = p_.gains.k > 0.0 ? p_.gains.k : std::max(p_.gains.theta, 1e-300);
     for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
       const double along = forces[g.source(e)].dot(aco::planar_direction(g, e)) / unit;
       const double share = 0.5 * (1.0 + std::clamp(along, -1.0, 1.0));
-      tau[e] = tau0_ * (floor_ + (1.0 - floor_) * share);
+      tau[e] = p_.tau0 * (p_.floor + (1.0 - p_.floor) * share);
     }
   }
 
  private:
-  double tau0_;
-  double floor_;
-  aco::PotentialFieldGains gains_;
+  Parameters p_;
 };
 
 }  // namespace

@@ -5,17 +5,21 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"tau0", aco::ParamType::real, "8", "(0:1e12]", "initial pheromone of every edge (the MATLAB code uses 8)"},
+struct Parameters {
+  double tau0 = 8.0;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("tau0", &Parameters::tau0, "(0:1e12]", "initial pheromone of every edge (the MATLAB code uses 8)"),
+});
 
 class UniformInit final : public aco::PheromoneInit {
  public:
-  explicit UniformInit(const aco::ParameterValues& p) : tau0_(p.real("tau0")) {}
-  void initialize(const aco::Context&, std::span<double> tau) override { std::fill(tau.begin(), tau.end(), tau0_); }
+  explicit UniformInit(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
+  void initialize(const aco::Context&, std::span<double> tau) override { std::fill(tau.begin(), tau.end(), p_.tau0); }
 
  private:
-  double tau0_;
+  Parameters p_;
 };
 
 }  // namespace

@@ -13,15 +13,18 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"max_lookahead", aco::ParamType::integer, "0", "0:1000000",
-     "farthest later node tried from each waypoint, in path steps; 0 = unlimited (the paper's rule)"},
+struct Parameters {
+  std::size_t max_lookahead = 0;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("max_lookahead", &Parameters::max_lookahead, "0:1000000",
+               "farthest later node tried from each waypoint, in path steps; 0 = unlimited (the paper's rule)"),
+});
 
 class PruneSmoother final : public aco::Smoother {
  public:
-  explicit PruneSmoother(const aco::ParameterValues& p)
-      : max_lookahead_(static_cast<std::size_t>(p.integer("max_lookahead"))) {}
+  explicit PruneSmoother(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   std::vector<Eigen::Vector3d> smooth(const aco::Context& c, std::span<const aco::NodeId> path) const override {
     const aco::Graph& g = *c.graph;
@@ -32,7 +35,7 @@ class PruneSmoother final : public aco::Smoother {
     std::size_t i = 0;
     while (i < last) {
       const aco::Cell from = g.cell(path[i]);
-      const std::size_t farthest = max_lookahead_ == 0 ? last : std::min(last, i + max_lookahead_);
+      const std::size_t farthest = p_.max_lookahead == 0 ? last : std::min(last, i + p_.max_lookahead);
       std::size_t next = i + 1;
       for (std::size_t j = farthest; j >= i + 2; --j) {
         if (aco::line_of_sight(*g.map, from, g.cell(path[j]), g.options.corner_cutting)) {
@@ -47,7 +50,7 @@ class PruneSmoother final : public aco::Smoother {
   }
 
  private:
-  std::size_t max_lookahead_;
+  Parameters p_;
 };
 
 }  // namespace

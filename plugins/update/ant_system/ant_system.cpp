@@ -4,23 +4,27 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"rho", aco::ParamType::real, "0.3", "0:1", "evaporation rate"},
-    {"q", aco::ParamType::real, "1", "(0:1e12]", "deposit constant Q: an ant of length L deposits Q / L"},
+struct Parameters {
+  double rho = 0.3;
+  double q = 1.0;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("rho", &Parameters::rho, "0:1", "evaporation rate"),
+    aco::field("q", &Parameters::q, "(0:1e12]", "deposit constant Q: an ant of length L deposits Q / L"),
+});
 
 class AntSystemUpdate final : public aco::PheromoneUpdate {
  public:
-  explicit AntSystemUpdate(const aco::ParameterValues& p) : rho_(p.real("rho")), q_(p.real("q")) {}
+  explicit AntSystemUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
   void update(const aco::Context&, const aco::Iteration& iteration, std::span<double> tau) override {
-    aco::evaporate(tau, rho_);
+    aco::evaporate(tau, p_.rho);
     for (const aco::Ant& ant : iteration.ants)
-      if (ant.arrived) aco::deposit(tau, ant, q_ / ant.length);
+      if (ant.arrived) aco::deposit(tau, ant, p_.q / ant.length);
   }
 
  private:
-  double rho_;
-  double q_;
+  Parameters p_;
 };
 
 }  // namespace

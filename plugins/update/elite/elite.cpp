@@ -12,59 +12,58 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"rho", aco::ParamType::real, "0.2", "0:1", "global evaporation rate (paper 000: 0.2)"},
-    {"q", aco::ParamType::real, "1", "(0:1e12]", "deposit constant Q: every arrived ant deposits Q / L"},
-    {"elite_fraction", aco::ParamType::real, "0.05", "0:1",
-     "share of the arrived ants (the shortest) that are elite: max(1, floor(fraction * arrived)); 0 = no elite"},
-    {"elite_q", aco::ParamType::real, "1", "0:1e12",
-     "elite deposit constant: an elite ant also deposits elite_q * (it / it_max)^3 / L"},
-    {"local_rho", aco::ParamType::real, "0.1", "0:1",
-     "local evaporation: every edge an ant walked moves towards its starting value by this much (paper 000: 0.1)"},
-    {"tau0", aco::ParamType::real, "0", "0:1e12",
-     "mean starting pheromone; 0 = ants * Q / d(start, goal), the grid analogue of Ant System's m / C_nn"},
+struct Parameters {
+  double rho = 0.2;
+  double q = 1.0;
+  double elite_fraction = 0.05;
+  double elite_q = 1.0;
+  double local_rho = 0.1;
+  double tau0 = 0.0;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("rho", &Parameters::rho, "0:1", "global evaporation rate (paper 000: 0.2)"),
+    aco::field("q", &Parameters::q, "(0:1e12]", "deposit constant Q: every arrived ant deposits Q / L"),
+    aco::field("elite_fraction", &Parameters::elite_fraction, "0:1",
+               "share of the arrived ants (the shortest) that are elite: max(1, floor(fraction * arrived)); 0 = no elite"),
+    aco::field("elite_q", &Parameters::elite_q, "0:1e12",
+               "elite deposit constant: an elite ant also deposits elite_q * (it / it_max)^3 / L"),
+    aco::field("local_rho", &Parameters::local_rho, "0:1",
+               "local evaporation: every edge an ant walked moves towards its starting value by this much (paper 000: 0.1)"),
+    aco::field("tau0", &Parameters::tau0, "0:1e12",
+               "mean starting pheromone; 0 = ants * Q / d(start, goal), the grid analogue of Ant System's m / C_nn"),
+});
 
 class EliteUpdate final : public aco::PheromoneUpdate {
  public:
-  explicit EliteUpdate(const aco::ParameterValues& p)
-      : rho_(p.real("rho")),
-        q_(p.real("q")),
-        elite_fraction_(p.real("elite_fraction")),
-        elite_q_(p.real("elite_q")),
-        tau0_(p.real("tau0")),
-        local_(p.real("local_rho")) {}
+  explicit EliteUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)), local_(p_.local_rho) {}
 
   void start(const aco::Context& c, std::span<double> tau) override {
-    local_.start(tau, tau0_ > 0.0 ? tau0_ : c.ants * q_ / c.graph->distance(c.start, c.goal));
+    local_.start(tau, p_.tau0 > 0.0 ? p_.tau0 : c.ants * p_.q / c.graph->distance(c.start, c.goal));
   }
 
   void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
     local_.apply(it.ants, tau);
-    aco::evaporate(tau, rho_);
+    aco::evaporate(tau, p_.rho);
     for (const aco::Ant& ant : it.ants)
-      if (ant.arrived) aco::deposit(tau, ant, q_ / ant.length);
+      if (ant.arrived) aco::deposit(tau, ant, p_.q / ant.length);
     // The shortest ants are the elite; ties go to the lower ant index.
     const std::vector<const aco::Ant*> arrived = aco::arrived_by_length(it.ants);
     const std::size_t elites = elite_count(arrived.size());
     const double progress = double(c.iteration + 1) / c.max_iterations;
-    const double elite_q = elite_q_ * progress * progress * progress;
+    const double elite_q = p_.elite_q * progress * progress * progress;
     for (std::size_t k = 0; k < elites; ++k) aco::deposit(tau, *arrived[k], elite_q / arrived[k]->length);
   }
 
   // max(1, floor(fraction * arrived)): the elite are within the best fraction, and there is at
   // least one while any ant arrived (5 % of 50 ants = 2).
   std::size_t elite_count(std::size_t arrived) const {
-    if (arrived == 0 || elite_fraction_ == 0.0) return 0;
-    return std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(elite_fraction_ * double(arrived))));
+    if (arrived == 0 || p_.elite_fraction == 0.0) return 0;
+    return std::max<std::size_t>(1, static_cast<std::size_t>(std::floor(p_.elite_fraction * double(arrived))));
   }
 
  private:
-  double rho_;
-  double q_;
-  double elite_fraction_;
-  double elite_q_;
-  double tau0_;
+  Parameters p_;
   aco::LocalUpdate local_;
 };
 

@@ -11,24 +11,33 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"rho", aco::ParamType::real, "0.3", "0:1", "evaporation rate (paper 002: 0.3)"},
-    {"q", aco::ParamType::real, "1", "(0:1e12]", "deposit constant Q: ant k's spread is scaled by Q / L_k (paper 002: 1)"},
-    {"psi", aco::ParamType::real, "300", "0:1e12", "balance factor psi (paper 002: 300)"},
-    {"mu", aco::ParamType::real, "0", "-100:100", "mean mu of the Gaussian (paper 002: 0)"},
-    {"sigma", aco::ParamType::real, "1", "(0:100]", "spread sigma of the Gaussian (paper 002: 1)"},
-    {"cutoff", aco::ParamType::real, "2", "0:20", "radius in cells of the neighbourhood that receives pheromone"},
-    {"onto", aco::ParamType::categorical, "edges", "edges,cells",
-     "edges: each path step, shifted by the offset, gets y (the move keeps its direction); "
-     "cells: every edge into each cell near a path cell gets y (direction is lost)"},
+struct Parameters {
+  double rho = 0.3;
+  double q = 1.0;
+  double psi = 300.0;
+  double mu = 0.0;
+  double sigma = 1.0;
+  double cutoff = 2.0;
+  bool onto_edges = true;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("rho", &Parameters::rho, "0:1", "evaporation rate (paper 002: 0.3)"),
+    aco::field("q", &Parameters::q, "(0:1e12]", "deposit constant Q: ant k's spread is scaled by Q / L_k (paper 002: 1)"),
+    aco::field("psi", &Parameters::psi, "0:1e12", "balance factor psi (paper 002: 300)"),
+    aco::field("mu", &Parameters::mu, "-100:100", "mean mu of the Gaussian (paper 002: 0)"),
+    aco::field("sigma", &Parameters::sigma, "(0:100]", "spread sigma of the Gaussian (paper 002: 1)"),
+    aco::field("cutoff", &Parameters::cutoff, "0:20", "radius in cells of the neighbourhood that receives pheromone"),
+    aco::choice("onto", &Parameters::onto_edges, {"edges", "cells"}, {true, false},
+                "edges: each path step, shifted by the offset, gets y (the move keeps its direction); "
+                "cells: every edge into each cell near a path cell gets y (direction is lost)"),
+});
 
 class GaussianUpdate final : public aco::PheromoneUpdate {
  public:
-  explicit GaussianUpdate(const aco::ParameterValues& p)
-      : q_(p.real("q")), rho_(p.real("rho")), onto_edges_(p.text("onto") == "edges") {
+  explicit GaussianUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {
     // The kernel depends only on the offset: tabulate it once.
-    const double psi = p.real("psi"), mu = p.real("mu"), sigma = p.real("sigma"), cutoff = p.real("cutoff");
+    const double psi = p_.psi, mu = p_.mu, sigma = p_.sigma, cutoff = p_.cutoff;
     const int r = static_cast<int>(std::floor(cutoff));
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx) {
@@ -39,10 +48,10 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
   }
 
   void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
-    aco::evaporate(tau, rho_);
+    aco::evaporate(tau, p_.rho);
     for (const aco::Ant& ant : it.ants) {
       if (!ant.arrived) continue;
-      if (onto_edges_) spread_onto_edges(*c.graph, ant, tau);
+      if (p_.onto_edges) spread_onto_edges(*c.graph, ant, tau);
       else spread_onto_cells(*c.graph, ant, tau);
     }
   }
@@ -56,7 +65,7 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
 
   // Step a -> b deposits y(|o|) on the step a+o -> b+o, where that is an edge of the graph.
   void spread_onto_edges(const aco::Graph& g, const aco::Ant& ant, std::span<double> tau) const {
-    const double scale = q_ / ant.length;
+    const double scale = p_.q / ant.length;
     for (std::size_t i = 0; i < ant.edges.size(); ++i) {
       const aco::Cell a = g.cell(ant.nodes[i]), b = g.cell(ant.nodes[i + 1]);
       const int dx = b.x - a.x, dy = b.y - a.y;
@@ -83,16 +92,14 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
         spread_[n] += k.weight;
       }
     }
-    const double scale = q_ / ant.length;
+    const double scale = p_.q / ant.length;
     for (aco::NodeId n : touched_) {
       for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) tau[g.reverse[e]] += scale * spread_[n];
       spread_[n] = 0.0;
     }
   }
 
-  double q_;
-  double rho_;
-  bool onto_edges_;
+  Parameters p_;
   std::vector<Offset> kernel_;
   std::vector<double> spread_;        // per node, zero between ants (cells mode)
   std::vector<aco::NodeId> touched_;  // nodes with a non-zero spread_

@@ -9,26 +9,29 @@
 
 namespace {
 
-constexpr aco::ParamSpec kParams[] = {
-    {"rho", aco::ParamType::real, "0.1", "(0:1]", "evaporation rate"},
-    {"q", aco::ParamType::real, "1", "(0:1e12]", "deposit constant Q: the depositing ant adds Q / L"},
-    {"p_best", aco::ParamType::real, "0.05", "(0:1)",
-     "probability that a converged colony rebuilds the best path; sets tau_min relative to tau_max"},
-    {"best_so_far_every", aco::ParamType::integer, "0", "0:1000000",
-     "the best-so-far ant deposits every n-th iteration, the iteration best otherwise; 0 = ACOTSP's schedule "
-     "(every 25th iteration before iteration 25, 5th before 75, 3rd before 125, 2nd before 250, then always)"},
-    {"restart_after", aco::ParamType::integer, "0", "0:1000000",
-     "reset every edge to tau_max after this many iterations without a shorter best-so-far path (0 = never)"},
+struct Parameters {
+  double rho = 0.1;
+  double q = 1.0;
+  double p_best = 0.05;
+  std::int64_t best_so_far_every = 0;
+  std::int64_t restart_after = 0;
 };
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("rho", &Parameters::rho, "(0:1]", "evaporation rate"),
+    aco::field("q", &Parameters::q, "(0:1e12]", "deposit constant Q: the depositing ant adds Q / L"),
+    aco::field("p_best", &Parameters::p_best, "(0:1)",
+               "probability that a converged colony rebuilds the best path; sets tau_min relative to tau_max"),
+    aco::field("best_so_far_every", &Parameters::best_so_far_every, "0:1000000",
+               "the best-so-far ant deposits every n-th iteration, the iteration best otherwise; 0 = ACOTSP's schedule "
+               "(every 25th iteration before iteration 25, 5th before 75, 3rd before 125, 2nd before 250, then always)"),
+    aco::field("restart_after", &Parameters::restart_after, "0:1000000",
+               "reset every edge to tau_max after this many iterations without a shorter best-so-far path (0 = never)"),
+});
 
 class MaxMinUpdate final : public aco::PheromoneUpdate {
  public:
-  explicit MaxMinUpdate(const aco::ParameterValues& p)
-      : rho_(p.real("rho")),
-        q_(p.real("q")),
-        p_best_(p.real("p_best")),
-        every_(p.integer("best_so_far_every")),
-        restart_after_(p.integer("restart_after")) {}
+  explicit MaxMinUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   void start(const aco::Context& c, std::span<double>) override {
     bounded_ = false;  // one plugin object may serve several runs
@@ -43,18 +46,18 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
   }
 
   void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
-    aco::evaporate(tau, rho_);
+    aco::evaporate(tau, p_.rho);
     if (it.best_so_far == nullptr) return;  // nothing to deposit, no bounds known yet
     const aco::Ant& best = *it.best_so_far;
-    const double tau_max = q_ / (rho_ * best.length);
-    const double p_dec = std::pow(p_best_, 1.0 / std::max<double>(1.0, double(best.edges.size())));
+    const double tau_max = p_.q / (p_.rho * best.length);
+    const double p_dec = std::pow(p_.p_best, 1.0 / std::max<double>(1.0, double(best.edges.size())));
     const double tau_min = std::min(tau_max, tau_max * (1.0 - p_dec) / (choices_ * p_dec));
 
     if (best.length < best_length_) {
       best_length_ = best.length;
       last_improvement_ = c.iteration;
     }
-    if (restart_after_ > 0 && c.iteration - last_improvement_ >= restart_after_) {
+    if (p_.restart_after > 0 && c.iteration - last_improvement_ >= p_.restart_after) {
       std::fill(tau.begin(), tau.end(), tau_max);  // forget the trail; the engine keeps the best path
       last_improvement_ = c.iteration;
       return;
@@ -68,21 +71,17 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
       bounded_ = true;
     }
     const aco::Ant& depositor = it.best == nullptr || (c.iteration + 1) % best_so_far_period(c.iteration) == 0 ? best : *it.best;
-    aco::deposit(tau, depositor, q_ / depositor.length);
+    aco::deposit(tau, depositor, p_.q / depositor.length);
     aco::clamp(tau, tau_min, tau_max);
   }
 
  private:
   int best_so_far_period(int iteration) const {
-    if (every_ > 0) return static_cast<int>(every_);
+    if (p_.best_so_far_every > 0) return static_cast<int>(p_.best_so_far_every);
     return iteration < 25 ? 25 : iteration < 75 ? 5 : iteration < 125 ? 3 : iteration < 250 ? 2 : 1;
   }
 
-  double rho_;
-  double q_;
-  double p_best_;
-  std::int64_t every_;
-  std::int64_t restart_after_;
+  Parameters p_;
   double choices_ = 1.0;
   double best_length_ = std::numeric_limits<double>::infinity();
   int last_improvement_ = 0;

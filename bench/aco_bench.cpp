@@ -271,15 +271,7 @@ bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shar
 
 // The recommended 2D pipeline: data/presets/robust.ini read as run keys (INI's "rho" under
 // [update] is the key "update.rho"), so the benchmark times what the preset says.
-aco::Keys robust_preset() {
-  const std::string file = std::string(ACO_BENCH_DATA_DIR) + "/presets/robust.ini";
-  std::ifstream in(file);
-  if (!in) throw aco::Error("cannot open " + file);
-  aco::Keys keys;
-  for (const auto& option : po::parse_config_file(in, po::options_description(), true).options)
-    keys[option.string_key] = option.value.front();
-  return keys;
-}
+aco::Keys robust_preset() { return aco::read_config_file(std::string(ACO_BENCH_DATA_DIR) + "/presets/robust.ini"); }
 
 // Every plugin and large-map engine option on a 512x512 map, 1 thread: ns per ant step against
 // two baselines. With the default pipeline (ants die when stuck) a 512x512 run does little ant

@@ -281,6 +281,45 @@ TEST_CASE("acobench refuses a blocked start, a missing database and an unknown c
   CHECK_THAT(unknown.err, Contains("unknown command 'rn'"));
 }
 
+TEST_CASE("a configuration starts from an acoplan config file with 'config', its own keys win", "[acobench]") {
+  const auto file = experiment(
+      "name: presets\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\nsettings: {iterations: 5}\n"
+      "baseline: {name: preset, config: preset.ini}\n"
+      "configurations:\n"
+      "  - {name: fewer ants, ants: 6}\n"
+      "  - {name: other heuristic, heuristic: distance}\n"
+      "  - {name: from the preset again, config: preset.ini, update.rho: 0.4}\n");
+  std::ofstream(file.parent_path() / "preset.ini") << "ants = 12   # a comment\nheuristic = progress\nupdate = acs\nq0 = 0.7\n"
+                                                       "[heuristic]\nfloor = 0.5\n[update]\nrho = 0.2\n";
+  const auto e = acobench::load_experiment(file, test::plugins());
+  REQUIRE(e.configurations.size() == 4);
+  const auto& preset = *e.configurations[0].run;
+  CHECK(preset.colony.ants == 12);
+  CHECK(preset.colony.iterations == 5);
+  CHECK(preset.colony.q0 == 0.7);
+  CHECK(preset.pipeline.at("heuristic").plugin == "progress");
+  CHECK(preset.pipeline.at("heuristic").parameters.real("floor") == 0.5);
+  CHECK(preset.pipeline.at("update").parameters.real("rho") == 0.2);
+  CHECK(e.configurations[1].run->colony.ants == 6);
+  CHECK(e.configurations[1].run->pipeline.at("heuristic").plugin == "progress");
+  // Another plugin in a slot drops the preset's parameters of that slot.
+  CHECK(e.configurations[2].run->pipeline.at("heuristic").plugin == "distance");
+  CHECK(e.configurations[2].run->pipeline.at("update").parameters.real("rho") == 0.2);
+  CHECK(e.configurations[3].run->pipeline.at("update").parameters.real("rho") == 0.4);
+  CHECK(e.configurations[3].run->colony.ants == 12);
+
+  SECTION("a missing config file is named with the line that asks for it") {
+    std::filesystem::remove(file.parent_path() / "preset.ini");
+    CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()),
+                      Contains("experiment.yaml:5") && Contains("preset.ini: cannot open the config file"));
+  }
+  SECTION("a bad key in the config file is named with the file") {
+    std::ofstream(file.parent_path() / "preset.ini") << "antz = 12\n";
+    CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()),
+                      Contains("preset.ini: configuration 'preset'") && Contains("antz") && Contains("ants"));
+  }
+}
+
 TEST_CASE("an experiment sets terrain keys per configuration: max-slope limits the paths", "[acobench][terrain]") {
   const auto file = test::temp_file("terrain.yaml", "name: slopes\nseed: 3\nrepetitions: 2\nproblems:\n  - {scen: " +
                                                       (test::data_dir() / "terrain/epf30.asc.scen").string() +

@@ -58,29 +58,46 @@ aco::Cell cell(const std::filesystem::path& file, const YAML::Node& node, const 
   fail(file, node, "'" + key + "' must be a cell [x, y]");
 }
 
-// A configuration written as keys; a slot may be given as {plugin: NAME, param: value, ...}.
-void read_keys(const std::filesystem::path& file, const YAML::Node& node, Configuration& config) {
-  if (!node.IsMap()) fail(file, node, "a configuration must be a mapping of keys to values");
-  for (const auto& entry : node) {
-    const std::string key = entry.first.Scalar();
-    if (key == "name") continue;
-    const std::string origin = where(file, entry.first);
-    if (entry.second.IsMap()) {
-      if (std::find(aco::kSlots.begin(), aco::kSlots.end(), key) == aco::kSlots.end())
-        fail(file, entry.first, "'" + key + "' is not a slot; only slots (" + std::string("init, heuristic, update, deadlock, smoother") +
-                                    ") take a {plugin: ..., parameter: ...} mapping");
-      for (const auto& inner : entry.second) {
-        const std::string name = inner.first.Scalar();
-        const std::string full = name == "plugin" ? key : key + "." + name;
-        config.keys[full] = scalar(file, inner.second, full);
-        config.origins[full] = where(file, inner.first);
-      }
-      if (!entry.second["plugin"]) fail(file, entry.first, "slot '" + key + "' needs a 'plugin' key");
-      continue;
+// One key of a configuration; a slot may be given as {plugin: NAME, param: value, ...}.
+void read_key(const std::filesystem::path& file, const YAML::Node& name, const YAML::Node& value, Configuration& config) {
+  const std::string key = name.Scalar();
+  if (value.IsMap()) {
+    if (std::find(aco::kSlots.begin(), aco::kSlots.end(), key) == aco::kSlots.end())
+      fail(file, name, "'" + key + "' is not a slot; only slots (" + std::string("init, heuristic, update, deadlock, smoother") +
+                           ") take a {plugin: ..., parameter: ...} mapping");
+    for (const auto& inner : value) {
+      const std::string param = inner.first.Scalar();
+      const std::string full = param == "plugin" ? key : key + "." + param;
+      config.keys[full] = scalar(file, inner.second, full);
+      config.origins[full] = where(file, inner.first);
     }
-    config.keys[key] = scalar(file, entry.second, key);
-    config.origins[key] = origin;
+    if (!value["plugin"]) fail(file, name, "slot '" + key + "' needs a 'plugin' key");
+    return;
   }
+  config.keys[key] = scalar(file, value, key);
+  config.origins[key] = where(file, name);
+}
+
+Configuration overlay(const Configuration& base, const Configuration& changes, const std::string& name);
+
+// A configuration written as keys. `config: FILE` (relative to the experiment file) starts from
+// the keys of an acoplan config file, such as a preset; the configuration's other keys override
+// them, as acoplan's command line overrides its --config file.
+Configuration read_keys(const std::filesystem::path& file, const YAML::Node& node) {
+  if (!node.IsMap()) fail(file, node, "a configuration must be a mapping of keys to values");
+  Configuration config;
+  for (const auto& entry : node)
+    if (entry.first.Scalar() != "name" && entry.first.Scalar() != "config") read_key(file, entry.first, entry.second, config);
+  if (!node["config"]) return config;
+  const std::filesystem::path ini = (file.parent_path() / scalar(file, node["config"], "config")).lexically_normal();
+  Configuration preset;
+  try {
+    preset.keys = aco::read_config_file(ini.string());
+  } catch (const aco::Error& e) {
+    fail(file, node["config"], e.what());
+  }
+  for (const auto& [key, value] : preset.keys) preset.origins[key] = ini.string();
+  return overlay(preset, config, "");
 }
 
 Configuration overlay(const Configuration& base, const Configuration& changes, const std::string& name) {
@@ -212,19 +229,15 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   if (doc["repetitions"]) e.repetitions = integer(file, doc["repetitions"], "repetitions", 1);
   e.problems = read_problems(file, doc["problems"]);
 
-  Configuration common;
-  if (doc["settings"]) read_keys(file, doc["settings"], common);
-  Configuration own;
-  if (doc["baseline"]) read_keys(file, doc["baseline"], own);
+  const Configuration common = doc["settings"] ? read_keys(file, doc["settings"]) : Configuration();
+  const Configuration own = doc["baseline"] ? read_keys(file, doc["baseline"]) : Configuration();
   e.baseline = overlay(common, own, doc["baseline"] && doc["baseline"]["name"] ? scalar(file, doc["baseline"]["name"], "name") : "baseline");
   e.configurations.push_back(e.baseline);
   if (doc["configurations"]) {
     if (!doc["configurations"].IsSequence()) fail(file, doc["configurations"], "'configurations' must be a list");
     for (const auto& node : doc["configurations"]) {
       if (!node.IsMap() || !node["name"]) fail(file, node, "every configuration needs a 'name'");
-      Configuration changes;
-      read_keys(file, node, changes);
-      e.configurations.push_back(overlay(e.baseline, changes, scalar(file, node["name"], "name")));
+      e.configurations.push_back(overlay(e.baseline, read_keys(file, node), scalar(file, node["name"], "name")));
     }
   }
   if (doc["factorial"])

@@ -1,7 +1,9 @@
 #include "aco/run_spec.hpp"
 
 #include <algorithm>
+#include <boost/program_options/parsers.hpp>
 #include <charconv>
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "aco/map_io.hpp"
@@ -260,6 +262,25 @@ std::string to_json(const RunSpec& spec) {
   for (const auto& [key, value] : run_values(spec))
     j[key] = std::visit([](const auto& v) { return nlohmann::ordered_json(v); }, value);
   return j.dump();
+}
+
+Keys read_config_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path + ": cannot open the config file");
+  namespace po = boost::program_options;
+  po::parsed_options parsed(nullptr);
+  try {
+    parsed = po::parse_config_file(in, po::options_description(), true);
+  } catch (const po::error& e) {
+    throw Error(path + ": " + e.what());
+  }
+  Keys keys;
+  for (const auto& option : parsed.options) {
+    if (option.value.empty()) continue;
+    if (!keys.emplace(option.string_key, option.value.front()).second)
+      throw Error(path + ": '" + option.string_key + "' is set twice");
+  }
+  return keys;
 }
 
 RunSpec run_spec_from_json(const std::string& text, PluginRegistry& registry) {

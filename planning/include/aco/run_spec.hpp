@@ -70,6 +70,11 @@ Keys to_keys(const RunSpec& spec);  // the same as text
 std::string to_json(const RunSpec& spec);
 RunSpec run_spec_from_json(const std::string& json, PluginRegistry& registry);
 
+// The keys of a config file as acoplan --config reads it (key = value lines, [slot] sections
+// for slot.key; # comments), unchecked: resolve_run() checks them. Throws an Error naming the
+// file if it cannot be read or parsed.
+Keys read_config_file(const std::string& path);
+
 struct LoadedProblem {
   std::unique_ptr<Map> map;
   Cell start;

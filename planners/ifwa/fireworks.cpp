@@ -288,10 +288,7 @@ double explosion_radius(const FireworksSettings& s, int generation) {
 }
 
 PlannerResult run_fireworks(const Graph& graph, NodeId start, NodeId goal, const FireworksSettings& s) {
-  for (const auto& [node, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
-    if (node < 0 || node >= graph.num_nodes()) throw Error(std::string("fireworks: ") + what + " node is outside the map");
-    if (!graph.passable(node)) throw Error(std::string("fireworks: ") + what + " " + to_string(graph.cell(node)) + " is a blocked cell");
-  }
+  check_endpoints(graph, start, goal, "fireworks");
   if (s.iterations < 1 || s.fireworks < 1 || s.sparks < 1 || s.mutation_sparks < 0)
     throw Error("fireworks: iterations, fireworks and sparks must be at least 1, mutation_sparks at least 0");
   if (!(s.a >= 0 && s.a <= s.b && s.b <= 1)) throw Error("fireworks: need 0 <= a <= b <= 1");
@@ -299,13 +296,7 @@ PlannerResult run_fireworks(const Graph& graph, NodeId start, NodeId goal, const
     throw Error("fireworks: need 0 < weight_min < weight_max");
   if (!(s.radius > 0 && std::isfinite(s.radius) && s.radius_end > 0 && s.radius_end <= 1))
     throw Error("fireworks: need radius > 0 and radius_end in (0, 1]");
-  if (start == goal) {
-    PlannerResult trivial;
-    trivial.solved = true;
-    trivial.path = {start};
-    trivial.length = 0.0;
-    return trivial;
-  }
+  if (start == goal) return PlannerResult::already_there(start);
   return Search(graph, start, goal, s).run();
 }
 

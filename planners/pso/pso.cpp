@@ -178,22 +178,13 @@ WaypointWalk walk_waypoints(const Graph& g, std::span<const Cell> cells) {
 }
 
 PlannerResult run_pso(const Graph& graph, NodeId start, NodeId goal, const PsoSettings& s) {
-  for (const auto& [node, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
-    if (node < 0 || node >= graph.num_nodes()) throw Error(std::string("pso: ") + what + " node is outside the map");
-    if (!graph.passable(node)) throw Error(std::string("pso: ") + what + " " + to_string(graph.cell(node)) + " is a blocked cell");
-  }
+  check_endpoints(graph, start, goal, "pso");
   if (s.particles < 1 || s.iterations < 1 || s.waypoints < 1)
     throw Error("pso: particles, iterations and waypoints must be at least 1");
   if (!(s.inertia >= 0 && s.c1 >= 0 && s.c2 >= 0 && s.max_velocity > 0 && s.penalty > 0) ||
       !std::isfinite(s.inertia + s.c1 + s.c2 + s.max_velocity + s.penalty))
     throw Error("pso: inertia, c1 and c2 must be >= 0, max_velocity and penalty > 0, all finite");
-  if (start == goal) {
-    PlannerResult trivial;
-    trivial.solved = true;
-    trivial.path = {start};
-    trivial.length = 0.0;
-    return trivial;
-  }
+  if (start == goal) return PlannerResult::already_there(start);
   return Swarm(graph, start, goal, s).run();
 }
 

@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "aco/error.hpp"
 #include "aco/graph.hpp"
 
 namespace aco {
@@ -32,6 +35,24 @@ struct SearchResult {
 // For them the initial population counts towards iteration 1.
 struct PlannerResult : SearchResult {
   std::uint64_t evaluations = 0;  // candidate solutions decoded into walks
+
+  // The answer for start == goal, before any search.
+  static PlannerResult already_there(NodeId node) {
+    PlannerResult r;
+    r.solved = true;
+    r.path = {node};
+    r.length = 0.0;
+    return r;
+  }
 };
+
+// A baseline planner's first check: start and goal are nodes of the graph and free. Throws an
+// Error starting with `planner` ("pso: goal (3,4) is a blocked cell").
+inline void check_endpoints(const Graph& graph, NodeId start, NodeId goal, const std::string& planner) {
+  for (const auto& [node, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
+    if (node < 0 || node >= graph.num_nodes()) throw Error(planner + ": " + what + " node is outside the map");
+    if (!graph.passable(node)) throw Error(planner + ": " + what + " " + to_string(graph.cell(node)) + " is a blocked cell");
+  }
+}
 
 }  // namespace aco

@@ -139,9 +139,12 @@ TEST_CASE("acoplan --dump-irace-params lists the colony and every plugin of ever
   CHECK(by_name["same_path_stop"].flag == "--same-path-stop=");
   CHECK(by_name["same_path_stop"].domain == "true, false");
 
-  // One categorical per slot with every plugin found, and each plugin's parameters under it.
+  // One categorical per slot with every plugin found, and each plugin's parameters under it;
+  // not the local slot, which acoplan does not use (see the next test).
+  CHECK(by_name.count("local") == 0);
   std::size_t plugin_parameters = 0;
   for (const char* slot : aco::kSlots) {
+    if (std::string(slot) == "local") continue;
     REQUIRE(by_name.count(slot));
     const auto& choice = by_name[slot];
     CHECK(choice.type == "c");
@@ -165,6 +168,17 @@ TEST_CASE("acoplan --dump-irace-params lists the colony and every plugin of ever
   CHECK(by_name.count("update_rho_max_min"));
   CHECK(by_name["update_p_best"].condition == "update == \"max_min\"");
   CHECK(parameters.size() > plugin_parameters);  // one line each, minus the few skipped, plus colony and slots
+}
+
+TEST_CASE("acoplan --irace-slots local dumps the parameters of the local planners", "[acoplan][irace]") {
+  const auto r = test::acoplan({"--dump-irace-params", "-", "--irace-slots", "local"});
+  REQUIRE(r.exit_code == 0);
+  std::map<std::string, IraceParameter> by_name;
+  for (const auto& p : parse_irace_parameters(r.out)) by_name[p.name] = p;
+  REQUIRE(by_name.count("local"));
+  CHECK(by_name["local"].values() == test::plugins().names("local"));
+  CHECK(by_name["local_heading"].condition == "local == \"dwa\"");
+  CHECK(by_name.count("update") == 0);
 }
 
 TEST_CASE("every value at the ends of a dumped range is finite and accepted by acoplan", "[acoplan][irace]") {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Scaffolds an out-of-tree plugin project that builds against an installed aco SDK:
-#   tools/new-plugin.sh KIND NAME DIR      (KIND: init, heuristic, update, deadlock, smoother)
+#   tools/new-plugin.sh KIND NAME DIR      (KIND: init, heuristic, update, deadlock, smoother, local)
 # then: cmake -S DIR -B DIR/build -DCMAKE_PREFIX_PATH=<aco prefix> && cmake --build DIR/build
 #       acoplan --plugin-dir DIR/build/plugins --KIND NAME
 # The generated class compiles and runs as it is; replace its one method with your idea.
@@ -26,7 +26,10 @@ case "$kind" in
   smoother) interface=Smoother; method='  std::vector<Eigen::Vector3d> smooth(const aco::Context& c, std::span<const aco::NodeId> path) const override {
     return aco::to_waypoints(*c.graph, path);
   }' ;;
-  *) echo "new-plugin: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother)" >&2; exit 2 ;;
+  local) interface=LocalPlanner; method='  aco::VelocityCommand command(const aco::LocalView& view) override {
+    return aco::dynamic_window(view.robot, view.limits, view.period).clamp({p_.value, 0.0});  // straight ahead
+  }' ;;
+  *) echo "new-plugin: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother, local)" >&2; exit 2 ;;
 esac
 mkdir -p "$dir"
 cat > "$dir/CMakeLists.txt" <<CMAKE

@@ -12,6 +12,7 @@ const char* default_plugin(const std::string& slot) {
   if (slot == "update") return "ant_system";
   if (slot == "deadlock") return "discard";
   if (slot == "smoother") return "none";
+  if (slot == "local") return "track";
   throw Error("unknown slot '" + slot + "'");
 }
 
@@ -28,6 +29,7 @@ LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec) {
   make("update", loaded.update);
   make("deadlock", loaded.deadlock);
   make("smoother", loaded.smoother);
+  make("local", loaded.local);
   return loaded;
 }
 

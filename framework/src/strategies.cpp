@@ -17,6 +17,7 @@ Heuristic::~Heuristic() = default;
 PheromoneUpdate::~PheromoneUpdate() = default;
 DeadlockPolicy::~DeadlockPolicy() = default;
 Smoother::~Smoother() = default;
+LocalPlanner::~LocalPlanner() = default;
 
 void Heuristic::compute_powered(const Context& context, std::span<double> eta_beta) {
   compute(context, eta_beta);

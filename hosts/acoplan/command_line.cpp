@@ -58,9 +58,14 @@ std::optional<std::string> text(const po::variables_map& vm, const char* key) {
   return vm[key].as<std::string>();
 }
 
-// --irace-slots "update,init": every name must be a slot; no option means all of them.
+// --irace-slots "update,init": every name must be a slot. No option means every slot that shapes
+// the planned path: not local, which only acosim's robot uses, so irace would tune it blind.
 std::vector<std::string> irace_slots(const std::optional<std::string>& option) {
-  if (!option) return {aco::kSlots.begin(), aco::kSlots.end()};
+  if (!option) {
+    std::vector<std::string> slots(aco::kSlots.begin(), aco::kSlots.end());
+    std::erase(slots, "local");
+    return slots;
+  }
   std::vector<std::string> slots;
   std::istringstream in(*option);
   for (std::string slot; std::getline(in, slot, ',');) {
@@ -170,7 +175,7 @@ Request parse_command_line(int argc, const char* const* argv) {
       ("dump-irace-params", po::value<std::string>()->value_name("FILE"),
        "write irace's parameter file (colony and plugin parameters) to FILE (- = stdout) and exit")
       ("irace-slots", po::value<std::string>()->value_name("SLOTS"),
-       "with --dump-irace-params: the slots whose plugin irace chooses, comma separated (default: all five)")
+       "with --dump-irace-params: the slots whose plugin irace chooses, comma separated (default: all but local, which acoplan does not use)")
       ("svg", po::value<std::string>()->value_name("FILE"), "write a picture of the map, the path and the convergence curve")
       ("config", po::value<std::string>()->value_name("FILE"), "read options from an INI file (command line wins)")
       ("print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")

@@ -11,8 +11,9 @@
 
 namespace aco {
 
-inline constexpr std::array<const char*, 5> kSlots = {"init", "heuristic", "update", "deadlock", "smoother"};
-const char* default_plugin(const std::string& slot);  // uniform, distance, ant_system, discard, none
+inline constexpr std::array<const char*, 6> kSlots = {"init", "heuristic", "update", "deadlock", "smoother", "local"};
+// uniform, distance, ant_system, discard, none, track
+const char* default_plugin(const std::string& slot);
 
 // A slot's plugin and its resolved parameters (every one, defaults included).
 struct SlotSpec {
@@ -27,6 +28,7 @@ struct LoadedPipeline {
   std::unique_ptr<PheromoneUpdate> update;
   std::unique_ptr<DeadlockPolicy> deadlock;
   std::unique_ptr<Smoother> smoother;
+  std::unique_ptr<LocalPlanner> local;  // drives the robot along the path (acosim)
 
   Pipeline colony() const { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
 };

@@ -27,7 +27,8 @@ namespace aco {
 // 3: Map::blocked_reason() changed Map's vtable.
 // 4: Heuristic::updates_by_node() and update_node() (lazy heuristic updates on large maps).
 // 5: PheromoneUpdate::exploitation() removed: q0 is the colony setting ColonySettings::q0.
-inline constexpr std::uint32_t kPluginAbiVersion = 5;
+// 6: the sixth slot, local (LocalPlanner, LocalView).
+inline constexpr std::uint32_t kPluginAbiVersion = 6;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
 
@@ -63,6 +64,7 @@ struct heuristic { using interface = Heuristic; };
 struct update { using interface = PheromoneUpdate; };
 struct deadlock { using interface = DeadlockPolicy; };
 struct smoother { using interface = Smoother; };
+struct local { using interface = LocalPlanner; };
 }  // namespace slot
 
 }  // namespace aco

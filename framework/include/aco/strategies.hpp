@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "aco/graph.hpp"
+#include "aco/robot.hpp"
 
 namespace aco {
 
@@ -116,6 +117,35 @@ class BOOST_SYMBOL_VISIBLE Smoother : public Strategy {
  public:
   ~Smoother() override;
   virtual std::vector<Eigen::Vector3d> smooth(const Context& context, std::span<const NodeId> path) const = 0;
+};
+
+// What a local planner sees at one control step: the robot, its limits, the intermediate goal
+// it drives to, and the obstacles its sensor reports (blocked map cells, known or not, and
+// moving discs), all within the sensor range.
+struct MovingObstacle {
+  Eigen::Vector2d position;
+  Eigen::Vector2d velocity;  // map units per second, as sensed
+  double radius = 0.0;
+};
+
+struct LocalView {
+  RobotState robot;
+  RobotLimits limits;
+  double period = 0.1;                          // control period: the command is held this long
+  Eigen::Vector2d goal;                         // the current intermediate goal
+  std::span<const Eigen::Vector2d> cells;       // centres of sensed blocked cells
+  double cell_size = 1.0;                       // a cell is a square of this side
+  std::span<const MovingObstacle> moving;       // sensed moving obstacles
+};
+
+// Slot "local": the velocity command for the next control period, which follows the global
+// path's intermediate goals and avoids what the sensor sees (used by acosim; acoplan plans the
+// global path only). The command must lie in dynamic_window(view.robot, view.limits,
+// view.period); the simulator clamps it there.
+class BOOST_SYMBOL_VISIBLE LocalPlanner : public Strategy {
+ public:
+  ~LocalPlanner() override;
+  virtual VelocityCommand command(const LocalView& view) = 0;
 };
 
 }  // namespace aco

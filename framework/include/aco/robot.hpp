@@ -1,0 +1,88 @@
+#pragma once
+// A mobile robot on the map for local planning (paper 003, section 3): its state, its limits, the
+// motion model and the dynamic window. Shared by the local planner plugins and the simulator, so
+// both move the robot the same way. Units are map units (a cell is cell_size wide, 1 on plain
+// grids: metres in the paper) and seconds; headings in radians in the map's (x, y) frame.
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+
+namespace aco {
+
+struct RobotState {
+  double x = 0.0;
+  double y = 0.0;
+  double heading = 0.0;  // theta
+  double v = 0.0;        // forward velocity
+  double w = 0.0;        // angular velocity (yaw rate)
+
+  Eigen::Vector2d position() const { return {x, y}; }
+};
+
+inline constexpr double kDegree = M_PI / 180.0;
+
+// Paper 003's robot as defaults. The paper gives 20 "rad/s" and 50 "rad/s^2"; they are the
+// degrees of the widely used MATLAB DWA code it follows (toRadian(20), toRadian(50)): at 20 rad/s
+// a robot at full speed turns on a 7.5 cm circle, and the planner prefers spinning to driving.
+struct RobotLimits {
+  double radius = 0.3;                     // the robot is a disc of this radius
+  double max_speed = 1.5;                  // v in [0, max_speed]: the robot does not reverse
+  double max_yaw_rate = 20.0 * kDegree;    // |w| <= max_yaw_rate
+  double max_accel = 0.2;                  // |dv/dt| <= max_accel, braking included
+  double max_yaw_accel = 50.0 * kDegree;   // |dw/dt| <= max_yaw_accel
+};
+
+struct VelocityCommand {
+  double v = 0.0;
+  double w = 0.0;
+};
+
+// Eq. 15-17: one step of length dt with the velocities held, the position moved along the
+// heading at the start of the step (then the heading turns). lateral_v is the paper's v_y, zero
+// for a differential-drive robot.
+inline RobotState move(const RobotState& s, const VelocityCommand& c, double dt, double lateral_v = 0.0) {
+  RobotState next = s;
+  const double cos_h = std::cos(s.heading), sin_h = std::sin(s.heading);
+  next.x = s.x + c.v * dt * cos_h - lateral_v * dt * sin_h;
+  next.y = s.y + c.v * dt * sin_h + lateral_v * dt * cos_h;
+  next.heading = s.heading + c.w * dt;
+  next.v = c.v;
+  next.w = c.w;
+  return next;
+}
+
+// Eq. 19-20: the velocities reachable within one control period, inside the robot's limits.
+struct DynamicWindow {
+  double v_low, v_high, w_low, w_high;
+
+  VelocityCommand clamp(const VelocityCommand& c) const {
+    return {std::clamp(c.v, v_low, v_high), std::clamp(c.w, w_low, w_high)};
+  }
+};
+
+inline DynamicWindow dynamic_window(const RobotState& s, const RobotLimits& limits, double period) {
+  return {std::max(0.0, s.v - limits.max_accel * period), std::min(limits.max_speed, s.v + limits.max_accel * period),
+          std::max(-limits.max_yaw_rate, s.w - limits.max_yaw_accel * period),
+          std::min(limits.max_yaw_rate, s.w + limits.max_yaw_accel * period)};
+}
+
+// Braking as hard as allowed along the arc the robot is on (the curvature w / v kept, inside the
+// yaw limits): what a robot does when no velocity is safe. Speeds were chosen so that it can
+// stop on that arc before it touches anything.
+inline VelocityCommand brake(const RobotState& s, const RobotLimits& limits, double period) {
+  const double v = std::max(0.0, s.v - limits.max_accel * period);
+  const double w = s.v > 0.0 ? s.w * v / s.v : 0.0;
+  return dynamic_window(s, limits, period).clamp({v, w});
+}
+
+// Distance from point p to the closed square of side `size` centred on `centre` (0 inside).
+inline double distance_to_square(const Eigen::Vector2d& p, const Eigen::Vector2d& centre, double size) {
+  const double dx = std::max(0.0, std::abs(p.x() - centre.x()) - size / 2);
+  const double dy = std::max(0.0, std::abs(p.y() - centre.y()) - size / 2);
+  return std::hypot(dx, dy);
+}
+
+// Heading difference wrapped to [-pi, pi].
+inline double wrap_angle(double a) { return std::remainder(a, 2.0 * M_PI); }
+
+}  // namespace aco

@@ -1,0 +1,169 @@
+// Dynamic Window Approach (paper 003, section 3; Fox, Burgard and Thrun 1997): sample the
+// velocities reachable in one control period; for each, dist(v, w) is how far the robot drives
+// along that arc before it would touch an obstacle; keep the velocities it can still brake from
+// before that point (eq. 18), and take the best weighted, normalised sum of heading, dist and
+// velocity (eq. 21).
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "aco/plugin.hpp"
+
+namespace {
+
+struct Parameters {
+  double v_resolution = 0.02;
+  double w_resolution = 1.0 * aco::kDegree;
+  double heading = 0.15;
+  double clearance = 0.1;
+  double velocity = 0.3;
+  double horizon = 3.0;
+  double lookahead = 6.0;
+  double margin = 0.05;
+  bool predict = false;
+  bool stop_at_goal = true;
+};
+
+const aco::SettingsTable<Parameters> kParams({
+    aco::field("v_resolution", &Parameters::v_resolution, "(0:10]", "step between sampled velocities v (paper 003: 0.02)"),
+    aco::field("w_resolution", &Parameters::w_resolution, "(0:100]",
+               "step between sampled yaw rates w in rad/s (paper 003: 1 degree/s); w = 0 is always sampled when in the window"),
+    aco::field("heading", &Parameters::heading, "0:1000", "weight alpha of the heading term (paper 003: 0.15)"),
+    aco::field("clearance", &Parameters::clearance, "0:1000", "weight beta of the dist term (paper 003: 0.1)"),
+    aco::field("velocity", &Parameters::velocity, "0:1000", "weight gamma of the velocity term (paper 003: 0.3)"),
+    aco::field("horizon", &Parameters::horizon, "(0:100]",
+               "seconds each sampled velocity is rolled out for the heading term (the heading at the end counts)"),
+    aco::field("lookahead", &Parameters::lookahead, "(0:1e6]",
+               "dist(v, w) is searched along the arc up to this distance: a free arc scores this much, and the speed "
+               "stays below what can stop within it (6: the paper's 1.5 m/s at 0.2 m/s^2 needs 5.6)"),
+    aco::field("margin", &Parameters::margin, "0:1e6", "the robot counts as touching an obstacle closer than this"),
+    aco::field("predict", &Parameters::predict, "",
+               "roll moving obstacles forward with their sensed velocity (false: as in the paper, they stand where sensed)"),
+    aco::field("stop_at_goal", &Parameters::stop_at_goal, "",
+               "the velocity term counts v only up to sqrt(2 a_max d_goal), the speed the robot can stop from at the goal, "
+               "so it slows down and turns in instead of circling the goal (false: v, as in the paper)"),
+});
+
+class Dwa final : public aco::LocalPlanner {
+ public:
+  explicit Dwa(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
+
+  aco::VelocityCommand command(const aco::LocalView& view) override {
+    gather_near(view);
+    const aco::DynamicWindow window = aco::dynamic_window(view.robot, view.limits, view.period);
+    candidates_.clear();
+    for (double v : samples(window.v_low, window.v_high, p_.v_resolution, false))
+      for (double w : samples(window.w_low, window.w_high, p_.w_resolution, true)) consider(view, {v, w});
+    const double goal_speed = p_.stop_at_goal ? std::sqrt(2.0 * view.limits.max_accel * (view.goal - view.robot.position()).norm())
+                                              : std::numeric_limits<double>::infinity();
+    for (Candidate& c : candidates_) c.velocity = std::min(c.command.v, goal_speed);
+    double total_heading = 0, total_dist = 0, total_velocity = 0;
+    for (const Candidate& c : candidates_) {
+      total_heading += c.heading;
+      total_dist += c.dist;
+      total_velocity += c.velocity;
+    }
+    // sigma of eq. 21: each term as a share of its sum over the admissible velocities.
+    const auto share = [](double x, double total) { return total > 0.0 ? x / total : 0.0; };
+    const Candidate* best = nullptr;
+    double best_value = -std::numeric_limits<double>::infinity();
+    for (const Candidate& c : candidates_) {
+      const double value = p_.heading * share(c.heading, total_heading) + p_.clearance * share(c.dist, total_dist) +
+                           p_.velocity * share(c.velocity, total_velocity);
+      if (value > best_value) best_value = value, best = &c;
+    }
+    return best ? best->command : aco::brake(view.robot, view.limits, view.period);
+  }
+
+ private:
+  struct Candidate {
+    aco::VelocityCommand command;
+    double heading;  // pi - |angle from the heading at the horizon to the goal|, in [0, pi]
+    double dist;     // free distance along the arc, at most lookahead
+    double velocity = 0.0;  // the velocity term
+  };
+
+  // low, low + step, ... up to high, high itself included; with `zero`, 0 too if inside.
+  static std::vector<double> samples(double low, double high, double step, bool zero) {
+    std::vector<double> values;
+    for (int i = 0; low + i * step < high - 1e-12; ++i) values.push_back(low + i * step);
+    values.push_back(high);
+    if (!zero || low > 0.0 || high < 0.0) return values;
+    // Exactly 0, so that the robot can drive straight: a grid value within rounding of it is 0.
+    const auto nearest = std::min_element(values.begin(), values.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+    if (std::abs(*nearest) < 1e-9 * step) *nearest = 0.0;
+    else values.insert(std::upper_bound(values.begin(), values.end(), 0.0), 0.0);
+    return values;
+  }
+
+  // The obstacles an arc of length lookahead can reach; the others cannot matter this step.
+  void gather_near(const aco::LocalView& view) {
+    const Eigen::Vector2d p = view.robot.position();
+    const double reach = p_.lookahead + view.limits.radius + p_.margin;
+    near_cells_.clear();
+    for (const Eigen::Vector2d& c : view.cells)
+      if (aco::distance_to_square(p, c, view.cell_size) <= reach) near_cells_.push_back(c);
+    near_moving_.clear();
+    for (const aco::MovingObstacle& m : view.moving) {
+      // A predicted obstacle may come from farther away: it moves while the robot drives.
+      const double travel = p_.predict ? m.velocity.norm() * p_.lookahead / std::max(view.robot.v, 0.1) : 0.0;
+      if ((m.position - p).norm() - m.radius <= reach + travel) near_moving_.push_back(m);
+    }
+  }
+
+  // Whether the robot at p, at time t from now, touches an obstacle (closer than the margin).
+  bool touches(const aco::LocalView& view, const Eigen::Vector2d& p, double t) const {
+    const double limit = view.limits.radius + p_.margin;
+    for (const Eigen::Vector2d& c : near_cells_)
+      if (aco::distance_to_square(p, c, view.cell_size) < limit) return true;
+    for (const aco::MovingObstacle& m : near_moving_) {
+      const Eigen::Vector2d at = p_.predict ? Eigen::Vector2d(m.position + t * m.velocity) : m.position;
+      if ((p - at).norm() - m.radius < limit) return true;
+    }
+    return false;
+  }
+
+  // dist(v, w): the arc length driven with (v, w) held before the first contact, searched in
+  // steps of a tenth of the robot's radius up to the lookahead (which it returns if the arc is
+  // free). Turning on the spot (v = 0) drives nowhere: its arc is free.
+  double free_distance(const aco::LocalView& view, const aco::VelocityCommand& c) const {
+    if (c.v <= 0.0) return p_.lookahead;
+    const aco::RobotState& r = view.robot;
+    const double step = std::max(view.limits.radius, 1e-3) / 10.0, curvature = c.w / c.v;
+    for (double s = step;; s += step) {
+      const double arc = std::min(s, p_.lookahead), turn = curvature * arc;
+      // The exact arc: a straight segment when it does not turn.
+      const Eigen::Vector2d at =
+          std::abs(turn) < 1e-9
+              ? Eigen::Vector2d(r.x + arc * std::cos(r.heading), r.y + arc * std::sin(r.heading))
+              : Eigen::Vector2d(r.x + (std::sin(r.heading + turn) - std::sin(r.heading)) / curvature,
+                                r.y - (std::cos(r.heading + turn) - std::cos(r.heading)) / curvature);
+      if (touches(view, at, arc / c.v)) return std::max(0.0, arc - step);
+      if (arc >= p_.lookahead) return p_.lookahead;
+    }
+  }
+
+  void consider(const aco::LocalView& view, const aco::VelocityCommand& command) {
+    const double dist = free_distance(view, command);
+    // Eq. 18 in discrete time: driving one period at v, then braking, must end before contact.
+    if (command.v * view.period + command.v * command.v / (2.0 * view.limits.max_accel) > dist) return;
+    aco::RobotState s = view.robot;
+    const int steps = std::max(1, static_cast<int>(std::ceil(p_.horizon / view.period - 1e-9)));
+    for (int k = 0; k < steps; ++k) s = aco::move(s, command, view.period);
+    const Eigen::Vector2d to_goal = view.goal - s.position();
+    const double error = to_goal.squaredNorm() > 0.0 ? aco::wrap_angle(std::atan2(to_goal.y(), to_goal.x()) - s.heading) : 0.0;
+    candidates_.push_back({command, M_PI - std::abs(error), dist});
+  }
+
+  Parameters p_;
+  std::vector<Candidate> candidates_;
+  std::vector<Eigen::Vector2d> near_cells_;
+  std::vector<aco::MovingObstacle> near_moving_;
+};
+
+}  // namespace
+
+ACO_PLUGIN(local, dwa, Dwa, "1.0",
+           "paper 003: Dynamic Window Approach, G(v,w) = alpha heading + beta dist + gamma velocity over the velocities that can still stop",
+           kParams)

@@ -13,106 +13,35 @@
 #include "aco/pipeline.hpp"
 #include "aco/rng.hpp"
 #include "aco/planning.hpp"
+#include "aco/yaml_keys.hpp"
 
 namespace acobench {
 namespace {
 
-std::string where(const std::filesystem::path& file, const YAML::Node& node) {
-  return file.string() + ":" + std::to_string(node.Mark().line + 1);
-}
+using aco::yaml::cell;
+using aco::yaml::fail;
+using aco::yaml::integer;
+using aco::yaml::only_keys;
+using aco::yaml::scalar;
+using aco::yaml::where;
 
-[[noreturn]] void fail(const std::filesystem::path& file, const YAML::Node& node, const std::string& message) {
-  throw aco::Error(where(file, node) + ": " + message);
-}
-
-std::string scalar(const std::filesystem::path& file, const YAML::Node& node, const std::string& key) {
-  if (!node.IsScalar()) fail(file, node, "'" + key + "' must be a single value");
-  return node.Scalar();
-}
-
-int integer(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, int low) {
-  const std::string text = scalar(file, node, key);
-  int value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || value < low)
-    fail(file, node, "'" + key + "' must be a whole number >= " + std::to_string(low) + ", not '" + text + "'");
-  return value;
-}
-
-void only_keys(const std::filesystem::path& file, const YAML::Node& map, const std::vector<std::string>& allowed,
-               const std::string& what) {
-  if (!map.IsMap()) fail(file, map, what + " must be a mapping of keys to values");
-  for (const auto& entry : map) {
-    const std::string key = entry.first.Scalar();
-    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-      std::string message = "unknown key '" + key + "' in " + what;
-      if (const auto near = aco::nearest(key, allowed); !near.empty()) message += "; did you mean '" + near + "'?";
-      fail(file, entry.first, message);
-    }
-  }
-}
-
-aco::Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key) {
-  if (node.IsSequence() && node.size() == 2)
-    return {integer(file, node[0], key + "[0]", 0), integer(file, node[1], key + "[1]", 0)};
-  fail(file, node, "'" + key + "' must be a cell [x, y]");
-}
-
-// One key of a configuration; a slot may be given as {plugin: NAME, param: value, ...}.
-void read_key(const std::filesystem::path& file, const YAML::Node& name, const YAML::Node& value, Configuration& config) {
-  const std::string key = name.Scalar();
-  if (value.IsMap()) {
-    if (std::find(aco::kSlots.begin(), aco::kSlots.end(), key) == aco::kSlots.end())
-      fail(file, name, "'" + key + "' is not a slot; only slots (" + std::string("init, heuristic, update, deadlock, smoother") +
-                           ") take a {plugin: ..., parameter: ...} mapping");
-    for (const auto& inner : value) {
-      const std::string param = inner.first.Scalar();
-      const std::string full = param == "plugin" ? key : key + "." + param;
-      config.keys[full] = scalar(file, inner.second, full);
-      config.origins[full] = where(file, inner.first);
-    }
-    if (!value["plugin"]) fail(file, name, "slot '" + key + "' needs a 'plugin' key");
-    return;
-  }
-  config.keys[key] = scalar(file, value, key);
-  config.origins[key] = where(file, name);
-}
-
-Configuration overlay(const Configuration& base, const Configuration& changes, const std::string& name);
-
-// A configuration written as keys. `config: FILE` (relative to the experiment file) starts from
-// the keys of an acoplan config file, such as a preset; the configuration's other keys override
-// them, as acoplan's command line overrides its --config file.
-Configuration read_keys(const std::filesystem::path& file, const YAML::Node& node) {
-  if (!node.IsMap()) fail(file, node, "a configuration must be a mapping of keys to values");
-  Configuration config;
-  for (const auto& entry : node)
-    if (entry.first.Scalar() != "name" && entry.first.Scalar() != "config") read_key(file, entry.first, entry.second, config);
-  if (!node["config"]) return config;
-  const std::filesystem::path ini = (file.parent_path() / scalar(file, node["config"], "config")).lexically_normal();
-  Configuration preset;
-  try {
-    preset.keys = aco::read_config_file(ini.string());
-  } catch (const aco::Error& e) {
-    fail(file, node["config"], e.what());
-  }
-  for (const auto& [key, value] : preset.keys) preset.origins[key] = ini.string();
-  return overlay(preset, config, "");
-}
+aco::yaml::KeyedValues keyed(const Configuration& c) { return {c.keys, c.origins}; }
 
 Configuration overlay(const Configuration& base, const Configuration& changes, const std::string& name) {
-  Configuration c = base;
+  const aco::yaml::KeyedValues merged = aco::yaml::overlay(keyed(base), keyed(changes));
+  Configuration c;
   c.name = name;
-  c.run.reset();
-  // A new plugin for a slot drops the old plugin's parameters.
-  for (const auto& [key, value] : changes.keys)
-    if (std::find(aco::kSlots.begin(), aco::kSlots.end(), key) != aco::kSlots.end() && c.keys.count(key) &&
-        c.keys.at(key) != value)
-      std::erase_if(c.keys, [&key](const auto& kv) { return kv.first.rfind(key + ".", 0) == 0; });
-  for (const auto& [key, value] : changes.keys) {
-    c.keys[key] = value;
-    c.origins[key] = changes.origins.count(key) ? changes.origins.at(key) : "";
-  }
+  c.keys = merged.keys;
+  c.origins = merged.origins;
+  return c;
+}
+
+// A configuration written as keys (see aco::yaml::read_run_keys: slots as mappings, `config:`).
+Configuration read_keys(const std::filesystem::path& file, const YAML::Node& node) {
+  const aco::yaml::KeyedValues values = aco::yaml::read_run_keys(file, node, {"name"});
+  Configuration c;
+  c.keys = values.keys;
+  c.origins = values.origins;
   return c;
 }
 
@@ -188,16 +117,11 @@ std::vector<Configuration> factorial(const std::filesystem::path& file, const YA
   return configs;
 }
 
-std::string key_origin(const Configuration& config, const std::string& key) {
-  const auto it = config.origins.find(key);
-  return it != config.origins.end() && !it->second.empty() ? it->second + ": " : "";
-}
-
 }  // namespace
 
 aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry) {
   const auto fail_key = [&config](const std::string& key, const std::string& message) {
-    return aco::Error(key_origin(config, key) + "configuration '" + config.name + "': " + message);
+    return aco::Error(keyed(config).origin(key) + "configuration '" + config.name + "': " + message);
   };
   for (const char* key : {"map", "scen", "scen-index", "start", "goal"})
     if (config.keys.count(key))

@@ -1,0 +1,41 @@
+#pragma once
+// Run keys written in YAML, as acobench's experiment files and acosim's scenario files write
+// them, with the file and line of every key for error messages. Also the small readers both
+// files use: a scalar, a whole number, a cell, a mapping with known keys.
+#include <yaml-cpp/yaml.h>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "aco/map.hpp"
+#include "aco/run_spec.hpp"
+
+namespace aco::yaml {
+
+std::string where(const std::filesystem::path& file, const YAML::Node& node);  // "file:line"
+[[noreturn]] void fail(const std::filesystem::path& file, const YAML::Node& node, const std::string& message);
+std::string scalar(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);
+int integer(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, int low);
+Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);  // [x, y]
+// Fails on a key of `map` that is not allowed, naming the nearest allowed one.
+void only_keys(const std::filesystem::path& file, const YAML::Node& map, const std::vector<std::string>& allowed,
+               const std::string& what);
+
+// Keys with where each was written ("file:line", or the config file's path).
+struct KeyedValues {
+  Keys keys;
+  std::map<std::string, std::string> origins;
+  std::string origin(const std::string& key) const;  // "file:line: ", or "" if unknown
+};
+
+// `changes` over `base`; another plugin for a slot drops the base's parameters of that slot.
+KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes);
+
+// The run keys of a mapping; a slot may be given as {plugin: NAME, param: value, ...}, and
+// `config: FILE` (relative to `file`) starts from an acoplan config file's keys, which the
+// mapping's own keys override. Keys listed in `skip` are not run keys (a configuration's name).
+KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node, const std::vector<std::string>& skip);
+
+}  // namespace aco::yaml

@@ -1,0 +1,115 @@
+#include "aco/yaml_keys.hpp"
+
+#include <algorithm>
+#include <charconv>
+
+#include "aco/error.hpp"
+#include "aco/parameters.hpp"
+#include "aco/pipeline.hpp"
+
+namespace aco::yaml {
+
+std::string where(const std::filesystem::path& file, const YAML::Node& node) {
+  return file.string() + ":" + std::to_string(node.Mark().line + 1);
+}
+
+void fail(const std::filesystem::path& file, const YAML::Node& node, const std::string& message) {
+  throw Error(where(file, node) + ": " + message);
+}
+
+std::string scalar(const std::filesystem::path& file, const YAML::Node& node, const std::string& key) {
+  if (!node.IsScalar()) fail(file, node, "'" + key + "' must be a single value");
+  return node.Scalar();
+}
+
+int integer(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, int low) {
+  const std::string text = scalar(file, node, key);
+  int value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc() || end != text.data() + text.size() || value < low)
+    fail(file, node, "'" + key + "' must be a whole number >= " + std::to_string(low) + ", not '" + text + "'");
+  return value;
+}
+
+Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key) {
+  if (node.IsSequence() && node.size() == 2)
+    return {integer(file, node[0], key + "[0]", 0), integer(file, node[1], key + "[1]", 0)};
+  fail(file, node, "'" + key + "' must be a cell [x, y]");
+}
+
+void only_keys(const std::filesystem::path& file, const YAML::Node& map, const std::vector<std::string>& allowed,
+               const std::string& what) {
+  if (!map.IsMap()) fail(file, map, what + " must be a mapping of keys to values");
+  for (const auto& entry : map) {
+    const std::string key = entry.first.Scalar();
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      std::string message = "unknown key '" + key + "' in " + what;
+      if (const auto near = nearest(key, allowed); !near.empty()) message += "; did you mean '" + near + "'?";
+      fail(file, entry.first, message);
+    }
+  }
+}
+
+std::string KeyedValues::origin(const std::string& key) const {
+  const auto it = origins.find(key);
+  return it != origins.end() && !it->second.empty() ? it->second + ": " : "";
+}
+
+KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
+  KeyedValues c = base;
+  for (const auto& [key, value] : changes.keys)
+    if (std::find(kSlots.begin(), kSlots.end(), key) != kSlots.end() && c.keys.count(key) && c.keys.at(key) != value)
+      std::erase_if(c.keys, [&key](const auto& kv) { return kv.first.rfind(key + ".", 0) == 0; });
+  for (const auto& [key, value] : changes.keys) {
+    c.keys[key] = value;
+    c.origins[key] = changes.origins.count(key) ? changes.origins.at(key) : "";
+  }
+  return c;
+}
+
+namespace {
+
+// One key; a slot may be given as {plugin: NAME, param: value, ...}.
+void read_key(const std::filesystem::path& file, const YAML::Node& name, const YAML::Node& value, KeyedValues& out) {
+  const std::string key = name.Scalar();
+  if (value.IsMap()) {
+    if (std::find(kSlots.begin(), kSlots.end(), key) == kSlots.end()) {
+      std::string slots;
+      for (const char* slot : kSlots) slots += (slots.empty() ? "" : ", ") + std::string(slot);
+      fail(file, name, "'" + key + "' is not a slot; only slots (" + slots + ") take a {plugin: ..., parameter: ...} mapping");
+    }
+    for (const auto& inner : value) {
+      const std::string param = inner.first.Scalar();
+      const std::string full = param == "plugin" ? key : key + "." + param;
+      out.keys[full] = scalar(file, inner.second, full);
+      out.origins[full] = where(file, inner.first);
+    }
+    if (!value["plugin"]) fail(file, name, "slot '" + key + "' needs a 'plugin' key");
+    return;
+  }
+  out.keys[key] = scalar(file, value, key);
+  out.origins[key] = where(file, name);
+}
+
+}  // namespace
+
+KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node, const std::vector<std::string>& skip) {
+  if (!node.IsMap()) fail(file, node, "a configuration must be a mapping of keys to values");
+  KeyedValues own;
+  for (const auto& entry : node) {
+    const std::string key = entry.first.Scalar();
+    if (key != "config" && std::find(skip.begin(), skip.end(), key) == skip.end()) read_key(file, entry.first, entry.second, own);
+  }
+  if (!node["config"]) return own;
+  const std::filesystem::path ini = (file.parent_path() / scalar(file, node["config"], "config")).lexically_normal();
+  KeyedValues preset;
+  try {
+    preset.keys = read_config_file(ini.string());
+  } catch (const Error& e) {
+    fail(file, node["config"], e.what());
+  }
+  for (const auto& [key, value] : preset.keys) preset.origins[key] = ini.string();
+  return overlay(preset, own);
+}
+
+}  // namespace aco::yaml

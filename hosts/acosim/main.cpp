@@ -1,0 +1,77 @@
+// acosim: a robot follows the colony's path with a local planner among obstacles the map did not
+// show (paper 003). See README.md.
+#include <boost/program_options.hpp>
+#include <fstream>
+#include <iostream>
+
+#include "aco/error.hpp"
+#include "simulation.hpp"
+
+namespace po = boost::program_options;
+
+namespace {
+
+constexpr int kExitError = 1;
+constexpr int kExitNotReached = 3;  // as acoplan's unsolved: the run ended without the goal
+
+void write(const std::string& file, const std::string& text) {
+  std::ofstream out(file);
+  if (!out || !(out << text)) throw aco::Error("cannot write " + file);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    std::string scenario_file, csv, svg, local;
+    std::vector<std::string> plugin_dirs;
+    po::options_description options("acosim: drive a robot along the colony's path with a local planner.\n\n"
+                                    "Usage: acosim SCENARIO.yaml [options]\n\nOptions");
+    options.add_options()
+        ("help,h", "print this help and exit")
+        ("json", po::bool_switch(), "print the summary and the trajectory as one JSON object")
+        ("csv", po::value(&csv)->value_name("FILE"), "write the trajectory (t, x, y, heading, v, w) as CSV")
+        ("svg", po::value(&svg)->value_name("FILE"), "write a picture: map, unknown cells, plans, trajectory, moving tracks")
+        ("local", po::value(&local)->value_name("PLUGIN"), "drive with this local planner (its defaults) instead of the scenario's")
+        ("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"), "also search DIR for plugins");
+    po::options_description hidden;
+    hidden.add_options()("scenario", po::value(&scenario_file));
+    po::options_description all;
+    all.add(options).add(hidden);
+    po::positional_options_description positional;
+    positional.add("scenario", 1);
+    po::variables_map vm;
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+    po::notify(vm);
+    if (vm.count("help")) {
+      std::cout << options << "\n";
+      return 0;
+    }
+    if (scenario_file.empty()) throw aco::Error("no scenario file (acosim SCENARIO.yaml; --help for options)");
+
+    std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
+    aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));
+    acosim::Scenario scenario = acosim::load_scenario(scenario_file, registry);
+    if (!local.empty()) {
+      const auto& descriptor = registry.load("local", local);
+      scenario.run.pipeline["local"] = {local, aco::resolve(descriptor.parameters(), {}, "local.")};
+    }
+    const acosim::SimulationResult result = acosim::simulate(scenario, registry);
+    if (!csv.empty()) write(csv, acosim::trajectory_csv(result));
+    if (!svg.empty()) write(svg, acosim::render_svg(scenario, result));
+    if (vm["json"].as<bool>()) {
+      std::cout << acosim::summary_json(scenario, result) << "\n";
+    } else {
+      std::cout << "scenario:  " << scenario_file << " (local planner " << scenario.run.pipeline.at("local").plugin << ")\n"
+                << "outcome:   " << result.outcome << (result.reason.empty() ? "" : " (" + result.reason + ")") << "\n"
+                << "time:      " << result.time << " s in " << result.steps << " control steps\n"
+                << "distance:  " << result.distance << "\n"
+                << "clearance: " << result.min_clearance << " (smallest)\n"
+                << "collisions " << result.collisions << ", replans " << result.replans << "\n";
+    }
+    return result.reached ? 0 : kExitNotReached;
+  } catch (const std::exception& e) {
+    std::cerr << "acosim: error: " << e.what() << "\n";
+  }
+  return kExitError;
+}

@@ -1,0 +1,208 @@
+#include "simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "aco/error.hpp"
+#include "aco/graph.hpp"
+#include "aco/planning.hpp"
+
+namespace acosim {
+
+Eigen::Vector2d MovingObstacle::position(double t) const {
+  if (route.size() < 2) return route.front() + t * velocity;
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < route.size(); ++i) perimeter += (route[(i + 1) % route.size()] - route[i]).norm();
+  double along = perimeter > 0.0 ? std::fmod(speed * t, perimeter) : 0.0;
+  for (std::size_t i = 0;; ++i) {
+    const Eigen::Vector2d &a = route[i % route.size()], &b = route[(i + 1) % route.size()];
+    const double leg = (b - a).norm();
+    if (along <= leg || i + 1 >= route.size()) return leg > 0.0 ? Eigen::Vector2d(a + (b - a) * (along / leg)) : a;
+    along -= leg;
+  }
+}
+
+Eigen::Vector2d MovingObstacle::velocity_at(double t) const {
+  if (route.size() < 2) return velocity;
+  const double dt = 1e-3;  // the route's direction where the disc is
+  return (position(t + dt) - position(t)) / dt;
+}
+
+namespace {
+
+Eigen::Vector2d centre(aco::Cell c) { return {double(c.x), double(c.y)}; }
+
+// The world as the simulator knows it: the truth (map plus unknown cells) and the robot's map.
+class World {
+ public:
+  World(const aco::OccupancyGrid& map, const std::vector<aco::Cell>& unknown) : known_(map), truth_(map) {
+    for (aco::Cell c : unknown) truth_.set_blocked(c, true);
+  }
+
+  const aco::OccupancyGrid& known() const { return known_; }
+  // Blocked in the world: an obstacle, or outside the map.
+  bool blocked(aco::Cell c) const { return !truth_.passable(c); }
+
+  // The blocked cells whose centre is within `range` of p (cells outside the map included, so
+  // the robot stays on it); unknown ones become sensed.
+  std::vector<Eigen::Vector2d> sense(const Eigen::Vector2d& p, double range, std::vector<aco::Cell>& sensed) {
+    std::vector<Eigen::Vector2d> cells;
+    const int r = static_cast<int>(std::ceil(range));
+    const aco::Cell at{static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
+    for (int y = at.y - r; y <= at.y + r; ++y)
+      for (int x = at.x - r; x <= at.x + r; ++x) {
+        const aco::Cell c{x, y};
+        if (!blocked(c) || (centre(c) - p).norm() > range) continue;
+        cells.push_back(centre(c));
+        if (known_.passable(c)) {
+          known_.set_blocked(c, true);  // the robot's map learns it; replans use it
+          sensed.push_back(c);
+        }
+      }
+    return cells;
+  }
+
+  // Distance from the disc (p, radius) to the nearest blocked cell, and which one.
+  double clearance(const Eigen::Vector2d& p, double radius, aco::Cell& nearest) const {
+    double best = std::numeric_limits<double>::infinity();
+    const int r = static_cast<int>(std::ceil(radius)) + 1;
+    const aco::Cell at{static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
+    for (int y = at.y - r; y <= at.y + r; ++y)
+      for (int x = at.x - r; x <= at.x + r; ++x)
+        if (blocked({x, y})) {
+          const double d = aco::distance_to_square(p, centre({x, y}), 1.0) - radius;
+          if (d < best) best = d, nearest = {x, y};
+        }
+    return best;
+  }
+
+ private:
+  aco::OccupancyGrid known_;
+  aco::OccupancyGrid truth_;
+};
+
+// The turning points of a path (the start dropped, the goal kept): where its direction changes.
+std::vector<Eigen::Vector2d> turning_points(const aco::Waypoints& path) {
+  std::vector<Eigen::Vector2d> points;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    if (i + 1 < path.size()) {
+      const Eigen::Vector2d in = (path[i] - path[i - 1]).head<2>(), out = (path[i + 1] - path[i]).head<2>();
+      if (std::abs(in.x() * out.y() - in.y() * out.x()) < 1e-9 && in.dot(out) > 0.0) continue;
+    }
+    points.push_back(path[i].head<2>());
+  }
+  return points;
+}
+
+}  // namespace
+
+SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registry) {
+  const aco::RunSpec& run = scenario.run;
+  const SimulationSettings& sim = scenario.simulation;
+  const aco::RobotLimits limits = scenario.robot.limits();
+  aco::LoadedProblem problem = aco::load_problem(run.problem);
+  const auto* grid = dynamic_cast<const aco::OccupancyGrid*>(problem.map.get());
+  if (!grid) throw aco::Error(problem.map->name() + ": acosim needs a 2D occupancy grid map, not a terrain");
+  World world(*grid, scenario.unknown);
+  const aco::LoadedPipeline pipeline = aco::instantiate(registry, run.pipeline);
+
+  SimulationResult result;
+  aco::RobotState robot;
+  robot.x = problem.start.x, robot.y = problem.start.y;
+  const Eigen::Vector2d goal = centre(problem.goal);
+  std::vector<Eigen::Vector2d> goals;  // the current plan's intermediate goals
+  std::size_t next = 0;
+
+  // Plans from the cell under the robot on the map as the robot knows it now.
+  const auto replan = [&](aco::Cell from) {
+    const aco::Graph graph = aco::build_graph(world.known(), run.graph);
+    const aco::PlanOutcome outcome = aco::plan(registry, graph, graph.node(from), graph.node(problem.goal), run);
+    if (!outcome.solved()) {
+      result.outcome = "no path";
+      result.reason = outcome.reason.empty() ? "the planner found no path" : outcome.reason;
+      return false;
+    }
+    goals = turning_points(outcome.path);
+    next = 0;
+    std::vector<Eigen::Vector2d> plan{robot.position()};
+    plan.insert(plan.end(), goals.begin(), goals.end());
+    result.plans.push_back(plan);
+    return true;
+  };
+  if (!replan(problem.start)) return result;
+  if (!goals.empty()) robot.heading = std::atan2(goals[0].y() - robot.y, goals[0].x() - robot.x);
+
+  const auto moving_at = [&](double t) {
+    std::vector<Eigen::Vector2d> at;
+    for (const MovingObstacle& m : scenario.moving) at.push_back(m.position(t));
+    return at;
+  };
+  result.frames.push_back({0.0, robot, 0, 0, moving_at(0.0)});
+  double t = 0.0, best_to_goal = std::numeric_limits<double>::infinity(), last_progress = 0.0;
+  while (true) {
+    if ((robot.position() - goal).norm() <= sim.goal_tolerance) {
+      result.reached = true;
+      result.outcome = "reached";
+      break;
+    }
+    if (t >= sim.time_limit - 1e-9) {
+      result.outcome = "timeout";
+      result.reason = "the goal was not reached within " + aco::to_string(aco::ParamValue(sim.time_limit)) + " s";
+      break;
+    }
+    while (next + 1 < goals.size() && (robot.position() - goals[next]).norm() <= sim.waypoint_tolerance) {
+      ++next;
+      best_to_goal = std::numeric_limits<double>::infinity();
+    }
+    // Progress towards the intermediate goal; none for stall_time means the way is blocked.
+    const double to_goal = (robot.position() - goals[next]).norm();
+    if (to_goal < best_to_goal - sim.stall_distance || best_to_goal == std::numeric_limits<double>::infinity())
+      best_to_goal = to_goal, last_progress = t;
+    if (t - last_progress >= sim.stall_time) {
+      if (result.replans >= sim.max_replans) {
+        result.outcome = "stuck";
+        result.reason = "no progress after " + std::to_string(result.replans) + " replans";
+        break;
+      }
+      ++result.replans;
+      const aco::Cell here{static_cast<int>(std::lround(robot.x)), static_cast<int>(std::lround(robot.y))};
+      if (!replan(here)) break;
+      best_to_goal = std::numeric_limits<double>::infinity(), last_progress = t;
+    }
+
+    std::vector<aco::MovingObstacle> seen;
+    for (const MovingObstacle& m : scenario.moving) {
+      const Eigen::Vector2d p = m.position(t);
+      if ((p - robot.position()).norm() - m.radius <= sim.sensor_range) seen.push_back({p, m.velocity_at(t), m.radius});
+    }
+    const std::vector<Eigen::Vector2d> cells = world.sense(robot.position(), sim.sensor_range, result.sensed);
+    aco::LocalView view{robot, limits, sim.period, goals[next], cells, 1.0, seen};
+    const aco::VelocityCommand command = aco::dynamic_window(robot, limits, sim.period).clamp(pipeline.local->command(view));
+    const aco::RobotState moved = aco::move(robot, command, sim.period);
+    result.distance += (moved.position() - robot.position()).norm();
+    robot = moved;
+    t += sim.period;
+    ++result.steps;
+    result.frames.push_back({t, robot, static_cast<int>(next), static_cast<int>(result.plans.size()) - 1, moving_at(t)});
+
+    aco::Cell touched;
+    double clearance = world.clearance(robot.position(), limits.radius, touched);
+    std::string hit = "the obstacle cell " + aco::to_string(touched);
+    for (std::size_t i = 0; i < scenario.moving.size(); ++i) {
+      const double d = (robot.position() - scenario.moving[i].position(t)).norm() - scenario.moving[i].radius - limits.radius;
+      if (d < clearance) clearance = d, hit = "moving obstacle " + std::to_string(i + 1);
+    }
+    result.min_clearance = std::min(result.min_clearance, clearance);
+    if (clearance < 0.0) {
+      result.collisions = 1;
+      result.outcome = "collision";
+      result.reason = "the robot touched " + hit + " at t = " + aco::to_string(aco::ParamValue(t)) + " s";
+      break;
+    }
+  }
+  result.time = t;
+  return result;
+}
+
+}  // namespace acosim

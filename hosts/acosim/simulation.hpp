@@ -1,0 +1,101 @@
+#pragma once
+// acosim: a robot follows the colony's global path with a local planner (paper 003, section 4)
+// in a world that also holds obstacles the map does not show, some of them moving. The global
+// path is planned on the known map with the run's whole configuration (aco::RunSpec: any
+// planner, pipeline or preset); its turning points are the local planner's intermediate goals.
+// When the robot stops making progress, it adds the unknown cells it has sensed to its map and
+// replans from where it stands.
+#include <Eigen/Core>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "aco/path.hpp"
+#include "aco/plugin_registry.hpp"
+#include "aco/robot.hpp"
+#include "aco/run_spec.hpp"
+
+namespace acosim {
+
+// The robot's limits as a scenario writes them: turn limits in degrees.
+struct RobotSettings {
+  double radius = 0.3;
+  double max_speed = 1.5;
+  double max_yaw_rate = 20.0;   // degrees/s
+  double max_accel = 0.2;
+  double max_yaw_accel = 50.0;  // degrees/s^2
+
+  aco::RobotLimits limits() const {
+    return {radius, max_speed, max_yaw_rate * aco::kDegree, max_accel, max_yaw_accel * aco::kDegree};
+  }
+};
+
+struct SimulationSettings {
+  double period = 0.1;             // control period, s
+  double sensor_range = 7.0;       // cells (and moving discs) within this distance are seen
+  double time_limit = 300.0;       // s
+  double goal_tolerance = 0.3;     // reached when the robot's centre is this close to the goal
+  double waypoint_tolerance = 0.6; // an intermediate goal this close is passed
+  double stall_time = 8.0;         // no progress for this long: replan
+  double stall_distance = 0.3;     // progress = the distance to the intermediate goal shrinking by this much
+  int max_replans = 10;
+};
+
+// A moving obstacle: a disc driving round a closed route at a constant speed, or, with one
+// point, from there with a constant velocity.
+struct MovingObstacle {
+  std::vector<Eigen::Vector2d> route;
+  double speed = 0.0;
+  Eigen::Vector2d velocity{0.0, 0.0};
+  double radius = 0.3;
+
+  Eigen::Vector2d position(double t) const;
+  Eigen::Vector2d velocity_at(double t) const;
+};
+
+struct Scenario {
+  std::filesystem::path file;
+  aco::RunSpec run;  // map, start, goal, graph, planner, pipeline (its local slot drives)
+  RobotSettings robot;
+  SimulationSettings simulation;
+  std::vector<aco::Cell> unknown;  // blocked in the world, free on the map
+  std::vector<MovingObstacle> moving;
+};
+
+// Reads a scenario file (YAML, see README.md). Errors name the file, the line and the key.
+Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& registry);
+
+struct Frame {
+  double t = 0.0;
+  aco::RobotState robot;
+  int goal_index = 0;  // into the current plan's intermediate goals
+  int plan = 0;        // which plan the robot follows
+  std::vector<Eigen::Vector2d> moving;
+};
+
+struct SimulationResult {
+  bool reached = false;
+  std::string outcome;  // reached, collision, timeout, stuck, no path
+  std::string reason;
+  double time = 0.0;
+  double distance = 0.0;
+  double min_clearance = std::numeric_limits<double>::infinity();
+  int collisions = 0;
+  int replans = 0;
+  int steps = 0;
+  std::vector<Frame> frames;                      // the start, then one per control step
+  std::vector<std::vector<Eigen::Vector2d>> plans;  // each global plan's intermediate goals, start first
+  std::vector<aco::Cell> sensed;                  // unknown cells the robot has seen
+};
+
+// Runs the scenario to the goal, a collision, the time limit, or a plan that cannot be made.
+// Deterministic: the same scenario gives the same result.
+SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registry);
+
+// Outputs.
+std::string summary_json(const Scenario& scenario, const SimulationResult& result);
+std::string trajectory_csv(const SimulationResult& result);
+std::string render_svg(const Scenario& scenario, const SimulationResult& result);
+
+}  // namespace acosim

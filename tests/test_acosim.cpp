@@ -1,0 +1,107 @@
+// acosim: scenario files, the simulation loop (local planner, sensing, replanning), bad input.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <fstream>
+
+#include "acosim/simulation.hpp"
+#include "aco/error.hpp"
+#include "support.hpp"
+
+using Catch::Contains;
+
+namespace {
+
+// A scenario file beside two maps: open (12 x 5, empty) and two (10 x 5, a block with a
+// corridor above and one below it).
+std::filesystem::path scenario(const std::string& yaml) {
+  const auto file = test::temp_file("scenario.yaml", yaml);
+  std::ofstream open(file.parent_path() / "open.txt");
+  for (int y = 0; y < 5; ++y) open << "0 0 0 0 0 0 0 0 0 0 0 0\n";
+  std::ofstream(file.parent_path() / "two.txt") << "0 0 0 0 0 0 0 0 0 0\n0 1 1 1 1 1 1 1 1 0\n0 1 1 1 1 1 1 1 1 0\n"
+                                                   "0 1 1 1 1 1 1 1 1 0\n0 0 0 0 0 0 0 0 0 0\n";
+  return file;
+}
+
+acosim::SimulationResult simulate(const std::filesystem::path& file, const std::string& local = "") {
+  acosim::Scenario s = acosim::load_scenario(file, test::plugins());
+  if (!local.empty()) s.run.pipeline["local"] = {local, aco::resolve(test::plugins().load("local", local).parameters(), {}, "")};
+  return acosim::simulate(s, test::plugins());
+}
+
+}  // namespace
+
+TEST_CASE("acosim: dwa passes an unknown cell on the straight path, blind tracking hits it", "[acosim]") {
+  const auto file = scenario("run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa}\nunknown: [[6, 2]]\n");
+  const auto dwa = simulate(file);
+  CHECK(dwa.reached);
+  CHECK(dwa.collisions == 0);
+  CHECK(dwa.min_clearance > 0.0);
+  CHECK(dwa.sensed.size() == 1);
+  CHECK(dwa.frames.size() == static_cast<std::size_t>(dwa.steps) + 1);
+  const auto blind = simulate(file, "track");
+  CHECK_FALSE(blind.reached);
+  CHECK(blind.outcome == "collision");
+  CHECK(blind.collisions == 1);
+  CHECK_THAT(blind.reason, Contains("the obstacle cell (6,2)"));
+
+  // The same scenario gives the same run.
+  const auto again = simulate(file);
+  REQUIRE(again.frames.size() == dwa.frames.size());
+  for (std::size_t i = 0; i < dwa.frames.size(); ++i) {
+    CHECK(again.frames[i].robot.x == dwa.frames[i].robot.x);
+    CHECK(again.frames[i].robot.y == dwa.frames[i].robot.y);
+    CHECK(again.frames[i].robot.heading == dwa.frames[i].robot.heading);
+  }
+}
+
+TEST_CASE("acosim: a blocked corridor makes the robot replan round the block", "[acosim]") {
+  // From (0, 1) to (9, 1) the corridor above the block is the short way; an unknown cell closes it.
+  const auto file = scenario("run: {map: two.txt, start: [0, 1], goal: [9, 1], local: dwa}\nunknown: [[5, 0]]\n");
+  const auto r = simulate(file);
+  CHECK(r.reached);
+  CHECK(r.collisions == 0);
+  CHECK(r.replans >= 1);
+  REQUIRE(r.plans.size() == static_cast<std::size_t>(r.replans) + 1);
+  const auto uses_upper = [](const std::vector<Eigen::Vector2d>& plan) {
+    return std::any_of(plan.begin(), plan.end(), [](const Eigen::Vector2d& p) { return p.y() < 0.5; });
+  };
+  CHECK(uses_upper(r.plans.front()));
+  CHECK_FALSE(uses_upper(r.plans.back()));
+}
+
+TEST_CASE("acosim: a moving obstacle is sensed and passed", "[acosim]") {
+  const auto file = scenario(
+      "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa}\n"
+      "moving:\n  - {position: [11, 0.5], velocity: [-0.2, 0], radius: 0.3}\n");
+  const auto r = simulate(file);
+  CHECK(r.reached);
+  CHECK(r.collisions == 0);
+  REQUIRE(r.frames.back().moving.size() == 1);
+  CHECK(r.frames.back().moving[0].x() == Approx(11 - 0.2 * r.time));
+}
+
+TEST_CASE("acosim: bad scenarios are errors naming the file, the line and the key", "[acosim][bad-input]") {
+  const auto error = [](const std::string& yaml) {
+    try {
+      acosim::load_scenario(scenario(yaml), test::plugins());
+    } catch (const aco::Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string run = "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa}\n";
+  CHECK_THAT(error("run: [unclosed\n"), Contains("scenario.yaml:") && Contains("malformed YAML"));
+  CHECK_THAT(error(run + "unknown: [[0, 2]]\n"), Contains("scenario.yaml:2") && Contains("overlaps the robot at the start (0,2)"));
+  CHECK_THAT(error(run + "unknown: [[40, 2]]\n"), Contains("outside the map"));
+  CHECK_THAT(error(run + "moving:\n  - {position: [0.2, 2], radius: 0.3}\n"), Contains("scenario.yaml:3") && Contains("overlaps"));
+  CHECK_THAT(error(run + "robot: {max-speed: 0}\n"), Contains("scenario.yaml:2") && Contains("max-speed"));
+  CHECK_THAT(error(run + "robot: {max-accel: -1}\n"), Contains("max-accel"));
+  CHECK_THAT(error(run + "robot: {max-sped: 1}\n"), Contains("max-speed"));  // the nearest key
+  CHECK_THAT(error(run + "simulation: {period: 5}\n"), Contains("longer than the local planner's horizon 3 s"));
+  CHECK_THAT(error("run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa, local.horizn: 2}\n"),
+             Contains("scenario.yaml:1") && Contains("local.horizon"));
+  CHECK_THAT(error("run: {map: open.txt, start: [0, 2]}\n"), Contains("'run' needs 'goal'"));
+  CHECK_THAT(error(run + "obstacles: []\n"), Contains("unknown key 'obstacles'"));
+  CHECK_THAT(error(run + "moving:\n  - {route: [[3, 3]], speed: 1}\n"), Contains("at least two points"));
+}

@@ -12,6 +12,7 @@
 #include "aco/astar.hpp"
 #include "aco/graph.hpp"
 #include "aco/path.hpp"
+#include "aco/robot.hpp"
 #include "support.hpp"
 
 namespace {
@@ -106,9 +107,11 @@ std::vector<aco::NodeId> loop_free_walk(const aco::Graph& g, aco::NodeId start, 
 
 TEST_CASE("prune: declared parameters and trivial paths", "[plugin][prune]") {
   const auto& descriptor = test::plugins().load("smoother", "prune");
-  REQUIRE(descriptor.parameters().size() == 1);
+  REQUIRE(descriptor.parameters().size() == 2);
   CHECK(std::string(descriptor.parameters()[0].name) == "max_lookahead");
   CHECK(std::string(descriptor.parameters()[0].default_value) == "0");
+  CHECK(std::string(descriptor.parameters()[1].name) == "clearance");
+  CHECK(std::string(descriptor.parameters()[1].default_value) == "0");
 
   const auto map = test::grid({"...", "..."});
   const auto g = aco::build_graph(map, {aco::Neighbourhood::eight, false});
@@ -266,6 +269,36 @@ TEST_CASE("prune on the classic maps: shorter than the A* grid path, every segme
       }
     }
   }
+}
+
+TEST_CASE("prune with clearance: every shortcut passes that far from blocked cells", "[plugin][prune]") {
+  // Smallest distance from a segment to any blocked cell (outside the map counts), by sampling.
+  const auto nearest = [](const aco::Map& map, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    double d = 1e9;
+    for (int k = 0; k <= 200; ++k) {
+      const Eigen::Vector2d p = (a + (b - a) * (k / 200.0)).head<2>();
+      for (int y = -1; y <= map.height(); ++y)
+        for (int x = -1; x <= map.width(); ++x)
+          if (!map.passable({x, y})) d = std::min(d, aco::distance_to_square(p, Eigen::Vector2d(x, y), 1.0));
+    }
+    return d;
+  };
+  int grazing_without = 0;
+  for (int m = 1; m <= 3; ++m) {
+    const auto map = test::classic_map(m);
+    const auto g = aco::build_graph(map, {aco::Neighbourhood::eight, false});
+    const auto best = aco::astar(g, g.node({0, 0}), g.node({19, 19}));
+    REQUIRE(best);
+    const auto clear = prune(g, best->nodes, {{"clearance", "0.4"}});
+    const auto plain = prune(g, best->nodes);
+    CHECK(clear.front() == g.positions[best->nodes.front()]);
+    CHECK(clear.back() == g.positions[best->nodes.back()]);
+    CHECK(clear.size() < best->nodes.size());  // still shortcuts
+    CHECK(aco::polyline_length(clear) <= best->length + 1e-9);
+    for (std::size_t i = 1; i < clear.size(); ++i) CHECK(nearest(map, clear[i - 1], clear[i]) >= 0.4 - 1e-6);
+    for (std::size_t i = 1; i < plain.size(); ++i) grazing_without += nearest(map, plain[i - 1], plain[i]) < 0.4;
+  }
+  CHECK(grazing_without > 0);  // without the clearance some shortcut grazes a corner
 }
 
 TEST_CASE("prune on random maps and random grid paths: the properties hold", "[plugin][prune]") {

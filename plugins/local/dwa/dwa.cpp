@@ -20,6 +20,7 @@ struct Parameters {
   double velocity = 0.3;
   double horizon = 3.0;
   double lookahead = 6.0;
+  double dist_cap = 1.0;
   double margin = 0.05;
   bool predict = false;
   bool stop_at_goal = true;
@@ -37,6 +38,9 @@ const aco::SettingsTable<Parameters> kParams({
     aco::field("lookahead", &Parameters::lookahead, "(0:1e6]",
                "dist(v, w) is searched along the arc up to this distance: a free arc scores this much, and the speed "
                "stays below what can stop within it (6: the paper's 1.5 m/s at 0.2 m/s^2 needs 5.6)"),
+    aco::field("dist_cap", &Parameters::dist_cap, "(0:1e6]",
+               "the dist term counts dist(v, w) up to this distance: obstacles farther along an arc do not steer "
+               "(the MATLAB DWA code caps it at 2 x the obstacle radius)"),
     aco::field("margin", &Parameters::margin, "0:1e6", "the robot counts as touching an obstacle closer than this"),
     aco::field("predict", &Parameters::predict, "",
                "roll moving obstacles forward with their sensed velocity (false: as in the paper, they stand where sensed)"),
@@ -80,7 +84,7 @@ class Dwa final : public aco::LocalPlanner {
   struct Candidate {
     aco::VelocityCommand command;
     double heading;  // pi - |angle from the heading at the horizon to the goal|, in [0, pi]
-    double dist;     // free distance along the arc, at most lookahead
+    double dist;     // free distance along the arc, at most dist_cap
     double velocity = 0.0;  // the velocity term
   };
 
@@ -153,7 +157,7 @@ class Dwa final : public aco::LocalPlanner {
     for (int k = 0; k < steps; ++k) s = aco::move(s, command, view.period);
     const Eigen::Vector2d to_goal = view.goal - s.position();
     const double error = to_goal.squaredNorm() > 0.0 ? aco::wrap_angle(std::atan2(to_goal.y(), to_goal.x()) - s.heading) : 0.0;
-    candidates_.push_back({command, M_PI - std::abs(error), dist});
+    candidates_.push_back({command, M_PI - std::abs(error), std::min(dist, p_.dist_cap)});
   }
 
   Parameters p_;

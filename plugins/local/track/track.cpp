@@ -1,5 +1,5 @@
-// Blind path tracking: drive straight at the intermediate goal, turning towards it, and ignore
-// every obstacle. The local slot's default, and the baseline that shows what a real local
+// Blind path tracking: turn towards the intermediate goal, drive at it, and ignore every
+// obstacle. The local slot's default, and the baseline that shows what a real local
 // planner (local/dwa) buys: on the known map the global path is free, so this robot arrives
 // unless something the map did not show is in the way.
 #include <algorithm>
@@ -11,11 +11,13 @@ namespace {
 
 struct Parameters {
   double gain = 2.0;
+  double turn_in_place = 10.0;
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::field("gain", &Parameters::gain, "(0:100]",
-               "turn rate per radian of heading error (1/s): w = gain * error; speed falls as cos(error), 0 beyond 90 degrees"),
+    aco::field("gain", &Parameters::gain, "(0:100]", "turn rate per radian of heading error (1/s): w = gain * error"),
+    aco::field("turn_in_place", &Parameters::turn_in_place, "(0:180]",
+               "heading error in degrees above which the robot stops and turns on the spot"),
 });
 
 class Track final : public aco::LocalPlanner {
@@ -26,7 +28,11 @@ class Track final : public aco::LocalPlanner {
     const aco::RobotState& r = view.robot;
     const Eigen::Vector2d to_goal = view.goal - r.position();
     const double error = aco::wrap_angle(std::atan2(to_goal.y(), to_goal.x()) - r.heading);
-    const aco::VelocityCommand wanted{view.limits.max_speed * std::max(0.0, std::cos(error)), p_.gain * error};
+    // Drives only when roughly facing the goal, no faster than it can stop there: it follows the
+    // path's corners exactly, as far as its limits allow.
+    const double stop_speed = std::sqrt(2.0 * view.limits.max_accel * to_goal.norm());
+    const double v = std::abs(error) <= p_.turn_in_place * aco::kDegree ? std::min(view.limits.max_speed, stop_speed) : 0.0;
+    const aco::VelocityCommand wanted{v, p_.gain * error};
     return aco::dynamic_window(r, view.limits, view.period).clamp(wanted);
   }
 

@@ -5,6 +5,8 @@
 #include <iostream>
 
 #include "aco/error.hpp"
+#include "aco/thread_limit.hpp"
+#include "batch.hpp"
 #include "simulation.hpp"
 
 namespace po = boost::program_options;
@@ -33,6 +35,9 @@ int main(int argc, char** argv) {
         ("csv", po::value(&csv)->value_name("FILE"), "write the trajectory (t, x, y, heading, v, w) as CSV")
         ("svg", po::value(&svg)->value_name("FILE"), "write a picture: map, unknown cells, plans, trajectory, moving tracks")
         ("local", po::value(&local)->value_name("PLUGIN"), "drive with this local planner (its defaults) instead of the scenario's")
+        ("batch", po::value<int>()->value_name("N"), "run N generated variations of the scenario and print their summary")
+        ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch: the variations' seed")
+        ("threads", po::value<int>()->default_value(0), "with --batch: worker threads, 0 = all cores; results do not depend on it")
         ("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"), "also search DIR for plugins");
     po::options_description hidden;
     hidden.add_options()("scenario", po::value(&scenario_file));
@@ -55,6 +60,23 @@ int main(int argc, char** argv) {
     if (!local.empty()) {
       const auto& descriptor = registry.load("local", local);
       scenario.run.pipeline["local"] = {local, aco::resolve(descriptor.parameters(), {}, "local.")};
+    }
+    if (vm.count("batch")) {
+      const int n = vm["batch"].as<int>(), threads = vm["threads"].as<int>();
+      if (n < 1) throw aco::Error("--batch: N must be at least 1");
+      if (threads < 0) throw aco::Error("--threads: must be 0 (all cores) or more");
+      const aco::ThreadLimit limit(threads);
+      const auto runs = acosim::variations(scenario, n, vm["seed"].as<std::uint64_t>(), registry);
+      const acosim::BatchSummary b = acosim::run_batch(runs, registry);
+      std::cout << "batch:      " << b.runs << " variations of " << scenario_file << " (seed " << vm["seed"].as<std::uint64_t>()
+                << ", local planner " << scenario.run.pipeline.at("local").plugin << ")\n"
+                << "reached:    " << b.reached << " (" << 100.0 * b.reached / b.runs << " %)\n"
+                << "collisions: " << b.collisions << " (in reached runs: " << b.reached_with_collision << ")\n"
+                << "outcomes:  ";
+      for (const auto& [outcome, count] : b.outcomes) std::cout << " " << outcome << " " << count << ";";
+      std::cout << "\nmean time to goal: " << b.mean_time << " s (reached runs); mean smallest clearance: " << b.mean_clearance
+                << "; replans: " << b.replans << "\n";
+      return 0;
     }
     const acosim::SimulationResult result = acosim::simulate(scenario, registry);
     if (!csv.empty()) write(csv, acosim::trajectory_csv(result));

@@ -5,6 +5,7 @@
 // velocity (eq. 21).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -101,13 +102,20 @@ class Dwa final : public aco::LocalPlanner {
     return values;
   }
 
-  // The obstacles an arc of length lookahead can reach; the others cannot matter this step.
+  // The obstacles an arc of length lookahead can reach; the others cannot matter this step. The
+  // cells go into a small grid (cell centres lie on multiples of the cell size), so that a
+  // point's test looks at the few cells around it, not at every cell in sensor range.
   void gather_near(const aco::LocalView& view) {
     const Eigen::Vector2d p = view.robot.position();
-    const double reach = p_.lookahead + view.limits.radius + p_.margin;
-    near_cells_.clear();
-    for (const Eigen::Vector2d& c : view.cells)
-      if (aco::distance_to_square(p, c, view.cell_size) <= reach) near_cells_.push_back(c);
+    const double reach = p_.lookahead + view.limits.radius + p_.margin, size = view.cell_size;
+    const auto index = [size](double v) { return static_cast<int>(std::lround(v / size)); };
+    x0_ = index(p.x() - reach) - 1, y0_ = index(p.y() - reach) - 1;
+    columns_ = index(p.x() + reach) + 2 - x0_, rows_ = index(p.y() + reach) + 2 - y0_;
+    occupied_.assign(static_cast<std::size_t>(columns_) * rows_, 0);
+    for (const Eigen::Vector2d& c : view.cells) {
+      const int x = index(c.x()) - x0_, y = index(c.y()) - y0_;
+      if (x >= 0 && y >= 0 && x < columns_ && y < rows_) occupied_[static_cast<std::size_t>(y) * columns_ + x] = 1;
+    }
     near_moving_.clear();
     for (const aco::MovingObstacle& m : view.moving) {
       // A predicted obstacle may come from farther away: it moves while the robot drives.
@@ -118,9 +126,15 @@ class Dwa final : public aco::LocalPlanner {
 
   // Whether the robot at p, at time t from now, touches an obstacle (closer than the margin).
   bool touches(const aco::LocalView& view, const Eigen::Vector2d& p, double t) const {
-    const double limit = view.limits.radius + p_.margin;
-    for (const Eigen::Vector2d& c : near_cells_)
-      if (aco::distance_to_square(p, c, view.cell_size) < limit) return true;
+    const double limit = view.limits.radius + p_.margin, size = view.cell_size;
+    const int reach = static_cast<int>(std::ceil(limit / size)) + 1;
+    const int cx = static_cast<int>(std::lround(p.x() / size)), cy = static_cast<int>(std::lround(p.y() / size));
+    for (int y = cy - reach; y <= cy + reach; ++y)
+      for (int x = cx - reach; x <= cx + reach; ++x) {
+        const int gx = x - x0_, gy = y - y0_;
+        if (gx < 0 || gy < 0 || gx >= columns_ || gy >= rows_ || !occupied_[static_cast<std::size_t>(gy) * columns_ + gx]) continue;
+        if (aco::distance_to_square(p, Eigen::Vector2d(x * size, y * size), size) < limit) return true;
+      }
     for (const aco::MovingObstacle& m : near_moving_) {
       const Eigen::Vector2d at = p_.predict ? Eigen::Vector2d(m.position + t * m.velocity) : m.position;
       if ((p - at).norm() - m.radius < limit) return true;
@@ -162,7 +176,8 @@ class Dwa final : public aco::LocalPlanner {
 
   Parameters p_;
   std::vector<Candidate> candidates_;
-  std::vector<Eigen::Vector2d> near_cells_;
+  std::vector<std::uint8_t> occupied_;  // the sensed cells near the robot, by grid position
+  int x0_ = 0, y0_ = 0, columns_ = 0, rows_ = 0;
   std::vector<aco::MovingObstacle> near_moving_;
 };
 

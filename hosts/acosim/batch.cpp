@@ -1,0 +1,101 @@
+// Batches of generated variations of a scenario: unknown cells near the global path, and discs
+// crossing it.
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "aco/error.hpp"
+#include "aco/graph.hpp"
+#include "aco/planning.hpp"
+#include "aco/rng.hpp"
+#include "batch.hpp"
+
+namespace acosim {
+namespace {
+
+// The point at arc-length share u of a polyline, and the direction of travel there.
+std::pair<Eigen::Vector2d, Eigen::Vector2d> along(const std::vector<Eigen::Vector2d>& path, double u) {
+  double total = 0.0;
+  for (std::size_t i = 1; i < path.size(); ++i) total += (path[i] - path[i - 1]).norm();
+  double left = u * total;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const Eigen::Vector2d leg = path[i] - path[i - 1];
+    if (left <= leg.norm() || i + 1 == path.size()) return {path[i - 1] + leg * std::min(1.0, left / leg.norm()), leg.normalized()};
+    left -= leg.norm();
+  }
+  return {path.front(), Eigen::Vector2d(1.0, 0.0)};
+}
+
+}  // namespace
+
+std::vector<Scenario> variations(const Scenario& base, int count, std::uint64_t seed, aco::PluginRegistry& registry) {
+  const aco::LoadedProblem problem = aco::load_problem(base.run.problem);
+  const aco::Graph graph = aco::build_graph(*problem.map, base.run.graph);
+  const aco::PlanOutcome plan = aco::plan(registry, graph, graph.node(problem.start), graph.node(problem.goal), base.run);
+  if (!plan.solved()) throw aco::Error("batch: the scenario's map has no path from start to goal: " + plan.reason);
+  std::vector<Eigen::Vector2d> path;
+  for (const auto& p : plan.path) path.push_back(p.head<2>());
+  const Eigen::Vector2d start(problem.start.x, problem.start.y), goal(problem.goal.x, problem.goal.y);
+
+  std::vector<Scenario> out;
+  for (int k = 0; k < count; ++k) {
+    aco::Rng rng = aco::Rng::stream(seed, static_cast<std::uint64_t>(k));
+    Scenario s = base;
+    s.unknown.clear();
+    s.moving.clear();
+    // One to three unknown cells on or next to the path, clear of the start and the goal.
+    const int cells = 1 + static_cast<int>(rng.below(3));
+    for (int tries = 0; static_cast<int>(s.unknown.size()) < cells && tries < 100; ++tries) {
+      const Eigen::Vector2d p = along(path, rng.uniform(0.15, 0.85)).first;
+      const aco::Cell c{static_cast<int>(std::lround(p.x())) + static_cast<int>(rng.below(3)) - 1,
+                        static_cast<int>(std::lround(p.y())) + static_cast<int>(rng.below(3)) - 1};
+      if (!problem.map->passable(c) || (Eigen::Vector2d(c.x, c.y) - start).norm() < 2.5 ||
+          (Eigen::Vector2d(c.x, c.y) - goal).norm() < 2.5 || std::find(s.unknown.begin(), s.unknown.end(), c) != s.unknown.end())
+        continue;
+      s.unknown.push_back(c);
+    }
+    // One or two discs crossing the path from 3 to 5 away on either side, 0.2 to 0.5 per second.
+    const int discs = 1 + static_cast<int>(rng.below(2));
+    for (int d = 0; d < discs; ++d) {
+      const auto [p, direction] = along(path, rng.uniform(0.2, 0.8));
+      const Eigen::Vector2d across(-direction.y(), direction.x());
+      const double side = rng.below(2) ? 1.0 : -1.0, distance = rng.uniform(3.0, 5.0), speed = rng.uniform(0.2, 0.5);
+      MovingObstacle m;
+      m.route = {p + side * distance * across};
+      m.velocity = -side * speed * across;
+      m.radius = 0.3;
+      if ((m.position(0.0) - start).norm() < m.radius + base.robot.radius + 1.0) continue;
+      s.moving.push_back(m);
+    }
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+BatchSummary run_batch(const std::vector<Scenario>& scenarios, aco::PluginRegistry& registry) {
+  std::vector<SimulationResult> results(scenarios.size());
+  tbb::parallel_for(std::size_t(0), scenarios.size(), [&](std::size_t i) {
+    SimulationResult r = simulate(scenarios[i], registry);
+    r.frames.clear();  // a batch keeps the figures, not the trajectories
+    results[i] = std::move(r);
+  });
+  BatchSummary b;
+  b.runs = static_cast<int>(results.size());
+  double time = 0.0, clearance = 0.0;
+  int clear_count = 0;
+  for (const SimulationResult& r : results) {
+    b.reached += r.reached;
+    b.collisions += r.collisions;
+    b.replans += r.replans;
+    b.outcomes[r.outcome] += 1;
+    if (r.reached) time += r.time;
+    if (std::isfinite(r.min_clearance)) clearance += r.min_clearance, ++clear_count;
+    if (r.reached && r.collisions > 0) ++b.reached_with_collision;
+  }
+  b.mean_time = b.reached ? time / b.reached : 0.0;
+  b.mean_clearance = clear_count ? clearance / clear_count : 0.0;
+  return b;
+}
+
+}  // namespace acosim

@@ -19,6 +19,7 @@
 #include "aco/map_io.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/run_spec.hpp"
+#include "aco/strategies.hpp"
 
 namespace po = boost::program_options;
 
@@ -341,7 +342,38 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
   return identical;
 }
 
-const std::set<std::string> kSections = {"classic", "fireworks", "terrain", "large", "large-plugins"};
+// Paper 003's DWA (local/dwa, paper defaults) at one control step on its 20x20 map: the robot at
+// (5, 6) heading for (8, 7) at 0.5 m/s, every blocked cell within 7 sensed, one disc moving. Reports
+// microseconds per step and the sampled velocities (each rolled out) per second.
+void time_dwa(aco::PluginRegistry& registry, int repeats) {
+  const auto map = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/papers/paper003_20.map");
+  const auto& descriptor = registry.load("local", "dwa");
+  const auto dwa = registry.create<aco::LocalPlanner>("local", "dwa", aco::resolve(descriptor.parameters(), {}, "local."));
+  aco::LocalView view;
+  view.robot.x = 5.0, view.robot.y = 6.0, view.robot.heading = 0.3, view.robot.v = 0.5;
+  view.goal = {8.0, 7.0};
+  std::vector<Eigen::Vector2d> cells;
+  for (int y = -1; y <= map->height(); ++y)
+    for (int x = -1; x <= map->width(); ++x)
+      if (!map->passable({x, y}) && (Eigen::Vector2d(x, y) - view.robot.position()).norm() <= 7.0) cells.emplace_back(x, y);
+  const std::vector<aco::MovingObstacle> moving = {{{9.0, 9.0}, {-0.3, 0.0}, 0.3}};
+  view.cells = cells;
+  view.moving = moving;
+  const aco::DynamicWindow w = aco::dynamic_window(view.robot, view.limits, view.period);
+  const int samples = static_cast<int>(std::floor((w.v_high - w.v_low) / 0.02 + 1e-9) + 1) *
+                      static_cast<int>(std::floor((w.w_high - w.w_low) / (aco::kDegree) + 1e-9) + 2);
+  const int calls = 200 * repeats;
+  aco::VelocityCommand c;
+  const auto began = std::chrono::steady_clock::now();
+  for (int i = 0; i < calls; ++i) c = dwa->command(view);
+  const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - began).count() / calls;
+  std::printf("\n== local/dwa (paper 003 defaults) on data/maps/papers/paper003_20.map, %zu cells sensed, 1 moving disc ==\n",
+              cells.size());
+  std::printf("%.1f us per control step, about %d sampled velocities each: %.0f rollouts per second (command v %.2f, w %.3f)\n",
+              us, samples, samples * 1e6 / us, c.v, c.w);
+}
+
+const std::set<std::string> kSections = {"classic", "fireworks", "terrain", "large", "large-plugins", "dwa"};
 
 // "--only terrain,large" -> {"terrain", "large"}; empty text = every section.
 std::set<std::string> parse_sections(const std::string& text) {
@@ -350,7 +382,7 @@ std::set<std::string> parse_sections(const std::string& text) {
   std::istringstream in(text);
   for (std::string name; std::getline(in, name, ',');) {
     if (!kSections.count(name))
-      throw aco::Error("--only: unknown section '" + name + "' (sections: classic, fireworks, terrain, large, large-plugins)");
+      throw aco::Error("--only: unknown section '" + name + "' (sections: classic, fireworks, terrain, large, large-plugins, dwa)");
     sections.insert(name);
   }
   return sections;
@@ -369,7 +401,7 @@ int main(int argc, char** argv) try {
   po::options_description options("aco_bench options");
   options.add_options()("help,h", "print this help")
       ("repeats", po::value(&repeats), "runs per small-map measurement (seeds 1..N)")
-      ("only", po::value(&only), "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins (default: all)")
+      ("only", po::value(&only), "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins, dwa (default: all)")
       ("shared-data", po::value(&shared), "folder with movingai/ (default ../shared/data)")
       ("large-map", po::value(&large), "512x512 map for the thread-scaling run, relative to --shared-data")
       ("large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")
@@ -389,6 +421,7 @@ int main(int argc, char** argv) try {
   bool identical = true;
   if (sections.count("classic")) time_classic(registry, repeats);
   if (sections.count("fireworks")) time_fireworks(repeats);
+  if (sections.count("dwa")) time_dwa(registry, repeats);
   if (sections.count("terrain")) identical = time_terrain(registry, repeats) && identical;
   if (sections.count("large")) identical = time_large(registry, shared, large, large_index, large_repeats) && identical;
   if (sections.count("large-plugins"))

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <fstream>
 
+#include "acosim/batch.hpp"
 #include "acosim/simulation.hpp"
+#include "aco/thread_limit.hpp"
 #include "aco/error.hpp"
 #include "support.hpp"
 
@@ -124,4 +126,33 @@ TEST_CASE("acosim: the bundled paper-003 scenarios reach the goal without a coll
   // The replan scenario needs its replan; the moving one needs the prediction its file sets.
   CHECK(simulate(test::data_dir() / "scenarios/paper003_replan.yaml").replans >= 1);
   CHECK(simulate(test::data_dir() / "scenarios/paper003_moving.yaml", "dwa").outcome == "collision");
+}
+
+TEST_CASE("acosim batch: variations depend on the seed only, results not on the thread count", "[acosim]") {
+  const auto file = scenario("run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa, local.predict: true}\n");
+  const acosim::Scenario base = acosim::load_scenario(file, test::plugins());
+  const auto a = acosim::variations(base, 6, 5, test::plugins());
+  const auto b = acosim::variations(base, 6, 5, test::plugins());
+  const auto other = acosim::variations(base, 6, 6, test::plugins());
+  REQUIRE(a.size() == 6);
+  bool differs = false;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    CHECK(a[i].unknown == b[i].unknown);
+    CHECK(!a[i].unknown.empty());
+    CHECK(!a[i].moving.empty());
+    differs = differs || a[i].unknown != other[i].unknown;
+  }
+  CHECK(differs);
+  const auto run = [&](int threads) {
+    const aco::ThreadLimit limit(threads);
+    return acosim::run_batch(a, test::plugins());
+  };
+  const auto one = run(1), two = run(2);
+  CHECK(one.runs == 6);
+  CHECK(one.reached == two.reached);
+  CHECK(one.collisions == two.collisions);
+  CHECK(one.replans == two.replans);
+  CHECK(one.mean_time == two.mean_time);
+  CHECK(one.mean_clearance == two.mean_clearance);
+  CHECK(one.reached_with_collision == 0);
 }

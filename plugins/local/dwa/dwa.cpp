@@ -127,7 +127,8 @@ class Dwa final : public aco::LocalPlanner {
   // Whether the robot at p, at time t from now, touches an obstacle (closer than the margin).
   bool touches(const aco::LocalView& view, const Eigen::Vector2d& p, double t) const {
     const double limit = view.limits.radius + p_.margin, size = view.cell_size;
-    const int reach = static_cast<int>(std::ceil(limit / size)) + 1;
+    // A cell can be within `limit` of p only if its centre is within limit + size / 2 on each axis.
+    const int reach = static_cast<int>(std::ceil(limit / size + 0.5));
     const int cx = static_cast<int>(std::lround(p.x() / size)), cy = static_cast<int>(std::lround(p.y() / size));
     for (int y = cy - reach; y <= cy + reach; ++y)
       for (int x = cx - reach; x <= cx + reach; ++x) {

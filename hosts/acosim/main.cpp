@@ -25,7 +25,7 @@ void write(const std::string& file, const std::string& text) {
 
 int main(int argc, char** argv) {
   try {
-    std::string scenario_file, csv, svg, local;
+    std::string scenario_file, csv, svg, html, local;
     std::vector<std::string> plugin_dirs;
     po::options_description options("acosim: drive a robot along the colony's path with a local planner.\n\n"
                                     "Usage: acosim SCENARIO.yaml [options]\n\nOptions");
@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
         ("json", po::bool_switch(), "print the summary and the trajectory as one JSON object")
         ("csv", po::value(&csv)->value_name("FILE"), "write the trajectory (t, x, y, heading, v, w) as CSV")
         ("svg", po::value(&svg)->value_name("FILE"), "write a picture: map, unknown cells, plans, trajectory, moving tracks")
+        ("html", po::value(&html)->value_name("FILE"), "write a page that plays the run (play/pause, time slider)")
         ("local", po::value(&local)->value_name("PLUGIN"), "drive with this local planner (its defaults) instead of the scenario's")
         ("batch", po::value<int>()->value_name("N"), "run N generated variations of the scenario and print their summary")
         ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch: the variations' seed")
@@ -81,6 +82,7 @@ int main(int argc, char** argv) {
     const acosim::SimulationResult result = acosim::simulate(scenario, registry);
     if (!csv.empty()) write(csv, acosim::trajectory_csv(result));
     if (!svg.empty()) write(svg, acosim::render_svg(scenario, result));
+    if (!html.empty()) write(html, acosim::render_html(scenario, result));
     if (vm["json"].as<bool>()) {
       std::cout << acosim::summary_json(scenario, result) << "\n";
     } else {

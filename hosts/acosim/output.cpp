@@ -49,27 +49,31 @@ std::string trajectory_csv(const SimulationResult& r) {
   return out.str();
 }
 
-std::string render_svg(const Scenario& scenario, const SimulationResult& r) {
+namespace {
+
+constexpr double kCell = 24.0, kPad = 12.0;  // pixels per map unit, margin
+double px(double x) { return kPad + (x + 0.5) * kCell; }
+
+// The picture: the map, unknown cells, every plan, each moving obstacle's track, the driven
+// trajectory and the outcome line. The player adds the robot and the discs on top.
+std::string picture(const Scenario& scenario, const SimulationResult& r, const std::string& extra) {
   const aco::LoadedProblem problem = aco::load_problem(scenario.run.problem);
   const aco::Map& map = *problem.map;
-  const double cell = 24.0, pad = 12.0;
-  const auto X = [&](double x) { return pad + (x + 0.5) * cell; };
-  const auto Y = [&](double y) { return pad + (y + 0.5) * cell; };
   std::ostringstream s;
   s.precision(6);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 2 * pad + map.width() * cell << "\" height=\""
-    << 2 * pad + map.height() * cell + 24 << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" id=\"world\" width=\"" << 2 * kPad + map.width() * kCell << "\" height=\""
+    << 2 * kPad + map.height() * kCell + 24 << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  const auto square = [&](aco::Cell c, const char* attributes) {
+    s << "<rect " << attributes << " x=\"" << kPad + c.x * kCell << "\" y=\"" << kPad + c.y * kCell << "\" width=\"" << kCell
+      << "\" height=\"" << kCell << "\"/>\n";
+  };
   for (int y = 0; y < map.height(); ++y)
     for (int x = 0; x < map.width(); ++x)
-      if (!map.passable({x, y}))
-        s << "<rect x=\"" << pad + x * cell << "\" y=\"" << pad + y * cell << "\" width=\"" << cell << "\" height=\"" << cell
-          << "\" fill=\"#444\"/>\n";
-  for (const aco::Cell& c : scenario.unknown)
-    s << "<rect class=\"unknown\" x=\"" << pad + c.x * cell << "\" y=\"" << pad + c.y * cell << "\" width=\"" << cell
-      << "\" height=\"" << cell << "\" fill=\"#c0392b\" fill-opacity=\"0.7\"/>\n";
-  const auto polyline = [&](const std::vector<Eigen::Vector2d>& points, const char* style) {
-    s << "<polyline fill=\"none\" " << style << " points=\"";
-    for (const auto& p : points) s << X(p.x()) << "," << Y(p.y()) << " ";
+      if (!map.passable({x, y})) square({x, y}, "fill=\"#444\"");
+  for (const aco::Cell& c : scenario.unknown) square(c, "class=\"unknown\" fill=\"#c0392b\" fill-opacity=\"0.7\"");
+  const auto polyline = [&](const std::vector<Eigen::Vector2d>& points, const char* attributes) {
+    s << "<polyline fill=\"none\" " << attributes << " points=\"";
+    for (const auto& p : points) s << px(p.x()) << "," << px(p.y()) << " ";
     s << "\"/>\n";
   };
   for (std::size_t i = 0; i < r.plans.size(); ++i)
@@ -78,15 +82,76 @@ std::string render_svg(const Scenario& scenario, const SimulationResult& r) {
   for (std::size_t k = 0; k < scenario.moving.size(); ++k) {
     std::vector<Eigen::Vector2d> track;
     for (const Frame& f : r.frames) track.push_back(f.moving[k]);
-    polyline(track, "class=\"moving\" stroke=\"#e67e22\" stroke-width=\"1.5\"");
+    polyline(track, "class=\"moving\" stroke=\"#e67e22\" stroke-width=\"1.5\" stroke-opacity=\"0.6\"");
   }
   std::vector<Eigen::Vector2d> driven;
   for (const Frame& f : r.frames) driven.push_back(f.robot.position());
-  polyline(driven, "class=\"trajectory\" stroke=\"#27ae60\" stroke-width=\"2.5\"");
-  s << "<text x=\"" << pad << "\" y=\"" << 2 * pad + map.height() * cell + 12 << "\" font-family=\"sans-serif\" font-size=\"13\">"
-    << aco::xml_escape(r.outcome + (r.reason.empty() ? "" : ": " + r.reason)) << "; time " << r.time << " s, "
-    << r.replans << " replans</text>\n</svg>\n";
+  polyline(driven, "class=\"trajectory\" id=\"trajectory\" stroke=\"#27ae60\" stroke-width=\"2.5\"");
+  s << extra;
+  s << "<text x=\"" << kPad << "\" y=\"" << 2 * kPad + map.height() * kCell + 12 << "\" font-family=\"sans-serif\" font-size=\"13\">"
+    << aco::xml_escape(r.outcome + (r.reason.empty() ? "" : ": " + r.reason)) << "; time " << r.time << " s, " << r.replans
+    << " replans</text>\n</svg>\n";
   return s.str();
+}
+
+}  // namespace
+
+std::string render_svg(const Scenario& scenario, const SimulationResult& r) { return picture(scenario, r, ""); }
+
+// The player: the picture with the robot (disc and heading) and the moving discs drawn at one
+// frame, a play/pause button and a time slider. Frames are inline data; no network. Opened
+// with #final it shows the last frame at once.
+std::string render_html(const Scenario& scenario, const SimulationResult& r) {
+  const double radius = scenario.robot.radius * kCell;
+  std::ostringstream robot;
+  robot << "<g id=\"robot\"><circle id=\"robot-body\" r=\"" << radius << "\" fill=\"#27ae60\" fill-opacity=\"0.8\"/>"
+        << "<line id=\"robot-heading\" stroke=\"black\" stroke-width=\"2\"/></g>\n";
+  for (std::size_t k = 0; k < scenario.moving.size(); ++k)
+    robot << "<circle class=\"disc\" r=\"" << scenario.moving[k].radius * kCell << "\" fill=\"#e67e22\"/>\n";
+  nlohmann::json frames = nlohmann::json::array();
+  for (const Frame& f : r.frames) {
+    nlohmann::json row = {f.t, px(f.robot.x), px(f.robot.y), f.robot.heading, f.robot.v};
+    for (const auto& m : f.moving) row.push_back(px(m.x())), row.push_back(px(m.y()));
+    frames.push_back(row);
+  }
+  std::ostringstream html;
+  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>acosim: " << aco::xml_escape(scenario.file.filename().string())
+       << "</title>\n<style>body{font-family:sans-serif;margin:16px} #controls{margin:8px 0} #slider{width:420px}</style>\n"
+       << "</head><body>\n<h1>acosim: " << aco::xml_escape(scenario.file.string()) << "</h1>\n<p>" << aco::xml_escape(r.outcome)
+       << (r.reason.empty() ? "" : ": " + aco::xml_escape(r.reason)) << "; " << r.time << " s, " << r.distance << " driven, "
+       << r.replans << " replans, local planner " << aco::xml_escape(scenario.run.pipeline.at("local").plugin) << "</p>\n"
+       << "<div id=\"controls\"><button id=\"play\">play</button> <input id=\"slider\" type=\"range\" min=\"0\" max=\""
+       << r.frames.size() - 1 << "\" value=\"0\"> <span id=\"time\">0 s</span> <span id=\"speed\"></span></div>\n"
+       << picture(scenario, r, robot.str()) << "<script>\nconst frames = " << frames.dump() << ";\nconst radius = " << radius << ";\n"
+       << R"JS(const slider = document.getElementById('slider'), play = document.getElementById('play');
+const body = document.getElementById('robot-body'), heading = document.getElementById('robot-heading');
+const discs = document.querySelectorAll('.disc');
+const trajectory = document.getElementById('trajectory'), full = trajectory.getAttribute('points').trim().split(' ');
+let timer = null;
+function show(i) {
+  const f = frames[i];
+  body.setAttribute('cx', f[1]); body.setAttribute('cy', f[2]);
+  heading.setAttribute('x1', f[1]); heading.setAttribute('y1', f[2]);
+  heading.setAttribute('x2', f[1] + 1.6 * radius * Math.cos(f[3])); heading.setAttribute('y2', f[2] + 1.6 * radius * Math.sin(f[3]));
+  discs.forEach((d, k) => { d.setAttribute('cx', f[5 + 2 * k]); d.setAttribute('cy', f[6 + 2 * k]); });
+  trajectory.setAttribute('points', full.slice(0, i + 1).join(' '));
+  document.getElementById('time').textContent = (Math.round(f[0] * 10) / 10) + ' s';
+  document.getElementById('speed').textContent = 'v ' + f[4].toFixed(2);
+  slider.value = i;
+}
+function stop() { clearInterval(timer); timer = null; play.textContent = 'play'; }
+play.onclick = () => {
+  if (timer) return stop();
+  if (+slider.value >= frames.length - 1) show(0);
+  play.textContent = 'pause';
+  timer = setInterval(() => { const i = +slider.value + 1; if (i >= frames.length) return stop(); show(i); }, 25);
+};
+slider.oninput = () => { stop(); show(+slider.value); };
+show(location.hash === '#final' ? frames.length - 1 : 0);
+</script>
+</body></html>
+)JS";
+  return html.str();
 }
 
 }  // namespace acosim

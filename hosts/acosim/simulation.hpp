@@ -97,5 +97,7 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
 std::string summary_json(const Scenario& scenario, const SimulationResult& result);
 std::string trajectory_csv(const SimulationResult& result);
 std::string render_svg(const Scenario& scenario, const SimulationResult& result);
+// A self-contained page that plays the run (play/pause, time slider); #final shows the last frame.
+std::string render_html(const Scenario& scenario, const SimulationResult& result);
 
 }  // namespace acosim

@@ -93,6 +93,7 @@ BatchSummary run_batch(const std::vector<Scenario>& scenarios, aco::PluginRegist
     if (std::isfinite(r.min_clearance)) clearance += r.min_clearance, ++clear_count;
     if (r.reached && r.collisions > 0) ++b.reached_with_collision;
   }
+  b.results = std::move(results);
   b.mean_time = b.reached ? time / b.reached : 0.0;
   b.mean_clearance = clear_count ? clearance / clear_count : 0.0;
   return b;

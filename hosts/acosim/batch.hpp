@@ -24,6 +24,7 @@ struct BatchSummary {
   double mean_time = 0.0;       // over the reached runs
   double mean_clearance = 0.0;  // smallest clearance per run, averaged
   std::map<std::string, int> outcomes;
+  std::vector<SimulationResult> results;  // per variation, without their frames
 };
 
 // Runs the scenarios in parallel (each simulation is sequential and deterministic, so the

@@ -37,7 +37,8 @@ int main(int argc, char** argv) {
         ("html", po::value(&html)->value_name("FILE"), "write a page that plays the run (play/pause, time slider)")
         ("local", po::value(&local)->value_name("PLUGIN"), "drive with this local planner (its defaults) instead of the scenario's")
         ("batch", po::value<int>()->value_name("N"), "run N generated variations of the scenario and print their summary")
-        ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch: the variations' seed")
+        ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch or --variation: the variations' seed")
+        ("variation", po::value<int>()->value_name("K"), "run variation K (0-based) of --batch's, with every output")
         ("threads", po::value<int>()->default_value(0), "with --batch: worker threads, 0 = all cores; results do not depend on it")
         ("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"), "also search DIR for plugins");
     po::options_description hidden;
@@ -77,7 +78,15 @@ int main(int argc, char** argv) {
       for (const auto& [outcome, count] : b.outcomes) std::cout << " " << outcome << " " << count << ";";
       std::cout << "\nmean time to goal: " << b.mean_time << " s (reached runs); mean smallest clearance: " << b.mean_clearance
                 << "; replans: " << b.replans << "\n";
+      for (std::size_t k = 0; k < b.results.size(); ++k)  // to replay with --variation K
+        if (!b.results[k].reached)
+          std::cout << "variation " << k << ": " << b.results[k].outcome << " (" << b.results[k].reason << ")\n";
       return 0;
+    }
+    if (vm.count("variation")) {
+      const int k = vm["variation"].as<int>();
+      if (k < 0) throw aco::Error("--variation: K must be 0 or more");
+      scenario = acosim::variations(scenario, k + 1, vm["seed"].as<std::uint64_t>(), registry)[k];
     }
     const acosim::SimulationResult result = acosim::simulate(scenario, registry);
     if (!csv.empty()) write(csv, acosim::trajectory_csv(result));

@@ -21,6 +21,8 @@ const aco::SettingsTable<RobotSettings>& robot_table() {
       aco::field("max-yaw-rate", &R::max_yaw_rate, "(0:3600]", "top turn rate in degrees/s (paper 003: 20)"),
       aco::field("max-accel", &R::max_accel, "(0:1000]", "acceleration and braking limit (paper 003: 0.2 m/s^2)"),
       aco::field("max-yaw-accel", &R::max_yaw_accel, "(0:36000]", "turn-rate change limit in degrees/s^2 (paper 003: 50)"),
+      aco::field("min-speed", &R::min_speed, "-100:0",
+                 "slowest forward speed; below 0 the robot may back up (not in the paper, whose V_s starts at v_min)"),
   });
   return table;
 }

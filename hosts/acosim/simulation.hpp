@@ -25,9 +25,10 @@ struct RobotSettings {
   double max_yaw_rate = 20.0;   // degrees/s
   double max_accel = 0.2;
   double max_yaw_accel = 50.0;  // degrees/s^2
+  double min_speed = 0.0;       // below 0: may back up
 
   aco::RobotLimits limits() const {
-    return {radius, max_speed, max_yaw_rate * aco::kDegree, max_accel, max_yaw_accel * aco::kDegree};
+    return {radius, max_speed, max_yaw_rate * aco::kDegree, max_accel, max_yaw_accel * aco::kDegree, min_speed};
   }
 };
 

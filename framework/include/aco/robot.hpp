@@ -26,10 +26,11 @@ inline constexpr double kDegree = M_PI / 180.0;
 // a robot at full speed turns on a 7.5 cm circle, and the planner prefers spinning to driving.
 struct RobotLimits {
   double radius = 0.3;                     // the robot is a disc of this radius
-  double max_speed = 1.5;                  // v in [0, max_speed]: the robot does not reverse
+  double max_speed = 1.5;                  // v <= max_speed
   double max_yaw_rate = 20.0 * kDegree;    // |w| <= max_yaw_rate
   double max_accel = 0.2;                  // |dv/dt| <= max_accel, braking included
   double max_yaw_accel = 50.0 * kDegree;   // |dw/dt| <= max_yaw_accel
+  double min_speed = 0.0;                  // v >= min_speed: below 0 the robot may back up (not in the paper)
 };
 
 struct VelocityCommand {
@@ -61,7 +62,7 @@ struct DynamicWindow {
 };
 
 inline DynamicWindow dynamic_window(const RobotState& s, const RobotLimits& limits, double period) {
-  return {std::max(0.0, s.v - limits.max_accel * period), std::min(limits.max_speed, s.v + limits.max_accel * period),
+  return {std::max(limits.min_speed, s.v - limits.max_accel * period), std::min(limits.max_speed, s.v + limits.max_accel * period),
           std::max(-limits.max_yaw_rate, s.w - limits.max_yaw_accel * period),
           std::min(limits.max_yaw_rate, s.w + limits.max_yaw_accel * period)};
 }
@@ -70,8 +71,9 @@ inline DynamicWindow dynamic_window(const RobotState& s, const RobotLimits& limi
 // yaw limits): what a robot does when no velocity is safe. Speeds were chosen so that it can
 // stop on that arc before it touches anything.
 inline VelocityCommand brake(const RobotState& s, const RobotLimits& limits, double period) {
-  const double v = std::max(0.0, s.v - limits.max_accel * period);
-  const double w = s.v > 0.0 ? s.w * v / s.v : 0.0;
+  const double dv = limits.max_accel * period;
+  const double v = s.v > 0.0 ? std::max(0.0, s.v - dv) : std::min(0.0, s.v + dv);
+  const double w = s.v != 0.0 ? s.w * v / s.v : 0.0;
   return dynamic_window(s, limits, period).clamp({v, w});
 }
 

@@ -58,11 +58,13 @@ class Dwa final : public aco::LocalPlanner {
     gather_near(view);
     const aco::DynamicWindow window = aco::dynamic_window(view.robot, view.limits, view.period);
     candidates_.clear();
-    for (double v : samples(window.v_low, window.v_high, p_.v_resolution, false))
-      for (double w : samples(window.w_low, window.w_high, p_.w_resolution, true)) consider(view, {v, w});
+    for (double v : samples(window.v_low, window.v_high, p_.v_resolution))
+      for (double w : samples(window.w_low, window.w_high, p_.w_resolution)) consider(view, {v, w});
     const double goal_speed = p_.stop_at_goal ? std::sqrt(2.0 * view.limits.max_accel * (view.goal - view.robot.position()).norm())
                                               : std::numeric_limits<double>::infinity();
-    for (Candidate& c : candidates_) c.velocity = std::min(c.command.v, goal_speed);
+    // Measured from the slowest allowed speed, so that the term stays >= 0 for a robot that may
+    // back up (and is v itself for one that may not).
+    for (Candidate& c : candidates_) c.velocity = std::min(c.command.v, goal_speed) - view.limits.min_speed;
     double total_heading = 0, total_dist = 0, total_velocity = 0;
     for (const Candidate& c : candidates_) {
       total_heading += c.heading;
@@ -89,12 +91,12 @@ class Dwa final : public aco::LocalPlanner {
     double velocity = 0.0;  // the velocity term
   };
 
-  // low, low + step, ... up to high, high itself included; with `zero`, 0 too if inside.
-  static std::vector<double> samples(double low, double high, double step, bool zero) {
+  // low, low + step, ... up to high, high itself included, and 0 if inside.
+  static std::vector<double> samples(double low, double high, double step) {
     std::vector<double> values;
     for (int i = 0; low + i * step < high - 1e-12; ++i) values.push_back(low + i * step);
     values.push_back(high);
-    if (!zero || low > 0.0 || high < 0.0) return values;
+    if (low > 0.0 || high < 0.0) return values;
     // Exactly 0, so that the robot can drive straight: a grid value within rounding of it is 0.
     const auto nearest = std::min_element(values.begin(), values.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
     if (std::abs(*nearest) < 1e-9 * step) *nearest = 0.0;
@@ -145,28 +147,29 @@ class Dwa final : public aco::LocalPlanner {
 
   // dist(v, w): the arc length driven with (v, w) held before the first contact, searched in
   // steps of a tenth of the robot's radius up to the lookahead (which it returns if the arc is
-  // free). Turning on the spot (v = 0) drives nowhere: its arc is free.
+  // free); backwards when v < 0. Turning on the spot (v = 0) drives nowhere: its arc is free.
   double free_distance(const aco::LocalView& view, const aco::VelocityCommand& c) const {
-    if (c.v <= 0.0) return p_.lookahead;
+    if (c.v == 0.0) return p_.lookahead;
     const aco::RobotState& r = view.robot;
-    const double step = std::max(view.limits.radius, 1e-3) / 10.0, curvature = c.w / c.v;
+    const double step = std::max(view.limits.radius, 1e-3) / 10.0, curvature = c.w / c.v, direction = c.v > 0.0 ? 1.0 : -1.0;
     for (double s = step;; s += step) {
-      const double arc = std::min(s, p_.lookahead), turn = curvature * arc;
+      const double length = std::min(s, p_.lookahead), arc = direction * length, turn = curvature * arc;
       // The exact arc: a straight segment when it does not turn.
       const Eigen::Vector2d at =
           std::abs(turn) < 1e-9
               ? Eigen::Vector2d(r.x + arc * std::cos(r.heading), r.y + arc * std::sin(r.heading))
               : Eigen::Vector2d(r.x + (std::sin(r.heading + turn) - std::sin(r.heading)) / curvature,
                                 r.y - (std::cos(r.heading + turn) - std::cos(r.heading)) / curvature);
-      if (touches(view, at, arc / c.v)) return std::max(0.0, arc - step);
-      if (arc >= p_.lookahead) return p_.lookahead;
+      if (touches(view, at, arc / c.v)) return std::max(0.0, length - step);
+      if (length >= p_.lookahead) return p_.lookahead;
     }
   }
 
   void consider(const aco::LocalView& view, const aco::VelocityCommand& command) {
     const double dist = free_distance(view, command);
     // Eq. 18 in discrete time: driving one period at v, then braking, must end before contact.
-    if (command.v * view.period + command.v * command.v / (2.0 * view.limits.max_accel) > dist) return;
+    const double speed = std::abs(command.v);
+    if (speed * view.period + speed * speed / (2.0 * view.limits.max_accel) > dist) return;
     aco::RobotState s = view.robot;
     const int steps = std::max(1, static_cast<int>(std::ceil(p_.horizon / view.period - 1e-9)));
     for (int k = 0; k < steps; ++k) s = aco::move(s, command, view.period);

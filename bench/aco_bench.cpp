@@ -348,7 +348,8 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
 void time_dwa(aco::PluginRegistry& registry, int repeats) {
   const auto map = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/papers/paper003_20.map");
   const auto& descriptor = registry.load("local", "dwa");
-  const auto dwa = registry.create<aco::LocalPlanner>("local", "dwa", aco::resolve(descriptor.parameters(), {}, "local."));
+  const aco::ParameterValues values = aco::resolve(descriptor.parameters(), {}, "local.");
+  const auto dwa = registry.create<aco::LocalPlanner>("local", "dwa", values);
   aco::LocalView view;
   view.robot.x = 5.0, view.robot.y = 6.0, view.robot.heading = 0.3, view.robot.v = 0.5;
   view.goal = {8.0, 7.0};
@@ -360,8 +361,9 @@ void time_dwa(aco::PluginRegistry& registry, int repeats) {
   view.cells = cells;
   view.moving = moving;
   const aco::DynamicWindow w = aco::dynamic_window(view.robot, view.limits, view.period);
-  const int samples = static_cast<int>(std::floor((w.v_high - w.v_low) / 0.02 + 1e-9) + 1) *
-                      static_cast<int>(std::floor((w.w_high - w.w_low) / (aco::kDegree) + 1e-9) + 2);
+  // The plugin samples each range every resolution, both ends included, plus w = 0.
+  const int samples = static_cast<int>(std::floor((w.v_high - w.v_low) / values.real("v_resolution") + 1e-9) + 1) *
+                      static_cast<int>(std::floor((w.w_high - w.w_low) / values.real("w_resolution") + 1e-9) + 2);
   const int calls = 200 * repeats;
   aco::VelocityCommand c;
   const auto began = std::chrono::steady_clock::now();

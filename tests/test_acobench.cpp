@@ -165,8 +165,8 @@ TEST_CASE("a trial's seed depends on the master seed, the problem and the repeti
 }
 
 TEST_CASE("the ablation path flips one component at a time; a slot's plugin carries its parameters", "[acobench]") {
-  acobench::Configuration from{"from", {{"update", "ant_system"}, {"update.rho", "0.3"}, {"beta", "7"}}, {}, {}};
-  acobench::Configuration to{"to", {{"update", "acs"}, {"update.xi", "0.2"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}, {}};
+  acobench::Configuration from{{{{"update", "ant_system"}, {"update.rho", "0.3"}, {"beta", "7"}}, {}}, "from", {}};
+  acobench::Configuration to{{{{"update", "acs"}, {"update.xi", "0.2"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}}, "to", {}};
   const auto components = acobench::ablation_components(from, to);
   REQUIRE(components.size() == 3);  // beta, init, update (+ update.xi, update.rho)
   const auto update = std::find_if(components.begin(), components.end(), [](const auto& c) { return c.front() == "update"; });

@@ -25,23 +25,17 @@ using aco::yaml::only_keys;
 using aco::yaml::scalar;
 using aco::yaml::where;
 
-aco::yaml::KeyedValues keyed(const Configuration& c) { return {c.keys, c.origins}; }
-
 Configuration overlay(const Configuration& base, const Configuration& changes, const std::string& name) {
-  const aco::yaml::KeyedValues merged = aco::yaml::overlay(keyed(base), keyed(changes));
   Configuration c;
+  static_cast<aco::KeyedValues&>(c) = aco::overlay(base, changes);
   c.name = name;
-  c.keys = merged.keys;
-  c.origins = merged.origins;
   return c;
 }
 
 // A configuration written as keys (see aco::yaml::read_run_keys: slots as mappings, `config:`).
 Configuration read_keys(const std::filesystem::path& file, const YAML::Node& node) {
-  const aco::yaml::KeyedValues values = aco::yaml::read_run_keys(file, node, {"name"});
   Configuration c;
-  c.keys = values.keys;
-  c.origins = values.origins;
+  static_cast<aco::KeyedValues&>(c) = aco::yaml::read_run_keys(file, node, {"name"});
   return c;
 }
 
@@ -121,7 +115,7 @@ std::vector<Configuration> factorial(const std::filesystem::path& file, const YA
 
 aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry) {
   const auto fail_key = [&config](const std::string& key, const std::string& message) {
-    return aco::Error(keyed(config).origin(key) + "configuration '" + config.name + "': " + message);
+    return aco::Error(config.origin(key) + "configuration '" + config.name + "': " + message);
   };
   for (const char* key : {"map", "scen", "scen-index", "start", "goal"})
     if (config.keys.count(key))

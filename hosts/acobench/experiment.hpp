@@ -30,11 +30,10 @@ struct Problem {
 // "search"), slots ("update") and plugin parameters ("update.rho"); every key but the problem's
 // (map, scen, start, goal: the experiment's problems) and the seed (set per trial). Keys it does
 // not set keep their defaults; every key and value is checked when the experiment is loaded.
-struct Configuration {
+// Its origins (where each key was written) serve error messages; they are not part of its
+// identity.
+struct Configuration : aco::KeyedValues {
   std::string name;
-  std::map<std::string, std::string> keys;
-  // Where each key was written ("file:line"), for error messages; not part of the identity.
-  std::map<std::string, std::string> origins;
   // The keys resolved, once, when the file is loaded (empty for configurations made later, such
   // as the ablation path's flips, which resolve when they are added to the run).
   std::optional<aco::RunSpec> run;

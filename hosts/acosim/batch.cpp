@@ -30,13 +30,12 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> along(const std::vector<Eigen::Vecto
 }  // namespace
 
 std::vector<Scenario> variations(const Scenario& base, int count, std::uint64_t seed, aco::PluginRegistry& registry) {
-  const aco::LoadedProblem problem = aco::load_problem(base.run.problem);
-  const aco::Graph graph = aco::build_graph(*problem.map, base.run.graph);
-  const aco::PlanOutcome plan = aco::plan(registry, graph, graph.node(problem.start), graph.node(problem.goal), base.run);
+  const aco::Graph graph = aco::build_graph(*base.map, base.run.graph);
+  const aco::PlanOutcome plan = aco::plan(registry, graph, graph.node(base.start), graph.node(base.goal), base.run);
   if (!plan.solved()) throw aco::Error("batch: the scenario's map has no path from start to goal: " + plan.reason);
   std::vector<Eigen::Vector2d> path;
   for (const auto& p : plan.path) path.push_back(p.head<2>());
-  const Eigen::Vector2d start(problem.start.x, problem.start.y), goal(problem.goal.x, problem.goal.y);
+  const Eigen::Vector2d start(base.start.x, base.start.y), goal(base.goal.x, base.goal.y);
 
   std::vector<Scenario> out;
   for (int k = 0; k < count; ++k) {
@@ -50,7 +49,7 @@ std::vector<Scenario> variations(const Scenario& base, int count, std::uint64_t 
       const Eigen::Vector2d p = along(path, rng.uniform(0.15, 0.85)).first;
       const aco::Cell c{static_cast<int>(std::lround(p.x())) + static_cast<int>(rng.below(3)) - 1,
                         static_cast<int>(std::lround(p.y())) + static_cast<int>(rng.below(3)) - 1};
-      if (!problem.map->passable(c) || (Eigen::Vector2d(c.x, c.y) - start).norm() < 2.5 ||
+      if (!base.map->passable(c) || (Eigen::Vector2d(c.x, c.y) - start).norm() < 2.5 ||
           (Eigen::Vector2d(c.x, c.y) - goal).norm() < 2.5 || std::find(s.unknown.begin(), s.unknown.end(), c) != s.unknown.end())
         continue;
       s.unknown.push_back(c);

@@ -57,8 +57,7 @@ double px(double x) { return kPad + (x + 0.5) * kCell; }
 // The picture: the map, unknown cells, every plan, each moving obstacle's track, the driven
 // trajectory and the outcome line. The player adds the robot and the discs on top.
 std::string picture(const Scenario& scenario, const SimulationResult& r, const std::string& extra) {
-  const aco::LoadedProblem problem = aco::load_problem(scenario.run.problem);
-  const aco::Map& map = *problem.map;
+  const aco::Map& map = *scenario.map;
   std::ostringstream s;
   s.precision(6);
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" id=\"world\" width=\"" << 2 * kPad + map.width() * kCell << "\" height=\""

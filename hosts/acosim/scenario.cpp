@@ -118,7 +118,7 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
   s.file = file;
 
   const YAML::Node run = doc["run"];
-  aco::yaml::KeyedValues keys = aco::yaml::read_run_keys(file, run, {"start", "goal"});
+  aco::KeyedValues keys = aco::yaml::read_run_keys(file, run, {"start", "goal"});
   for (const char* end : {"start", "goal"}) {
     if (!run[end]) fail(file, run, "'run' needs '" + std::string(end) + "' [x, y]");
     const aco::Cell c = aco::yaml::cell(file, run[end], end);
@@ -144,17 +144,23 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
                                                          " s is longer than the local planner's horizon " +
                                                          aco::to_string(aco::ParamValue(local.real("horizon"))) + " s");
 
-  // The obstacles the map does not show; none may touch the robot where it starts.
   const aco::LoadedProblem problem = aco::load_problem(s.run.problem);
-  const Eigen::Vector2d start(problem.start.x, problem.start.y);
+  const auto* grid = dynamic_cast<const aco::OccupancyGrid*>(problem.map.get());
+  if (!grid) throw aco::Error(problem.map->name() + ": acosim needs a 2D occupancy grid map, not a terrain");
+  s.map = std::make_shared<const aco::OccupancyGrid>(*grid);
+  s.start = problem.start;
+  s.goal = problem.goal;
+
+  // The obstacles the map does not show; none may touch the robot where it starts.
+  const Eigen::Vector2d start(s.start.x, s.start.y);
   if (const YAML::Node unknown = doc["unknown"]) {
     if (!unknown.IsSequence()) fail(file, unknown, "'unknown' must be a list of cells [x, y]");
     for (const auto& entry : unknown) {
       const aco::Cell c = aco::yaml::cell(file, entry, "unknown");
-      if (!problem.map->contains(c)) fail(file, entry, "unknown obstacle " + aco::to_string(c) + " is outside the map");
+      if (!s.map->contains(c)) fail(file, entry, "unknown obstacle " + aco::to_string(c) + " is outside the map");
       if (aco::distance_to_square(start, {c.x, c.y}, 1.0) < s.robot.radius)
-        fail(file, entry, "unknown obstacle " + aco::to_string(c) + " overlaps the robot at the start " + aco::to_string(problem.start));
-      if (c == problem.goal) fail(file, entry, "unknown obstacle " + aco::to_string(c) + " is on the goal");
+        fail(file, entry, "unknown obstacle " + aco::to_string(c) + " overlaps the robot at the start " + aco::to_string(s.start));
+      if (c == s.goal) fail(file, entry, "unknown obstacle " + aco::to_string(c) + " is on the goal");
       s.unknown.push_back(c);
     }
   }
@@ -163,7 +169,7 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
     for (const auto& entry : moving) {
       s.moving.push_back(read_moving(file, entry));
       if ((s.moving.back().position(0.0) - start).norm() < s.moving.back().radius + s.robot.radius)
-        fail(file, entry, "the moving obstacle overlaps the robot at the start " + aco::to_string(problem.start));
+        fail(file, entry, "the moving obstacle overlaps the robot at the start " + aco::to_string(s.start));
     }
   }
   return s;

@@ -32,6 +32,8 @@ Eigen::Vector2d MovingObstacle::velocity_at(double t) const {
 namespace {
 
 Eigen::Vector2d centre(aco::Cell c) { return {double(c.x), double(c.y)}; }
+// The cell whose square holds p.
+aco::Cell cell_under(const Eigen::Vector2d& p) { return {static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))}; }
 
 // The world as the simulator knows it: the truth (map plus unknown cells) and the robot's map.
 class World {
@@ -49,7 +51,7 @@ class World {
   std::vector<Eigen::Vector2d> sense(const Eigen::Vector2d& p, double range, std::vector<aco::Cell>& sensed) {
     std::vector<Eigen::Vector2d> cells;
     const int r = static_cast<int>(std::ceil(range));
-    const aco::Cell at{static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
+    const aco::Cell at = cell_under(p);
     for (int y = at.y - r; y <= at.y + r; ++y)
       for (int x = at.x - r; x <= at.x + r; ++x) {
         const aco::Cell c{x, y};
@@ -67,7 +69,7 @@ class World {
   double clearance(const Eigen::Vector2d& p, double radius, aco::Cell& nearest) const {
     double best = std::numeric_limits<double>::infinity();
     const int r = static_cast<int>(std::ceil(radius)) + 1;
-    const aco::Cell at{static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
+    const aco::Cell at = cell_under(p);
     for (int y = at.y - r; y <= at.y + r; ++y)
       for (int x = at.x - r; x <= at.x + r; ++x)
         if (blocked({x, y})) {
@@ -101,23 +103,20 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
   const aco::RunSpec& run = scenario.run;
   const SimulationSettings& sim = scenario.simulation;
   const aco::RobotLimits limits = scenario.robot.limits();
-  aco::LoadedProblem problem = aco::load_problem(run.problem);
-  const auto* grid = dynamic_cast<const aco::OccupancyGrid*>(problem.map.get());
-  if (!grid) throw aco::Error(problem.map->name() + ": acosim needs a 2D occupancy grid map, not a terrain");
-  World world(*grid, scenario.unknown);
+  World world(*scenario.map, scenario.unknown);
   const aco::LoadedPipeline pipeline = aco::instantiate(registry, run.pipeline);
 
   SimulationResult result;
   aco::RobotState robot;
-  robot.x = problem.start.x, robot.y = problem.start.y;
-  const Eigen::Vector2d goal = centre(problem.goal);
+  robot.x = scenario.start.x, robot.y = scenario.start.y;
+  const Eigen::Vector2d goal = centre(scenario.goal);
   std::vector<Eigen::Vector2d> goals;  // the current plan's intermediate goals
   std::size_t next = 0;
 
   // Plans from the cell under the robot on the map as the robot knows it now.
   const auto replan = [&](aco::Cell from) {
     const aco::Graph graph = aco::build_graph(world.known(), run.graph);
-    const aco::PlanOutcome outcome = aco::plan(registry, graph, graph.node(from), graph.node(problem.goal), run);
+    const aco::PlanOutcome outcome = aco::plan(registry, graph, graph.node(from), graph.node(scenario.goal), run);
     if (!outcome.solved()) {
       result.outcome = "no path";
       result.reason = outcome.reason.empty() ? "the planner found no path" : outcome.reason;
@@ -130,7 +129,7 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
     result.plans.push_back(plan);
     return true;
   };
-  if (!replan(problem.start)) return result;
+  if (!replan(scenario.start)) return result;
   if (!goals.empty()) robot.heading = std::atan2(goals[0].y() - robot.y, goals[0].x() - robot.x);
 
   const auto moving_at = [&](double t) {
@@ -166,8 +165,7 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
         break;
       }
       ++result.replans;
-      const aco::Cell here{static_cast<int>(std::lround(robot.x)), static_cast<int>(std::lround(robot.y))};
-      if (!replan(here)) break;
+      if (!replan(cell_under(robot.position()))) break;
       best_to_goal = std::numeric_limits<double>::infinity(), last_progress = t;
     }
 
@@ -189,8 +187,9 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
     aco::Cell touched;
     double clearance = world.clearance(robot.position(), limits.radius, touched);
     std::string hit = "the obstacle cell " + aco::to_string(touched);
-    for (std::size_t i = 0; i < scenario.moving.size(); ++i) {
-      const double d = (robot.position() - scenario.moving[i].position(t)).norm() - scenario.moving[i].radius - limits.radius;
+    const std::vector<Eigen::Vector2d>& discs = result.frames.back().moving;  // where the discs are now
+    for (std::size_t i = 0; i < discs.size(); ++i) {
+      const double d = (robot.position() - discs[i]).norm() - scenario.moving[i].radius - limits.radius;
       if (d < clearance) clearance = d, hit = "moving obstacle " + std::to_string(i + 1);
     }
     result.min_clearance = std::min(result.min_clearance, clearance);

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,10 @@ struct MovingObstacle {
 struct Scenario {
   std::filesystem::path file;
   aco::RunSpec run;  // map, start, goal, graph, planner, pipeline (its local slot drives)
+  // run.problem loaded once: the known map (shared by copies: batch variations) and the cells.
+  std::shared_ptr<const aco::OccupancyGrid> map;
+  aco::Cell start;
+  aco::Cell goal;
   RobotSettings robot;
   SimulationSettings simulation;
   std::vector<aco::Cell> unknown;  // blocked in the world, free on the map

@@ -264,6 +264,23 @@ std::string to_json(const RunSpec& spec) {
   return j.dump();
 }
 
+std::string KeyedValues::origin(const std::string& key) const {
+  const auto it = origins.find(key);
+  return it != origins.end() && !it->second.empty() ? it->second + ": " : "";
+}
+
+KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
+  KeyedValues c = base;
+  for (const auto& [key, value] : changes.keys)
+    if (std::find(kSlots.begin(), kSlots.end(), key) != kSlots.end() && c.keys.count(key) && c.keys.at(key) != value)
+      std::erase_if(c.keys, [&key](const auto& kv) { return kv.first.rfind(key + ".", 0) == 0; });
+  for (const auto& [key, value] : changes.keys) {
+    c.keys[key] = value;
+    c.origins[key] = changes.origins.count(key) ? changes.origins.at(key) : "";
+  }
+  return c;
+}
+
 Keys read_config_file(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw Error(path + ": cannot open the config file");

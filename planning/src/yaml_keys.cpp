@@ -50,27 +50,10 @@ void only_keys(const std::filesystem::path& file, const YAML::Node& map, const s
   }
 }
 
-std::string KeyedValues::origin(const std::string& key) const {
-  const auto it = origins.find(key);
-  return it != origins.end() && !it->second.empty() ? it->second + ": " : "";
-}
-
-KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
-  KeyedValues c = base;
-  for (const auto& [key, value] : changes.keys)
-    if (std::find(kSlots.begin(), kSlots.end(), key) != kSlots.end() && c.keys.count(key) && c.keys.at(key) != value)
-      std::erase_if(c.keys, [&key](const auto& kv) { return kv.first.rfind(key + ".", 0) == 0; });
-  for (const auto& [key, value] : changes.keys) {
-    c.keys[key] = value;
-    c.origins[key] = changes.origins.count(key) ? changes.origins.at(key) : "";
-  }
-  return c;
-}
-
 namespace {
 
 // One key; a slot may be given as {plugin: NAME, param: value, ...}.
-void read_key(const std::filesystem::path& file, const YAML::Node& name, const YAML::Node& value, KeyedValues& out) {
+void read_key(const std::filesystem::path& file, const YAML::Node& name, const YAML::Node& value, aco::KeyedValues& out) {
   const std::string key = name.Scalar();
   if (value.IsMap()) {
     if (std::find(kSlots.begin(), kSlots.end(), key) == kSlots.end()) {
@@ -93,16 +76,16 @@ void read_key(const std::filesystem::path& file, const YAML::Node& name, const Y
 
 }  // namespace
 
-KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node, const std::vector<std::string>& skip) {
+aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node, const std::vector<std::string>& skip) {
   if (!node.IsMap()) fail(file, node, "a configuration must be a mapping of keys to values");
-  KeyedValues own;
+  aco::KeyedValues own;
   for (const auto& entry : node) {
     const std::string key = entry.first.Scalar();
     if (key != "config" && std::find(skip.begin(), skip.end(), key) == skip.end()) read_key(file, entry.first, entry.second, own);
   }
   if (!node["config"]) return own;
   const std::filesystem::path ini = (file.parent_path() / scalar(file, node["config"], "config")).lexically_normal();
-  KeyedValues preset;
+  aco::KeyedValues preset;
   try {
     preset.keys = read_config_file(ini.string());
   } catch (const Error& e) {

@@ -46,6 +46,16 @@ struct RunSpec {
 
 using Keys = std::map<std::string, std::string>;
 
+// Keys with where each was written ("file:line", or a config file's path), for messages.
+struct KeyedValues {
+  Keys keys;
+  std::map<std::string, std::string> origins;
+  std::string origin(const std::string& key) const;  // "file:line: ", or "" if unknown
+};
+
+// `changes` over `base`; another plugin for a slot drops the base's parameters of that slot.
+KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes);
+
 // The problem keys: map, scen, scen-index, start, goal (text), max-slope, height-scale, cell-size.
 std::span<const ParamSpec> problem_parameters();
 // The graph keys: neighbourhood, corner-cutting.

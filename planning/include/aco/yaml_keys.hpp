@@ -23,19 +23,9 @@ Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::
 void only_keys(const std::filesystem::path& file, const YAML::Node& map, const std::vector<std::string>& allowed,
                const std::string& what);
 
-// Keys with where each was written ("file:line", or the config file's path).
-struct KeyedValues {
-  Keys keys;
-  std::map<std::string, std::string> origins;
-  std::string origin(const std::string& key) const;  // "file:line: ", or "" if unknown
-};
-
-// `changes` over `base`; another plugin for a slot drops the base's parameters of that slot.
-KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes);
-
 // The run keys of a mapping; a slot may be given as {plugin: NAME, param: value, ...}, and
 // `config: FILE` (relative to `file`) starts from an acoplan config file's keys, which the
 // mapping's own keys override. Keys listed in `skip` are not run keys (a configuration's name).
-KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node, const std::vector<std::string>& skip);
+aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node, const std::vector<std::string>& skip);
 
 }  // namespace aco::yaml

@@ -156,3 +156,15 @@ TEST_CASE("acosim batch: variations depend on the seed only, results not on the 
   CHECK(one.mean_clearance == two.mean_clearance);
   CHECK(one.reached_with_collision == 0);
 }
+
+TEST_CASE("acosim batch: no variation seals the goal off", "[acosim]") {
+  // A one-cell corridor: any unknown cell on it would leave no way to the goal.
+  const auto file = scenario("run: {map: corridor.txt, start: [0, 1], goal: [11, 1], local: dwa}\n");
+  std::ofstream(file.parent_path() / "corridor.txt") << "1 1 1 1 1 1 1 1 1 1 1 1\n0 0 0 0 0 0 0 0 0 0 0 0\n"
+                                                          "1 1 1 1 1 1 1 1 1 1 1 1\n";
+  const acosim::Scenario base = acosim::load_scenario(file, test::plugins());
+  for (const auto& v : acosim::variations(base, 10, 3, test::plugins())) {
+    CHECK(v.unknown.empty());
+    CHECK(!v.moving.empty());
+  }
+}

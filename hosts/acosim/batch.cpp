@@ -37,21 +37,29 @@ std::vector<Scenario> variations(const Scenario& base, int count, std::uint64_t 
   for (const auto& p : plan.path) path.push_back(p.head<2>());
   const Eigen::Vector2d start(base.start.x, base.start.y), goal(base.goal.x, base.goal.y);
 
+  aco::BreadthFirstSearch reach;
   std::vector<Scenario> out;
   for (int k = 0; k < count; ++k) {
     aco::Rng rng = aco::Rng::stream(seed, static_cast<std::uint64_t>(k));
     Scenario s = base;
     s.unknown.clear();
     s.moving.clear();
-    // One to three unknown cells on or next to the path, clear of the start and the goal.
+    // One to three unknown cells on or next to the path, clear of the start and the goal, and
+    // never sealing the goal off: a variation no robot could finish measures nothing.
     const int cells = 1 + static_cast<int>(rng.below(3));
+    std::vector<std::uint8_t> closed(graph.num_nodes(), 0);
     for (int tries = 0; static_cast<int>(s.unknown.size()) < cells && tries < 100; ++tries) {
       const Eigen::Vector2d p = along(path, rng.uniform(0.15, 0.85)).first;
       const aco::Cell c{static_cast<int>(std::lround(p.x())) + static_cast<int>(rng.below(3)) - 1,
                         static_cast<int>(std::lround(p.y())) + static_cast<int>(rng.below(3)) - 1};
       if (!base.map->passable(c) || (Eigen::Vector2d(c.x, c.y) - start).norm() < 2.5 ||
-          (Eigen::Vector2d(c.x, c.y) - goal).norm() < 2.5 || std::find(s.unknown.begin(), s.unknown.end(), c) != s.unknown.end())
+          (Eigen::Vector2d(c.x, c.y) - goal).norm() < 2.5 || closed[graph.node(c)])
         continue;
+      closed[graph.node(c)] = 1;
+      if (!reach.find(graph, graph.node(base.start), graph.node(base.goal), closed)) {
+        closed[graph.node(c)] = 0;
+        continue;
+      }
       s.unknown.push_back(c);
     }
     // One or two discs crossing the path from 3 to 5 away on either side, 0.2 to 0.5 per second.

@@ -11,7 +11,7 @@ namespace acosim {
 
 // `count` variations of `base` (its own unknown and moving obstacles replaced): one to three
 // unknown cells on or beside the global path (planned once on the map, as the robot would),
-// clear of the start and the goal, and one or two discs crossing the path at 0.2-0.5 per second
+// clear of the start and the goal, never cutting every way from start to goal, and one or two discs crossing the path at 0.2-0.5 per second
 // from 3-5 away. Variation k depends only on (seed, k).
 std::vector<Scenario> variations(const Scenario& base, int count, std::uint64_t seed, aco::PluginRegistry& registry);
 

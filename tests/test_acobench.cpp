@@ -356,3 +356,71 @@ TEST_CASE("an experiment sets terrain keys per configuration: max-slope limits t
   CHECK(steepest > 0.0);
   CHECK(steepest <= 60.0);
 }
+
+TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per configuration, same variations for all",
+          "[acobench][acosim]") {
+  // An open 12 x 5 map; the scenario's robot drives from (0, 2) to (11, 2) past an unknown cell.
+  const auto dir = test::temp_file("open.txt", "").parent_path();
+  {
+    std::ofstream open(dir / "open.txt");
+    for (int y = 0; y < 5; ++y) open << "0 0 0 0 0 0 0 0 0 0 0 0\n";
+  }
+  std::ofstream(dir / "scenario.yaml") << "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa}\n"
+                                          "unknown: [[6, 2]]\n";
+  const auto file = dir / "sim.yaml";
+  std::ofstream(file) << "name: sim\nseed: 5\nrepetitions: 3\nproblems:\n"
+                         "  - {simulation: scenario.yaml}\n"
+                         "  - {simulation: scenario.yaml, variations: true, name: varied}\n"
+                         "baseline: {name: dwa}\n"
+                         "configurations:\n  - {name: follow, local.follow: 0.5}\n  - {name: blind, local: track}\n";
+  const auto e = acobench::load_experiment(file, test::plugins());
+  REQUIRE(e.problems.size() == 2);
+  CHECK(e.problems[0].start == aco::Cell{0, 2});
+  CHECK(e.problems[1].variations);
+  // local.follow is a parameter of the scenario's dwa, not of the default local planner.
+  CHECK(e.configurations[1].run->pipeline.at("local").parameters.real("follow") == 0.5);
+
+  const auto run = [&](const std::string& name, int threads) {
+    const auto db_file = file.parent_path() / name;
+    acobench::run_experiment(e, test::plugins(), {db_file, threads, {}});
+    return acobench::ResultsDb(db_file).trials();
+  };
+  const auto trials = run("sim1.db", 1);
+  REQUIRE(trials.size() == 18);
+  const auto configs = acobench::ResultsDb(file.parent_path() / "sim1.db").configs();
+  for (const auto& t : trials) {
+    INFO("problem " << t.problem << ", config " << t.config << ", repetition " << t.repetition);
+    REQUIRE(t.simulation);
+    const std::string config = std::find_if(configs.begin(), configs.end(), [&](auto& c) { return c.first == t.config; })->second.name;
+    if (config == "blind" && t.problem == 0) {
+      CHECK(t.simulation->outcome == "collision");  // the unknown cell is on its line
+      CHECK(t.simulation->collisions == 1);
+    }
+    if (config != "blind") {
+      CHECK(t.solved);
+      CHECK(t.simulation->collisions == 0);
+      CHECK(t.simulation->clearance > 0.0);
+      CHECK(t.length > 10.0);  // the distance driven
+      CHECK(std::isfinite(t.simulation->time_to_goal));
+    }
+    CHECK(t.solved == (t.simulation->outcome == "reached"));
+  }
+  // Every configuration meets the same variation in a repetition: the trial seeds agree.
+  for (const auto& a : trials)
+    for (const auto& b : trials)
+      if (a.problem == b.problem && a.repetition == b.repetition) CHECK(a.seed == b.seed);
+  // Results do not depend on the thread count.
+  const auto two = run("sim2.db", 2);
+  REQUIRE(two.size() == trials.size());
+  for (std::size_t i = 0; i < trials.size(); ++i) {
+    CHECK(two[i].length == trials[i].length);
+    CHECK(two[i].simulation->outcome == trials[i].simulation->outcome);
+    CHECK(two[i].simulation->control_steps == trials[i].simulation->control_steps);
+    CHECK(two[i].path_json == trials[i].path_json);
+  }
+  // A key the scenario's plugins do not have is an error naming the configuration.
+  std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: scenario.yaml}\nconfigurations:\n  - {name: bad, local.folow: 1}\n";
+  CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()), Contains("configuration 'bad'") && Contains("local.follow"));
+  std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: missing.yaml}\n";
+  CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("cannot open the scenario file"));
+}

@@ -25,9 +25,10 @@ std::filesystem::path scenario(const std::string& yaml) {
   return file;
 }
 
-acosim::SimulationResult simulate(const std::filesystem::path& file, const std::string& local = "") {
+// The scenario of `file`, driven with `changes` over its run keys.
+acosim::SimulationResult simulate(const std::filesystem::path& file, const aco::Keys& changes = {}) {
   acosim::Scenario s = acosim::load_scenario(file, test::plugins());
-  if (!local.empty()) s.run.pipeline["local"] = {local, aco::resolve(test::plugins().load("local", local).parameters(), {}, "")};
+  if (!changes.empty()) s = acosim::with_run_keys(s, {changes, {}}, test::plugins());
   return acosim::simulate(s, test::plugins());
 }
 
@@ -41,7 +42,7 @@ TEST_CASE("acosim: dwa passes an unknown cell on the straight path, blind tracki
   CHECK(dwa.min_clearance > 0.0);
   CHECK(dwa.sensed.size() == 1);
   CHECK(dwa.frames.size() == static_cast<std::size_t>(dwa.steps) + 1);
-  const auto blind = simulate(file, "track");
+  const auto blind = simulate(file, {{"local", "track"}});
   CHECK_FALSE(blind.reached);
   CHECK(blind.outcome == "collision");
   CHECK(blind.collisions == 1);
@@ -77,6 +78,28 @@ TEST_CASE("acosim: a blocked corridor makes the robot replan round the block", "
   };
   CHECK(through_closed_cell(r.plans.front()));
   CHECK_FALSE(through_closed_cell(r.plans.back()));
+}
+
+TEST_CASE("acosim: following the path (dwa follow) gets through a one-cell door the paper's heading term stalls at", "[acosim]") {
+  // A wall at x = 5 with one free cell at its top; the path runs along the bottom, up to the door
+  // and back down. Heading for the turning points, the robot arrives beside the door and stalls.
+  const auto file = test::temp_file("door.yaml", "");
+  std::ofstream map(file.parent_path() / "door.txt");
+  for (int y = 0; y < 9; ++y)
+    for (int x = 0; x < 12; ++x) map << (x == 5 && y != 1 ? "1" : "0") << (x == 11 ? "\n" : " ");
+  map.close();
+  const auto run = [&](const std::string& follow) {
+    std::ofstream(file) << "run: {map: door.txt, start: [0, 8], goal: [11, 8], corner-cutting: false, smoother: prune, "
+                           "smoother.clearance: 0.4, local: dwa, local.follow: " << follow << "}\n";
+    return simulate(file);
+  };
+  const auto paper = run("0");
+  CHECK_FALSE(paper.reached);
+  CHECK(paper.outcome == "stuck");
+  const auto follow = run("0.5");
+  CHECK(follow.reached);
+  CHECK(follow.collisions == 0);
+  CHECK(follow.replans == 0);
 }
 
 TEST_CASE("acosim: a moving obstacle is sensed and passed", "[acosim]") {
@@ -125,7 +148,7 @@ TEST_CASE("acosim: the bundled paper-003 scenarios reach the goal without a coll
   }
   // The replan scenario needs its replan; the moving one needs the prediction its file sets.
   CHECK(simulate(test::data_dir() / "scenarios/paper003_replan.yaml").replans >= 1);
-  CHECK(simulate(test::data_dir() / "scenarios/paper003_moving.yaml", "dwa").outcome == "collision");
+  CHECK(simulate(test::data_dir() / "scenarios/paper003_moving.yaml", {{"local.predict", "false"}}).outcome == "collision");
 }
 
 TEST_CASE("acosim batch: variations depend on the seed only, results not on the thread count", "[acosim]") {

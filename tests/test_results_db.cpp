@@ -106,6 +106,16 @@ std::string sql_value(const fs::path& file, const std::string& sql) {
   return text ? text : "NULL";
 }
 
+// Runs statements that return no rows on the file directly with SQLite.
+void sql_exec(const fs::path& file, const std::string& sql) {
+  sqlite3* raw = nullptr;
+  const int rc = sqlite3_open_v2(file.c_str(), &raw, SQLITE_OPEN_READWRITE, nullptr);
+  std::unique_ptr<sqlite3, decltype(&sqlite3_close)> db(raw, sqlite3_close);
+  REQUIRE(rc == SQLITE_OK);
+  INFO(sql);
+  REQUIRE(sqlite3_exec(raw, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
+}
+
 }  // namespace
 
 TEST_CASE("a results database reads back every stored trial after reopening", "[resultsdb]") {
@@ -143,7 +153,7 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
   CHECK(configs[1].second.settings_json == config("max_min", 0.02).settings_json);
   CHECK(db.meta("experiment_name") == kName);
   CHECK(db.meta("fingerprint") == kFingerprint);
-  CHECK(db.meta("format_version") == "1");
+  CHECK(db.meta("format_version") == "2");
   REQUIRE_THROWS_WITH(db.meta("colour"), Contains("no 'colour'"));
 
   const auto read = db.trials();
@@ -240,7 +250,7 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   const fs::path file = fresh_db();
   open(file);  // creates it
   sql_value(file, "UPDATE acobench_meta SET value = '0' WHERE key = 'format_version' RETURNING value");
-  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 1"));
+  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 2"));
 
   const fs::path missing = fresh_db();
   auto problems = kProblems;
@@ -248,6 +258,48 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   REQUIRE_THROWS_WITH(acobench::ResultsDb(missing, kName, kFingerprint, problems),
                       Contains("the setup of problem 'map1' is not valid JSON"));
   CHECK_FALSE(fs::exists(missing));
+}
+
+TEST_CASE("simulation trials store their measures; a format-1 database gains the columns and resumes", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  int id = 0;
+  {
+    auto db = open(file);
+    id = db.add_config(config("ant_system", 0.1));
+    db.store(trial(0, id, 0));
+  }
+  // What acobench before simulations wrote: no simulation columns, format 1.
+  const auto make_format_1 = [&] {
+    for (const char* column : {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps"})
+      sql_exec(file, std::string("ALTER TABLE runs DROP COLUMN ") + column);
+    sql_exec(file, "UPDATE acobench_meta SET value = '1' WHERE key = 'format_version'");
+  };
+  make_format_1();
+  CHECK(acobench::ResultsDb(file).meta("format_version") == "2");  // a report upgrades it too
+  make_format_1();
+
+  auto db = open(file);
+  CHECK(db.meta("format_version") == "2");
+  auto reached = trial(0, id, 1, true, 0);
+  reached.simulation = acobench::SimulationRecord{"reached", 87.5, 0, 1, 0.047, 875};
+  auto hit = trial(1, id, 0, false, 0);
+  hit.simulation = acobench::SimulationRecord{"collision", std::nan(""), 1, 0, -0.02, 120};
+  db.store(reached);
+  db.store(hit);
+  const auto read = db.trials();
+  REQUIRE(read.size() == 3);
+  CHECK_FALSE(read[0].simulation);  // the format-1 planning run
+  REQUIRE(read[1].simulation);
+  CHECK(read[1].simulation->outcome == "reached");
+  CHECK(read[1].simulation->time_to_goal == 87.5);
+  CHECK(read[1].simulation->replans == 1);
+  CHECK(read[1].simulation->clearance == 0.047);
+  CHECK(read[1].simulation->control_steps == 875);
+  REQUIRE(read[2].simulation);
+  CHECK(read[2].simulation->outcome == "collision");
+  CHECK(std::isnan(read[2].simulation->time_to_goal));
+  CHECK(read[2].simulation->collisions == 1);
+  CHECK(sql_value(file, "SELECT time_to_goal FROM runs WHERE outcome = 'collision'") == "NULL");
 }
 
 TEST_CASE("a file that is not an acobench database is refused and left as it was", "[resultsdb]") {

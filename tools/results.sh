@@ -2,7 +2,7 @@
 # Regenerates docs/results.md: runs every experiment of data/experiments/ with acobench (into
 # build/results/, resuming what is already there), writes each report, and puts our tables
 # beside each paper's (data/experiments/<name>.md).
-#   tools/results.sh [NAME ...]     default: the papers, ablation, movingai, terrain, generated
+#   tools/results.sh [NAME ...]     default: the papers, ablation, movingai, terrain, generated, dwa
 # The large-map experiments (movingai, terrain, generated) have hundreds of problems: only their
 # summary tables go into docs/results.md, the rest stays in build/results/<name>/report.md.
 set -euo pipefail
@@ -10,7 +10,7 @@ cd "$(dirname "$0")/.."
 [ -x build/release/hosts/acobench/acobench ] || tools/build.sh release >/dev/null
 acobench=build/release/hosts/acobench/acobench
 names=("$@")
-[ ${#names[@]} -gt 0 ] || names=(paper000 paper001 paper002 paper003 paper004 ablation movingai terrain generated)
+[ ${#names[@]} -gt 0 ] || names=(paper000 paper001 paper002 paper003 paper004 ablation movingai terrain generated dwa)
 mkdir -p build/results docs
 {
   echo "# Results: the papers' tables and ours"
@@ -36,6 +36,8 @@ mkdir -p build/results docs
       movingai|terrain|generated)
         awk '/^## / { keep = /^## (Summary by problem set|Gap by difficulty bucket)/ } keep' \
           "build/results/$name/report.md" ;;
+      dwa)
+        awk '/^## / { keep = /^## (Simulations|Ablation path)/ } keep' "build/results/$name/report.md" ;;
       *) sed -n '/^## /,$p' "build/results/$name/report.md" ;;
     esac | sed 's/^## /#### /'
   done

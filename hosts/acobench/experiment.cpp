@@ -39,12 +39,27 @@ Configuration read_keys(const std::filesystem::path& file, const YAML::Node& nod
   return c;
 }
 
-std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML::Node& list) {
+std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML::Node& list, aco::PluginRegistry& registry) {
   if (!list || !list.IsSequence() || list.size() == 0) fail(file, list ? list : YAML::Node(), "'problems' must be a non-empty list");
   const auto dir = file.parent_path();
   std::vector<Problem> problems;
   for (const auto& entry : list) {
-    if (entry["scen"]) {
+    if (entry["simulation"]) {
+      only_keys(file, entry, {"simulation", "variations", "name"}, "a simulation problem");
+      const std::string scenario = scalar(file, entry["simulation"], "simulation");
+      Problem p;
+      try {
+        p.simulation = std::make_shared<const acosim::Scenario>(acosim::load_scenario(dir / scenario, registry));
+      } catch (const aco::Error& e) {
+        fail(file, entry["simulation"], e.what());
+      }
+      p.map = p.simulation->run.problem.map;
+      p.start = p.simulation->start;
+      p.goal = p.simulation->goal;
+      if (entry["variations"]) p.variations = aco::yaml::boolean(file, entry["variations"], "variations");
+      p.name = entry["name"] ? scalar(file, entry["name"], "name") : std::filesystem::path(scenario).stem().string();
+      problems.push_back(std::move(p));
+    } else if (entry["scen"]) {
       only_keys(file, entry, {"scen", "count", "name"}, "a scenario problem");
       const auto scen = dir / scalar(file, entry["scen"], "scen");
       std::vector<aco::Scenario> scenarios;
@@ -128,6 +143,17 @@ aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry)
   }
 }
 
+aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& problems, aco::PluginRegistry& registry) {
+  const bool all_simulations =
+      !problems.empty() && std::all_of(problems.begin(), problems.end(), [](const Problem& p) { return p.simulation != nullptr; });
+  if (!all_simulations) return resolve(config, registry);
+  try {
+    return acosim::with_run_keys(*problems.front().simulation, config, registry).run;
+  } catch (const aco::Error& e) {
+    throw aco::Error("configuration '" + config.name + "' over " + problems.front().simulation->file.string() + ": " + e.what());
+  }
+}
+
 Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistry& registry) {
   YAML::Node doc;
   try {
@@ -145,7 +171,7 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   e.name = doc["name"] ? scalar(file, doc["name"], "name") : file.stem().string();
   if (doc["seed"]) e.seed = static_cast<std::uint64_t>(integer(file, doc["seed"], "seed", 0));
   if (doc["repetitions"]) e.repetitions = integer(file, doc["repetitions"], "repetitions", 1);
-  e.problems = read_problems(file, doc["problems"]);
+  e.problems = read_problems(file, doc["problems"], registry);
 
   const Configuration common = doc["settings"] ? read_keys(file, doc["settings"]) : Configuration();
   const Configuration own = doc["baseline"] ? read_keys(file, doc["baseline"]) : Configuration();
@@ -172,7 +198,7 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   std::set<std::string> names;
   for (auto& c : e.configurations) {
     if (!names.insert(c.name).second) throw aco::Error(file.string() + ": two configurations are named '" + c.name + "'");
-    c.run = resolve(c, registry);
+    c.run = resolve(c, e.problems, registry);
   }
   e.baseline.run = e.configurations.front().run;
   return e;
@@ -183,9 +209,16 @@ std::string Experiment::fingerprint() const {
   j["format"] = 1;
   j["repetitions"] = repetitions;
   j["seed"] = seed;
-  for (const auto& p : problems)
-    j["problems"].push_back({{"name", p.name}, {"map", p.map.lexically_relative(file.parent_path()).generic_string()},
-                             {"start", {p.start.x, p.start.y}}, {"goal", {p.goal.x, p.goal.y}}});
+  for (const auto& p : problems) {
+    nlohmann::json problem = {{"name", p.name}, {"map", p.map.lexically_relative(file.parent_path()).generic_string()},
+                              {"start", {p.start.x, p.start.y}}, {"goal", {p.goal.x, p.goal.y}}};
+    // A scenario's world is its file's: the file named, not its contents (as a map is).
+    if (p.simulation) {
+      problem["simulation"] = p.simulation->file.lexically_relative(file.parent_path()).generic_string();
+      problem["variations"] = p.variations;
+    }
+    j["problems"].push_back(problem);
+  }
   for (const auto& c : configurations) j["configurations"].push_back({{"name", c.name}, {"keys", c.keys}});
   if (ablation_target) j["ablation_target"] = ablation_target->name;
   return j.dump();

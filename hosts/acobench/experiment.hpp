@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "aco/run_spec.hpp"
 #include "aco/map.hpp"
 #include "aco/plugin_registry.hpp"
+#include "acosim/simulation.hpp"
 
 namespace acobench {
 
@@ -23,6 +25,13 @@ struct Problem {
   aco::Cell start;
   aco::Cell goal;
   int bucket = -1;  // Moving AI difficulty bucket (scenario column 1) for scenario problems, else -1
+  // A simulation problem: an acosim scenario file (map, start and goal are its). A trial drives
+  // the robot through it with the configuration's keys over the scenario's run keys.
+  std::shared_ptr<const acosim::Scenario> simulation;
+  // With a simulation: each repetition drives through a generated variation of the scenario
+  // (acosim --batch's unknown cells and crossing discs, drawn from the trial's seed, so every
+  // configuration meets the same variations); without, through the scenario as written.
+  bool variations = false;
 };
 
 // A configuration is a set of run keys (aco/run_spec.hpp), written as on acoplan's command line
@@ -60,6 +69,10 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
 // A configuration's keys resolved into a run (aco::resolve_run, without a problem: the trials
 // take it from the problem list). Errors name the file, the line, the configuration and the key.
 aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry);
+// The same for an experiment's problems: when they are all simulations, the keys go over the
+// first scenario's (a configuration may then set parameters of the scenarios' plugins, such as
+// local.follow of their dwa); every scenario is checked when the trials are prepared.
+aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& problems, aco::PluginRegistry& registry);
 
 // The seed of a trial: a hash of the master seed, the problem's name and the repetition, so
 // that a trial gives the same result whenever and wherever it runs, and every configuration

@@ -174,7 +174,42 @@ std::string problem_set(const std::string& problem) { return problem.substr(0, p
 
 // Per problem set and configuration (when a set has several problems): solved share, gap and
 // time over all its runs; and the gap by difficulty bucket where the problems carry buckets.
+// The simulation problems' own measures (acosim scenarios as problems), or no table if none.
+std::vector<Table> simulation_tables(const Analysis& a) {
+  Table t{"Simulations",
+          "Problems that are acosim scenarios: share of runs that reached the goal, runs that ended in a collision, "
+          "mean simulated time to the goal (reached runs), mean of each run's smallest clearance, mean replans, "
+          "and how the other runs ended. The length columns of these problems are the distance driven.",
+          {"problem", "configuration", "runs", "reached", "collisions", "time to goal s", "clearance", "replans", "other outcomes"},
+          {}};
+  for (std::size_t p = 0; p < a.problems.size(); ++p)
+    for (const Result& r : a.results[p]) {
+      std::vector<double> times, clearances, replans;
+      std::map<std::string, int> outcomes;
+      int simulated = 0, reached = 0, collisions = 0;
+      for (const auto* trial : r.runs) {
+        if (!trial->simulation) continue;
+        const SimulationRecord& sim = *trial->simulation;
+        ++simulated;
+        if (trial->solved) ++reached, times.push_back(sim.time_to_goal);
+        else ++outcomes[sim.outcome];
+        collisions += sim.collisions;
+        if (std::isfinite(sim.clearance)) clearances.push_back(sim.clearance);
+        replans.push_back(sim.replans);
+      }
+      if (simulated == 0) continue;
+      std::string other;
+      for (const auto& [outcome, count] : outcomes) other += (other.empty() ? "" : ", ") + outcome + " " + std::to_string(count);
+      t.rows.push_back({a.problems[p].name, a.configs[r.config].second.name, std::to_string(simulated),
+                        fixed(100.0 * reached / simulated, 1) + " %", std::to_string(collisions), fixed(mean_of(times), 1),
+                        fixed(mean_of(clearances), 3), fixed(mean_of(replans), 2), other.empty() ? "-" : other});
+    }
+  if (t.rows.empty()) return {};
+  return {t};
+}
+
 std::vector<Table> summary_tables(const Analysis& a) {
+  std::vector<Table> tables = simulation_tables(a);
   std::vector<std::string> sets;
   std::map<std::string, std::vector<std::size_t>> members;
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
@@ -182,7 +217,7 @@ std::vector<Table> summary_tables(const Analysis& a) {
     if (!members.count(set)) sets.push_back(set);
     members[set].push_back(p);
   }
-  if (sets.size() == a.problems.size()) return {};
+  if (sets.size() == a.problems.size()) return tables;
   Table totals{"Summary by problem set",
                "Over every run of every problem of the set: solved share, gap of the solved runs to the exact optimum "
                "(mean and largest), and time per run.",
@@ -208,7 +243,7 @@ std::vector<Table> summary_tables(const Analysis& a) {
                              runs ? fixed(100.0 * solved / runs, 1) + " %" : "-", fixed(mean_of(gaps), 2),
                              fixed(largest(gaps), 2), number(mean_of(times), 3), number(largest(times), 3)});
     }
-  std::vector<Table> tables{totals};
+  tables.push_back(totals);
   Table by_bucket{"Gap by difficulty bucket",
                   "Each problem set's scenarios in four groups of about equal size by Moving AI bucket (scenario column 1, "
                   "optimal length / 4): mean gap % of the solved runs, and the solved share where below 100 %.",

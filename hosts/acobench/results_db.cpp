@@ -22,7 +22,7 @@ namespace {
 using aco::Error;
 
 // Bumped whenever the tables change in a way older readers would misread.
-const std::string kFormatVersion = "1";
+const std::string kFormatVersion = "2";  // 2: the simulation columns of runs
 
 // OMPL's tables (as ompl_benchmark_statistics.py creates them) with our run and progress
 // attributes as columns; see the header for what each holds.
@@ -35,7 +35,8 @@ CREATE TABLE enums (name VARCHAR(512), value INTEGER, description TEXT, PRIMARY 
 CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, plannerid INTEGER,
   repetition INTEGER, seed INTEGER, solved BOOLEAN, length REAL, grid_length REAL, gap REAL,
   turns INTEGER, iterations INTEGER, best_iteration INTEGER, time REAL, ant_steps INTEGER,
-  stopped_by TEXT, path TEXT,
+  stopped_by TEXT, path TEXT, outcome TEXT, time_to_goal REAL, collisions INTEGER, replans INTEGER,
+  clearance REAL, control_steps INTEGER,
   FOREIGN KEY (experimentid) REFERENCES experiments(id) ON DELETE CASCADE,
   FOREIGN KEY (plannerid) REFERENCES plannerConfigs(id) ON DELETE CASCADE,
   UNIQUE (experimentid, plannerid, repetition));
@@ -127,6 +128,11 @@ class Statement {
   void bind(int i, const std::string& v) {
     db_.check(sqlite3_bind_text(stmt_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT), sql_);
   }
+  template <class T>
+  void bind(int i, const std::optional<T>& v) {
+    if (v) bind(i, *v);
+    else db_.check(sqlite3_bind_null(stmt_, i), sql_);
+  }
 
   const Connection& db_;
   std::string sql_;
@@ -157,6 +163,12 @@ class Transaction {
 constexpr double kNull = std::numeric_limits<double>::quiet_NaN();
 
 double finite_or_null(double v) { return std::isfinite(v) ? v : kNull; }
+
+// A simulation column's value: NULL for a planning trial.
+template <class T>
+std::optional<T> sim_field(const TrialRecord& t, T SimulationRecord::*field) {
+  return t.simulation ? std::optional<T>((*t.simulation).*field) : std::nullopt;
+}
 
 // 64-bit unsigned values keep their bits in SQLite's signed integers.
 std::int64_t to_sql(std::uint64_t v) { return std::bit_cast<std::int64_t>(v); }
@@ -255,6 +267,19 @@ struct ResultsDb::Impl {
     return stored;
   }
 
+  // Format 1 (before simulations) lacks the simulation columns: they are added, NULL for its
+  // planning runs, so results of earlier runs are resumed and reported.
+  void upgrade() {
+    if (meta().at("format_version") != "1") return;
+    Transaction transaction(db);
+    for (const char* column : {"outcome TEXT", "time_to_goal REAL", "collisions INTEGER", "replans INTEGER", "clearance REAL",
+                               "control_steps INTEGER"})
+      db.exec(std::string("ALTER TABLE runs ADD COLUMN ") + column);
+    Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
+    set.run(kFormatVersion).finish();
+    transaction.commit();
+  }
+
   // Only reads: a file that is not ours stays as it was.
   void check_is_ours(const std::string& experiment_name, const std::string& fingerprint) {
     if (!tables().contains("acobench_meta"))
@@ -263,7 +288,7 @@ struct ResultsDb::Impl {
     const auto stored = meta();
     const auto value = [&](const std::string& key) { return stored.contains(key) ? stored.at(key) : "(missing)"; };
     const std::string reuse = "; nothing in it was changed: give another results file, or delete this one to start again";
-    if (value("format_version") != kFormatVersion)
+    if (value("format_version") != kFormatVersion && value("format_version") != "1")
       throw Error(file() + " is an acobench results database of format version " + value("format_version") +
                   ", this acobench reads version " + kFormatVersion + reuse);
     if (value("experiment_name") != experiment_name)
@@ -355,6 +380,7 @@ ResultsDb::ResultsDb(const std::filesystem::path& file, const std::string& exper
   if (!created) {
     d.check_is_ours(experiment_name, fingerprint);
     d.check_same_problems(problems);
+    d.upgrade();
   }
   Statement wal(d.db, "PRAGMA journal_mode = WAL");
   wal.run();
@@ -377,8 +403,9 @@ ResultsDb::ResultsDb(const std::filesystem::path& file) : impl_(std::make_unique
   }
   if (!ours) throw Error(file.string() + " is not an acobench results database");
   const auto stored = d.meta();
-  if (!stored.contains("format_version") || stored.at("format_version") != kFormatVersion)
+  if (!stored.contains("format_version") || (stored.at("format_version") != kFormatVersion && stored.at("format_version") != "1"))
     throw Error(file.string() + " is an acobench results database of another format version");
+  d.upgrade();
   d.load();
 }
 
@@ -397,8 +424,9 @@ void ResultsDb::Impl::load() {
   find_run.emplace(db, "SELECT id FROM runs WHERE experimentid = ?1 AND plannerid = ?2 AND repetition = ?3");
   insert_run.emplace(db,
                        "INSERT INTO runs (experimentid, plannerid, repetition, seed, solved, length, grid_length, gap, "
-                       "turns, iterations, best_iteration, time, ant_steps, stopped_by, path) "
-                       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15)");
+                       "turns, iterations, best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, "
+                       "collisions, replans, clearance, control_steps) "
+                       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21)");
   insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost) VALUES (?1, ?2, ?3, ?4)");
   add_time.emplace(db, "UPDATE experiments SET totaltime = totaltime + ?2 WHERE id = ?1");
 }
@@ -451,7 +479,9 @@ void ResultsDb::store(const TrialRecord& t) {
   d.insert_run
       ->run(experiment, t.config, t.repetition, to_sql(t.seed), t.solved ? 1 : 0, t.solved ? t.length : kNull,
             t.solved ? t.grid_length : kNull, gap, t.turns, t.iterations, t.best_iteration, t.time_s, to_sql(t.ant_steps),
-            t.stopped_by, t.path_json)
+            t.stopped_by, t.path_json, sim_field(t, &SimulationRecord::outcome), sim_field(t, &SimulationRecord::time_to_goal),
+            sim_field(t, &SimulationRecord::collisions), sim_field(t, &SimulationRecord::replans),
+            sim_field(t, &SimulationRecord::clearance), sim_field(t, &SimulationRecord::control_steps))
       .finish();
   const std::int64_t run = sqlite3_last_insert_rowid(d.db.handle());
   const double seconds_per_iteration = t.iterations > 0 ? t.time_s / t.iterations : 0.0;
@@ -484,7 +514,8 @@ std::vector<TrialRecord> ResultsDb::trials() const {
   std::vector<TrialRecord> all;
   Statement runs(d.db,
                  "SELECT id, experimentid, plannerid, repetition, seed, solved, length, grid_length, turns, iterations, "
-                 "best_iteration, time, ant_steps, stopped_by, path FROM runs "
+                 "best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, collisions, replans, clearance, "
+                 "control_steps FROM runs "
                  "ORDER BY experimentid, plannerid, repetition");
   Statement progress(d.db, "SELECT best_cost FROM progress WHERE runid = ?1 ORDER BY iteration");
   runs.run();
@@ -504,6 +535,13 @@ std::vector<TrialRecord> ResultsDb::trials() const {
     t.ant_steps = from_sql(runs.integer(12));
     t.stopped_by = runs.text(13);
     t.path_json = runs.text(14);
+    if (!runs.null(15))
+      t.simulation = SimulationRecord{runs.text(15),
+                                      runs.null(16) ? std::nan("") : runs.real(16),
+                                      static_cast<int>(runs.integer(17)),
+                                      static_cast<int>(runs.integer(18)),
+                                      runs.null(19) ? std::nan("") : runs.real(19),
+                                      static_cast<int>(runs.integer(20))};
     progress.run(runs.integer(0));
     while (progress.next())
       t.best_so_far.push_back(progress.null(0) ? std::numeric_limits<double>::infinity() : progress.real(0));

@@ -13,8 +13,11 @@
 //   enums           OMPL's table of enum descriptions; empty, created for OMPL's tools.
 //   runs            one row per trial: id, experimentid, plannerid, repetition, seed, solved,
 //                   length, grid_length, gap, turns, iterations, best_iteration, time (s),
-//                   ant_steps, stopped_by, path (JSON waypoints); UNIQUE(experimentid, plannerid,
-//                   repetition). length, grid_length and gap are NULL when unsolved; gap is
+//                   ant_steps, stopped_by, path (JSON waypoints), and for simulation trials
+//                   (NULL otherwise) outcome, time_to_goal (NULL unless reached), collisions,
+//                   replans, clearance, control_steps; UNIQUE(experimentid, plannerid,
+//                   repetition). A simulation trial's length is the distance driven, its path the
+//                   trajectory, its stopped_by the outcome. length, grid_length and gap are NULL when unsolved; gap is
 //                   grid_length / optimal_length - 1 (the relative excess of the grid path over
 //                   exact A* on the same graph, as acoplan reports it), NULL if the optimum is
 //                   unknown. seed holds the 64-bit seed's bits as SQLite's signed integer.
@@ -33,6 +36,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -52,6 +56,16 @@ struct ConfigRecord {
   std::string settings_json;  // the full resolved settings
 };
 
+// What a simulation trial (an acosim scenario as a problem) measured beyond solved and length.
+struct SimulationRecord {
+  std::string outcome;  // reached, collision, timeout, stuck, no path
+  double time_to_goal;  // simulated seconds; NaN unless reached (stored as NULL)
+  int collisions = 0;
+  int replans = 0;
+  double clearance;     // the smallest distance between the robot and an obstacle
+  int control_steps = 0;
+};
+
 struct TrialRecord {
   int problem = 0;  // index into the problems given to the constructor
   int config = 0;   // id returned by add_config()
@@ -65,6 +79,7 @@ struct TrialRecord {
   std::string stopped_by;
   std::string path_json;            // "[[x,y],...]" or "[[x,y,z],...]"
   std::vector<double> best_so_far;  // one per iteration; +infinity until solved (stored as NULL)
+  std::optional<SimulationRecord> simulation;  // simulation trials only (NULL columns otherwise)
 };
 
 class ResultsDb {

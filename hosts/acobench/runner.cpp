@@ -15,6 +15,7 @@
 #include "aco/map_io.hpp"
 #include "aco/planning.hpp"
 #include "aco/thread_limit.hpp"
+#include "acosim/batch.hpp"
 #include "results_db.hpp"
 
 namespace acobench {
@@ -59,6 +60,7 @@ struct PreparedConfig {
   int id = 0;  // in the database
   Configuration config;
   aco::RunSpec run;
+  std::map<int, acosim::Scenario> scenarios;  // per simulation problem: its scenario with this configuration's keys
 };
 
 struct Trial {
@@ -90,7 +92,7 @@ class Runner {
  public:
   Runner(const Experiment& e, aco::PluginRegistry& registry, const RunOptions& options)
       : e_(e), registry_(registry), options_(options) {
-    const aco::RunSpec base = e.baseline.run ? *e.baseline.run : resolve(e.baseline, registry);
+    const aco::RunSpec base = e.baseline.run ? *e.baseline.run : resolve(e.baseline, e.problems, registry);
     std::vector<ProblemRecord> records;
     for (const Problem& p : e.problems) {
       PreparedProblem prepared;
@@ -107,6 +109,10 @@ class Runner {
                               {"goal", {p.goal.x, p.goal.y}},
                               {"reference", aco::describe(base.graph)}};
       if (p.bucket >= 0) setup["bucket"] = p.bucket;
+      if (p.simulation) {
+        setup["simulation"] = p.simulation->file.lexically_relative(e.file.parent_path()).generic_string();
+        setup["variations"] = p.variations;
+      }
       records.push_back({p.name, setup.dump(), optimal ? optimal->length : -1.0});
       problems_.push_back(std::move(prepared));
     }
@@ -160,10 +166,20 @@ class Runner {
   const PreparedConfig& add(const Configuration& c) {
     auto prepared = std::make_unique<PreparedConfig>();
     prepared->config = c;
-    prepared->run = c.run ? *c.run : resolve(c, registry_);
+    prepared->run = c.run ? *c.run : resolve(c, e_.problems, registry_);
     prepared->id = db_->add_config({c.name, settings_json(*prepared)});
     try {
-      for (auto& p : problems_) p.graph(prepared->run);
+      for (std::size_t p = 0; p < problems_.size(); ++p) {
+        if (const auto& scenario = e_.problems[p].simulation) {
+          try {
+            prepared->scenarios.emplace(static_cast<int>(p), acosim::with_run_keys(*scenario, c, registry_));
+          } catch (const aco::Error& error) {
+            throw aco::Error("problem '" + problems_[p].name + "': " + error.what());
+          }
+        } else {
+          problems_[p].graph(prepared->run);
+        }
+      }
     } catch (const aco::Error& error) {
       throw aco::Error("configuration '" + c.name + "', " + error.what());
     }
@@ -228,6 +244,7 @@ class Runner {
 
   TrialRecord run_trial(const Trial& t) {
     const Problem& problem = e_.problems[t.problem];
+    if (problem.simulation) return run_simulation(t);
     aco::RunSpec run = t.config->run;
     const aco::Graph& graph = problems_[t.problem].graphs.at(PreparedProblem::graph_key(run));
     run.colony.seed = trial_seed(e_.seed, problem.name, t.repetition);
@@ -248,6 +265,40 @@ class Runner {
     r.stopped_by = o.text("stopped_by");
     r.path_json = path_json(o.path);
     r.best_so_far = o.search.best_so_far;
+    return r;
+  }
+
+  // A simulation trial: the robot driven through the scenario (or the trial's variation of it)
+  // with the configuration's run; the colony's seed is the trial's. length is the distance
+  // driven, path the trajectory.
+  TrialRecord run_simulation(const Trial& t) {
+    const Problem& problem = e_.problems[t.problem];
+    const std::uint64_t seed = trial_seed(e_.seed, problem.name, t.repetition);
+    const auto began = std::chrono::steady_clock::now();
+    // Variations are drawn on the scenario as written, so every configuration meets the same ones.
+    acosim::Scenario scenario = problem.variations ? acosim::variations(*problem.simulation, 1, seed, registry_).front()
+                                                   : *problem.simulation;
+    const acosim::Scenario& configured = t.config->scenarios.at(t.problem);
+    scenario.keys = configured.keys;
+    scenario.run = configured.run;
+    scenario.run.colony.seed = seed;
+    const acosim::SimulationResult sim = acosim::simulate(scenario, registry_);
+    TrialRecord r;
+    r.problem = t.problem;
+    r.config = t.config->id;
+    r.repetition = t.repetition;
+    r.seed = seed;
+    r.solved = sim.reached;
+    r.length = r.grid_length = sim.distance;
+    r.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+    r.stopped_by = sim.outcome;
+    aco::Waypoints trajectory;
+    const std::size_t every = std::max<std::size_t>(1, sim.frames.size() / 500);  // at most ~500 points
+    for (std::size_t i = 0; i < sim.frames.size(); i += every) trajectory.emplace_back(sim.frames[i].robot.x, sim.frames[i].robot.y, 0.0);
+    trajectory.emplace_back(sim.frames.back().robot.x, sim.frames.back().robot.y, 0.0);
+    r.path_json = path_json(trajectory);
+    r.simulation = SimulationRecord{sim.outcome, sim.reached ? sim.time : std::nan(""), sim.collisions, sim.replans,
+                                    std::isfinite(sim.min_clearance) ? sim.min_clearance : std::nan(""), sim.steps};
     return r;
   }
 

@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
         ("csv", po::value(&csv)->value_name("FILE"), "write the trajectory (t, x, y, heading, v, w) as CSV")
         ("svg", po::value(&svg)->value_name("FILE"), "write a picture: map, unknown cells, plans, trajectory, moving tracks")
         ("html", po::value(&html)->value_name("FILE"), "write a page that plays the run (play/pause, time slider)")
-        ("local", po::value(&local)->value_name("PLUGIN"), "drive with this local planner (its defaults) instead of the scenario's")
+        ("local", po::value(&local)->value_name("PLUGIN"), "drive with this local planner instead of the scenario's (another plugin starts from its defaults)")
         ("batch", po::value<int>()->value_name("N"), "run N generated variations of the scenario and print their summary")
         ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch or --variation: the variations' seed")
         ("variation", po::value<int>()->value_name("K"), "run variation K (0-based) of --batch's, with every output")
@@ -60,8 +60,10 @@ int main(int argc, char** argv) {
     aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));
     acosim::Scenario scenario = acosim::load_scenario(scenario_file, registry);
     if (!local.empty()) {
-      const auto& descriptor = registry.load("local", local);
-      scenario.run.pipeline["local"] = {local, aco::resolve(descriptor.parameters(), {}, "local.")};
+      aco::KeyedValues change;
+      change.keys["local"] = local;
+      change.origins["local"] = "--local";
+      scenario = acosim::with_run_keys(scenario, change, registry);
     }
     if (vm.count("batch")) {
       const int n = vm["batch"].as<int>(), threads = vm["threads"].as<int>();

@@ -100,7 +100,33 @@ MovingObstacle read_moving(const std::filesystem::path& file, const YAML::Node& 
   return m;
 }
 
+aco::RunSpec resolve(const aco::KeyedValues& keys, aco::PluginRegistry& registry) {
+  try {
+    return aco::resolve_run(keys.keys, registry);
+  } catch (const aco::KeyError& e) {
+    throw aco::Error(keys.origin(e.key()) + e.what());
+  }
+}
+
+// Why the control period does not fit the local planner's horizon, or "".
+std::string period_error(const Scenario& s) {
+  const aco::ParameterValues& local = s.run.pipeline.at("local").parameters;
+  if (!local.contains("horizon") || s.simulation.period <= local.real("horizon")) return "";
+  return "the control period " + aco::to_string(aco::ParamValue(s.simulation.period)) + " s is longer than the local planner's horizon " +
+         aco::to_string(aco::ParamValue(local.real("horizon"))) + " s";
+}
+
 }  // namespace
+
+Scenario with_run_keys(const Scenario& scenario, const aco::KeyedValues& changes, aco::PluginRegistry& registry) {
+  for (const char* key : {"map", "scen", "scen-index", "start", "goal", "seed"})
+    if (changes.keys.count(key)) throw aco::Error(changes.origin(key) + "'" + key + "' is the scenario's, not a run key to change");
+  Scenario s = scenario;
+  s.keys = aco::overlay(scenario.keys, changes);
+  s.run = resolve(s.keys, registry);
+  if (const std::string error = period_error(s); !error.empty()) throw aco::Error(scenario.file.string() + ": " + error);
+  return s;
+}
 
 Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& registry) {
   YAML::Node doc;
@@ -130,19 +156,12 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
     if (keys.keys.count(key)) throw aco::Error(keys.origin(key) + "'" + key + "' is not a scenario key");
   if (const std::filesystem::path map = keys.keys["map"]; map.is_relative())
     keys.keys["map"] = (file.parent_path() / map).lexically_normal().string();
-  try {
-    s.run = aco::resolve_run(keys.keys, registry);
-  } catch (const aco::KeyError& e) {
-    throw aco::Error(keys.origin(e.key()) + e.what());
-  }
+  s.keys = keys;
+  s.run = resolve(keys, registry);
 
   s.robot = read_settings(file, doc["robot"], robot_table(), "robot");
   s.simulation = read_settings(file, doc["simulation"], simulation_table(), "simulation");
-  const aco::ParameterValues& local = s.run.pipeline.at("local").parameters;
-  if (local.contains("horizon") && s.simulation.period > local.real("horizon"))
-    fail(file, doc["simulation"] ? doc["simulation"] : doc, "the control period " + aco::to_string(aco::ParamValue(s.simulation.period)) +
-                                                         " s is longer than the local planner's horizon " +
-                                                         aco::to_string(aco::ParamValue(local.real("horizon"))) + " s");
+  if (const std::string error = period_error(s); !error.empty()) fail(file, doc["simulation"] ? doc["simulation"] : doc, error);
 
   const aco::LoadedProblem problem = aco::load_problem(s.run.problem);
   const auto* grid = dynamic_cast<const aco::OccupancyGrid*>(problem.map.get());

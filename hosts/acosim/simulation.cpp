@@ -123,8 +123,11 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
       return false;
     }
     goals = turning_points(outcome.path);
+    if (goals.empty()) goals.push_back(goal);  // planned from the goal's cell: drive to its centre
     next = 0;
-    std::vector<Eigen::Vector2d> plan{robot.position()};
+    // The plan starts at the centre of the robot's cell, where the planned path starts: the
+    // robot is led back onto it (a line from the robot's own position may graze a wall).
+    std::vector<Eigen::Vector2d> plan{outcome.path.front().head<2>()};
     plan.insert(plan.end(), goals.begin(), goals.end());
     result.plans.push_back(plan);
     return true;
@@ -138,6 +141,7 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
     return at;
   };
   result.frames.push_back({0.0, robot, 0, 0, moving_at(0.0)});
+  std::vector<Eigen::Vector2d> path;
   double t = 0.0, best_to_goal = std::numeric_limits<double>::infinity(), last_progress = 0.0;
   while (true) {
     if ((robot.position() - goal).norm() <= sim.goal_tolerance) {
@@ -175,7 +179,12 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
       if ((p - robot.position()).norm() - m.radius <= sim.sensor_range) seen.push_back({p, m.velocity_at(t), m.radius});
     }
     const std::vector<Eigen::Vector2d> cells = world.sense(robot.position(), sim.sensor_range, result.sensed);
-    aco::LocalView view{robot, limits, sim.period, goals[next], cells, 1.0, seen};
+    // The rest of the plan, from the robot's foot on the leg it is on.
+    const std::vector<Eigen::Vector2d>& plan = result.plans.back();  // the start, then goals
+    const std::span<const Eigen::Vector2d> leg(plan.data() + next, 2);
+    path.assign(1, aco::point_on_path(leg, aco::foot_on_path(leg, robot.position())));
+    path.insert(path.end(), goals.begin() + static_cast<std::ptrdiff_t>(next), goals.end());
+    aco::LocalView view{robot, limits, sim.period, goals[next], cells, 1.0, seen, path};
     const aco::VelocityCommand command = aco::dynamic_window(robot, limits, sim.period).clamp(pipeline.local->command(view));
     const aco::RobotState moved = aco::move(robot, command, sim.period);
     result.distance += (moved.position() - robot.position()).norm();

@@ -58,6 +58,7 @@ struct MovingObstacle {
 
 struct Scenario {
   std::filesystem::path file;
+  aco::KeyedValues keys;  // the run keys as written (the map's path made absolute), with their origins
   aco::RunSpec run;  // map, start, goal, graph, planner, pipeline (its local slot drives)
   // run.problem loaded once: the known map (shared by copies: batch variations) and the cells.
   std::shared_ptr<const aco::OccupancyGrid> map;
@@ -71,6 +72,11 @@ struct Scenario {
 
 // Reads a scenario file (YAML, see README.md). Errors name the file, the line and the key.
 Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& registry);
+
+// The scenario driven with other run keys: `changes` over the file's (aco::overlay: another
+// plugin in a slot drops the file's parameters of that slot). The problem keys (map, start,
+// goal) stay the scenario's. Errors name the key and where it was written.
+Scenario with_run_keys(const Scenario& scenario, const aco::KeyedValues& changes, aco::PluginRegistry& registry);
 
 struct Frame {
   double t = 0.0;

@@ -31,6 +31,13 @@ int integer(const std::filesystem::path& file, const YAML::Node& node, const std
   return value;
 }
 
+bool boolean(const std::filesystem::path& file, const YAML::Node& node, const std::string& key) {
+  const std::string text = scalar(file, node, key);
+  if (text == "true") return true;
+  if (text == "false") return false;
+  fail(file, node, "'" + key + "' must be true or false, not '" + text + "'");
+}
+
 Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key) {
   if (node.IsSequence() && node.size() == 2)
     return {integer(file, node[0], key + "[0]", 0), integer(file, node[1], key + "[1]", 0)};

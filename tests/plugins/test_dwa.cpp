@@ -70,6 +70,18 @@ TEST_CASE("motion model: eq. 15-17 against values integrated by hand", "[dwa][ro
   CHECK(side.y == Approx(0.0).margin(1e-12));
 }
 
+TEST_CASE("path geometry: the foot of a point on a polyline, and the point at a length along it", "[dwa][robot]") {
+  const std::vector<Eigen::Vector2d> path{{0, 0}, {4, 0}, {4, 3}};
+  CHECK(aco::foot_on_path(path, {1, 2}) == Approx(1.0));
+  CHECK(aco::foot_on_path(path, {6, 2}) == Approx(6.0));    // on the second leg
+  CHECK(aco::foot_on_path(path, {-3, 1}) == Approx(0.0));   // before the start: the start
+  CHECK(aco::foot_on_path(path, {9, 9}) == Approx(7.0));    // beyond the end: the end
+  CHECK(aco::foot_on_path(path, {6, 2}, 3.0) == Approx(4.0));  // the second leg not searched
+  CHECK(aco::point_on_path(path, 2.5).isApprox(Eigen::Vector2d(2.5, 0)));
+  CHECK(aco::point_on_path(path, 5.0).isApprox(Eigen::Vector2d(4, 1)));
+  CHECK(aco::point_on_path(path, 100.0).isApprox(Eigen::Vector2d(4, 3)));
+}
+
 TEST_CASE("dynamic window: acceleration over one period inside the velocity limits", "[dwa][robot]") {
   const aco::RobotLimits paper;  // 1.5 m/s, 20 degrees/s, 0.2 m/s^2, 50 degrees/s^2
   CHECK(paper.max_yaw_rate == Approx(20 * M_PI / 180));

@@ -565,7 +565,9 @@ void write_benchmark(const std::filesystem::path& dir, int first_seed) {
 
 int main(int argc, char** argv) {
   const bool benchmark = (argc == 3 || argc == 4) && std::string(argv[1]) == "--benchmark";
-  if (!benchmark && argc != 2 && argc != 3) {
+  // Any other option (--help) is not a folder to fill with maps.
+  const bool option = argc > 1 && !benchmark && argv[1][0] == '-';
+  if (option || (!benchmark && argc != 2 && argc != 3)) {
     std::cerr << "usage: aco_mapgen OUTDIR [TERRAIN_OUTDIR]\n"
                  "       aco_mapgen --benchmark OUTDIR [FIRST_SEED]\n"
                  "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR,\n"

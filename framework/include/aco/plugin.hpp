@@ -28,7 +28,8 @@ namespace aco {
 // 4: Heuristic::updates_by_node() and update_node() (lazy heuristic updates on large maps).
 // 5: PheromoneUpdate::exploitation() removed: q0 is the colony setting ColonySettings::q0.
 // 6: the sixth slot, local (LocalPlanner, LocalView).
-inline constexpr std::uint32_t kPluginAbiVersion = 6;
+// 7: LocalView::path (the rest of the global path).
+inline constexpr std::uint32_t kPluginAbiVersion = 7;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
 

@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <span>
 
 namespace aco {
 
@@ -82,6 +84,34 @@ inline double distance_to_square(const Eigen::Vector2d& p, const Eigen::Vector2d
   const double dx = std::max(0.0, std::abs(p.x() - centre.x()) - size / 2);
   const double dy = std::max(0.0, std::abs(p.y() - centre.y()) - size / 2);
   return std::hypot(dx, dy);
+}
+
+// Where on a polyline the point nearest to p lies, as the length along the polyline from its
+// first point; only the first max_length of the polyline is searched (a path may pass near p
+// again much later, behind a wall).
+inline double foot_on_path(std::span<const Eigen::Vector2d> path, const Eigen::Vector2d& p,
+                           double max_length = std::numeric_limits<double>::infinity()) {
+  double best = std::numeric_limits<double>::infinity(), foot = 0.0, start = 0.0;
+  for (std::size_t i = 0; i + 1 < path.size() && start <= max_length; ++i) {
+    const Eigen::Vector2d leg = path[i + 1] - path[i];
+    const double length = leg.norm();
+    const double along = length > 0.0 ? std::clamp((p - path[i]).dot(leg) / length, 0.0, length) : 0.0;
+    const double d = (path[i] + leg * (length > 0.0 ? along / length : 0.0) - p).squaredNorm();
+    if (d < best) best = d, foot = start + along;
+    start += length;
+  }
+  return foot;
+}
+
+// The point at `length` along a polyline (its last point beyond its end).
+inline Eigen::Vector2d point_on_path(std::span<const Eigen::Vector2d> path, double length) {
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    const Eigen::Vector2d leg = path[i + 1] - path[i];
+    const double leg_length = leg.norm();
+    if (length <= leg_length) return leg_length > 0.0 ? Eigen::Vector2d(path[i] + leg * (length / leg_length)) : path[i];
+    length -= leg_length;
+  }
+  return path.empty() ? Eigen::Vector2d(0.0, 0.0) : path.back();
 }
 
 // Heading difference wrapped to [-pi, pi].

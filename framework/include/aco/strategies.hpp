@@ -120,7 +120,7 @@ class BOOST_SYMBOL_VISIBLE Smoother : public Strategy {
 };
 
 // What a local planner sees at one control step: the robot, its limits, the intermediate goal
-// it drives to, and the obstacles its sensor reports (blocked map cells, known or not, and
+// it drives to and the rest of the global path, and the obstacles its sensor reports (blocked map cells, known or not, and
 // moving discs), all within the sensor range.
 struct MovingObstacle {
   Eigen::Vector2d position;
@@ -136,6 +136,9 @@ struct LocalView {
   std::span<const Eigen::Vector2d> cells;       // centres of sensed blocked cells
   double cell_size = 1.0;                       // a cell is a square of this side
   std::span<const MovingObstacle> moving;       // sensed moving obstacles
+  // The rest of the global path: from the point on it nearest to the robot, through goal, to the
+  // final goal (empty: only goal is known). A planner may follow it instead of heading for goal.
+  std::span<const Eigen::Vector2d> path;
 };
 
 // Slot "local": the velocity command for the next control period, which follows the global

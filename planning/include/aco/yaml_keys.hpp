@@ -1,7 +1,7 @@
 #pragma once
 // Run keys written in YAML, as acobench's experiment files and acosim's scenario files write
 // them, with the file and line of every key for error messages. Also the small readers both
-// files use: a scalar, a whole number, a cell, a mapping with known keys.
+// files use: a scalar, a whole number, a boolean, a cell, a mapping with known keys.
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
@@ -18,6 +18,7 @@ std::string where(const std::filesystem::path& file, const YAML::Node& node);  /
 [[noreturn]] void fail(const std::filesystem::path& file, const YAML::Node& node, const std::string& message);
 std::string scalar(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);
 int integer(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, int low);
+bool boolean(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);  // true or false
 Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);  // [x, y]
 // Fails on a key of `map` that is not allowed, naming the nearest allowed one.
 void only_keys(const std::filesystem::path& file, const YAML::Node& map, const std::vector<std::string>& allowed,

@@ -25,6 +25,7 @@ struct Parameters {
   double margin = 0.05;
   bool predict = false;
   bool stop_at_goal = true;
+  double follow = 0.0;
 };
 
 const aco::SettingsTable<Parameters> kParams({
@@ -48,6 +49,9 @@ const aco::SettingsTable<Parameters> kParams({
     aco::field("stop_at_goal", &Parameters::stop_at_goal, "",
                "the velocity term counts v only up to sqrt(2 a_max d_goal), the speed the robot can stop from at the goal, "
                "so it slows down and turns in instead of circling the goal (false: v, as in the paper)"),
+    aco::field("follow", &Parameters::follow, "0:1e6",
+               "the heading term aims at the point this far along the global path beyond the point nearest to the "
+               "rollout's end, so the robot keeps to the path (through one-cell doors); 0: at the intermediate goal, as in the paper"),
 });
 
 class Dwa final : public aco::LocalPlanner {
@@ -172,10 +176,21 @@ class Dwa final : public aco::LocalPlanner {
     if (speed * view.period + speed * speed / (2.0 * view.limits.max_accel) > dist) return;
     aco::RobotState s = view.robot;
     const int steps = std::max(1, static_cast<int>(std::ceil(p_.horizon / view.period - 1e-9)));
-    for (int k = 0; k < steps; ++k) s = aco::move(s, command, view.period);
-    const Eigen::Vector2d to_goal = view.goal - s.position();
+    // Following the path, a rollout ends where the robot would touch an obstacle: an arc that
+    // runs into a door's post does not get past it to line up with the path behind.
+    const double reach = p_.follow > 0.0 ? dist : std::numeric_limits<double>::infinity();
+    for (int k = 0; k < steps && speed * (k + 1) * view.period <= reach; ++k) s = aco::move(s, command, view.period);
+    const Eigen::Vector2d to_goal = aim(view, s.position(), speed * p_.horizon) - s.position();
     const double error = to_goal.squaredNorm() > 0.0 ? aco::wrap_angle(std::atan2(to_goal.y(), to_goal.x()) - s.heading) : 0.0;
     candidates_.push_back({command, M_PI - std::abs(error), std::min(dist, p_.dist_cap)});
+  }
+
+  // Where the heading term points from `end`, a rollout's end `driven` away along its arc.
+  Eigen::Vector2d aim(const aco::LocalView& view, const Eigen::Vector2d& end, double driven) const {
+    if (p_.follow == 0.0 || view.path.empty()) return view.goal;
+    // Only the part of the path the rollout can have reached is searched for the foot.
+    const double foot = aco::foot_on_path(view.path, end, driven + view.limits.radius + 1.0);
+    return aco::point_on_path(view.path, foot + p_.follow);
   }
 
   Parameters p_;

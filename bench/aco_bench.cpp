@@ -342,17 +342,18 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
   return identical;
 }
 
-// Paper 003's DWA (local/dwa, paper defaults) at one control step on its 20x20 map: the robot at
-// (5, 6) heading for (8, 7) at 0.5 m/s, every blocked cell within 7 sensed, one disc moving. Reports
-// microseconds per step and the sampled velocities (each rolled out) per second.
+// Paper 003's DWA (local/dwa) at one control step on its 20x20 map: the robot at (5, 6) heading
+// for (8, 7) at 0.5 m/s, every blocked cell within 7 sensed, one disc moving; with the paper's
+// defaults, then following the path (local.follow 0.5). Reports microseconds per step and the
+// sampled velocities (each rolled out) per second.
 void time_dwa(aco::PluginRegistry& registry, int repeats) {
   const auto map = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/papers/paper003_20.map");
   const auto& descriptor = registry.load("local", "dwa");
-  const aco::ParameterValues values = aco::resolve(descriptor.parameters(), {}, "local.");
-  const auto dwa = registry.create<aco::LocalPlanner>("local", "dwa", values);
   aco::LocalView view;
   view.robot.x = 5.0, view.robot.y = 6.0, view.robot.heading = 0.3, view.robot.v = 0.5;
   view.goal = {8.0, 7.0};
+  const std::vector<Eigen::Vector2d> path = {{5.0, 6.0}, {8.0, 7.0}, {12.0, 12.0}, {19.0, 19.0}};
+  view.path = path;
   std::vector<Eigen::Vector2d> cells;
   for (int y = -1; y <= map->height(); ++y)
     for (int x = -1; x <= map->width(); ++x)
@@ -360,19 +361,23 @@ void time_dwa(aco::PluginRegistry& registry, int repeats) {
   const std::vector<aco::MovingObstacle> moving = {{{9.0, 9.0}, {-0.3, 0.0}, 0.3}};
   view.cells = cells;
   view.moving = moving;
-  const aco::DynamicWindow w = aco::dynamic_window(view.robot, view.limits, view.period);
-  // The plugin samples each range every resolution, both ends included, plus w = 0.
-  const int samples = static_cast<int>(std::floor((w.v_high - w.v_low) / values.real("v_resolution") + 1e-9) + 1) *
-                      static_cast<int>(std::floor((w.w_high - w.w_low) / values.real("w_resolution") + 1e-9) + 2);
-  const int calls = 200 * repeats;
-  aco::VelocityCommand c;
-  const auto began = std::chrono::steady_clock::now();
-  for (int i = 0; i < calls; ++i) c = dwa->command(view);
-  const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - began).count() / calls;
-  std::printf("\n== local/dwa (paper 003 defaults) on data/maps/papers/paper003_20.map, %zu cells sensed, 1 moving disc ==\n",
-              cells.size());
-  std::printf("%.1f us per control step, about %d sampled velocities each: %.0f rollouts per second (command v %.2f, w %.3f)\n",
-              us, samples, samples * 1e6 / us, c.v, c.w);
+  std::printf("\n== local/dwa on data/maps/papers/paper003_20.map, %zu cells sensed, 1 moving disc ==\n", cells.size());
+  for (const char* follow : {"0", "0.5"}) {
+    const aco::ParameterValues values = aco::resolve(descriptor.parameters(), {{"follow", follow}}, "local.");
+    const auto dwa = registry.create<aco::LocalPlanner>("local", "dwa", values);
+    const aco::DynamicWindow w = aco::dynamic_window(view.robot, view.limits, view.period);
+    // The plugin samples each range every resolution, both ends included, plus w = 0.
+    const int samples = static_cast<int>(std::floor((w.v_high - w.v_low) / values.real("v_resolution") + 1e-9) + 1) *
+                        static_cast<int>(std::floor((w.w_high - w.w_low) / values.real("w_resolution") + 1e-9) + 2);
+    const int calls = 200 * repeats;
+    aco::VelocityCommand c;
+    const auto began = std::chrono::steady_clock::now();
+    for (int i = 0; i < calls; ++i) c = dwa->command(view);
+    const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - began).count() / calls;
+    std::printf("follow %-3s: %.1f us per control step, about %d sampled velocities each: %.0f rollouts per second "
+                "(command v %.2f, w %.3f)\n",
+                follow, us, samples, samples * 1e6 / us, c.v, c.w);
+  }
 }
 
 const std::set<std::string> kSections = {"classic", "fireworks", "terrain", "large", "large-plugins", "dwa"};

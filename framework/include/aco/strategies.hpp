@@ -120,8 +120,8 @@ class BOOST_SYMBOL_VISIBLE Smoother : public Strategy {
 };
 
 // What a local planner sees at one control step: the robot, its limits, the intermediate goal
-// it drives to and the rest of the global path, and the obstacles its sensor reports (blocked map cells, known or not, and
-// moving discs), all within the sensor range.
+// it drives to, the rest of the global path, and the obstacles its sensor reports (blocked map
+// cells, known or not, and moving discs), all within the sensor range.
 struct MovingObstacle {
   Eigen::Vector2d position;
   Eigen::Vector2d velocity;  // map units per second, as sensed

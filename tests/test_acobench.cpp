@@ -424,3 +424,36 @@ TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per co
   std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: missing.yaml}\n";
   CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("cannot open the scenario file"));
 }
+
+TEST_CASE("a trial whose plugin throws is stored as failed, named, and the experiment goes on", "[acobench][boundary]") {
+  const auto file = experiment(
+      "name: throws\nseed: 3\nrepetitions: 3\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
+      "settings: {ants: 10, iterations: 5}\nbaseline: {name: AS}\n"
+      "configurations:\n  - {name: thrower, update: throwing, update.at_iteration: 2}\n");
+  const auto db = file.parent_path() / "throws.db";
+  const std::vector<std::string> args{"run", file.string(), "--db", db.string(), "--plugin-dir", ACO_TEST_THROWING_PLUGIN_DIR};
+  const auto r = run_acobench(args);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Contains("6 trials, 0 already in"));
+  CHECK_THAT(r.err, Contains("3 trials failed") &&
+                        Contains("configuration 'thrower', problem 'map1', repetition 0: plugin update/throwing (") &&
+                        Contains("failed in update() in iteration 2: an exception of type int"));
+  int failed = 0, solved = 0;
+  for (const auto& t : acobench::ResultsDb(db).trials()) {
+    if (!t.error.empty()) {
+      ++failed;
+      CHECK_FALSE(t.solved);
+      CHECK(t.stopped_by == "error");
+    }
+    solved += t.solved;
+  }
+  CHECK(failed == 3);
+  CHECK(solved == 3);  // the other configuration's trials all ran
+  // A failed trial is a result: a rerun does not repeat it.
+  CHECK_THAT(run_acobench(args).out, Contains("6 trials, 6 already in"));
+  const auto out = file.parent_path() / "report";
+  REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
+  const std::string md = file_bytes(out / "report.md");
+  CHECK_THAT(md, Contains("## Failed trials") && Contains("| thrower | 3 | 3 | configuration 'thrower'"));
+}

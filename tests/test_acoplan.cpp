@@ -212,6 +212,21 @@ TEST_CASE("acoplan refuses a plugin built for another ABI version", "[acoplan][b
   CHECK_THAT(list.out, Contains("update/wrong_abi  UNUSABLE") && Contains("ABI 999"));
 }
 
+TEST_CASE("a plugin that throws anything, from its factory, a hook or a worker thread, is reported, not an abort",
+          "[acoplan][bad-input][boundary]") {
+  const std::string dir = ACO_TEST_THROWING_PLUGIN_DIR;
+  expect_error({"--plugin-dir", dir, "--update", "throwing", "--update.in_factory", "true"},
+               "plugin update/throwing (" + dir + "/aco_update_throwing.so) failed in its factory: an exception of type int");
+  expect_error({"--plugin-dir", dir, "--update", "throwing", "--update.at_iteration", "3"},
+               "plugin update/throwing (" + dir + "/aco_update_throwing.so) failed in update() in iteration 3: an exception of type int");
+  for (const char* threads : {"1", "2"}) {
+    INFO(threads << " threads");
+    expect_error({"--plugin-dir", dir, "--heuristic", "throwing", "--threads", threads},
+                 "plugin heuristic/throwing (" + dir + "/aco_heuristic_throwing.so) failed in step_factors() in iteration 1: "
+                 "an exception of type int");
+  }
+}
+
 TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acoplan]") {
   const json j = run_json({"--repeat", "6", "--seed", "10", "--iterations", "30", "--corner-cutting"});
   REQUIRE(j["runs"].size() == 6);

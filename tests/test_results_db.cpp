@@ -153,7 +153,7 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
   CHECK(configs[1].second.settings_json == config("max_min", 0.02).settings_json);
   CHECK(db.meta("experiment_name") == kName);
   CHECK(db.meta("fingerprint") == kFingerprint);
-  CHECK(db.meta("format_version") == "2");
+  CHECK(db.meta("format_version") == "3");
   REQUIRE_THROWS_WITH(db.meta("colour"), Contains("no 'colour'"));
 
   const auto read = db.trials();
@@ -250,7 +250,7 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   const fs::path file = fresh_db();
   open(file);  // creates it
   sql_value(file, "UPDATE acobench_meta SET value = '0' WHERE key = 'format_version' RETURNING value");
-  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 2"));
+  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 3"));
 
   const fs::path missing = fresh_db();
   auto problems = kProblems;
@@ -260,7 +260,8 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   CHECK_FALSE(fs::exists(missing));
 }
 
-TEST_CASE("simulation trials store their measures; a format-1 database gains the columns and resumes", "[resultsdb]") {
+TEST_CASE("simulation and failed trials store their measures; a format-1 database gains the columns and resumes",
+          "[resultsdb]") {
   const fs::path file = fresh_db();
   int id = 0;
   {
@@ -270,24 +271,30 @@ TEST_CASE("simulation trials store their measures; a format-1 database gains the
   }
   // What acobench before simulations wrote: no simulation columns, format 1.
   const auto make_format_1 = [&] {
-    for (const char* column : {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps"})
+    for (const char* column : {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps", "error"})
       sql_exec(file, std::string("ALTER TABLE runs DROP COLUMN ") + column);
     sql_exec(file, "UPDATE acobench_meta SET value = '1' WHERE key = 'format_version'");
   };
   make_format_1();
-  CHECK(acobench::ResultsDb(file).meta("format_version") == "2");  // a report upgrades it too
+  CHECK(acobench::ResultsDb(file).meta("format_version") == "3");  // a report upgrades it too
   make_format_1();
 
   auto db = open(file);
-  CHECK(db.meta("format_version") == "2");
+  CHECK(db.meta("format_version") == "3");
   auto reached = trial(0, id, 1, true, 0);
   reached.simulation = acobench::SimulationRecord{"reached", 87.5, 0, 1, 0.047, 875};
   auto hit = trial(1, id, 0, false, 0);
   hit.simulation = acobench::SimulationRecord{"collision", std::nan(""), 1, 0, -0.02, 120};
   db.store(reached);
   db.store(hit);
+  auto failed = trial(1, id, 1, false, 0);
+  failed.stopped_by = "error";
+  failed.error = "plugin update/x failed in update(): an exception of type int";
+  db.store(failed);
   const auto read = db.trials();
-  REQUIRE(read.size() == 3);
+  REQUIRE(read.size() == 4);
+  CHECK(read[3].error == failed.error);
+  CHECK(read[0].error.empty());
   CHECK_FALSE(read[0].simulation);  // the format-1 planning run
   REQUIRE(read[1].simulation);
   CHECK(read[1].simulation->outcome == "reached");

@@ -148,9 +148,19 @@ const PluginDescriptor& PluginRegistry::load(const std::string& kind, const std:
 std::unique_ptr<Strategy> PluginRegistry::create(const std::string& kind, const std::string& name,
                                                  const ParameterValues& values) {
   const PluginDescriptor& descriptor = load(kind, name);
-  std::unique_ptr<Strategy> strategy(descriptor.create(values));
+  std::unique_ptr<Strategy> strategy;
+  try {
+    strategy.reset(descriptor.create(values));
+  } catch (...) {
+    rethrow_from_plugin(identity(kind, name), "its factory");
+  }
   if (!strategy) throw Error("plugin " + kind + "/" + name + ": factory returned nothing");
   return strategy;
+}
+
+PluginIdentity PluginRegistry::identity(const std::string& kind, const std::string& name) const {
+  const PluginFile* file = find(kind, name);
+  return {kind, name, file ? file->file.string() : std::string()};
 }
 
 }  // namespace aco

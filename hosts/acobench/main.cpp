@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
 #include "experiment.hpp"
 #include "report.hpp"
@@ -96,6 +97,12 @@ int run(const std::vector<std::string>& args) {
   std::cout << "acobench: " << experiment.name << ": " << s.trials << " trials, " << s.skipped << " already in "
             << run.database.string() << ", " << s.ran << " run in " << s.seconds << " s ("
             << (s.seconds > 0 ? s.ran / s.seconds : 0.0) << " trials/s)\n";
+  if (!s.failures.empty()) {
+    // The experiment went on; the failed trials are stored as such (runs.error) and reported.
+    std::cerr << "acobench: " << s.failures.size() << " trials failed:\n";
+    for (std::size_t i = 0; i < s.failures.size() && i < 10; ++i) std::cerr << "  " << s.failures[i] << "\n";
+    if (s.failures.size() > 10) std::cerr << "  ... (all in the report)\n";
+  }
   return 0;
 }
 
@@ -129,8 +136,8 @@ int main(int argc, char** argv) {
     throw aco::Error("unknown command '" + args[0] + "' (use run or report)");
   } catch (const po::error& e) {
     std::cerr << "acobench: error: " << e.what() << "\n";
-  } catch (const std::exception& e) {
-    std::cerr << "acobench: error: " << e.what() << "\n";
+  } catch (...) {  // anything, a std::exception or not, is reported and exits 1
+    std::cerr << "acobench: error: " << aco::describe_current_exception() << "\n";
   }
   return 1;
 }

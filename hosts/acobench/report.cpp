@@ -208,8 +208,31 @@ std::vector<Table> simulation_tables(const Analysis& a) {
   return {t};
 }
 
+// Trials that threw (a plugin's failure): how many per configuration and the first message.
+std::vector<Table> failure_tables(const Analysis& a) {
+  Table t{"Failed trials",
+          "Trials that ended in an exception (from a plugin or the host) instead of a result: they count as unsolved "
+          "above; the experiment went on without them.",
+          {"configuration", "failed", "runs", "first failure"},
+          {}};
+  for (std::size_t c = 0; c < a.configs.size(); ++c) {
+    std::size_t failed = 0, runs = 0;
+    std::string first;
+    for (std::size_t p = 0; p < a.problems.size(); ++p)
+      for (const auto* trial : a.results[p][c].runs) {
+        ++runs;
+        if (trial->error.empty()) continue;
+        if (failed++ == 0) first = trial->error;
+      }
+    if (failed > 0) t.rows.push_back({a.configs[c].second.name, std::to_string(failed), std::to_string(runs), first});
+  }
+  if (t.rows.empty()) return {};
+  return {t};
+}
+
 std::vector<Table> summary_tables(const Analysis& a) {
-  std::vector<Table> tables = simulation_tables(a);
+  std::vector<Table> tables = failure_tables(a);
+  for (Table& t : simulation_tables(a)) tables.push_back(std::move(t));
   std::vector<std::string> sets;
   std::map<std::string, std::vector<std::size_t>> members;
   for (std::size_t p = 0; p < a.problems.size(); ++p) {

@@ -22,7 +22,10 @@ namespace {
 using aco::Error;
 
 // Bumped whenever the tables change in a way older readers would misread.
-const std::string kFormatVersion = "2";  // 2: the simulation columns of runs
+const std::string kFormatVersion = "3";  // 2: the simulation columns of runs; 3: runs.error
+
+// This version, or an earlier one upgrade() brings to it.
+bool upgradable(const std::string& version) { return version == kFormatVersion || version == "1" || version == "2"; }
 
 // OMPL's tables (as ompl_benchmark_statistics.py creates them) with our run and progress
 // attributes as columns; see the header for what each holds.
@@ -36,7 +39,7 @@ CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, p
   repetition INTEGER, seed INTEGER, solved BOOLEAN, length REAL, grid_length REAL, gap REAL,
   turns INTEGER, iterations INTEGER, best_iteration INTEGER, time REAL, ant_steps INTEGER,
   stopped_by TEXT, path TEXT, outcome TEXT, time_to_goal REAL, collisions INTEGER, replans INTEGER,
-  clearance REAL, control_steps INTEGER,
+  clearance REAL, control_steps INTEGER, error TEXT,
   FOREIGN KEY (experimentid) REFERENCES experiments(id) ON DELETE CASCADE,
   FOREIGN KEY (plannerid) REFERENCES plannerConfigs(id) ON DELETE CASCADE,
   UNIQUE (experimentid, plannerid, repetition));
@@ -267,14 +270,18 @@ struct ResultsDb::Impl {
     return stored;
   }
 
-  // Format 1 (before simulations) lacks the simulation columns: they are added, NULL for its
-  // planning runs, so results of earlier runs are resumed and reported.
+  // Formats 1 and 2 lack columns of runs (1: the simulation measures, 2: error): they are added,
+  // NULL for the stored runs, so results of earlier runs are resumed and reported.
   void upgrade() {
-    if (meta().at("format_version") != "1") return;
+    if (meta().at("format_version") == kFormatVersion) return;
+    std::set<std::string> present;
+    Statement columns(db, "SELECT name FROM pragma_table_info('runs')");
+    columns.run();
+    while (columns.next()) present.insert(columns.text(0));
     Transaction transaction(db);
-    for (const char* column : {"outcome TEXT", "time_to_goal REAL", "collisions INTEGER", "replans INTEGER", "clearance REAL",
-                               "control_steps INTEGER"})
-      db.exec(std::string("ALTER TABLE runs ADD COLUMN ") + column);
+    for (const std::string column : {"outcome TEXT", "time_to_goal REAL", "collisions INTEGER", "replans INTEGER",
+                                     "clearance REAL", "control_steps INTEGER", "error TEXT"})
+      if (!present.contains(column.substr(0, column.find(' ')))) db.exec("ALTER TABLE runs ADD COLUMN " + column);
     Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
     set.run(kFormatVersion).finish();
     transaction.commit();
@@ -288,7 +295,7 @@ struct ResultsDb::Impl {
     const auto stored = meta();
     const auto value = [&](const std::string& key) { return stored.contains(key) ? stored.at(key) : "(missing)"; };
     const std::string reuse = "; nothing in it was changed: give another results file, or delete this one to start again";
-    if (value("format_version") != kFormatVersion && value("format_version") != "1")
+    if (!upgradable(value("format_version")))
       throw Error(file() + " is an acobench results database of format version " + value("format_version") +
                   ", this acobench reads version " + kFormatVersion + reuse);
     if (value("experiment_name") != experiment_name)
@@ -403,7 +410,7 @@ ResultsDb::ResultsDb(const std::filesystem::path& file) : impl_(std::make_unique
   }
   if (!ours) throw Error(file.string() + " is not an acobench results database");
   const auto stored = d.meta();
-  if (!stored.contains("format_version") || (stored.at("format_version") != kFormatVersion && stored.at("format_version") != "1"))
+  if (!stored.contains("format_version") || !upgradable(stored.at("format_version")))
     throw Error(file.string() + " is an acobench results database of another format version");
   d.upgrade();
   d.load();
@@ -425,8 +432,8 @@ void ResultsDb::Impl::load() {
   insert_run.emplace(db,
                        "INSERT INTO runs (experimentid, plannerid, repetition, seed, solved, length, grid_length, gap, "
                        "turns, iterations, best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, "
-                       "collisions, replans, clearance, control_steps) "
-                       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21)");
+                       "collisions, replans, clearance, control_steps, error) "
+                       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22)");
   insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost) VALUES (?1, ?2, ?3, ?4)");
   add_time.emplace(db, "UPDATE experiments SET totaltime = totaltime + ?2 WHERE id = ?1");
 }
@@ -481,7 +488,8 @@ void ResultsDb::store(const TrialRecord& t) {
             t.solved ? t.grid_length : kNull, gap, t.turns, t.iterations, t.best_iteration, t.time_s, to_sql(t.ant_steps),
             t.stopped_by, t.path_json, sim_field(t, &SimulationRecord::outcome), sim_field(t, &SimulationRecord::time_to_goal),
             sim_field(t, &SimulationRecord::collisions), sim_field(t, &SimulationRecord::replans),
-            sim_field(t, &SimulationRecord::clearance), sim_field(t, &SimulationRecord::control_steps))
+            sim_field(t, &SimulationRecord::clearance), sim_field(t, &SimulationRecord::control_steps),
+            t.error.empty() ? std::nullopt : std::optional<std::string>(t.error))
       .finish();
   const std::int64_t run = sqlite3_last_insert_rowid(d.db.handle());
   const double seconds_per_iteration = t.iterations > 0 ? t.time_s / t.iterations : 0.0;
@@ -515,7 +523,7 @@ std::vector<TrialRecord> ResultsDb::trials() const {
   Statement runs(d.db,
                  "SELECT id, experimentid, plannerid, repetition, seed, solved, length, grid_length, turns, iterations, "
                  "best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, collisions, replans, clearance, "
-                 "control_steps FROM runs "
+                 "control_steps, error FROM runs "
                  "ORDER BY experimentid, plannerid, repetition");
   Statement progress(d.db, "SELECT best_cost FROM progress WHERE runid = ?1 ORDER BY iteration");
   runs.run();
@@ -535,6 +543,7 @@ std::vector<TrialRecord> ResultsDb::trials() const {
     t.ant_steps = from_sql(runs.integer(12));
     t.stopped_by = runs.text(13);
     t.path_json = runs.text(14);
+    t.error = runs.text(21);
     if (!runs.null(15))
       t.simulation = SimulationRecord{runs.text(15),
                                       runs.null(16) ? std::nan("") : runs.real(16),

@@ -15,7 +15,8 @@
 //                   length, grid_length, gap, turns, iterations, best_iteration, time (s),
 //                   ant_steps, stopped_by, path (JSON waypoints), and for simulation trials
 //                   (NULL otherwise) outcome, time_to_goal (NULL unless reached), collisions,
-//                   replans, clearance, control_steps; UNIQUE(experimentid, plannerid,
+//                   replans, clearance, control_steps; error (why a trial failed: what the
+//                   plugin or the host threw; NULL otherwise); UNIQUE(experimentid, plannerid,
 //                   repetition). A simulation trial's length is the distance driven, its path the
 //                   trajectory, its stopped_by the outcome. length, grid_length and gap are NULL when unsolved; gap is
 //                   grid_length / optimal_length - 1 (the relative excess of the grid path over
@@ -80,6 +81,7 @@ struct TrialRecord {
   std::string path_json;            // "[[x,y],...]" or "[[x,y,z],...]"
   std::vector<double> best_so_far;  // one per iteration; +infinity until solved (stored as NULL)
   std::optional<SimulationRecord> simulation;  // simulation trials only (NULL columns otherwise)
+  std::string error;  // a trial that threw: the message (solved false, stopped_by "error"); else ""
 };
 
 class ResultsDb {

@@ -14,6 +14,7 @@
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
 #include "aco/planning.hpp"
+#include "aco/plugin_guard.hpp"
 #include "aco/thread_limit.hpp"
 #include "acosim/batch.hpp"
 #include "results_db.hpp"
@@ -224,12 +225,13 @@ class Runner {
     const aco::ThreadLimit threads(options_.threads);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, trials.size(), 1), [&](const auto& range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
-        const TrialRecord record = run_trial(trials[i]);
+        const TrialRecord record = guarded_trial(trials[i]);
         db_->store(record);
         const std::lock_guard lock(progress_mutex_);
         if (e_.ablation_target) add_score(record);
         ++done_;
         ++summary.ran;
+        if (!record.error.empty()) summary.failures.push_back(record.error);
         if (options_.progress) options_.progress(done_, total_);
       }
     });
@@ -240,6 +242,25 @@ class Runner {
   void add_score(const TrialRecord& t) {
     const double optimal = optimal_[t.problem];
     scores_[t.config][{t.problem, t.repetition}] = {t.solved, optimal > 0 ? t.length / optimal : t.length};
+  }
+
+  // A trial that throws (a plugin's failure, or the host's) is stored as failed with the
+  // message, and the experiment goes on, as OMPL's benchmark records crashed runs.
+  TrialRecord guarded_trial(const Trial& t) {
+    try {
+      return run_trial(t);
+    } catch (...) {
+      TrialRecord r;
+      r.problem = t.problem;
+      r.config = t.config->id;
+      r.repetition = t.repetition;
+      r.seed = trial_seed(e_.seed, e_.problems[t.problem].name, t.repetition);
+      r.stopped_by = "error";
+      r.path_json = "[]";
+      r.error = "configuration '" + t.config->config.name + "', problem '" + e_.problems[t.problem].name + "', repetition " +
+                std::to_string(t.repetition) + ": " + aco::describe_current_exception();
+      return r;
+    }
   }
 
   TrialRecord run_trial(const Trial& t) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "aco/plugin_registry.hpp"
 #include "experiment.hpp"
@@ -21,6 +22,7 @@ struct RunSummary {
   std::size_t trials = 0;   // trials of the experiment
   std::size_t skipped = 0;  // already in the database
   std::size_t ran = 0;
+  std::vector<std::string> failures;  // the messages of the trials run now that threw (stored as failed)
   double seconds = 0.0;
 };
 

@@ -1,14 +1,15 @@
 // acoplan: one planning run, composed from runtime plugins on the command line.
 #include <iostream>
 
+#include "aco/plugin_guard.hpp"
 #include "acoplan.hpp"
 
 int main(int argc, char** argv) {
   try {
     acoplan::Request request = acoplan::parse_command_line(argc, argv);
     return acoplan::run(request, std::cout);
-  } catch (const std::exception& e) {
-    std::cerr << "acoplan: error: " << e.what() << "\n";
+  } catch (...) {  // anything, a std::exception or not, is reported and exits 1
+    std::cerr << "acoplan: error: " << aco::describe_current_exception() << "\n";
   }
   return acoplan::kExitError;
 }

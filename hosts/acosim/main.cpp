@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
 #include "aco/thread_limit.hpp"
 #include "batch.hpp"
@@ -105,8 +106,8 @@ int main(int argc, char** argv) {
                 << "collisions " << result.collisions << ", replans " << result.replans << "\n";
     }
     return result.reached ? 0 : kExitNotReached;
-  } catch (const std::exception& e) {
-    std::cerr << "acosim: error: " << e.what() << "\n";
+  } catch (...) {  // anything, a std::exception or not, is reported and exits 1
+    std::cerr << "acosim: error: " << aco::describe_current_exception() << "\n";
   }
   return kExitError;
 }

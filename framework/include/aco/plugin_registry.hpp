@@ -9,6 +9,7 @@
 
 #include "aco/error.hpp"
 #include "aco/plugin.hpp"
+#include "aco/plugin_guard.hpp"
 
 namespace aco {
 
@@ -37,18 +38,23 @@ class BOOST_SYMBOL_VISIBLE PluginRegistry {
   // was built for another ABI, or has a malformed parameter table.
   const PluginDescriptor& load(const std::string& kind, const std::string& name);
 
+  // The plugin made by its factory (whatever the factory throws becomes an Error naming it).
   std::unique_ptr<Strategy> create(const std::string& kind, const std::string& name, const ParameterValues& values);
 
+  // The plugin as its slot's interface, behind the error boundary (aco/plugin_guard.hpp): every
+  // call into it that throws, on any thread, throws an Error naming the plugin and the hook.
   template <class Interface>
   std::unique_ptr<Interface> create(const std::string& kind, const std::string& name, const ParameterValues& values) {
     auto strategy = create(kind, name, values);
     auto* typed = dynamic_cast<Interface*>(strategy.get());
     if (typed == nullptr) throw Error("plugin " + kind + "/" + name + " does not implement the " + kind + " interface");
     strategy.release();
-    return std::unique_ptr<Interface>(typed);
+    return guard(std::unique_ptr<Interface>(typed), identity(kind, name));
   }
 
  private:
+  PluginIdentity identity(const std::string& kind, const std::string& name) const;
+
   std::vector<std::filesystem::path> dirs_;
   std::vector<PluginFile> files_;
 };

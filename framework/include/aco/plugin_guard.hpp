@@ -1,0 +1,37 @@
+#pragma once
+// The error boundary between the host and a plugin. Whatever a plugin throws, from its factory or
+// from any hook, on any thread (a std::exception or not: `throw 42`), leaves it as an aco::Error
+// that names the slot, the plugin, its file, the hook and the iteration, so a host reports it and
+// exits 1 (or acobench records the trial as failed) instead of std::terminate.
+#include <memory>
+#include <string>
+
+#include "aco/error.hpp"
+#include "aco/strategies.hpp"
+
+namespace aco {
+
+// Which plugin a guarded call went to.
+struct PluginIdentity {
+  std::string slot;
+  std::string name;
+  std::string file;
+};
+
+// What the exception being handled says: what() of a std::exception, else its type ("int").
+// Call inside a catch block only.
+std::string describe_current_exception();
+
+// Throws the Error for the exception being handled, thrown by `who` in `hook` (iteration < 0:
+// none to name). Call inside a catch block only.
+[[noreturn]] void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration = -1);
+
+// `plugin` behind a decorator of its interface that calls it inside the boundary.
+std::unique_ptr<PheromoneInit> guard(std::unique_ptr<PheromoneInit> plugin, PluginIdentity who);
+std::unique_ptr<Heuristic> guard(std::unique_ptr<Heuristic> plugin, PluginIdentity who);
+std::unique_ptr<PheromoneUpdate> guard(std::unique_ptr<PheromoneUpdate> plugin, PluginIdentity who);
+std::unique_ptr<DeadlockPolicy> guard(std::unique_ptr<DeadlockPolicy> plugin, PluginIdentity who);
+std::unique_ptr<Smoother> guard(std::unique_ptr<Smoother> plugin, PluginIdentity who);
+std::unique_ptr<LocalPlanner> guard(std::unique_ptr<LocalPlanner> plugin, PluginIdentity who);
+
+}  // namespace aco

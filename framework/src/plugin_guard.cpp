@@ -1,0 +1,159 @@
+#include "aco/plugin_guard.hpp"
+
+#include <cxxabi.h>
+
+#include <cstdlib>
+#include <exception>
+#include <typeinfo>
+
+namespace aco {
+
+std::string describe_current_exception() {
+  try {
+    throw;
+  } catch (const std::exception& e) {
+    return e.what();
+  } catch (...) {
+    // Not a std::exception: its type is all there is to say.
+    const std::type_info* type = abi::__cxa_current_exception_type();
+    if (!type) return "an exception of unknown type";
+    int status = 0;
+    std::unique_ptr<char, decltype(&std::free)> name(abi::__cxa_demangle(type->name(), nullptr, nullptr, &status), std::free);
+    return std::string("an exception of type ") + (status == 0 && name ? name.get() : type->name());
+  }
+}
+
+void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration) {
+  std::string where = "plugin " + who.slot + "/" + who.name;
+  if (!who.file.empty()) where += " (" + who.file + ")";
+  where += std::string(" failed in ") + hook;
+  if (iteration >= 0) where += " in iteration " + std::to_string(iteration + 1);
+  throw Error(where + ": " + describe_current_exception());
+}
+
+namespace {
+
+// A decorator of `Interface`: holds the plugin and calls it inside the boundary.
+template <class Interface>
+class Guarded : public Interface {
+ public:
+  Guarded(std::unique_ptr<Interface> plugin, PluginIdentity who) : p_(std::move(plugin)), who_(std::move(who)) {}
+
+ protected:
+  template <class F>
+  auto call(const char* hook, int iteration, F&& f) const -> decltype(f()) {
+    try {
+      return f();
+    } catch (...) {
+      rethrow_from_plugin(who_, hook, iteration);
+    }
+  }
+
+  std::unique_ptr<Interface> p_;
+  PluginIdentity who_;
+};
+
+// Each decorator forwards every virtual of its interface to the plugin, so the plugin's own
+// overrides (or the interface's defaults, run on the plugin) answer.
+class GuardedInit final : public Guarded<PheromoneInit> {
+ public:
+  using Guarded::Guarded;
+  void initialize(const Context& c, std::span<double> tau) override {
+    call("initialize()", c.iteration, [&] { p_->initialize(c, tau); });
+  }
+
+};
+
+class GuardedHeuristic final : public Guarded<Heuristic> {
+ public:
+  using Guarded::Guarded;
+  void compute(const Context& c, std::span<double> eta) override {
+    call("compute()", c.iteration, [&] { p_->compute(c, eta); });
+  }
+  bool varies_by_iteration() const override {
+    return call("varies_by_iteration()", -1, [&] { return p_->varies_by_iteration(); });
+  }
+  void compute_powered(const Context& c, std::span<double> eta_beta) override {
+    call("compute_powered()", c.iteration, [&] { p_->compute_powered(c, eta_beta); });
+  }
+  bool updates_by_node() const override {
+    return call("updates_by_node()", -1, [&] { return p_->updates_by_node(); });
+  }
+  void update_node(const Context& c, NodeId node, int since, std::span<double> eta_beta) const override {
+    call("update_node()", c.iteration, [&] { p_->update_node(c, node, since, eta_beta); });
+  }
+  bool uses_walk() const override {
+    return call("uses_walk()", -1, [&] { return p_->uses_walk(); });
+  }
+  void step_factors(const Context& c, const Ant& ant, std::span<const EdgeId> candidates,
+                    std::span<double> factors) const override {
+    call("step_factors()", c.iteration, [&] { p_->step_factors(c, ant, candidates, factors); });
+  }
+
+};
+
+class GuardedUpdate final : public Guarded<PheromoneUpdate> {
+ public:
+  using Guarded::Guarded;
+  void update(const Context& c, const Iteration& iteration, std::span<double> tau) override {
+    call("update()", c.iteration, [&] { p_->update(c, iteration, tau); });
+  }
+  void start(const Context& c, std::span<double> tau) override {
+    call("start()", c.iteration, [&] { p_->start(c, tau); });
+  }
+
+};
+
+class GuardedDeadlock final : public Guarded<DeadlockPolicy> {
+ public:
+  using Guarded::Guarded;
+  int on_stuck(const Context& c, std::span<const NodeId> walk) const override {
+    return call("on_stuck()", c.iteration, [&] { return p_->on_stuck(c, walk); });
+  }
+  void after_iteration(const Context& c, const Iteration& iteration, std::span<double> tau,
+                       std::vector<std::uint8_t>& forbidden) override {
+    call("after_iteration()", c.iteration, [&] { p_->after_iteration(c, iteration, tau, forbidden); });
+  }
+
+};
+
+class GuardedSmoother final : public Guarded<Smoother> {
+ public:
+  using Guarded::Guarded;
+  std::vector<Eigen::Vector3d> smooth(const Context& c, std::span<const NodeId> path) const override {
+    return call("smooth()", -1, [&] { return p_->smooth(c, path); });
+  }
+
+};
+
+class GuardedLocal final : public Guarded<LocalPlanner> {
+ public:
+  using Guarded::Guarded;
+  VelocityCommand command(const LocalView& view) override {
+    return call("command()", -1, [&] { return p_->command(view); });
+  }
+
+};
+
+}  // namespace
+
+std::unique_ptr<PheromoneInit> guard(std::unique_ptr<PheromoneInit> p, PluginIdentity who) {
+  return std::make_unique<GuardedInit>(std::move(p), std::move(who));
+}
+std::unique_ptr<Heuristic> guard(std::unique_ptr<Heuristic> p, PluginIdentity who) {
+  return std::make_unique<GuardedHeuristic>(std::move(p), std::move(who));
+}
+std::unique_ptr<PheromoneUpdate> guard(std::unique_ptr<PheromoneUpdate> p, PluginIdentity who) {
+  return std::make_unique<GuardedUpdate>(std::move(p), std::move(who));
+}
+std::unique_ptr<DeadlockPolicy> guard(std::unique_ptr<DeadlockPolicy> p, PluginIdentity who) {
+  return std::make_unique<GuardedDeadlock>(std::move(p), std::move(who));
+}
+std::unique_ptr<Smoother> guard(std::unique_ptr<Smoother> p, PluginIdentity who) {
+  return std::make_unique<GuardedSmoother>(std::move(p), std::move(who));
+}
+std::unique_ptr<LocalPlanner> guard(std::unique_ptr<LocalPlanner> p, PluginIdentity who) {
+  return std::make_unique<GuardedLocal>(std::move(p), std::move(who));
+}
+
+}  // namespace aco

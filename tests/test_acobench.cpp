@@ -431,7 +431,7 @@ TEST_CASE("a trial whose plugin throws is stored as failed, named, and the exper
       "settings: {ants: 10, iterations: 5}\nbaseline: {name: AS}\n"
       "configurations:\n  - {name: thrower, update: throwing, update.at_iteration: 2}\n");
   const auto db = file.parent_path() / "throws.db";
-  const std::vector<std::string> args{"run", file.string(), "--db", db.string(), "--plugin-dir", ACO_TEST_THROWING_PLUGIN_DIR};
+  const std::vector<std::string> args{"run", file.string(), "--db", db.string(), "--plugin-dir", ACO_TEST_FAULTY_PLUGIN_DIR};
   const auto r = run_acobench(args);
   INFO(r.err);
   REQUIRE(r.exit_code == 0);

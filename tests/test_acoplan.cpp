@@ -161,6 +161,8 @@ TEST_CASE("acoplan rejects malformed map files with the file, line and problem",
   expect_error({"--map", test::temp_file("f.txt", "0 0 1\n0 0\n").string(), "--start", "0,0", "--goal", "1,0"},
                "row has 2 values, the first row has 3");
   expect_error({"--map", "/nonexistent/map.map", "--start", "0,0", "--goal", "1,0"}, "/nonexistent/map.map: cannot open file");
+  expect_error({"--map", "/dev/zero", "--start", "0,0", "--goal", "1,0"}, "/dev/zero: not a regular file");
+  expect_error({"--map", "/tmp", "--start", "0,0", "--goal", "1,0"}, "/tmp: is a directory, not a file");
 }
 
 TEST_CASE("acoplan rejects blocked, out-of-range and malformed start and goal cells", "[acoplan][bad-input]") {
@@ -214,7 +216,7 @@ TEST_CASE("acoplan refuses a plugin built for another ABI version", "[acoplan][b
 
 TEST_CASE("a plugin that throws anything, from its factory, a hook or a worker thread, is reported, not an abort",
           "[acoplan][bad-input][boundary]") {
-  const std::string dir = ACO_TEST_THROWING_PLUGIN_DIR;
+  const std::string dir = ACO_TEST_FAULTY_PLUGIN_DIR;
   expect_error({"--plugin-dir", dir, "--update", "throwing", "--update.in_factory", "true"},
                "plugin update/throwing (" + dir + "/aco_update_throwing.so) failed in its factory: an exception of type int");
   expect_error({"--plugin-dir", dir, "--update", "throwing", "--update.at_iteration", "3"},
@@ -225,6 +227,13 @@ TEST_CASE("a plugin that throws anything, from its factory, a hook or a worker t
                  "plugin heuristic/throwing (" + dir + "/aco_heuristic_throwing.so) failed in step_factors() in iteration 1: "
                  "an exception of type int");
   }
+}
+
+TEST_CASE("a plugin with an undefined symbol is refused when it loads, the symbol named", "[acoplan][bad-input][boundary]") {
+  const std::string dir = ACO_TEST_FAULTY_PLUGIN_DIR;
+  expect_error({"--plugin-dir", dir, "--update", "incomplete"},
+               "plugin update/incomplete (" + dir + "/aco_update_incomplete.so): cannot be loaded: ");
+  expect_error({"--plugin-dir", dir, "--update", "incomplete"}, "undefined symbol: aco_fixture_function_nobody_defines");
 }
 
 TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acoplan]") {

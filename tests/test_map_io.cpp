@@ -582,4 +582,17 @@ TEST_CASE("load_map picks the format by extension", "[map_io]") {
       REQUIRE_THROWS_WITH(aco::load_map(name), Catch::Contains(name) && Catch::Contains("cannot open file"));
     }
   }
+  SECTION("a directory or a device, whatever its name says: refused before reading (/dev/zero never ends)") {
+    const auto dir = test::temp_file("unused", "").parent_path();
+    for (const char* ext : {".map", ".txt", ".yaml", ".asc", ".pgm"}) {
+      INFO(ext);
+      const auto folder = dir / (std::string("folder") + ext);
+      std::filesystem::create_directories(folder);
+      REQUIRE_THROWS_WITH(aco::load_map(folder), Catch::Contains(folder.string()) && Catch::Contains("is a directory"));
+      const auto device = dir / (std::string("zero") + ext);
+      std::filesystem::create_symlink("/dev/zero", device);
+      REQUIRE_THROWS_WITH(aco::load_map(device), Catch::Contains(device.string()) && Catch::Contains("not a regular file"));
+    }
+    REQUIRE_THROWS_WITH(aco::load_scenarios("/dev/zero"), Catch::Contains("not a regular file"));
+  }
 }

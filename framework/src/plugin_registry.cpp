@@ -117,7 +117,9 @@ const PluginDescriptor& PluginRegistry::load(const std::string& kind, const std:
 
   boost::dll::shared_library library;
   try {
-    library.load(plugin->file, boost::dll::load_mode::rtld_lazy | boost::dll::load_mode::rtld_local);
+    // Every symbol bound now: a plugin that needs one no library defines is refused here, with
+    // the symbol named, instead of killing the process at its first call ("symbol lookup error").
+    library.load(plugin->file, boost::dll::load_mode::rtld_now | boost::dll::load_mode::rtld_local);
   } catch (const std::exception& e) {
     throw Error("plugin " + label(*plugin) + ": cannot be loaded: " + e.what());
   }

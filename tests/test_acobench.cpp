@@ -457,3 +457,21 @@ TEST_CASE("a trial whose plugin throws is stored as failed, named, and the exper
   const std::string md = file_bytes(out / "report.md");
   CHECK_THAT(md, Contains("## Failed trials") && Contains("| thrower | 3 | 3 | configuration 'thrower'"));
 }
+
+TEST_CASE("an experiment given by a relative path, with absolute map paths, stores and draws its maps", "[acobench]") {
+  const auto file = experiment("name: rel\nrepetitions: 1\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
+                               "settings: {ants: 5, iterations: 3}\n");
+  const auto before = std::filesystem::current_path();
+  std::filesystem::current_path(file.parent_path());
+  const auto run = run_acobench({"run", file.filename().string(), "--db", "rel.db"});
+  const auto report = run_acobench({"report", "rel.db", "--out", "report"});
+  std::filesystem::current_path(before);
+  REQUIRE(run.exit_code == 0);
+  REQUIRE(report.exit_code == 0);
+  const acobench::ResultsDb db(file.parent_path() / "rel.db");
+  const auto map = nlohmann::json::parse(db.problems().at(0).setup_json).at("map").get<std::string>();
+  CHECK(std::filesystem::equivalent(file.parent_path() / map, map1()));
+  const std::string html = file_bytes(file.parent_path() / "report/report.html");
+  CHECK(html.find("map not drawn") == std::string::npos);
+  CHECK_THAT(html, Contains("class=\"paths\""));
+}

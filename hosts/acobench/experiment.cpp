@@ -204,17 +204,23 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   return e;
 }
 
+std::string Experiment::relative_to_file(const std::filesystem::path& path) const {
+  const auto absolute = std::filesystem::absolute(path).lexically_normal();
+  const auto relative = absolute.lexically_relative(std::filesystem::absolute(file).parent_path().lexically_normal());
+  return (relative.empty() ? absolute : relative).generic_string();
+}
+
 std::string Experiment::fingerprint() const {
   nlohmann::json j;
   j["format"] = 1;
   j["repetitions"] = repetitions;
   j["seed"] = seed;
   for (const auto& p : problems) {
-    nlohmann::json problem = {{"name", p.name}, {"map", p.map.lexically_relative(file.parent_path()).generic_string()},
+    nlohmann::json problem = {{"name", p.name}, {"map", relative_to_file(p.map)},
                               {"start", {p.start.x, p.start.y}}, {"goal", {p.goal.x, p.goal.y}}};
     // A scenario's world is its file's: the file named, not its contents (as a map is).
     if (p.simulation) {
-      problem["simulation"] = p.simulation->file.lexically_relative(file.parent_path()).generic_string();
+      problem["simulation"] = relative_to_file(p.simulation->file);
       problem["variations"] = p.variations;
     }
     j["problems"].push_back(problem);

@@ -58,6 +58,10 @@ struct Experiment {
   int repetitions = 10;
   std::uint64_t seed = 1;
 
+  // `path` relative to the experiment file's folder, as the database stores it (absolute when it
+  // cannot be relative: another root). Works whether the experiment's path or `path` is relative.
+  std::string relative_to_file(const std::filesystem::path& path) const;
+
   // Canonical text of everything that decides the trials: a results database made with another
   // fingerprint belongs to another experiment.
   std::string fingerprint() const;

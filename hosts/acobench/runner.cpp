@@ -105,13 +105,13 @@ class Runner {
       // configuration may beat it: its gap is then negative).
       const aco::Graph& graph = prepared.graph(base);
       const auto optimal = aco::astar(graph, graph.node(p.start), graph.node(p.goal));
-      nlohmann::json setup = {{"map", p.map.lexically_relative(e.file.parent_path()).generic_string()},
+      nlohmann::json setup = {{"map", e.relative_to_file(p.map)},
                               {"start", {p.start.x, p.start.y}},
                               {"goal", {p.goal.x, p.goal.y}},
                               {"reference", aco::describe(base.graph)}};
       if (p.bucket >= 0) setup["bucket"] = p.bucket;
       if (p.simulation) {
-        setup["simulation"] = p.simulation->file.lexically_relative(e.file.parent_path()).generic_string();
+        setup["simulation"] = e.relative_to_file(p.simulation->file);
         setup["variations"] = p.variations;
       }
       records.push_back({p.name, setup.dump(), optimal ? optimal->length : -1.0});

@@ -26,4 +26,14 @@ grep -q '"local":"my_local"' <<< "$out"
 # The installed host uses the plugins installed next to it.
 described=$("$acoplan" --describe update/max_min)
 grep -q "file: $work/prefix/lib/aco/plugins/aco_update_max_min.so" <<< "$described"
+# The scaffold refuses to write over a project, warns on a bundled plugin's name, and builds
+# optimised when no build type is given.
+before=$(cat "$work/plugins/update/my_update.cpp")
+if "$source/tools/new-plugin.sh" update my_update "$work/plugins/update" 2>/dev/null; then
+  echo "sdk: new-plugin.sh wrote over an existing project" >&2; exit 1
+fi
+[ "$before" = "$(cat "$work/plugins/update/my_update.cpp")" ]
+"$source/tools/new-plugin.sh" update ant_system "$work/shadow" 2>&1 >/dev/null | grep -q "also a bundled plugin"
+cmake -S "$work/shadow" -B "$work/shadow/build" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+grep -q "CMAKE_BUILD_TYPE:STRING=Release" "$work/shadow/build/CMakeCache.txt"
 echo "sdk: ok"

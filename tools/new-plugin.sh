@@ -31,11 +31,24 @@ case "$kind" in
   }' ;;
   *) echo "new-plugin: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother, local)" >&2; exit 2 ;;
 esac
+# Never over an existing project: the author's code would be lost.
+if [ -e "$dir/CMakeLists.txt" ] || [ -e "$dir/${name}.cpp" ]; then
+  echo "new-plugin: $dir already holds a plugin project (CMakeLists.txt or ${name}.cpp); choose another DIR" >&2
+  exit 2
+fi
+# A bundled plugin of the same name would be shadowed by this one in --plugin-dir.
+if [ -d "$(dirname "$0")/../plugins/$kind/$name" ]; then
+  echo "new-plugin: warning: $kind/$name is also a bundled plugin; with --plugin-dir yours replaces it" >&2
+fi
 mkdir -p "$dir"
 cat > "$dir/CMakeLists.txt" <<CMAKE
 cmake_minimum_required(VERSION 3.25)
 project(aco_${kind}_${name} LANGUAGES CXX)
 set(CMAKE_CXX_STANDARD 20)
+# Optimised unless asked otherwise: an unoptimised plugin runs several times slower.
+if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
+  set(CMAKE_BUILD_TYPE Release CACHE STRING "Debug, Release, RelWithDebInfo or MinSizeRel" FORCE)
+endif()
 find_package(aco REQUIRED)
 aco_add_plugin(${kind} ${name} ${name}.cpp)
 CMAKE

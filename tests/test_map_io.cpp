@@ -595,4 +595,12 @@ TEST_CASE("load_map picks the format by extension", "[map_io]") {
     }
     REQUIRE_THROWS_WITH(aco::load_scenarios("/dev/zero"), Catch::Contains("not a regular file"));
   }
+  SECTION("one endless line (17 MiB, no newline) is refused, not read into memory whole") {
+    for (const char* name : {"long.map", "long.txt", "long.asc", "long.map.scen"}) {
+      INFO(name);
+      const auto file = test::temp_file(name, "0 1 " + std::string(17 << 20, '0'));
+      const auto load = [&] { return std::string(name) == "long.map.scen" ? (aco::load_scenarios(file), 0) : (aco::load_map(file), 0); };
+      REQUIRE_THROWS_WITH(load(), Catch::Contains(file.string() + ":1: a line longer than 16 MiB"));
+    }
+  }
 }

@@ -20,12 +20,22 @@ namespace {
 class LineReader {
  public:
   LineReader(std::istream& in, std::string name) : in_(in), name_(std::move(name)) {}
+  // The next line, as std::getline reads it, but never longer than kMaxLine: a file that is
+  // one endless line (binary data, say) is refused before it fills the memory.
   bool next(std::string& line) {
-    if (!std::getline(in_, line)) return false;
+    line.clear();
+    std::streambuf& buffer = *in_.rdbuf();
+    int c = buffer.sbumpc();
+    if (c == std::char_traits<char>::eof()) return false;
+    for (; c != std::char_traits<char>::eof() && c != '\n'; c = buffer.sbumpc()) {
+      if (line.size() >= kMaxLine) fail_at(number_ + 1, "a line longer than " + std::to_string(kMaxLine >> 20) + " MiB: not a map file");
+      line.push_back(static_cast<char>(c));
+    }
     if (!line.empty() && line.back() == '\r') line.pop_back();
     ++number_;
     return true;
   }
+  static constexpr std::size_t kMaxLine = std::size_t(16) << 20;  // a matrix row of 8 million cells
   [[noreturn]] void fail(const std::string& what) const { fail_at(number_, what); }
   [[noreturn]] void fail_at(int line, const std::string& what) const {
     throw Error(name_ + ":" + std::to_string(line) + ": " + what);

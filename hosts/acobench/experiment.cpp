@@ -77,7 +77,13 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
       for (int i = 0; i < count; ++i) {
         const std::size_t index = static_cast<std::size_t>(i) * scenarios.size() / count;
         const aco::Scenario& s = scenarios[index];
-        problems.push_back({prefix + "#" + std::to_string(index), aco::scenario_map_file(scen), s.start, s.goal, s.bucket});
+        Problem p;
+        p.name = prefix + "#" + std::to_string(index);
+        p.map = aco::scenario_map_file(scen);
+        p.start = s.start;
+        p.goal = s.goal;
+        p.bucket = s.bucket;
+        problems.push_back(std::move(p));
       }
     } else {
       only_keys(file, entry, {"map", "start", "goal", "name"}, "a problem");

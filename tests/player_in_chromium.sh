@@ -5,11 +5,7 @@
 #   tests/player_in_chromium.sh ACOSIM SOURCE_DIR WORK_DIR
 set -euo pipefail
 acosim=$1 source=$2 work=$3
-chromium=$(command -v chromium || command -v chromium-browser || true)
-if [ -z "$chromium" ]; then
-  echo "chromium is not installed (tools/setup.sh installs it)" >&2
-  exit 1
-fi
+source "$(dirname "$0")/chromium.sh"
 rm -rf "$work" && mkdir -p "$work"
 "$acosim" "$source/data/scenarios/paper003_static.yaml" --html "$work/player.html" --json > "$work/run.json"
 # What the last frame must show: the time (one decimal) and the robot's centre in pixels
@@ -17,10 +13,7 @@ rm -rf "$work" && mkdir -p "$work"
 read -r time x y < <(python3 -c "
 import json; j = json.load(open('$work/run.json')); f = j['trajectory'][-1]
 print(round(f['t'] * 10) / 10, 12 + (f['x'] + 0.5) * 24, 12 + (f['y'] + 0.5) * 24)")
-flags=(--headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run --user-data-dir="$work/profile")
-"$chromium" "${flags[@]}" --dump-dom "file://$work/player.html#final" > "$work/dom.html" 2>"$work/chromium.log"
-"$chromium" "${flags[@]}" --window-size=560,720 --screenshot="$work/player.png" "file://$work/player.html#final" \
-  >>"$work/chromium.log" 2>&1
+render "file://$work/player.html#final" 560,720 "$work/player.png" "$work"
 shown=$(grep -oE '<span id="time">[^<]*</span>' "$work/dom.html" | sed -E 's/<[^>]*>//g')
 cx=$(grep -oE '<circle id="robot-body"[^>]*>' "$work/dom.html" | grep -oE 'cx="[^"]*"' | cut -d'"' -f2)
 cy=$(grep -oE '<circle id="robot-body"[^>]*>' "$work/dom.html" | grep -oE 'cy="[^"]*"' | cut -d'"' -f2)
@@ -30,6 +23,5 @@ import sys
 shown, time, cx, cy, x, y = '$shown', float('$time'), float('${cx:-nan}'), float('${cy:-nan}'), float('$x'), float('$y')
 ok = abs(float(shown.split()[0]) - time) < 1e-6 and abs(cx - x) < 1e-6 and abs(cy - y) < 1e-6
 sys.exit(0 if ok else 1)" || { echo "the player does not show the final frame" >&2; exit 1; }
-[ "$(head -c 8 "$work/player.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || { echo "no PNG written" >&2; exit 1; }
-[ "$(stat -c %s "$work/player.png")" -gt 20000 ] || { echo "screenshot suspiciously small" >&2; exit 1; }
+check_screenshot "$work/player.png"
 echo "player: ok ($work/player.png)"

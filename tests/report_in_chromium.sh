@@ -4,11 +4,7 @@
 #   tests/report_in_chromium.sh ACOBENCH SOURCE_DIR WORK_DIR
 set -euo pipefail
 acobench=$1 source=$2 work=$3
-chromium=$(command -v chromium || command -v chromium-browser || true)
-if [ -z "$chromium" ]; then
-  echo "chromium is not installed (tools/setup.sh installs it)" >&2
-  exit 1
-fi
+source "$(dirname "$0")/chromium.sh"
 rm -rf "$work" && mkdir -p "$work"
 sed "s|{DATA}|$source/data|g" > "$work/experiment.yaml" <<'YAML'
 name: chromium-check
@@ -26,15 +22,10 @@ ablation: {target: ACS}
 YAML
 "$acobench" run "$work/experiment.yaml" --db "$work/results.db" >/dev/null
 "$acobench" report "$work/results.db" --out "$work/report" >/dev/null
-flags=(--headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run --user-data-dir="$work/profile")
-"$chromium" "${flags[@]}" --dump-dom "file://$work/report/report.html" > "$work/dom.html" 2>"$work/chromium.log"
-"$chromium" "${flags[@]}" --window-size=1400,2400 --screenshot="$work/report.png" "file://$work/report/report.html" \
-  >>"$work/chromium.log" 2>&1
+render "file://$work/report/report.html" 1400,2400 "$work/report.png" "$work"
 count() { grep -oE "<svg[^>]*class=\"$1\"" "$work/dom.html" | wc -l; }
 boxes=$(count boxplot) curves=$(count convergence) maps=$(count paths)
 echo "DOM: $boxes box plots, $curves line charts, $maps path maps; screenshot $work/report.png"
 [ "$boxes" -ge 1 ] && [ "$curves" -ge 2 ] && [ "$maps" -ge 1 ] || { echo "plots missing from the DOM" >&2; exit 1; }
 grep -q "Ablation path" "$work/dom.html" || { echo "ablation section missing" >&2; exit 1; }
-# A PNG that is mostly blank would mean nothing rendered: demand a real image.
-[ "$(head -c 8 "$work/report.png" | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] || { echo "no PNG written" >&2; exit 1; }
-[ "$(stat -c %s "$work/report.png")" -gt 20000 ] || { echo "screenshot suspiciously small" >&2; exit 1; }
+check_screenshot "$work/report.png"

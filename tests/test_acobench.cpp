@@ -475,3 +475,46 @@ TEST_CASE("an experiment given by a relative path, with absolute map paths, stor
   CHECK(html.find("map not drawn") == std::string::npos);
   CHECK_THAT(html, Contains("class=\"paths\""));
 }
+
+TEST_CASE("acobench measures the gap of a smoothed run on its grid path against the grid optimum", "[acobench][report]") {
+  const auto file = experiment(R"(name: smoothed
+seed: 5
+repetitions: 3
+problems:
+  - map: {MAP1}
+    start: [0, 0]
+    goal: [19, 19]
+settings: {ants: 10, iterations: 15}
+baseline: {name: pruned, smoother: prune}
+configurations:
+  - {name: grid, smoother: none}
+  - {name: A* pruned, planner: astar, smoother: prune}
+)");
+  const auto db = file.parent_path() / "smoothed.db";
+  REQUIRE(run_acobench({"run", file.string(), "--db", db.string()}).exit_code == 0);
+  const auto out = file.parent_path() / "report";
+  REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
+  CHECK_THAT(file_bytes(out / "report.md"), Contains("gap is the mean excess of the grid path (before smoothing)"));
+
+  const double optimal = acobench::ResultsDb(db).problems().at(0).optimal_length;
+  std::istringstream csv(file_bytes(out / "runs.csv"));
+  std::string line;
+  std::getline(csv, line);
+  int solved = 0, shorter_than_grid_optimum = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    REQUIRE(cells.size() >= 8);
+    if (cells[4] != "1") continue;
+    ++solved;
+    const double length = std::stod(cells[5]), grid_length = std::stod(cells[6]), gap = std::stod(cells[7]);
+    CHECK(gap >= 0.0);
+    CHECK(gap == Approx(100.0 * (grid_length / optimal - 1.0)).margin(1e-4));
+    if (length < optimal - 1e-9) ++shorter_than_grid_optimum;
+  }
+  CHECK(solved == 9);
+  // The pruned paths are any-angle: A*'s, pruned, is shorter than the grid optimum, which is why
+  // gaps are not measured on them.
+  CHECK(shorter_than_grid_optimum > 0);
+}

@@ -4,8 +4,18 @@
 #include <boost/dll/runtime_symbol_info.hpp>
 #include <boost/dll/shared_library.hpp>
 
+#include <dlfcn.h>
+#include <openssl/evp.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <array>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iostream>
 #include <map>
 #include <mutex>
 #include <sstream>
@@ -21,6 +31,7 @@ struct Loaded {
   std::mutex mutex;
   std::vector<boost::dll::shared_library> libraries;
   std::map<std::string, const PluginDescriptor*> descriptors;  // by "file|alias"
+  std::map<std::string, std::string> sha256;                   // by file
 };
 Loaded& loaded() {
   static Loaded* instance = new Loaded;
@@ -46,9 +57,73 @@ std::vector<PluginFile> exported_plugins(const fs::path& file) {
     const std::string rest = symbol.substr(prefix.size());
     const auto split = rest.find("__");
     if (split == std::string::npos || split == 0 || split + 2 >= rest.size()) continue;
-    found.push_back({rest.substr(0, split), rest.substr(split + 2), file});
+    PluginFile plugin;
+    plugin.kind = rest.substr(0, split);
+    plugin.name = rest.substr(split + 2);
+    plugin.file = file;
+    found.push_back(std::move(plugin));
+  }
+  if (found.empty()) return found;
+
+  std::vector<PluginRecord> records;
+  std::string unreadable;
+  try {
+    records = read_plugin_records(file);
+  } catch (const Error& e) {
+    unreadable = e.what();
+  }
+  for (auto& plugin : found) {
+    const auto record = std::find_if(records.begin(), records.end(), [&](const PluginRecord& r) {
+      return (r.kind == plugin.kind && r.name == plugin.name) || r.abi != std::to_string(kPluginAbiVersion);
+    });
+    if (!unreadable.empty())
+      plugin.unusable = "its plugin record cannot be read: " + unreadable;
+    else if (record == records.end())
+      plugin.unusable = "it has no plugin record (section " ACO_PLUGIN_RECORD_SECTION
+                        "): built for plugin ABI 7 or earlier; rebuild it against this framework";
+    else {
+      plugin.record = *record;
+      plugin.unusable = incompatibility(*record);
+    }
   }
   return found;
+}
+
+// Loads the library in a child process first: if its initialisers crash (a corrupted library,
+// or one built for another processor), the child dies instead of the host, and the host can say
+// which file it was. Empty if the child survived (whether or not it could load the library).
+std::string crash_while_loading(const fs::path& file) {
+  const pid_t child = fork();
+  if (child < 0) return {};  // cannot try it apart: the load proper will tell
+  if (child == 0) _exit(dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL) != nullptr ? 0 : 1);
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0)
+    if (errno != EINTR) return {};
+  if (!WIFSIGNALED(status)) return {};
+  return std::string("crashed while loading (signal ") + std::to_string(WTERMSIG(status)) + ", " +
+         strsignal(WTERMSIG(status)) + ", in a child process that tried it first): the library is corrupt or "
+         "was not built for this machine; rebuild or remove it";
+}
+
+std::string sha256_of(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw Error("cannot read " + file.string() + " to hash it");
+  std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context(EVP_MD_CTX_new(), &EVP_MD_CTX_free);
+  if (!context || EVP_DigestInit_ex(context.get(), EVP_sha256(), nullptr) != 1)
+    throw Error("cannot hash " + file.string() + ": OpenSSL's SHA-256 is unavailable");
+  std::array<char, 1 << 16> buffer;
+  while (in) {
+    in.read(buffer.data(), buffer.size());
+    EVP_DigestUpdate(context.get(), buffer.data(), static_cast<std::size_t>(in.gcount()));
+  }
+  if (!in.eof()) throw Error("cannot read " + file.string() + " to hash it");
+  std::array<unsigned char, EVP_MAX_MD_SIZE> digest;
+  unsigned int size = 0;
+  EVP_DigestFinal_ex(context.get(), digest.data(), &size);
+  std::string hex;
+  constexpr const char* kDigits = "0123456789abcdef";
+  for (unsigned int i = 0; i < size; ++i) hex += {kDigits[digest[i] >> 4], kDigits[digest[i] & 15]};
+  return hex;
 }
 
 }  // namespace
@@ -62,8 +137,14 @@ PluginRegistry::PluginRegistry(std::vector<fs::path> search_dirs) : dirs_(std::m
       if (entry.path().extension() == ".so" && entry.is_regular_file(ec)) libraries.push_back(entry.path());
     std::sort(libraries.begin(), libraries.end());
     for (const auto& file : libraries)
-      for (auto& plugin : exported_plugins(file))
-        if (!find(plugin.kind, plugin.name)) files_.push_back(std::move(plugin));
+      for (auto& plugin : exported_plugins(file)) {
+        const auto first = std::find_if(files_.begin(), files_.end(),
+                                        [&](const PluginFile& p) { return p.kind == plugin.kind && p.name == plugin.name; });
+        if (first == files_.end())
+          files_.push_back(std::move(plugin));
+        else
+          first->shadowed.push_back(file);
+      }
   }
 }
 
@@ -97,24 +178,29 @@ const PluginFile* PluginRegistry::find(const std::string& kind, const std::strin
   return nullptr;
 }
 
+const PluginFile& PluginRegistry::get(const std::string& kind, const std::string& name) const {
+  if (const PluginFile* plugin = find(kind, name)) return *plugin;
+  std::string message = "unknown " + kind + " plugin '" + name + "'";
+  const auto known = names(kind);
+  if (const auto near = nearest(name, known); !near.empty()) message += "; did you mean '" + near + "'?";
+  message += known.empty() ? " (no " + kind + " plugins found" : " (available: ";
+  for (std::size_t i = 0; i < known.size(); ++i) message.append(i ? ", " : "").append(known[i]);
+  message += "; searched:";
+  for (const auto& dir : dirs_) message.append(" ").append(dir.string());
+  throw Error(message + ")");
+}
+
 const PluginDescriptor& PluginRegistry::load(const std::string& kind, const std::string& name) {
-  const PluginFile* plugin = find(kind, name);
-  if (plugin == nullptr) {
-    std::string message = "unknown " + kind + " plugin '" + name + "'";
-    const auto known = names(kind);
-    if (const auto near = nearest(name, known); !near.empty()) message += "; did you mean '" + near + "'?";
-    message += known.empty() ? " (no " + kind + " plugins found" : " (available: ";
-    for (std::size_t i = 0; i < known.size(); ++i) message.append(i ? ", " : "").append(known[i]);
-    message += "; searched:";
-    for (const auto& dir : dirs_) message.append(" ").append(dir.string());
-    throw Error(message + ")");
-  }
+  const PluginFile* plugin = &get(kind, name);
+  if (!plugin->unusable.empty()) throw Error("plugin " + label(*plugin) + ": " + plugin->unusable);
 
   Loaded& state = loaded();
   std::lock_guard lock(state.mutex);
   const std::string key = plugin->file.string() + "|" + alias_of(*plugin);
   if (const auto it = state.descriptors.find(key); it != state.descriptors.end()) return *it->second;
 
+  if (const auto crash = crash_while_loading(plugin->file); !crash.empty())
+    throw Error("plugin " + label(*plugin) + ": " + crash);
   boost::dll::shared_library library;
   try {
     // Every symbol bound now: a plugin that needs one no library defines is refused here, with
@@ -137,13 +223,14 @@ const PluginDescriptor& PluginRegistry::load(const std::string& kind, const std:
   if (descriptor.abi_version != kPluginAbiVersion)
     throw Error("plugin " + label(*plugin) + ": ABI " + std::to_string(descriptor.abi_version) + ", host expects " +
                 std::to_string(kPluginAbiVersion) + " (rebuild the plugin against this framework)");
-  if (descriptor.compiler_abi != __GXX_ABI_VERSION)
-    throw Error("plugin " + label(*plugin) + ": built with C++ ABI " + std::to_string(descriptor.compiler_abi) +
-                ", host uses " + std::to_string(__GXX_ABI_VERSION));
   if (kind != descriptor.kind || name != descriptor.name || descriptor.create == nullptr)
     throw Error("plugin " + label(*plugin) + ": descriptor says " + descriptor.kind + "/" + descriptor.name);
   check_table(descriptor.parameters(), "plugin " + kind + "/" + name);
   state.descriptors[key] = &descriptor;
+  // Allowed (a user may mean to replace a bundled plugin), but never silently.
+  for (const auto& hidden : plugin->shadowed)
+    std::cerr << "warning: plugin " << kind << "/" << name << " from " << plugin->file.string() << " shadows "
+              << hidden.string() << " (the first in the plugin search order wins)\n";
   return descriptor;
 }
 
@@ -158,6 +245,16 @@ std::unique_ptr<Strategy> PluginRegistry::create(const std::string& kind, const 
   }
   if (!strategy) throw Error("plugin " + kind + "/" + name + ": factory returned nothing");
   return strategy;
+}
+
+PluginProvenance PluginRegistry::provenance(const std::string& kind, const std::string& name) const {
+  const PluginFile& plugin = get(kind, name);
+  const std::string file = plugin.file.string();
+  Loaded& state = loaded();
+  std::lock_guard lock(state.mutex);
+  auto hash = state.sha256.find(file);
+  if (hash == state.sha256.end()) hash = state.sha256.emplace(file, sha256_of(plugin.file)).first;
+  return {kind, name, plugin.record.version, file, hash->second};
 }
 
 PluginIdentity PluginRegistry::identity(const std::string& kind, const std::string& name) const {

@@ -216,7 +216,7 @@ std::string Experiment::relative_to_file(const std::filesystem::path& path) cons
   return (relative.empty() ? absolute : relative).generic_string();
 }
 
-std::string Experiment::fingerprint() const {
+std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
   nlohmann::json j;
   j["format"] = 1;
   j["repetitions"] = repetitions;
@@ -233,6 +233,20 @@ std::string Experiment::fingerprint() const {
   }
   for (const auto& c : configurations) j["configurations"].push_back({{"name", c.name}, {"keys", c.keys}});
   if (ablation_target) j["ablation_target"] = ablation_target->name;
+  // The binaries that run the trials (an ablation's flips mix the baseline's and the target's
+  // plugins, a scenario's keys fill what a configuration leaves): rebuilt code is another
+  // experiment. By content, not by file: a moved build is the same.
+  std::vector<const aco::RunSpec*> runs;
+  for (const auto& c : configurations)
+    if (c.run) runs.push_back(&*c.run);
+  if (ablation_target && ablation_target->run) runs.push_back(&*ablation_target->run);
+  for (const auto& p : problems)
+    if (p.simulation) runs.push_back(&p.simulation->run);
+  for (const auto* run : runs)
+    for (const char* slot : aco::kSlots) {
+      const auto p = registry.provenance(slot, run->pipeline.at(slot).plugin);
+      j["plugins"][p.kind + "/" + p.name] = {{"version", p.version}, {"sha256", p.sha256}};
+    }
   return j.dump();
 }
 

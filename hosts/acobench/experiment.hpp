@@ -62,9 +62,10 @@ struct Experiment {
   // cannot be relative: another root). Works whether the experiment's path or `path` is relative.
   std::string relative_to_file(const std::filesystem::path& path) const;
 
-  // Canonical text of everything that decides the trials: a results database made with another
-  // fingerprint belongs to another experiment.
-  std::string fingerprint() const;
+  // Canonical text (JSON) of everything that decides the trials, the plugin binaries included
+  // (name, version, SHA-256 of every plugin the configurations use): a results database made
+  // with another fingerprint belongs to another experiment.
+  std::string fingerprint(const aco::PluginRegistry& registry) const;
 };
 
 // Loads and checks an experiment file. Errors name the file, the line and the key.

@@ -38,9 +38,10 @@ struct Result {
   int config = 0;  // index into Analysis::configs
   std::vector<const TrialRecord*> runs;
   std::vector<double> lengths;  // solved runs only
+  std::vector<double> gaps;     // solved runs only, when the optimum is known: gap_percent()
   Summary length;
   double success = 0.0;
-  double gap = NAN;  // mean relative excess over the optimal length, %
+  double gap = NAN;  // mean of gaps
   double turns = NAN, best_iteration = NAN, time_ms = NAN;
   double p = NAN, p_holm = NAN, a12 = NAN;  // against the baseline on this problem
   const TrialRecord* best = nullptr;
@@ -57,6 +58,13 @@ struct Analysis {
   std::filesystem::path experiment_dir;  // the maps are relative to it
   std::vector<int> buckets;              // per problem: Moving AI bucket, or -1
 };
+
+// The excess of a solved trial over the problem's optimum, %. The optimum is exact A* on the
+// grid graph, so the trial's grid path (before any smoothing) is what is compared with it: a
+// smoothed (any-angle) path may be shorter than the grid optimum, and its "gap" would be
+// negative without being better than optimal. (A simulation trial's grid length is the distance
+// driven.)
+double gap_percent(const TrialRecord& t, double optimal) { return 100.0 * (t.grid_length / optimal - 1.0); }
 
 double mean_of(const std::vector<double>& v) {
   if (v.empty()) return NAN;
@@ -88,19 +96,19 @@ Analysis analyse(const ResultsDb& db) {
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
     const double optimal = a.problems[p].optimal_length;
     for (auto& r : a.results[p]) {
-      std::vector<double> gaps, turns, best_iterations, times;
+      std::vector<double> turns, best_iterations, times;
       for (const auto* t : r.runs) {
         times.push_back(t->time_s * 1000.0);
         if (!t->solved) continue;
         r.lengths.push_back(t->length);
         turns.push_back(t->turns);
         best_iterations.push_back(t->best_iteration);
-        if (optimal > 0) gaps.push_back(100.0 * (t->length / optimal - 1.0));
+        if (optimal > 0) r.gaps.push_back(gap_percent(*t, optimal));
         if (!r.best || t->length < r.best->length) r.best = t;
       }
       r.length = summarize(r.lengths);
       r.success = r.runs.empty() ? NAN : double(r.lengths.size()) / r.runs.size();
-      r.gap = mean_of(gaps);
+      r.gap = mean_of(r.gaps);
       r.turns = mean_of(turns);
       r.best_iteration = mean_of(best_iterations);
       r.time_ms = mean_of(times);
@@ -242,14 +250,12 @@ std::vector<Table> summary_tables(const Analysis& a) {
   }
   if (sets.size() == a.problems.size()) return tables;
   Table totals{"Summary by problem set",
-               "Over every run of every problem of the set: solved share, gap of the solved runs to the exact optimum "
+               "Over every run of every problem of the set: solved share, gap of the solved runs' grid paths to the exact grid optimum "
                "(mean and largest), and time per run.",
                {"problem set", "configuration", "problems", "runs", "solved", "mean gap %", "max gap %", "mean time ms",
                 "max time ms"},
                {}};
-  const auto gaps_of = [&](const Result& r, std::size_t p, std::vector<double>& gaps) {
-    for (double length : r.lengths) gaps.push_back(100.0 * (length / a.problems[p].optimal_length - 1.0));
-  };
+  const auto gaps_of = [](const Result& r, std::vector<double>& gaps) { gaps.insert(gaps.end(), r.gaps.begin(), r.gaps.end()); };
   for (const auto& set : sets)
     for (std::size_t c = 0; c < a.configs.size(); ++c) {
       std::vector<double> gaps, times;
@@ -259,7 +265,7 @@ std::vector<Table> summary_tables(const Analysis& a) {
         runs += r.runs.size();
         solved += r.lengths.size();
         for (const auto* t : r.runs) times.push_back(t->time_s * 1000.0);
-        if (a.problems[p].optimal_length > 0) gaps_of(r, p, gaps);
+        gaps_of(r, gaps);
       }
       const auto largest = [](const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); };
       totals.rows.push_back({set, a.configs[c].second.name, std::to_string(members[set].size()), std::to_string(runs),
@@ -288,7 +294,7 @@ std::vector<Table> summary_tables(const Analysis& a) {
           const Result& r = a.results[ps[i]][c];
           runs += r.runs.size();
           solved += r.lengths.size();
-          if (a.problems[ps[i]].optimal_length > 0) gaps_of(r, ps[i], gaps);
+          gaps_of(r, gaps);
         }
         std::string cell = fixed(mean_of(gaps), 2);
         if (solved < runs) cell += " (" + fixed(runs ? 100.0 * solved / runs : 0.0, 0) + " % solved)";
@@ -333,8 +339,9 @@ std::string markdown(const Analysis& a, const std::filesystem::path& database) {
   std::ostringstream md;
   md << "# acobench report: " << a.name << "\n\n"
      << "Database `" << database.filename().string() << "`: " << a.trials.size() << " runs, " << a.configs.size()
-     << " configurations, " << a.problems.size() << " problems. Lengths are final path lengths of solved runs; gap is "
-        "the mean excess over the exact A* optimum on the baseline's graph; p is the two-sided Mann-Whitney U test "
+     << " configurations, " << a.problems.size() << " problems. Lengths are final path lengths of solved runs (after the smoother: any-angle when it "
+        "shortcuts); gap is the mean excess of the grid path (before smoothing) over the exact A* optimum on the "
+        "baseline's graph, so that both are lengths on the same grid; p is the two-sided Mann-Whitney U test "
         "against the baseline (`"
      << (a.configs.empty() ? "" : a.configs[0].second.name)
      << "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline.\n\n";
@@ -491,7 +498,7 @@ std::string csv(const Analysis& a) {
     out << quoted(a.problems[t.problem].name) << "," << quoted(names.at(t.config)) << "," << t.repetition << "," << t.seed << ","
         << (t.solved ? 1 : 0) << "," << (t.solved ? number(t.length, 10) : "") << ","
         << (t.solved ? number(t.grid_length, 10) : "") << ","
-        << (t.solved && optimal > 0 ? number(100 * (t.length / optimal - 1), 6) : "") << "," << t.turns << "," << t.iterations
+        << (t.solved && optimal > 0 ? number(gap_percent(t, optimal), 6) : "") << "," << t.turns << "," << t.iterations
         << "," << t.best_iteration << "," << number(t.time_s, 6) << "," << t.ant_steps << "," << t.stopped_by << "\n";
   }
   return out.str();

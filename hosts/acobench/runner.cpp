@@ -82,10 +82,13 @@ std::string path_json(const aco::Waypoints& path) {
 
 // The configuration as the database stores it: the keys as written, and the resolved run (every
 // key, the same names as acoplan's --json and --print-config).
-std::string settings_json(const PreparedConfig& c) {
+std::string settings_json(const PreparedConfig& c, const aco::PluginRegistry& registry) {
   nlohmann::json j;
   j["keys"] = c.config.keys;
   j["run"] = nlohmann::ordered_json::parse(aco::to_json(c.run));
+  // Name, version and hash of each slot's binary; not its file: a moved build is the same.
+  j["plugins"] = nlohmann::ordered_json::parse(aco::plugins_json(c.run, registry));
+  for (auto& plugin : j["plugins"]) plugin.erase("file");
   return j.dump();
 }
 
@@ -117,7 +120,7 @@ class Runner {
       records.push_back({p.name, setup.dump(), optimal ? optimal->length : -1.0});
       problems_.push_back(std::move(prepared));
     }
-    db_ = std::make_unique<ResultsDb>(options.database, e.name, e.fingerprint(), records);
+    db_ = std::make_unique<ResultsDb>(options.database, e.name, e.fingerprint(registry), records);
     finished_ = db_->finished();
     for (const auto& r : records) optimal_.push_back(r.optimal_length);
     // The ablation's choices need the results of trials an earlier, interrupted run stored.
@@ -168,7 +171,7 @@ class Runner {
     auto prepared = std::make_unique<PreparedConfig>();
     prepared->config = c;
     prepared->run = c.run ? *c.run : resolve(c, e_.problems, registry_);
-    prepared->id = db_->add_config({c.name, settings_json(*prepared)});
+    prepared->id = db_->add_config({c.name, settings_json(*prepared, registry_)});
     try {
       for (std::size_t p = 0; p < problems_.size(); ++p) {
         if (const auto& scenario = e_.problems[p].simulation) {

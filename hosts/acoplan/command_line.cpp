@@ -289,20 +289,27 @@ Request parse_command_line(int argc, const char* const* argv) {
   return r;
 }
 
+// Files this plugin hides, one line each (indented like the plugin's own file line).
+std::string shadow_lines(const aco::PluginFile& plugin) {
+  std::string lines;
+  for (const auto& hidden : plugin.shadowed)
+    lines += "      shadows " + hidden.string() + " (not used: the file above comes first in the search order)\n";
+  return lines;
+}
+
+// From the plugin records alone: listing runs no plugin code.
 std::string list_plugins(aco::PluginRegistry& registry) {
   std::ostringstream out;
   out << "plugins (kind/name, version, summary, file):\n";
   for (const char* kind : aco::kSlots) {
     for (const auto& name : registry.names(kind)) {
-      const auto* file = registry.find(kind, name);
+      const auto& plugin = registry.get(kind, name);
       out << "  " << kind << "/" << name;
-      try {
-        const auto& d = registry.load(kind, name);
-        out << "  " << d.version << "  " << d.summary;
-      } catch (const aco::Error& e) {
-        out << "  UNUSABLE: " << e.what();
-      }
-      out << "\n      " << file->file.string() << "\n";
+      if (plugin.unusable.empty())
+        out << "  " << plugin.record.version << "  " << plugin.record.summary;
+      else
+        out << "  UNUSABLE: " << plugin.unusable;
+      out << "\n      " << plugin.file.string() << "\n" << shadow_lines(plugin);
     }
   }
   out << "searched:";
@@ -332,7 +339,9 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
   const auto& d = registry.load(matches[0]->kind, matches[0]->name);
   std::ostringstream out;
   out << d.kind << "/" << d.name << " " << d.version << ": " << d.summary << "\n"
-      << "file: " << matches[0]->file.string() << "\n";
+      << "file: " << matches[0]->file.string() << "\n"
+      << shadow_lines(*matches[0]) << "built by: " << matches[0]->record.compiler << ", "
+      << matches[0]->record.stdlib << "\n";
   if (d.param_count == 0) {
     out << "no parameters\n";
     return out.str();

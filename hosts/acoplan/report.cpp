@@ -77,6 +77,7 @@ nlohmann::json run_json(const aco::Graph& graph, const Outcome& o) {
 nlohmann::json config_json(const Request& request, const aco::Graph& graph, const Outcome& o) {
   nlohmann::json j;
   j["config"] = nlohmann::ordered_json::parse(aco::to_json(request.run));
+  j["plugins"] = nlohmann::ordered_json::parse(aco::plugins_json(request.run, *request.registry));
   j["map"] = graph.map->name();
   j["width"] = graph.width;
   j["height"] = graph.height;

@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
     if (!svg.empty()) write(svg, acosim::render_svg(scenario, result));
     if (!html.empty()) write(html, acosim::render_html(scenario, result));
     if (vm["json"].as<bool>()) {
-      std::cout << acosim::summary_json(scenario, result) << "\n";
+      std::cout << acosim::summary_json(scenario, result, registry) << "\n";
     } else {
       std::cout << "scenario:  " << scenario_file << " (local planner " << scenario.run.pipeline.at("local").plugin << ")\n"
                 << "outcome:   " << result.outcome << (result.reason.empty() ? "" : " (" + result.reason + ")") << "\n"

@@ -9,7 +9,7 @@
 
 namespace acosim {
 
-std::string summary_json(const Scenario& scenario, const SimulationResult& r) {
+std::string summary_json(const Scenario& scenario, const SimulationResult& r, const aco::PluginRegistry& registry) {
   nlohmann::json j;
   j["scenario"] = scenario.file.string();
   j["reached"] = r.reached;
@@ -22,6 +22,7 @@ std::string summary_json(const Scenario& scenario, const SimulationResult& r) {
   j["replans"] = r.replans;
   j["steps"] = r.steps;
   j["config"] = nlohmann::json::parse(aco::to_json(scenario.run));
+  j["plugins"] = nlohmann::json::parse(aco::plugins_json(scenario.run, registry));
   for (const auto& plan : r.plans) {
     nlohmann::json points = nlohmann::json::array();
     for (const auto& p : plan) points.push_back({p.x(), p.y()});

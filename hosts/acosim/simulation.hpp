@@ -106,7 +106,8 @@ struct SimulationResult {
 SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registry);
 
 // Outputs.
-std::string summary_json(const Scenario& scenario, const SimulationResult& result);
+// The summary as JSON, with the plugins' provenance (aco::plugins_json).
+std::string summary_json(const Scenario& scenario, const SimulationResult& result, const aco::PluginRegistry& registry);
 std::string trajectory_csv(const SimulationResult& result);
 std::string render_svg(const Scenario& scenario, const SimulationResult& result);
 // A self-contained page that plays the run (play/pause, time slider); #final shows the last frame.

@@ -264,6 +264,15 @@ std::string to_json(const RunSpec& spec) {
   return j.dump();
 }
 
+std::string plugins_json(const RunSpec& spec, const PluginRegistry& registry) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::object();
+  for (const char* slot : kSlots) {
+    const auto p = registry.provenance(slot, spec.pipeline.at(slot).plugin);
+    j[slot] = {{"name", p.name}, {"version", p.version}, {"file", p.file}, {"sha256", p.sha256}};
+  }
+  return j.dump();
+}
+
 std::string KeyedValues::origin(const std::string& key) const {
   const auto it = origins.find(key);
   return it != origins.end() && !it->second.empty() ? it->second + ": " : "";

@@ -7,16 +7,21 @@
 // The class needs a constructor taking `const aco::ParameterValues&`; kParams is its parameter
 // table: a SettingsTable over a struct of the parameters (see settings_table.hpp; the
 // constructor then reads the struct with kParams.read(values)), or an array of ParamSpec rows
-// read by name (aco::no_parameters for none). The macro exports, under
-// the Boost.DLL alias aco_plugin__<kind>__<name>, a plain-data descriptor: the host reads its
-// ABI version before it touches any C++ type, and lists plugins from the alias names alone,
-// without loading them.
+// read by name (aco::no_parameters for none). VERSION and SUMMARY are string literals.
+//
+// The macro exports two things:
+// - a plugin record: plain text in the library's ".aco_plugins" section (plugin_record.hpp).
+//   Hosts list plugins and check their ABI and standard library from the file alone, without
+//   loading it, so no plugin code runs before a plugin is chosen and found compatible;
+// - under the Boost.DLL alias aco_plugin__<kind>__<name>, the descriptor: the parameter table
+//   and the factory, read once the library is loaded.
 #include <boost/dll/alias.hpp>
 #include <cstdint>
 #include <span>
 #include <type_traits>
 
 #include "aco/parameters.hpp"
+#include "aco/plugin_record.hpp"
 #include "aco/settings_table.hpp"
 #include "aco/strategies.hpp"
 
@@ -29,7 +34,11 @@ namespace aco {
 // 5: PheromoneUpdate::exploitation() removed: q0 is the colony setting ColonySettings::q0.
 // 6: the sixth slot, local (LocalPlanner, LocalView).
 // 7: LocalView::path (the rest of the global path).
-inline constexpr std::uint32_t kPluginAbiVersion = 7;
+// 8: the plugin record (section ".aco_plugins"); PluginDescriptor::compiler_abi removed (the
+//    record's standard-library marker replaces it).
+// A literal, so the record can spell it; kPluginAbiVersion is the one to use in code.
+#define ACO_FRAMEWORK_PLUGIN_ABI 8
+inline constexpr std::uint32_t kPluginAbiVersion = ACO_FRAMEWORK_PLUGIN_ABI;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
 
@@ -37,7 +46,6 @@ struct PluginDescriptor {
   // magic and abi_version are the first two fields in every ABI version.
   std::uint32_t magic;
   std::uint32_t abi_version;
-  std::uint32_t compiler_abi;  // __GXX_ABI_VERSION of the compiler that built the plugin
   const char* kind;
   const char* name;
   const char* version;
@@ -72,8 +80,10 @@ struct local { using interface = LocalPlanner; };
 
 // Tests build one plugin with another value to check that the host refuses it.
 #ifndef ACO_PLUGIN_ABI_VERSION
-#define ACO_PLUGIN_ABI_VERSION ::aco::kPluginAbiVersion
+#define ACO_PLUGIN_ABI_VERSION ACO_FRAMEWORK_PLUGIN_ABI
 #endif
+#define ACO_PLUGIN_STRINGIFY_(X) #X
+#define ACO_PLUGIN_STRINGIFY(X) ACO_PLUGIN_STRINGIFY_(X)
 
 #define ACO_PLUGIN(KIND, NAME, CLASS, VERSION, SUMMARY, PARAMS)                                           \
   namespace {                                                                                             \
@@ -82,7 +92,10 @@ struct local { using interface = LocalPlanner; };
   ::aco::Strategy* aco_plugin_create(const ::aco::ParameterValues& values) { return new CLASS(values); } \
   const ::std::span<const ::aco::ParamSpec> aco_plugin_params{::aco::parameter_rows(PARAMS)};                                    \
   const ::aco::PluginDescriptor aco_plugin_descriptor{                                                    \
-      ::aco::kPluginMagic, ACO_PLUGIN_ABI_VERSION, __GXX_ABI_VERSION, #KIND, #NAME, VERSION, SUMMARY,      \
+      ::aco::kPluginMagic, ACO_PLUGIN_ABI_VERSION, #KIND, #NAME, VERSION, SUMMARY,                        \
       aco_plugin_params.data(), aco_plugin_params.size(), &aco_plugin_create};                            \
+  [[gnu::used, gnu::section(ACO_PLUGIN_RECORD_SECTION)]] const char aco_plugin_record__##KIND##__##NAME[] =  \
+      ACO_PLUGIN_RECORD_MAGIC "\0" ACO_PLUGIN_STRINGIFY(ACO_PLUGIN_ABI_VERSION) "\0" ACO_PLUGIN_STDLIB "\0"  \
+      __VERSION__ "\0" #KIND "\0" #NAME "\0" VERSION "\0" SUMMARY;                                        \
   }                                                                                                       \
   BOOST_DLL_ALIAS(aco_plugin_descriptor, aco_plugin__##KIND##__##NAME)

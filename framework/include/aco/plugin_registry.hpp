@@ -10,6 +10,7 @@
 #include "aco/error.hpp"
 #include "aco/plugin.hpp"
 #include "aco/plugin_guard.hpp"
+#include "aco/plugin_record.hpp"
 
 namespace aco {
 
@@ -17,11 +18,25 @@ struct PluginFile {
   std::string kind;
   std::string name;
   std::filesystem::path file;
+  PluginRecord record;    // read from the file; empty fields if it has none
+  std::string unusable;   // why it must not be loaded (foreign ABI or standard library); empty if it may
+  // Files later in the search order exporting the same kind and name: this one hides them.
+  std::vector<std::filesystem::path> shadowed;
+};
+
+// Which binary a run used: enough to tell, later, whether a rerun would use the same code.
+struct PluginProvenance {
+  std::string kind;
+  std::string name;
+  std::string version;
+  std::string file;
+  std::string sha256;  // of the library file's contents, hex
 };
 
 class BOOST_SYMBOL_VISIBLE PluginRegistry {
  public:
-  // Searches the folders in order; the first plugin of a given kind and name wins.
+  // Searches the folders in order; the first plugin of a given kind and name wins (the others are
+  // kept as its `shadowed` files, and loading it warns about them).
   explicit PluginRegistry(std::vector<std::filesystem::path> search_dirs);
 
   // `extra` (e.g. --plugin-dir), then every folder of ACO_PLUGIN_PATH, then <prefix>/lib/aco/plugins
@@ -29,14 +44,21 @@ class BOOST_SYMBOL_VISIBLE PluginRegistry {
   static std::vector<std::filesystem::path> default_search_dirs(const std::vector<std::filesystem::path>& extra = {});
 
   const std::vector<std::filesystem::path>& search_dirs() const { return dirs_; }
-  // Every plugin found, read from the libraries' export tables without loading them.
+  // Every plugin found, read from the libraries' export tables and plugin records without loading
+  // them: no plugin code runs to list them.
   const std::vector<PluginFile>& available() const { return files_; }
   std::vector<std::string> names(const std::string& kind) const;
   const PluginFile* find(const std::string& kind, const std::string& name) const;
+  // find(), or an Error listing the plugins of that kind and the folders searched.
+  const PluginFile& get(const std::string& kind, const std::string& name) const;
 
-  // Loads the plugin (once) and checks it. Throws Error if it is missing, cannot be loaded,
-  // was built for another ABI, or has a malformed parameter table.
+  // Loads the plugin (once) and checks it. Throws Error if it is missing, was built for another
+  // ABI or standard library, cannot be loaded (a symbol missing), crashes while loading (tried
+  // first in a child process), or has a malformed parameter table.
   const PluginDescriptor& load(const std::string& kind, const std::string& name);
+
+  // Name, version, file and content hash of the plugin (hashed once per file, not loaded).
+  PluginProvenance provenance(const std::string& kind, const std::string& name) const;
 
   // The plugin made by its factory (whatever the factory throws becomes an Error naming it).
   std::unique_ptr<Strategy> create(const std::string& kind, const std::string& name, const ParameterValues& values);

@@ -80,6 +80,11 @@ Keys to_keys(const RunSpec& spec);  // the same as text
 std::string to_json(const RunSpec& spec);
 RunSpec run_spec_from_json(const std::string& json, PluginRegistry& registry);
 
+// Which plugin binary fills each slot of the run, as one JSON object
+// ({"update": {"name": "acs", "version": "1.0", "file": "...", "sha256": "..."}, ...}): what a
+// run's output records so that a result can be traced to the code that made it.
+std::string plugins_json(const RunSpec& spec, const PluginRegistry& registry);
+
 // The keys of a config file as acoplan --config reads it (key = value lines, [slot] sections
 // for slot.key; # comments), unchecked: resolve_run() checks them. Throws an Error naming the
 // file if it cannot be read or parsed.

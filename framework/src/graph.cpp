@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <limits>
 
 #include "aco/error.hpp"
+#include "aco/memory_limit.hpp"
 
 namespace aco {
 namespace {
@@ -89,6 +91,13 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
     throw Error("16-neighbourhood needs a map at least 3 cells long in one direction and 2 in the other; " + map.name() +
                 " is " + std::to_string(g.width) + "x" + std::to_string(g.height));
   const int moves = static_cast<int>(options.neighbourhood);
+  check_planning_memory(g.width, g.height, options.neighbourhood, map.name());
+  // Node and edge ids are 32-bit: a map with more cells or possible edges than that (reachable
+  // only with a raised memory limit) is refused instead of overflowing them.
+  const std::int64_t cells = std::int64_t{g.width} * g.height;
+  if (cells * moves > std::numeric_limits<EdgeId>::max())
+    throw Error(map.name() + ": " + std::to_string(g.width) + "x" + std::to_string(g.height) + " cells with the " +
+                std::to_string(moves) + "-neighbourhood exceed the graph's 32-bit node and edge ids");
   const int n = g.num_nodes();
   g.offsets.assign(n + 1, 0);
   g.move_mask.assign(n, 0);

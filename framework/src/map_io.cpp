@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/memory_limit.hpp"
 
 namespace aco {
 namespace {
@@ -79,6 +80,12 @@ double parse_real(const LineReader& reader, const std::string& text, const std::
   return value;
 }
 
+// Called with the size a header claims, before anything of that size is allocated. The
+// neighbourhood is not known yet: the leanest is checked here, the run's in build_graph().
+void check_memory(std::int64_t width, std::int64_t height, const std::string& name) {
+  check_planning_memory(width, height, Neighbourhood::four, name);
+}
+
 std::string lower_case(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
   return text;
@@ -125,6 +132,7 @@ OccupancyGrid read_movingai_map(std::istream& in, const std::string& name) {
     else reader.fail("bad header line '" + line + "': expected 'type octile', 'height H', 'width W' or 'map'");
   }
   if (!typed || width == 0 || height == 0) reader.fail("header lacks a 'type', 'height' or 'width' line before 'map'");
+  check_memory(width, height, name);
   OccupancyGrid grid(width, height, name);
   for (int y = 0; y < height; ++y) {
     if (!reader.next(line))
@@ -168,6 +176,7 @@ OccupancyGrid read_matrix_map(std::istream& in, const std::string& name) {
     if (!rows.empty() && row.size() != rows.front().size())
       reader.fail("row has " + std::to_string(row.size()) + " values, the first row has " +
                   std::to_string(rows.front().size()));
+    check_memory(static_cast<std::int64_t>(row.size()), static_cast<std::int64_t>(rows.size()) + 1, name);
     rows.push_back(std::move(row));
   }
   if (rows.empty()) throw Error(name + ": no matrix rows (expected lines of 0/1 values)");
@@ -179,7 +188,10 @@ OccupancyGrid read_matrix_map(std::istream& in, const std::string& name) {
 
 GreyImage load_pgm(const std::filesystem::path& file) {
   std::ifstream in = open(file);
-  const std::string name = file.string();
+  return read_pgm(in, file.string());
+}
+
+GreyImage read_pgm(std::istream& in, const std::string& name) {
   // Header tokens, skipping '#' comments.
   auto token = [&]() {
     std::string t;
@@ -203,6 +215,7 @@ GreyImage load_pgm(const std::filesystem::path& file) {
   if (!parse_number(w, image.width) || !parse_number(h, image.height) || !parse_number(m, image.maxval) ||
       image.width <= 0 || image.height <= 0 || image.maxval <= 0 || image.maxval > 65535)
     throw Error(name + ": bad PGM header (width '" + w + "', height '" + h + "', maxval '" + m + "')");
+  check_memory(image.width, image.height, name);
   const std::size_t count = static_cast<std::size_t>(image.width) * image.height;
   image.pixels.resize(count);
   if (magic == "P5") {
@@ -331,6 +344,7 @@ TerrainMap read_esri_ascii(std::istream& in, const std::string& name, const Terr
     return header.count(axis + "llcorner") ? header[axis + "llcorner"] : header[axis + "llcenter"] - cell_size / 2;
   };
   const Eigen::Vector2d corner(lower_left("x"), lower_left("y"));
+  check_memory(ncols, nrows, name);
 
   const std::size_t expected = static_cast<std::size_t>(ncols) * nrows;
   std::vector<double> heights;
@@ -360,14 +374,19 @@ TerrainMap load_esri_ascii(const std::filesystem::path& file, const TerrainOptio
   return read_esri_ascii(in, file.string(), options);
 }
 
-TerrainMap load_height_pgm(const std::filesystem::path& file, const TerrainOptions& options) {
+TerrainMap read_height_pgm(std::istream& in, const std::string& name, const TerrainOptions& options) {
   if (!(options.height_scale > 0) || !std::isfinite(options.height_scale))
-    throw Error(file.string() + ": height scale " + std::to_string(options.height_scale) + " is not a positive number");
-  const GreyImage image = load_pgm(file);
+    throw Error(name + ": height scale " + std::to_string(options.height_scale) + " is not a positive number");
+  const GreyImage image = read_pgm(in, name);
   std::vector<double> heights(image.pixels.size());
   std::transform(image.pixels.begin(), image.pixels.end(), heights.begin(),
                  [&](int grey) { return grey * options.height_scale; });
-  return TerrainMap(image.width, image.height, options.cell_size, std::move(heights), options.max_slope_deg, file.string());
+  return TerrainMap(image.width, image.height, options.cell_size, std::move(heights), options.max_slope_deg, name);
+}
+
+TerrainMap load_height_pgm(const std::filesystem::path& file, const TerrainOptions& options) {
+  std::ifstream in = open(file);
+  return read_height_pgm(in, file.string(), options);
 }
 
 std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain) {

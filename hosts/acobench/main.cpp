@@ -10,6 +10,7 @@
 
 #include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
+#include "aco/memory_limit.hpp"
 #include "experiment.hpp"
 #include "report.hpp"
 #include "runner.hpp"
@@ -21,8 +22,10 @@ namespace {
 constexpr const char* kUsage =
     "acobench: fair, reproducible comparisons of ant-colony plugin combinations.\n\n"
     "Usage:\n"
-    "  acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--plugin-dir DIR]\n"
-    "      run every trial the database does not hold yet (rerun the same command to continue)\n"
+    "  acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--plugin-dir DIR] [--max-memory SIZE]\n"
+    "      run every trial the database does not hold yet (rerun the same command to continue);\n"
+    "      --max-memory: refuse maps whose planning would need more (512M, 4G; default: 3/4 of the\n"
+    "      memory available at start)\n"
     "  acobench report DATABASE [--out DIR]\n"
     "      statistics, Markdown and HTML report, CSV of all runs\n\n";
 
@@ -78,13 +81,17 @@ int run(const std::vector<std::string>& args) {
   options.add_options()("experiment", po::value<std::string>()->required(), "experiment file (YAML)")
       ("db", po::value(&db), "results database (default: the experiment file's name with .db, in the current folder)")
       ("threads", po::value(&threads), "worker threads, 0 = all cores; results do not depend on it")
-      ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins");
+      ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins")
+      ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
   po::positional_options_description positional;
   positional.add("experiment", 1);
   po::variables_map vm;
   po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
   po::notify(vm);
   if (threads < 0) throw aco::Error("--threads must be >= 0");
+  std::optional<std::uint64_t> max_memory;
+  if (vm.count("max-memory")) max_memory = aco::parse_memory_size(vm["max-memory"].as<std::string>());
+  const aco::MemoryLimit memory(max_memory);
   const std::filesystem::path file = vm["experiment"].as<std::string>();
   std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
   aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));

@@ -8,6 +8,7 @@
 
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
+#include "aco/memory_limit.hpp"
 #include "aco/svg.hpp"
 #include "aco/thread_limit.hpp"
 #include "irace.hpp"
@@ -61,6 +62,7 @@ void dump_irace_params(acoplan::Request& r, std::ostream& out) {
 }
 
 int plan(const acoplan::Request& r, std::ostream& out) {
+  const aco::MemoryLimit memory(r.max_memory);
   const aco::LoadedProblem problem = aco::load_problem(r.run.problem);
   const aco::Graph graph = aco::build_graph(*problem.map, r.run.graph);
   const aco::ThreadLimit threads(r.host.integer("threads"));

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/memory_limit.hpp"
 #include "aco/planning.hpp"
 
 namespace acoplan {
@@ -182,7 +183,8 @@ Request parse_command_line(int argc, const char* const* argv) {
       ("list-plugins", po::bool_switch(), "list the plugins found and exit")
       ("describe", po::value<std::string>()->value_name("NAME"), "print a plugin's parameter table and exit")
       ("plugin-dir", po::value<std::vector<std::string>>()->composing()->value_name("DIR"),
-       "also search DIR for plugins (before ACO_PLUGIN_PATH and the default folders)");
+       "also search DIR for plugins (before ACO_PLUGIN_PATH and the default folders)")
+      ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
   add_table(general, kHostParameters, "");
   po::options_description problem("Problem and graph");
   add_table(problem, std::span(&aco::planner_parameter(), 1), "");
@@ -277,6 +279,7 @@ Request parse_command_line(int argc, const char* const* argv) {
     collect(vm, kHostParameters, "", host);
     r.host = aco::resolve(kHostParameters, host, "--");
     if (auto v = text(vm, "svg")) r.svg = *v;
+    if (auto v = text(vm, "max-memory")) r.max_memory = aco::parse_memory_size(*v);
     r.json = vm["json"].as<bool>();
     r.irace = vm["irace"].as<bool>();
     if (vm["print-config"].as<bool>()) {

@@ -2,6 +2,7 @@
 // acoplan's options: its own settings, then the run's keys (aco/run_spec.hpp) as options: the
 // problem, the graph, the planner, the colony, one flag per slot, and one option group per loaded
 // plugin and per baseline planner built from its parameter table (--update.rho ...).
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -25,7 +26,8 @@ struct Request {
 
   std::optional<std::filesystem::path> svg;
   bool json = false;
-  bool irace = false;  // print only the cost (mean length, kIraceUnsolvedCost if unsolved) and exit 0
+  bool irace = false;
+  std::optional<std::uint64_t> max_memory;  // --max-memory in bytes; none: the default limit  // print only the cost (mean length, kIraceUnsolvedCost if unsolved) and exit 0
 
   aco::ParameterValues host;  // acoplan's own settings: threads, svg-pheromone, repeat
   aco::RunSpec run;           // everything else, resolved once

@@ -6,6 +6,7 @@
 
 #include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
+#include "aco/memory_limit.hpp"
 #include "aco/thread_limit.hpp"
 #include "batch.hpp"
 #include "simulation.hpp"
@@ -41,7 +42,8 @@ int main(int argc, char** argv) {
         ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch or --variation: the variations' seed")
         ("variation", po::value<int>()->value_name("K"), "run variation K (0-based) of --batch's, with every output")
         ("threads", po::value<int>()->default_value(0), "with --batch: worker threads, 0 = all cores; results do not depend on it")
-        ("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"), "also search DIR for plugins");
+        ("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"), "also search DIR for plugins")
+        ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
     po::options_description hidden;
     hidden.add_options()("scenario", po::value(&scenario_file));
     po::options_description all;
@@ -56,6 +58,9 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (scenario_file.empty()) throw aco::Error("no scenario file (acosim SCENARIO.yaml; --help for options)");
+    std::optional<std::uint64_t> max_memory;
+    if (vm.count("max-memory")) max_memory = aco::parse_memory_size(vm["max-memory"].as<std::string>());
+    const aco::MemoryLimit memory(max_memory);
 
     std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
     aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));

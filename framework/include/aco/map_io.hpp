@@ -27,6 +27,7 @@ struct GreyImage {
   std::vector<int> pixels;
 };
 GreyImage load_pgm(const std::filesystem::path& file);
+GreyImage read_pgm(std::istream& in, const std::string& name);
 
 // ESRI ASCII grid (.asc): header lines "KEY VALUE" in any order, keys case-insensitive: ncols,
 // nrows, xllcorner or xllcenter, yllcorner or yllcenter, cellsize, optionally NODATA_value
@@ -38,6 +39,7 @@ TerrainMap load_esri_ascii(const std::filesystem::path& file, const TerrainOptio
 // A PGM image as a height map: height = grey value * options.height_scale, cell size
 // options.cell_size. Every pixel has data.
 TerrainMap load_height_pgm(const std::filesystem::path& file, const TerrainOptions& options);
+TerrainMap read_height_pgm(std::istream& in, const std::string& name, const TerrainOptions& options);
 
 // By extension: .map (Moving AI), .yaml/.yml (ROS), .asc (ESRI ASCII terrain), .pgm (height
 // image terrain), anything else the 0/1 matrix. `terrain` applies to the two terrain formats only.

@@ -1,0 +1,57 @@
+#pragma once
+// Maps too large for the machine are refused before they are allocated: a hostile or mistaken
+// header ("width 20000, height 20000") would otherwise fill the memory for minutes and then
+// fail, or take the machine down with it. Loaders check the size a header claims; build_graph()
+// checks again with the run's neighbourhood. Hosts set the limit with --max-memory.
+#include <boost/config.hpp>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "aco/graph.hpp"
+
+namespace aco {
+
+// Bytes that planning on a width x height map takes with this neighbourhood, every cell free
+// (the worst case): the grid or terrain, the graph, the colony's per-edge fields (pheromone and
+// heuristic) and the per-node search arrays. Measured, not derived from sizeof alone (see
+// memory_limit.cpp). Exact in 64 bits for any int width and height.
+BOOST_SYMBOL_VISIBLE std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height,
+                                                            Neighbourhood neighbourhood);
+
+// The limit in force: a MemoryLimit's while one lives, else default_memory_limit().
+BOOST_SYMBOL_VISIBLE std::uint64_t memory_limit();
+// 3/4 of the memory available when the process first asks (MemAvailable of /proc/meminfo, or
+// the physical memory from sysconf where that file cannot be read; 4 GiB if neither can).
+BOOST_SYMBOL_VISIBLE std::uint64_t default_memory_limit();
+
+// Refuses (Error naming `name`, the estimate and the limit) a map whose planning would need
+// more than the limit.
+BOOST_SYMBOL_VISIBLE void check_planning_memory(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood,
+                                                const std::string& name);
+
+// A size as --max-memory takes it: bytes ("1048576") or a whole number with a binary unit K, M,
+// G or T, optionally followed by B or iB, any case ("512M", "4G", "2GiB"). Zero, negative,
+// fractional, overflowing or unknown-unit sizes are an Error naming `option`.
+BOOST_SYMBOL_VISIBLE std::uint64_t parse_memory_size(const std::string& text, const std::string& option = "--max-memory");
+// The --max-memory option's help, the same in every host.
+inline constexpr const char* kMaxMemoryHelp =
+    "refuse maps whose planning would need more memory than SIZE (bytes, or with K, M, G, T: 512M, 4G); "
+    "default: 3/4 of the memory available at start";
+// "1.5 GiB", "512 MiB", "100 bytes".
+BOOST_SYMBOL_VISIBLE std::string format_bytes(std::uint64_t bytes);
+
+// The hosts' --max-memory: this limit while the object lives (none given: the default stays).
+// Process-wide; the previous limit comes back at destruction.
+class BOOST_SYMBOL_VISIBLE MemoryLimit {
+ public:
+  explicit MemoryLimit(std::optional<std::uint64_t> bytes);
+  ~MemoryLimit();
+  MemoryLimit(const MemoryLimit&) = delete;
+  MemoryLimit& operator=(const MemoryLimit&) = delete;
+
+ private:
+  std::uint64_t previous_;  // 0: the default
+};
+
+}  // namespace aco

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# libFuzzer runs of every loader and parser of hostile input (tests/fuzz/targets.cpp) under
+# AddressSanitizer and UndefinedBehaviorSanitizer; builds the "fuzz" preset (clang) first.
+#   tools/fuzz.sh short          CI: each harness for FUZZ_SECONDS (default 15) seconds, one at a time
+#   tools/fuzz.sh long [RUNS]    RUNS executions per harness (default 1000000), two at a time, niced
+#   tools/fuzz.sh TARGET [libFuzzer options...]   one harness, e.g. tools/fuzz.sh esri_ascii -runs=1000
+# FUZZ_TARGETS="esri_ascii pgm_heights" limits short and long runs (and the build) to those.
+# Seeds: the small files of data/ (and ../shared/data) of each format, tests/fuzz/corpus/<target>
+# and the regression inputs. A crash leaves its input in build/fuzz/crashes/<target>/: fix the
+# loader, then keep the input in tests/fuzz/regressions/<target>/, which the test suite replays.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode="${1:-short}"
+shift || true
+read -r -a targets <<<"${FUZZ_TARGETS:-movingai_map movingai_scen matrix_map ros_map esri_ascii pgm_heights ini_config experiment}"
+[[ "$mode" =~ ^(short|long)$ ]] || targets=("$mode")
+out=build/fuzz
+
+tools/setup.sh
+cmake --preset fuzz >/dev/null
+nice -n 10 cmake --build --preset fuzz -j 2 --target "${targets[@]/#/fuzz_}"
+
+# The seed files of a target's format: small ones only, so each input runs quickly.
+seed_files() {
+  local shared=../shared/data
+  case "$1" in
+    movingai_map) find data/maps data/terrain "$shared/movingai" -name '*.map' ;;
+    movingai_scen) find data/maps data/terrain -name '*.scen' ;;
+    matrix_map) find data/maps/classic20 "$shared/classic20" -name '*.txt' ;;
+    esri_ascii) find data/terrain -name '*.asc' ;;
+    ini_config) find data/presets data/scenarios -name '*.ini' ;;
+    experiment) find data/experiments -name '*.yaml' ;;
+  esac 2>/dev/null | while read -r f; do
+    if [ "$(stat -c %s "$f")" -le 65536 ]; then echo "$f"; fi
+  done
+  for dir in tests/fuzz/corpus/"$1" tests/fuzz/regressions/"$1"; do
+    [ -d "$dir" ] && find "$dir" -type f
+  done
+  return 0
+}
+
+# Runs one harness with extra libFuzzer options; its log goes to build/fuzz/logs/<target>.log.
+run_target() {
+  local target="$1"
+  shift
+  local seeds="$out/seeds/$target" corpus="$out/corpus/$target" crashes="$out/crashes/$target"
+  rm -rf "$seeds"
+  mkdir -p "$seeds" "$corpus" "$crashes" "$out/logs"
+  seed_files "$target" | while read -r f; do cp "$f" "$seeds/$(echo "$f" | tr / _)"; done
+  # -rss_limit_mb / -malloc_limit_mb: the harness sets a 32 MiB planning-memory limit, so a
+  # huge header must be refused, never allocated; 2 GiB means a loader ignored it.
+  local status=0
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    nice -n 10 "$out/tests/fuzz/fuzz_$target" "$corpus" "$seeds" -rss_limit_mb=2048 -malloc_limit_mb=2048 \
+    -timeout=20 -print_final_stats=1 -artifact_prefix="$crashes/" "$@" >"$out/logs/$target.log" 2>&1 || status=$?
+  echo "$status" >"$out/logs/$target.status"
+}
+
+# One line per harness: executions, seconds, and whether it crashed.
+summary() {
+  local target="$1" status log="$out/logs/$1.log"
+  status=$(cat "$out/logs/$target.status")
+  local runs seconds
+  runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+  seconds=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | grep -o 'in [0-9]*' | grep -o '[0-9]*' || echo "?")
+  if [ "$status" -eq 0 ]; then
+    printf 'fuzz: %-14s %10s executions in %5s s, no crash\n' "$target" "$runs" "$seconds"
+  else
+    printf 'fuzz: %-14s FAILED (exit %s), see %s and %s\n' "$target" "$status" "$log" "$out/crashes/$target/"
+    return 1
+  fi
+}
+
+failed=0
+case "$mode" in
+  short)
+    for target in "${targets[@]}"; do
+      run_target "$target" -max_total_time="${FUZZ_SECONDS:-15}" "$@"
+      summary "$target" || failed=1
+    done
+    ;;
+  long)
+    runs="${1:-1000000}"
+    for target in "${targets[@]}"; do
+      while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n || true; done
+      run_target "$target" -runs="$runs" &
+    done
+    wait
+    for target in "${targets[@]}"; do summary "$target" || failed=1; done
+    ;;
+  *)
+    run_target "$mode" "$@"
+    summary "$mode" || failed=1
+    ;;
+esac
+exit "$failed"

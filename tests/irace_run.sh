@@ -24,7 +24,7 @@ mean=$(sed -n 's/^Best-so-far configuration: *[0-9]* *mean value: *\([0-9.e+]*\)
 echo "best mean cost: $mean"
 awk -v m="$mean" 'BEGIN { exit !(m != "" && m > 0 && m < 1e9) }' || fail "best mean cost '$mean' is not a solved run's"
 
-options=$(cat "$work/tuning/best-options.txt")
+options=$(cat "$work/tuning/best-options.txt") || fail "run.sh wrote no best-options.txt"
 echo "best configuration: $options"
 [[ "$options" == *"--update "* && "$options" == *"--heuristic "* ]] || fail "best configuration has no plugin choice"
 # shellcheck disable=SC2086  # the options are words

@@ -6,7 +6,7 @@
 # ACOPLAN, ACOPLAN_OPTIONS: as for target-runner. An option set in ACOPLAN_OPTIONS is fixed, so
 # its line is taken out of the parameter file (acoplan refuses an option given twice).
 # Leaves in TUNING_DIR: parameters.txt, forbidden.txt, irace.log (irace's output), irace.Rdata,
-# and best-options.txt: the acoplan options of the best configuration, one line.
+# and best-options.txt: the acoplan options of the best configuration, one line (when irace raced).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 slots=()
@@ -54,12 +54,14 @@ done < "$here/forbidden.txt"
 Rscript -e 'irace::irace.cmdline()' --scenario "$here/scenario.txt" --exec-dir "$dir" \
   --parameter-file "$dir/parameters.txt" --forbidden-file "$dir/forbidden.txt" "$@" | tee "$dir/irace.log"
 
-# irace ends with the elites as command lines, best first: "ID  --switch value ...".
-awk '/^# Best configurations as commandlines/ { getline; sub(/^[0-9]+ +/, ""); print; exit }' \
-  "$dir/irace.log" > "$dir/best-options.txt"
-if [ ! -s "$dir/best-options.txt" ]; then
-  echo "run.sh: irace gave no best configuration (see $dir/irace.log)" >&2
-  exit 1
+# irace ends with the elites as command lines, best first: "ID  --switch value ...". A run that
+# raced nothing (--check, --help) has none; a failed one stopped above (irace exits non-zero).
+best="$(awk '/^# Best configurations as commandlines/ { getline; sub(/^[0-9]+ +/, ""); print; exit }' "$dir/irace.log")"
+rm -f "$dir/best-options.txt"
+if [ -z "$best" ]; then
+  echo "run.sh: irace raced nothing, so there is no best configuration"
+  exit 0
 fi
+echo "$best" > "$dir/best-options.txt"
 echo "best configuration as acoplan options (in $dir/best-options.txt):"
-cat "$dir/best-options.txt"
+echo "$best"

@@ -1,6 +1,6 @@
 // Tuning hook-up: acoplan --irace (the cost line), --dump-irace-params (irace's parameter file)
-// and tools/irace/target-runner. irace itself (an R package) is not installed: these tests check
-// the file's syntax and that every value irace may sample is one acoplan accepts.
+// and tools/irace/target-runner: the file's syntax and that every value irace may sample is one
+// acoplan accepts. A real irace run is the test irace_tuning_run (tests/irace_run.sh).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>

@@ -7,14 +7,23 @@ set -euo pipefail
 packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
           nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev catch2 clang libclang-rt-14-dev
           chromium python3)
-missing=()
-for package in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-done
-if ((${#missing[@]})); then
+# r-cran-irace: tools/irace/run.sh and the irace_tuning_run test. Installed without its
+# recommended packages: they pull in hundreds of R packages (GDAL, spatial statistics) irace never loads.
+packages_without_recommends=(r-cran-irace)
+
+missing() {
+  for package in "$@"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || echo "$package"
+  done
+}
+mapfile -t missing_packages < <(missing "${packages[@]}")
+mapfile -t missing_without_recommends < <(missing "${packages_without_recommends[@]}")
+if ((${#missing_packages[@]} + ${#missing_without_recommends[@]})); then
   sudo=""
   [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  echo "setup: installing ${missing[*]}"
+  echo "setup: installing ${missing_packages[*]} ${missing_without_recommends[*]}"
   $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+  install() { DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "$@" >/dev/null; }
+  ((${#missing_packages[@]} == 0)) || install "${missing_packages[@]}"
+  ((${#missing_without_recommends[@]} == 0)) || install --no-install-recommends "${missing_without_recommends[@]}"
 fi

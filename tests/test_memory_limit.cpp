@@ -23,7 +23,17 @@ constexpr const char* kHugePgm = "P5\n100000 100000\n255\nabc";
 
 const std::string kHugeEstimate = aco::format_bytes(aco::planning_memory_estimate(100000, 100000, aco::Neighbourhood::four));
 
-auto refused_with_estimate() { return Contains("100000x100000") && Contains(kHugeEstimate) && Contains("memory limit"); }
+// One matcher class, not Contains(...) && Contains(...) returned from a function: Catch2's
+// composed matchers hold references to their parts, which would not outlive the function.
+struct RefusedWithEstimate : Catch::MatcherBase<std::string> {
+  bool match(const std::string& message) const override {
+    for (const std::string& part : {std::string("100000x100000"), kHugeEstimate, std::string("memory limit")})
+      if (message.find(part) == std::string::npos) return false;
+    return true;
+  }
+  std::string describe() const override { return "is a refusal of the 100000x100000 map with its estimate " + kHugeEstimate; }
+};
+RefusedWithEstimate refused_with_estimate() { return {}; }
 
 std::string acosim() { return ACO_TEST_ACOSIM; }
 

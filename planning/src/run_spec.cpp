@@ -281,8 +281,10 @@ std::string KeyedValues::origin(const std::string& key) const {
 KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
   KeyedValues c = base;
   for (const auto& [key, value] : changes.keys)
-    if (std::find(kSlots.begin(), kSlots.end(), key) != kSlots.end() && c.keys.count(key) && c.keys.at(key) != value)
-      std::erase_if(c.keys, [&key](const auto& kv) { return kv.first.rfind(key + ".", 0) == 0; });
+    if (std::find(kSlots.begin(), kSlots.end(), key) != kSlots.end() && c.keys.count(key) && c.keys.at(key) != value) {
+      const std::string prefix = key + ".";  // clang 14 (the fuzz build) cannot capture a structured binding
+      std::erase_if(c.keys, [&prefix](const auto& kv) { return kv.first.rfind(prefix, 0) == 0; });
+    }
   for (const auto& [key, value] : changes.keys) {
     c.keys[key] = value;
     c.origins[key] = changes.origins.count(key) ? changes.origins.at(key) : "";

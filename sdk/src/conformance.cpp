@@ -252,10 +252,11 @@ struct Trace {
     sections.emplace_back(values.size(), section + ": " + what);
     add(v);
   }
-  std::string section_at(std::size_t index) const {
-    std::string label;
+  // "open: tau after start(): value 12", for the value at `index`.
+  std::string describe(std::size_t index) const {
+    std::string label = "value " + std::to_string(index);
     for (const auto& [start, name] : sections)
-      if (start <= index) label = name;
+      if (start <= index) label = name + ": value " + std::to_string(index - start);
     return label;
   }
 };
@@ -269,7 +270,7 @@ std::string difference(const Trace& a, const Trace& b) {
   const std::size_t n = std::min(a.values.size(), b.values.size());
   for (std::size_t i = 0; i < n; ++i)
     if (!same_bits(std::span(a.values).subspan(i, 1), std::span(b.values).subspan(i, 1)))
-      return a.section_at(i) + ": value " + std::to_string(i) + " is " + number(a.values[i]) + " in one run and " +
+      return a.describe(i) + " is " + number(a.values[i]) + " in one run and " +
              number(b.values[i]) + " in the other";
   if (a.values.size() != b.values.size())
     return "one run produced " + std::to_string(a.values.size()) + " values, the other " + std::to_string(b.values.size());

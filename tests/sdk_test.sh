@@ -1,21 +1,50 @@
 #!/usr/bin/env bash
-# SDK check: install the framework, scaffold one out-of-tree plugin of every kind with
-# tools/new-plugin.sh, build them against the installed package, and plan with all six (acoplan loads the local one, acosim drives with it).
+# SDK check: install the framework into a temporary prefix, then with the installed tools only:
+# scaffold one out-of-tree plugin of every kind with aco-new-plugin, build them and run their
+# generated unit tests, build examples/ against the prefix and run their tests, run
+# aco-plugin-check on the example and on every installed bundled plugin, and plan with all of
+# them in installed acoplan (acosim's local slot included). The installed host must find the
+# installed plugins and data only, never the build tree's.
+#   tests/sdk_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
+unset ACO_PLUGIN_PATH
 build=$1 source=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-cmake --install "$build" --prefix "$work/prefix" >/dev/null
+prefix="$work/prefix"
+cmake --install "$build" --prefix "$prefix" >/dev/null
+bin="$prefix/bin"
+for tool in acoplan aco-new-plugin aco-plugin-check; do
+  [ -x "$bin/$tool" ] || { echo "sdk: $tool is not installed in bin/" >&2; exit 1; }
+done
+
+# One scaffold of every kind, built together, each with its generated unit test.
 mkdir -p "$work/plugins"
-echo 'cmake_minimum_required(VERSION 3.25)
-project(my_plugins LANGUAGES CXX)' > "$work/plugins/CMakeLists.txt"
+printf 'cmake_minimum_required(VERSION 3.25)\nproject(my_plugins LANGUAGES CXX)\nenable_testing()\n' > "$work/plugins/CMakeLists.txt"
 for kind in init heuristic update deadlock smoother local; do
-  "$source/tools/new-plugin.sh" "$kind" "my_$kind" "$work/plugins/$kind" >/dev/null
+  "$bin/aco-new-plugin" "$kind" "my_$kind" "$work/plugins/$kind" >/dev/null
   echo "add_subdirectory($kind)" >> "$work/plugins/CMakeLists.txt"
 done
-cmake -S "$work/plugins" -B "$work/build" -DCMAKE_PREFIX_PATH="$work/prefix" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S "$work/plugins" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 cmake --build "$work/build" -j 2 >/dev/null
-acoplan="$work/prefix/bin/acoplan"
+ctest --test-dir "$work/build" --output-on-failure > "$work/scaffold-tests.log" || { cat "$work/scaffold-tests.log" >&2; exit 1; }
+grep -q "100% tests passed, 0 tests failed out of 6" "$work/scaffold-tests.log"
+
+# The example plugin, against the installed package, with its own unit test.
+cmake -S "$source/examples/rank_based_as" -B "$work/rank_based_as" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build "$work/rank_based_as" -j 2 >/dev/null
+ctest --test-dir "$work/rank_based_as" --output-on-failure >/dev/null
+example="$work/rank_based_as/plugins/aco_update_rank_based_as.so"
+
+# The conformance checks on the example and on every installed bundled plugin.
+"$bin/aco-plugin-check" "$example" > "$work/check-example.log"
+grep -q "^PASS update/rank_based_as \[w=1\] threads" "$work/check-example.log"
+"$bin/aco-plugin-check" "$prefix"/lib/aco/plugins/*.so > "$work/check-bundled.log" ||
+  { grep -v "^PASS" "$work/check-bundled.log" >&2; exit 1; }
+[ "$(grep -c "^PASS update/ant_system \[defaults\]" "$work/check-bundled.log")" = 3 ]
+
+# Planning with the installed host: the six scaffolds, then the example.
+acoplan="$bin/acoplan"
 listed=$("$acoplan" --plugin-dir "$work/build/plugins" --list-plugins)
 grep -q "heuristic/my_heuristic  0.1" <<< "$listed"
 out=$("$acoplan" --plugin-dir "$work/build/plugins" --init my_init --heuristic my_heuristic --heuristic.value 2 \
@@ -23,17 +52,32 @@ out=$("$acoplan" --plugin-dir "$work/build/plugins" --init my_init --heuristic m
 grep -q '"solved":true' <<< "$out"
 grep -q '"heuristic":"my_heuristic","heuristic.value":2.0' <<< "$out"
 grep -q '"local":"my_local"' <<< "$out"
-# The installed host uses the plugins installed next to it.
+out=$("$acoplan" --plugin-dir "$work/rank_based_as/plugins" --update rank_based_as --update.w 4 --json)
+grep -q '"solved":true' <<< "$out"
+grep -q '"update":"rank_based_as","update.q":1.0,"update.rho":0.1,"update.w":4' <<< "$out"
+
+# The installed host uses the plugins and data installed with it, and nothing of the build tree:
+# every plugin it lists is an installed file, the folders it searches are the installed one and
+# the ones it was given, and its default map is the installed copy.
+files=$("$acoplan" --list-plugins | sed -n 's/.*  \(\/.*\.so\)$/\1/p')
+[ -n "$files" ]
+if grep -v "^$prefix/lib/aco/plugins/" <<< "$files"; then echo "sdk: installed acoplan lists plugins outside its prefix" >&2; exit 1; fi
 described=$("$acoplan" --describe update/max_min)
-grep -q "file: $work/prefix/lib/aco/plugins/aco_update_max_min.so" <<< "$described"
-# The scaffold refuses to write over a project, warns on a bundled plugin's name, and builds
-# optimised when no build type is given.
+grep -q "file: $prefix/lib/aco/plugins/aco_update_max_min.so" <<< "$described"
+searched=$("$acoplan" --update no_such_rule 2>&1 >/dev/null || true)
+grep -q "searched: $prefix/lib/aco/plugins)" <<< "$searched"
+if grep -q "$build" <<< "$searched"; then echo "sdk: installed acoplan searches the build tree: $searched" >&2; exit 1; fi
+(cd "$work" && "$acoplan" --iterations 2 --json) | grep -q "\"map\":\"$prefix/share/aco/maps/classic20/map1.txt\""
+
+# The scaffold refuses to write over a project, warns on a bundled plugin's name (installed and
+# in the checkout), and builds optimised when no build type is given.
 before=$(cat "$work/plugins/update/my_update.cpp")
-if "$source/tools/new-plugin.sh" update my_update "$work/plugins/update" 2>/dev/null; then
-  echo "sdk: new-plugin.sh wrote over an existing project" >&2; exit 1
+if "$bin/aco-new-plugin" update my_update "$work/plugins/update" 2>/dev/null; then
+  echo "sdk: aco-new-plugin wrote over an existing project" >&2; exit 1
 fi
 [ "$before" = "$(cat "$work/plugins/update/my_update.cpp")" ]
-"$source/tools/new-plugin.sh" update ant_system "$work/shadow" 2>&1 >/dev/null | grep -q "also a bundled plugin"
-cmake -S "$work/shadow" -B "$work/shadow/build" -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+"$bin/aco-new-plugin" update ant_system "$work/shadow" 2>&1 >/dev/null | grep -q "also a bundled plugin"
+"$source/tools/new-plugin.sh" update ant_system "$work/shadow2" 2>&1 >/dev/null | grep -q "also a bundled plugin"
+cmake -S "$work/shadow" -B "$work/shadow/build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 grep -q "CMAKE_BUILD_TYPE:STRING=Release" "$work/shadow/build/CMakeCache.txt"
 echo "sdk: ok"

@@ -1,44 +1,97 @@
 #!/usr/bin/env bash
-# Scaffolds an out-of-tree plugin project that builds against an installed aco SDK:
-#   tools/new-plugin.sh KIND NAME DIR      (KIND: init, heuristic, update, deadlock, smoother, local)
+# Scaffolds an out-of-tree plugin project that builds against an installed aco SDK; installed as
+# <prefix>/bin/aco-new-plugin:
+#   aco-new-plugin KIND NAME DIR      (KIND: init, heuristic, update, deadlock, smoother, local)
 # then: cmake -S DIR -B DIR/build -DCMAKE_PREFIX_PATH=<aco prefix> && cmake --build DIR/build
+#       ctest --test-dir DIR/build                  (the generated unit test: Catch2, aco/testing.hpp)
 #       acoplan --plugin-dir DIR/build/plugins --KIND NAME
-# The generated class compiles and runs as it is; replace its one method with your idea.
+# The generated class and its test compile and pass as they are; replace its one method with
+# your idea and the test's example with what your idea must do.
 set -euo pipefail
-if [ $# -ne 3 ]; then echo "usage: $0 KIND NAME DIR" >&2; exit 2; fi
+me=$(basename "$0")
+if [ $# -ne 3 ]; then echo "usage: $me KIND NAME DIR" >&2; exit 2; fi
 kind=$1 name=$2 dir=$3
-[[ "$name" =~ ^[a-z][a-z0-9_]*$ ]] || { echo "new-plugin: NAME must be lower_case_with_underscores" >&2; exit 2; }
+[[ "$name" =~ ^[a-z][a-z0-9_]*$ ]] || { echo "$me: NAME must be lower_case_with_underscores" >&2; exit 2; }
 case "$kind" in
   init) interface=PheromoneInit; method='  void initialize(const aco::Context&, std::span<double> tau) override {
     for (double& t : tau) t = p_.value;
-  }' ;;
+  }'
+  example="sets every edge to --init.value"
+  test='  auto plugin = aco::testing::create<aco::PheromoneInit>(PLUGIN_FILE, {{"value", "2"}});
+  std::vector<double> tau(problem.graph.num_edges());
+  plugin->initialize(problem.context(), tau);
+  aco::testing::check_values(tau, "tau", 0.0, true);  // every edge positive and finite
+  CHECK(tau.front() == 2.0);' ;;
   heuristic) interface=Heuristic; method='  void compute(const aco::Context& c, std::span<double> eta) override {
     const aco::Graph& g = *c.graph;
     for (aco::EdgeId e = 0; e < g.num_edges(); ++e) eta[e] = p_.value / (1.0 + g.distance(g.targets[e], c.goal));
-  }' ;;
+  }'
+  example="prefers steps towards the goal"
+  test='  auto plugin = aco::testing::create<aco::Heuristic>(PLUGIN_FILE);
+  std::vector<double> eta(problem.graph.num_edges());
+  plugin->compute(problem.context(), eta);
+  aco::testing::check_values(eta, "eta");
+  // From the start (0,0), the diagonal step towards the goal (7,5) beats the step along the top.
+  const aco::Graph& g = problem.graph;
+  CHECK(eta[g.find_edge(problem.start, g.node({1, 1}))] > eta[g.find_edge(problem.start, g.node({1, 0}))]);' ;;
   update) interface=PheromoneUpdate; method='  void update(const aco::Context&, const aco::Iteration& it, std::span<double> tau) override {
     aco::evaporate(tau, 0.1);
     if (it.best) aco::deposit(tau, *it.best, p_.value / it.best->length);
-  }' ;;
+  }'
+  example="reinforces the best path"
+  test='  auto plugin = aco::testing::create<aco::PheromoneUpdate>(PLUGIN_FILE);
+  const aco::testing::IterationCase ants = aco::testing::standard_iterations(problem).front();  // ants arrived
+  std::vector<double> tau(problem.graph.num_edges(), 1.0);
+  plugin->start(problem.context(), tau);
+  plugin->update(problem.context(), ants.view(), tau);
+  aco::testing::check_values(tau, "tau");
+  // The best ant'"'"'s first edge gains; the same step backwards, which no ant took, only evaporates.
+  const aco::EdgeId first = ants.view().best->edges.front();
+  CHECK(tau[first] > 1.0);
+  CHECK(tau[problem.graph.reverse[first]] < 1.0);' ;;
   deadlock) interface=DeadlockPolicy; method='  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override {
     return static_cast<int>(p_.value);  // nodes to step back; 0 lets the ant die
-  }' ;;
+  }'
+  example="steps back --deadlock.value nodes"
+  test='  auto plugin = aco::testing::create<aco::DeadlockPolicy>(PLUGIN_FILE, {{"value", "2"}});
+  CHECK(plugin->on_stuck(problem.context(), problem.shortest_path()) == 2);  // steps back 2 nodes' ;;
   smoother) interface=Smoother; method='  std::vector<Eigen::Vector3d> smooth(const aco::Context& c, std::span<const aco::NodeId> path) const override {
     return aco::to_waypoints(*c.graph, path);
-  }' ;;
+  }'
+  example="keeps the path's ends and never lengthens it"
+  test='  auto plugin = aco::testing::create<aco::Smoother>(PLUGIN_FILE);
+  const std::vector<aco::NodeId> path = problem.shortest_path();
+  const auto points = plugin->smooth(problem.context(), path);
+  REQUIRE(!points.empty());
+  CHECK(points.front() == problem.graph.positions[path.front()]);
+  CHECK(points.back() == problem.graph.positions[path.back()]);
+  CHECK(aco::polyline_length(points) <= aco::path_length(problem.graph, path) + 1e-9);  // never longer' ;;
   local) interface=LocalPlanner; method='  aco::VelocityCommand command(const aco::LocalView& view) override {
     return aco::dynamic_window(view.robot, view.limits, view.period).clamp({p_.value, 0.0});  // straight ahead
-  }' ;;
-  *) echo "new-plugin: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother, local)" >&2; exit 2 ;;
+  }'
+  example="drives towards its goal"
+  test='  auto plugin = aco::testing::create<aco::LocalPlanner>(PLUGIN_FILE);
+  aco::LocalView view;  // a robot at rest at (0,0) facing +x, its goal straight ahead
+  view.goal = {5.0, 0.0};
+  const aco::VelocityCommand command = plugin->command(view);
+  const aco::DynamicWindow window = aco::dynamic_window(view.robot, view.limits, view.period);
+  CHECK(command.v >= window.v_low);
+  CHECK(command.v <= window.v_high);
+  CHECK(command.w >= window.w_low);
+  CHECK(command.w <= window.w_high);
+  CHECK(command.v > 0.0);  // it sets off' ;;
+  *) echo "$me: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother, local)" >&2; exit 2 ;;
 esac
 # Never over an existing project: the author's code would be lost.
 if [ -e "$dir/CMakeLists.txt" ] || [ -e "$dir/${name}.cpp" ]; then
-  echo "new-plugin: $dir already holds a plugin project (CMakeLists.txt or ${name}.cpp); choose another DIR" >&2
+  echo "$me: $dir already holds a plugin project (CMakeLists.txt or ${name}.cpp); choose another DIR" >&2
   exit 2
 fi
 # A bundled plugin of the same name would be shadowed by this one in --plugin-dir.
-if [ -d "$(dirname "$0")/../plugins/$kind/$name" ]; then
-  echo "new-plugin: warning: $kind/$name is also a bundled plugin; with --plugin-dir yours replaces it" >&2
+# Run from a checkout (tools/) the bundled plugins are sources, installed (bin/) they are libraries.
+here=$(dirname "$(readlink -f "$0")")
+if [ -d "$here/../plugins/$kind/$name" ] || [ -e "$here/../lib/aco/plugins/aco_${kind}_${name}.so" ]; then
+  echo "$me: warning: $kind/$name is also a bundled plugin; with --plugin-dir yours replaces it" >&2
 fi
 mkdir -p "$dir"
 cat > "$dir/CMakeLists.txt" <<CMAKE
@@ -51,6 +104,15 @@ if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
 endif()
 find_package(aco REQUIRED)
 aco_add_plugin(${kind} ${name} ${name}.cpp)
+
+# The unit test (ctest): the plugin's own example and every check of aco-plugin-check.
+enable_testing()
+find_package(Catch2 REQUIRED)
+add_executable(test_${name} test_${name}.cpp)
+target_link_libraries(test_${name} PRIVATE aco::conformance Catch2::Catch2)
+target_compile_definitions(test_${name} PRIVATE PLUGIN_FILE="\$<TARGET_FILE:aco_${kind}_${name}>")
+add_dependencies(test_${name} aco_${kind}_${name})
+add_test(NAME ${name} COMMAND test_${name})
 CMAKE
 cat > "$dir/${name}.cpp" <<CPP
 // ${kind}/${name}: describe the idea and cite its source here.
@@ -82,9 +144,26 @@ ${method}
 
 ACO_PLUGIN(${kind}, ${name}, Plugin, "0.1", "describe ${name} in one line", kParams)
 CPP
+cat > "$dir/test_${name}.cpp" <<CPP
+// The unit test of ${kind}/${name}: it loads the plugin from the library the build made.
+#define CATCH_CONFIG_MAIN
+#include "aco/path.hpp"
+#include "aco/testing.hpp"
+
+TEST_CASE("${kind}/${name} passes the conformance checks", "[${name}]") {
+  // Defaults and parameter range ends, on tiny maps and edge-case iterations: finite values,
+  // same output for the same seed, same output on 1 and 4 threads (as aco-plugin-check).
+  aco::testing::check_conformance(PLUGIN_FILE);
+}
+
+TEST_CASE("${kind}/${name} ${example}", "[${name}]") {
+  const aco::testing::Problem problem = aco::testing::standard_problems().front();  // open 8x6, (0,0) to (7,5)
+${test}
+}
+CPP
 cat > "$dir/README.md" <<MD
 # ${kind}/${name}
 
 What it does, the formula it implements, the source it comes from, and its parameters.
 MD
-echo "new-plugin: wrote $dir (${kind}/${name})"
+echo "$me: wrote $dir (${kind}/${name})"

@@ -1,7 +1,8 @@
 #include "aco/plugin_registry.hpp"
 
+#include "aco/install_layout.hpp"
+
 #include <boost/dll/library_info.hpp>
-#include <boost/dll/runtime_symbol_info.hpp>
 #include <boost/dll/shared_library.hpp>
 
 #include <dlfcn.h>
@@ -155,12 +156,8 @@ std::vector<fs::path> PluginRegistry::default_search_dirs(const std::vector<fs::
     for (std::string part; std::getline(parts, part, ':');)
       if (!part.empty()) dirs.emplace_back(part);
   }
-  // An installed host prefers the plugins installed with it; in the build tree that folder
-  // does not exist and the build tree's plugin folder serves.
-  boost::dll::fs::error_code ec;
-  const fs::path exe = boost::dll::program_location(ec);
-  if (!ec) dirs.push_back(exe.parent_path().parent_path() / ACO_INSTALL_PLUGIN_DIR);
-  dirs.emplace_back(ACO_BUILD_PLUGIN_DIR);
+  // The bundled plugins: an installed framework's or its build tree's, never both.
+  dirs.push_back(install_layout().plugins);
   return dirs;
 }
 

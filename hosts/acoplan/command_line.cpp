@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/install_layout.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/planning.hpp"
 
@@ -83,10 +84,9 @@ std::vector<std::string> irace_slots(const std::optional<std::string>& option) {
 
 std::filesystem::path bundled_map() {
   const std::filesystem::path relative = "maps/classic20/map1.txt";
-  for (const auto& dir : {std::filesystem::path(ACO_SOURCE_DATA_DIR), std::filesystem::path(ACO_INSTALL_DATA_DIR)})
-    if (std::filesystem::exists(dir / relative)) return dir / relative;
-  throw aco::Error("no --map given and the bundled map " + relative.string() + " was not found under " +
-                   ACO_SOURCE_DATA_DIR);
+  const std::filesystem::path data = aco::install_layout().data;
+  if (std::filesystem::exists(data / relative)) return data / relative;
+  throw aco::Error("no --map given and the bundled map " + relative.string() + " was not found under " + data.string());
 }
 
 // Command line first, then the --config file: po keeps the first value stored for a key.

@@ -39,8 +39,9 @@ class BOOST_SYMBOL_VISIBLE PluginRegistry {
   // kept as its `shadowed` files, and loading it warns about them).
   explicit PluginRegistry(std::vector<std::filesystem::path> search_dirs);
 
-  // `extra` (e.g. --plugin-dir), then every folder of ACO_PLUGIN_PATH, then <prefix>/lib/aco/plugins
-  // of the running executable, then the build tree's plugin folder.
+  // `extra` (e.g. --plugin-dir), then every folder of ACO_PLUGIN_PATH, then the bundled plugins:
+  // <prefix>/lib/aco/plugins of an installed libaco, or the build tree's plugin folder of one run
+  // from its build tree (aco/install_layout.hpp).
   static std::vector<std::filesystem::path> default_search_dirs(const std::vector<std::filesystem::path>& extra = {});
 
   const std::vector<std::filesystem::path>& search_dirs() const { return dirs_; }

@@ -37,9 +37,10 @@ const aco::SettingsTable<Parameters> kParams({
     aco::field("velocity", &Parameters::velocity, "0:1000", "weight gamma of the velocity term (paper 003: 0.3)"),
     aco::field("horizon", &Parameters::horizon, "(0:100]",
                "seconds each sampled velocity is rolled out for the heading term (the heading at the end counts)"),
-    aco::field("lookahead", &Parameters::lookahead, "(0:1e6]",
+    aco::field("lookahead", &Parameters::lookahead, "(0:100]",
                "dist(v, w) is searched along the arc up to this distance: a free arc scores this much, and the speed "
-               "stays below what can stop within it (6: the paper's 1.5 m/s at 0.2 m/s^2 needs 5.6)"),
+               "stays below what can stop within it (6: the paper's 1.5 m/s at 0.2 m/s^2 needs 5.6; a free arc is "
+               "searched step by step to its end, so far beyond the sensor range costs time and changes nothing)"),
     aco::field("dist_cap", &Parameters::dist_cap, "(0:1e6]",
                "the dist term counts dist(v, w) up to this distance: obstacles farther along an arc do not steer "
                "(the MATLAB DWA code caps it at 2 x the obstacle radius)"),
@@ -110,18 +111,28 @@ class Dwa final : public aco::LocalPlanner {
 
   // The obstacles an arc of length lookahead can reach; the others cannot matter this step. The
   // cells go into a small grid (cell centres lie on multiples of the cell size), so that a
-  // point's test looks at the few cells around it, not at every cell in sensor range.
+  // point's test looks at the few cells around it, not at every cell in sensor range. The grid
+  // spans the reachable cells only: a wide reach (a large lookahead or margin) costs nothing more.
   void gather_near(const aco::LocalView& view) {
     const Eigen::Vector2d p = view.robot.position();
     const double reach = p_.lookahead + view.limits.radius + p_.margin, size = view.cell_size;
     const auto index = [size](double v) { return static_cast<int>(std::lround(v / size)); };
-    x0_ = index(p.x() - reach) - 1, y0_ = index(p.y() - reach) - 1;
-    columns_ = index(p.x() + reach) + 2 - x0_, rows_ = index(p.y() + reach) + 2 - y0_;
-    occupied_.assign(static_cast<std::size_t>(columns_) * rows_, 0);
+    const int low_x = index(p.x() - reach) - 1, low_y = index(p.y() - reach) - 1;
+    const int high_x = index(p.x() + reach) + 1, high_y = index(p.y() + reach) + 1;
+    std::vector<std::pair<int, int>> near;  // grid positions of the cells within reach on each axis
     for (const Eigen::Vector2d& c : view.cells) {
-      const int x = index(c.x()) - x0_, y = index(c.y()) - y0_;
-      if (x >= 0 && y >= 0 && x < columns_ && y < rows_) occupied_[static_cast<std::size_t>(y) * columns_ + x] = 1;
+      const int x = index(c.x()), y = index(c.y());
+      if (x >= low_x && x <= high_x && y >= low_y && y <= high_y) near.emplace_back(x, y);
     }
+    x0_ = y0_ = 0, columns_ = rows_ = 0;
+    if (!near.empty()) {
+      const auto [min_x, max_x] = std::minmax_element(near.begin(), near.end());
+      const auto [min_y, max_y] = std::minmax_element(near.begin(), near.end(), [](auto a, auto b) { return a.second < b.second; });
+      x0_ = min_x->first, y0_ = min_y->second;
+      columns_ = max_x->first - x0_ + 1, rows_ = max_y->second - y0_ + 1;
+    }
+    occupied_.assign(static_cast<std::size_t>(columns_) * rows_, 0);
+    for (const auto& [x, y] : near) occupied_[static_cast<std::size_t>(y - y0_) * columns_ + (x - x0_)] = 1;
     near_moving_.clear();
     for (const aco::MovingObstacle& m : view.moving) {
       // A predicted obstacle may come from farther away: it moves while the robot drives.
@@ -136,10 +147,10 @@ class Dwa final : public aco::LocalPlanner {
     // A cell can be within `limit` of p only if its centre is within limit + size / 2 on each axis.
     const int reach = static_cast<int>(std::ceil(limit / size + 0.5));
     const int cx = static_cast<int>(std::lround(p.x() / size)), cy = static_cast<int>(std::lround(p.y() / size));
-    for (int y = cy - reach; y <= cy + reach; ++y)
-      for (int x = cx - reach; x <= cx + reach; ++x) {
-        const int gx = x - x0_, gy = y - y0_;
-        if (gx < 0 || gy < 0 || gx >= columns_ || gy >= rows_ || !occupied_[static_cast<std::size_t>(gy) * columns_ + gx]) continue;
+    // Only the cells of the grid: outside it nothing is occupied.
+    for (int y = std::max(cy - reach, y0_); y <= std::min(cy + reach, y0_ + rows_ - 1); ++y)
+      for (int x = std::max(cx - reach, x0_); x <= std::min(cx + reach, x0_ + columns_ - 1); ++x) {
+        if (!occupied_[static_cast<std::size_t>(y - y0_) * columns_ + (x - x0_)]) continue;
         if (aco::distance_to_square(p, Eigen::Vector2d(x * size, y * size), size) < limit) return true;
       }
     for (const aco::MovingObstacle& m : near_moving_) {

@@ -1,0 +1,568 @@
+#include "aco/conformance.hpp"
+
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <mutex>
+
+#include "aco/astar.hpp"
+#include "aco/path.hpp"
+#include "aco/pipeline.hpp"
+#include "aco/plugin_guard.hpp"
+
+namespace aco::conformance {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.15g", value);
+  return text;
+}
+
+}  // namespace
+
+// --- Standard problems and iterations --------------------------------------------------------
+
+Context Problem::context(int iteration, int iterations, std::uint64_t seed) const {
+  const ColonySettings colony;
+  Context c;
+  c.graph = &graph;
+  c.start = start;
+  c.goal = goal;
+  c.ants = 8;
+  c.max_iterations = iterations;
+  c.alpha = colony.alpha;
+  c.beta = colony.beta;
+  c.seed = seed;
+  c.iteration = iteration;
+  return c;
+}
+
+std::vector<NodeId> Problem::shortest_path() const {
+  const auto path = astar(graph, start, goal);
+  if (!path) throw Error("conformance: no path from start to goal on the map '" + name + "'");
+  return path->nodes;
+}
+
+Problem make_problem(const std::string& name, const std::vector<std::string>& rows, Cell start, Cell goal) {
+  auto map = std::make_shared<OccupancyGrid>(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), name);
+  for (int y = 0; y < map->height(); ++y)
+    for (int x = 0; x < map->width(); ++x) map->set_blocked({x, y}, rows[y][x] == '#');
+  Problem p{name, map, build_graph(*map, {}), 0, 0};
+  p.start = p.graph.node(start);
+  p.goal = p.graph.node(goal);
+  return p;
+}
+
+std::vector<Problem> standard_problems() {
+  std::vector<Problem> problems;
+  problems.push_back(make_problem("open", {"........", "........", "........", "........", "........", "........"},
+                                  {0, 0}, {7, 5}));
+  problems.push_back(make_problem("obstacles",
+                                  {"..........", "..#####...", "......#...", ".##...#.#.", "..#...#.#.", "..#.###.#.",
+                                   "..#.....#.", ".........."},
+                                  {0, 0}, {9, 7}));
+  // Two pockets (the left column and the box entered at (2,1)) and the walled-in cell (4,4).
+  problems.push_back(make_problem("dead end",
+                                  {".........#", ".#.#####.#", ".#.....#..", ".#.###.#..", ".#.#.#.#..", ".#.###.#..",
+                                   ".#.....#..", ".#######.."},
+                                  {0, 0}, {9, 7}));
+  problems.push_back(make_problem("corridor", {"............"}, {0, 0}, {11, 0}));
+  return problems;
+}
+
+Ant walk(const Problem& problem, const std::vector<NodeId>& nodes) {
+  Ant ant;
+  ant.nodes = nodes;
+  for (std::size_t i = 1; i < nodes.size(); ++i) {
+    const EdgeId e = problem.graph.find_edge(nodes[i - 1], nodes[i]);
+    if (e < 0) throw Error("conformance: a walk steps between nodes that are not neighbours");
+    ant.edges.push_back(e);
+    ant.length += problem.graph.costs[e];
+  }
+  ant.arrived = !nodes.empty() && nodes.back() == problem.goal;
+  return ant;
+}
+
+Iteration IterationCase::view() const {
+  const Ant* best_ant = best >= 0 ? &ants[best] : nullptr;
+  return {ants, best_ant, earlier_best ? &*earlier_best : best_ant};
+}
+
+std::vector<IterationCase> standard_iterations(const Problem& problem) {
+  const std::vector<NodeId> shortest = problem.shortest_path();
+  auto prefix = [&](std::size_t n) { return walk(problem, {shortest.begin(), shortest.begin() + std::max<std::size_t>(n, 1)}); };
+  // A longer arrived walk: around the middle node of the shortest path, where the map allows.
+  std::vector<NodeId> detour = shortest;
+  if (shortest.size() > 2) {
+    BreadthFirstSearch search;
+    if (search.find(problem.graph, problem.start, problem.goal, {}, shortest[shortest.size() / 2])) detour = search.path();
+  }
+
+  IterationCase arrived{"ants arrived", {walk(problem, detour), walk(problem, shortest), prefix(shortest.size() / 2), prefix(1)}, -1, {}};
+  arrived.best = arrived.ants[0].length < arrived.ants[1].length ? 0 : 1;
+  IterationCase none{"no ant arrived", {prefix(shortest.size() / 2), prefix(shortest.size() / 4), prefix(1)}, -1, {}};
+  none.earlier_best = walk(problem, shortest);
+  IterationCase dead{"all ants dead", std::vector<Ant>(4, prefix(1)), -1, {}};
+  return {arrived, none, dead};
+}
+
+// --- Parameter sets ----------------------------------------------------------------------------
+
+std::vector<ParameterSet> parameter_sets(std::span<const ParamSpec> table, std::int64_t integer_cap) {
+  std::vector<ParameterSet> sets{{"defaults", {}}};
+  for (const ParamSpec& spec : table) {
+    const std::string name = spec.name, default_value = spec.default_value;
+    auto add = [&](const std::string& value, const std::string& note = "") {
+      if (value != default_value) sets.push_back({name + "=" + value + note, {{name, value}}});
+    };
+    if (spec.type == ParamType::boolean) {
+      add(default_value == "true" ? "false" : "true");
+      continue;
+    }
+    if (spec.type == ParamType::categorical) {
+      for (const auto& choice : choices(spec)) add(choice);
+      continue;
+    }
+    const auto range = numeric_range(spec);
+    if (!range) continue;
+    const bool integer = spec.type == ParamType::integer;
+    const double span = range->high - range->low;
+    for (const bool low_end : {true, false}) {
+      double value = low_end ? range->low : range->high;
+      if (!std::isfinite(value)) continue;  // no run at infinity
+      if (!low_end && range->step) value = range->low + std::floor(span / *range->step) * *range->step;
+      if (low_end ? range->low_open : range->high_open) {
+        // Just inside an open end: a thousandth of its size (at least of 1) in, enough for a
+        // resolution such as a sampling step not to turn into millions of samples.
+        double inward = integer ? 1.0 : std::max(std::abs(value), 1.0) * 1e-3;
+        if (std::isfinite(span)) inward = std::min(inward, span / 2);
+        value += low_end ? inward : -inward;
+      }
+      if (!integer) {
+        add(number(value));
+      } else if (value > static_cast<double>(integer_cap)) {
+        add(std::to_string(std::max<std::int64_t>(integer_cap, static_cast<std::int64_t>(std::ceil(range->low)))),
+            " (range end " + number(value) + " capped)");
+      } else {
+        add(std::to_string(static_cast<std::int64_t>(value)));
+      }
+    }
+  }
+  return sets;
+}
+
+// --- Results -----------------------------------------------------------------------------------
+
+std::string CheckResult::line() const {
+  const char* word = status == Status::pass ? "PASS" : status == Status::fail ? "FAIL" : "SKIP";
+  return std::string(word) + " " + plugin + " [" + parameters + "] " + check + (detail.empty() ? "" : ": " + detail);
+}
+
+std::string bad_value(std::span<const double> values, const std::string& what, double minimum, bool strict) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double v = values[i];
+    if (!std::isfinite(v) || v < minimum || (strict && v == minimum))
+      return what + "[" + std::to_string(i) + "] = " + number(v) + " (must be finite and " + (strict ? "> " : ">= ") +
+             number(minimum) + ")";
+  }
+  return "";
+}
+
+// --- Finding plugins ---------------------------------------------------------------------------
+
+namespace {
+
+PluginRegistry& registry_of_folder(const fs::path& folder) {
+  static std::mutex mutex;
+  static std::map<fs::path, std::unique_ptr<PluginRegistry>> registries;
+  std::lock_guard lock(mutex);
+  auto& registry = registries[folder];
+  if (!registry) registry = std::make_unique<PluginRegistry>(std::vector<fs::path>{folder});
+  return *registry;
+}
+
+std::pair<PluginRegistry*, std::vector<PluginFile>> plugins_of(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) throw Error(file.string() + ": no such file");
+  const fs::path real = fs::canonical(file);
+  PluginRegistry& registry = registry_of_folder(real.parent_path());
+  std::vector<PluginFile> found;
+  for (const auto& plugin : registry.available())
+    if (fs::equivalent(plugin.file, real, ec)) found.push_back(plugin);
+  if (found.empty())
+    throw Error(file.string() + ": exports no aco plugin (or each is shadowed by a plugin of the same slot and name in a "
+                                "file of its folder that sorts before it)");
+  return {&registry, found};
+}
+
+// The other slots of a colony: the default plugins, found where an installed or build-tree host
+// finds them.
+PluginRegistry& default_plugins() {
+  static PluginRegistry registry(PluginRegistry::default_search_dirs());
+  return registry;
+}
+
+template <class Interface>
+std::unique_ptr<Interface> default_instance(const std::string& slot) {
+  PluginRegistry& registry = default_plugins();
+  const std::string name = default_plugin(slot);
+  return registry.create<Interface>(slot, name, resolve(registry.load(slot, name).parameters(), {}, slot + "."));
+}
+
+}  // namespace
+
+std::vector<PluginFile> plugins_in(const fs::path& file) { return plugins_of(file).second; }
+
+std::pair<PluginRegistry*, PluginFile> find_in(const fs::path& file, const std::string& kind) {
+  auto [registry, plugins] = plugins_of(file);
+  for (const auto& plugin : plugins)
+    if (plugin.kind == kind) return {registry, plugin};
+  throw Error(file.string() + ": exports no " + kind + " plugin");
+}
+
+// --- Running a plugin --------------------------------------------------------------------------
+
+namespace {
+
+// Everything a plugin produced in one run of the checks, in order, and what was wrong with it.
+struct Trace {
+  std::vector<double> values;
+  std::vector<std::pair<std::size_t, std::string>> sections;  // where each labelled part starts
+  std::vector<std::string> problems;
+  std::string section;  // the label of the part being recorded, for messages
+
+  void begin(const std::string& label) {
+    section = label;
+    sections.emplace_back(values.size(), label);
+  }
+  void add(std::span<const double> v) { values.insert(values.end(), v.begin(), v.end()); }
+  void add(double v) { values.push_back(v); }
+  void problem(const std::string& what) { problems.push_back(section + ": " + what); }
+  // Records the values, labelled for messages, and notes the first bad one.
+  void add_checked(std::span<const double> v, const std::string& what, double minimum = 0.0, bool strict = false) {
+    if (const auto bad = bad_value(v, what, minimum, strict); !bad.empty()) problem(bad);
+    sections.emplace_back(values.size(), section + ": " + what);
+    add(v);
+  }
+  // "open: tau after start(): value 12", for the value at `index`.
+  std::string describe(std::size_t index) const {
+    std::string label = "value " + std::to_string(index);
+    for (const auto& [start, name] : sections)
+      if (start <= index) label = name + ": value " + std::to_string(index - start);
+    return label;
+  }
+};
+
+bool same_bits(std::span<const double> a, std::span<const double> b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0);
+}
+
+// "" if the traces hold the same values bit for bit, else where they first differ.
+std::string difference(const Trace& a, const Trace& b) {
+  const std::size_t n = std::min(a.values.size(), b.values.size());
+  for (std::size_t i = 0; i < n; ++i)
+    if (!same_bits(std::span(a.values).subspan(i, 1), std::span(b.values).subspan(i, 1)))
+      return a.describe(i) + " is " + number(a.values[i]) + " in one run and " +
+             number(b.values[i]) + " in the other";
+  if (a.values.size() != b.values.size())
+    return "one run produced " + std::to_string(a.values.size()) + " values, the other " + std::to_string(b.values.size());
+  return "";
+}
+
+constexpr int kIterations = 10;
+
+void run_slot(PheromoneInit& init, const Problem& problem, Trace& trace) {
+  std::vector<double> tau(problem.graph.num_edges(), std::numeric_limits<double>::quiet_NaN());
+  init.initialize(problem.context(0, kIterations), tau);
+  trace.add_checked(tau, "tau after initialize()", 0.0, true);
+}
+
+void run_slot(Heuristic& heuristic, const Problem& problem, Trace& trace) {
+  const std::size_t edges = problem.graph.num_edges();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // As the engine calls it: compute_powered() once per run, or in every iteration in turn on the
+  // values it left the iteration before (a heuristic may update them rather than recompute).
+  std::vector<double> eta_beta(edges, nan), first;
+  const int last = heuristic.varies_by_iteration() ? kIterations - 1 : 0;
+  for (int iteration = 0; iteration <= last; ++iteration) {
+    const Context c = problem.context(iteration, kIterations);
+    std::vector<double> eta(edges, nan);
+    heuristic.compute(c, eta);
+    trace.add_checked(eta, "eta after compute() in iteration " + std::to_string(iteration));
+    heuristic.compute_powered(c, eta_beta);
+    trace.add_checked(eta_beta, "eta^beta after compute_powered() in iteration " + std::to_string(iteration));
+    if (iteration == 0) first = eta_beta;
+    if (iteration == 0 || !heuristic.updates_by_node()) continue;
+    // The contract of update_node(): from iteration 0's values, bit for bit what
+    // compute_powered() gives in this iteration.
+    for (NodeId n = 0; n < problem.graph.num_nodes(); ++n) {
+      const auto begin = problem.graph.edges_begin(n), end = problem.graph.edges_end(n);
+      std::vector<double> updated(first.begin() + begin, first.begin() + end);
+      heuristic.update_node(c, n, 0, updated);
+      if (!same_bits(updated, std::span(eta_beta).subspan(begin, end - begin))) {
+        trace.problem("update_node() of node " + std::to_string(n) + " in iteration " + std::to_string(iteration) +
+                      " differs from compute_powered()");
+        break;
+      }
+    }
+  }
+  if (!heuristic.uses_walk()) return;
+  const std::vector<NodeId> path = problem.shortest_path();
+  Ant ant;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    ant.nodes.push_back(path[i]);
+    if (i > 0) ant.edges.push_back(problem.graph.find_edge(path[i - 1], path[i]));
+    std::vector<EdgeId> candidates;
+    for (EdgeId e = problem.graph.edges_begin(path[i]); e < problem.graph.edges_end(path[i]); ++e) candidates.push_back(e);
+    std::vector<double> factors(candidates.size(), nan);
+    heuristic.step_factors(problem.context(0, kIterations), ant, candidates, factors);
+    trace.add_checked(factors, "factors of step_factors() at step " + std::to_string(i));
+  }
+}
+
+void run_slot(PheromoneUpdate& update, const Problem& problem, Trace& trace) {
+  std::vector<double> tau(problem.graph.num_edges(), 1.0);
+  update.start(problem.context(0, kIterations), tau);
+  trace.add_checked(tau, "tau after start()");
+  int iteration = 0;
+  for (const auto& ants : standard_iterations(problem)) {
+    update.update(problem.context(iteration++, kIterations), ants.view(), tau);
+    trace.add_checked(tau, "tau after update() of '" + ants.name + "'");
+  }
+}
+
+void run_slot(DeadlockPolicy& deadlock, const Problem& problem, Trace& trace) {
+  std::vector<double> tau(problem.graph.num_edges(), 1.0);
+  std::vector<std::uint8_t> forbidden(problem.graph.num_nodes(), 0);
+  int iteration = 0;
+  for (const auto& ants : standard_iterations(problem)) {
+    const Context c = problem.context(iteration++, kIterations);
+    for (const Ant& ant : ants.ants) {
+      if (ant.arrived) continue;
+      const int back = deadlock.on_stuck(c, ant.nodes);
+      if (back < 0) trace.problem("on_stuck() returned " + std::to_string(back) + " (must be >= 0)");
+      trace.add(back);
+    }
+    deadlock.after_iteration(c, ants.view(), tau, forbidden);
+    trace.add_checked(tau, "tau after after_iteration() of '" + ants.name + "'");
+    if (forbidden.size() != static_cast<std::size_t>(problem.graph.num_nodes()))
+      trace.problem("after_iteration() resized the forbidden nodes to " + std::to_string(forbidden.size()));
+    for (const auto f : forbidden) trace.add(f);
+  }
+}
+
+void run_slot(Smoother& smoother, const Problem& problem, Trace& trace) {
+  const std::vector<NodeId> shortest = problem.shortest_path();
+  const std::vector<std::vector<NodeId>> paths{shortest, {problem.start}, {shortest[0], shortest[1]}};
+  for (const auto& path : paths) {
+    const auto points = smoother.smooth(problem.context(kIterations - 1, kIterations), path);
+    const std::string what = "smooth() of a path of " + std::to_string(path.size()) + " nodes";
+    if (points.empty()) {
+      trace.problem(what + " returned no waypoints");
+      continue;
+    }
+    for (const auto& p : points) trace.add_checked(std::span<const double>(p.data(), 3), what + ": waypoint coordinate", -INFINITY);
+    const double length = polyline_length(points);
+    trace.add_checked(std::span(&length, 1), what + ": length");
+    if ((points.front() - problem.graph.positions[path.front()]).norm() > 1e-9 ||
+        (points.back() - problem.graph.positions[path.back()]).norm() > 1e-9)
+      trace.problem(what + " does not begin at the path's first node and end at its last");
+  }
+}
+
+void run_slot(LocalPlanner& planner, const Problem& problem, Trace& trace) {
+  const std::vector<NodeId> shortest = problem.shortest_path();
+  std::vector<Eigen::Vector2d> path;
+  for (const NodeId n : shortest) path.push_back(problem.graph.positions[n].head<2>());
+  const double sensor_range = 3.0;
+  struct Drive {
+    std::string name;
+    Eigen::Vector2d from;
+    std::span<const Eigen::Vector2d> path;
+    bool moving_obstacle;
+  };
+  const std::vector<Drive> drives{{"along the path, a moving obstacle ahead", path.front(), path, true},
+                                  {"no path known", path.front(), {}, false},
+                                  {"at the goal", path.back(), std::span(path).last(1), false}};
+  for (const auto& drive : drives) {
+    LocalView view;
+    view.robot.x = drive.from.x();
+    view.robot.y = drive.from.y();
+    const Eigen::Vector2d towards = path.back() - path.front();
+    view.robot.heading = std::atan2(towards.y(), towards.x());
+    view.goal = path[std::min<std::size_t>(3, path.size() - 1)];
+    if (drive.from == path.back()) view.goal = path.back();
+    std::vector<MovingObstacle> moving;
+    if (drive.moving_obstacle) moving.push_back({(drive.from + view.goal) / 2, {-0.2, 0.0}, 0.3});
+    for (int step = 0; step < 15; ++step) {
+      std::vector<Eigen::Vector2d> cells;
+      for (int y = -1; y <= problem.map->height(); ++y)
+        for (int x = -1; x <= problem.map->width(); ++x)
+          if (!problem.map->passable({x, y}) && (Eigen::Vector2d(x, y) - view.robot.position()).norm() <= sensor_range)
+            cells.emplace_back(x, y);
+      view.cells = cells;
+      view.moving = moving;
+      view.path = drive.path;
+      trace.begin(problem.name + ", " + drive.name + ", step " + std::to_string(step));
+      const VelocityCommand command = planner.command(view);
+      const DynamicWindow window = dynamic_window(view.robot, view.limits, view.period);
+      const double tolerance = 1e-9;
+      trace.add_checked(std::vector<double>{command.v, command.w}, "command (v, w)", -INFINITY);
+      if (command.v < window.v_low - tolerance || command.v > window.v_high + tolerance ||
+          command.w < window.w_low - tolerance || command.w > window.w_high + tolerance)
+        trace.problem("command (" + number(command.v) + ", " + number(command.w) + ") lies outside the dynamic window");
+      view.robot = move(view.robot, window.clamp(command), view.period);
+      for (auto& m : moving) m.position += m.velocity * view.period;
+    }
+  }
+}
+
+// The colony with the plugin in its slot and the default plugins in the others.
+template <class Interface>
+void run_colony_with(Interface& plugin, const Problem& problem, const ColonySettings& settings, Trace& trace) {
+  auto init = default_instance<PheromoneInit>("init");
+  auto heuristic = default_instance<Heuristic>("heuristic");
+  auto update = default_instance<PheromoneUpdate>("update");
+  auto deadlock = default_instance<DeadlockPolicy>("deadlock");
+  Pipeline pipeline{init.get(), heuristic.get(), update.get(), deadlock.get()};
+  if constexpr (std::is_same_v<Interface, PheromoneInit>) pipeline.init = &plugin;
+  if constexpr (std::is_same_v<Interface, Heuristic>) pipeline.heuristic = &plugin;
+  if constexpr (std::is_same_v<Interface, PheromoneUpdate>) pipeline.update = &plugin;
+  if constexpr (std::is_same_v<Interface, DeadlockPolicy>) pipeline.deadlock = &plugin;
+  trace.begin(problem.name + ": colony run");
+  const ColonyResult result = run_colony(problem.graph, problem.start, problem.goal, pipeline, settings);
+  if (result.solved) {
+    trace.add_checked(std::span(&result.length, 1), "path length");
+    if (std::abs(result.length - path_length(problem.graph, result.path)) > 1e-9 * (1 + result.length))
+      trace.problem("the path's length is not the sum of its steps");
+  }
+  for (const NodeId n : result.path) trace.add(n);
+  trace.add(result.iteration_best);
+  for (const int a : result.arrived) trace.add(a);
+  trace.add(static_cast<double>(result.ant_steps));
+  trace.add_checked(result.pheromone, "final pheromone");
+}
+
+// One pass of every check's runs over the standard problems with one instance of the plugin,
+// then the first problem once more with the same instance (it must serve a second run alike).
+template <class Interface>
+struct Pass {
+  Trace trace;
+  std::string reuse;  // how the second run on the first problem differed, or ""
+
+  Pass(Interface& plugin, const std::vector<Problem>& problems, const Options& options, bool colony) {
+    auto run = [&](const Problem& problem, Trace& into) {
+      try {
+        into.begin(problem.name);
+        run_slot(plugin, problem, into);
+        if constexpr (!std::is_same_v<Interface, Smoother> && !std::is_same_v<Interface, LocalPlanner>)
+          if (colony) run_colony_with(plugin, problem, options.colony, into);
+      } catch (const std::exception& e) {
+        into.problem(e.what());
+      }
+    };
+    std::size_t first_end = 0;
+    for (const auto& problem : problems) {
+      run(problem, trace);
+      if (first_end == 0) first_end = trace.values.size();
+    }
+    if constexpr (std::is_same_v<Interface, LocalPlanner>) return;  // no per-run hook to start afresh
+    Trace again;
+    run(problems.front(), again);
+    Trace first = trace;
+    first.values.resize(first_end);
+    reuse = difference(first, again);
+  }
+};
+
+template <class Interface>
+void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Options& options, const Report& report) {
+  const PluginDescriptor& descriptor = registry.load(plugin.kind, plugin.name);
+  const PluginIdentity who{plugin.kind, plugin.name, plugin.file.string()};
+  const std::string label = plugin.kind + "/" + plugin.name;
+  const std::vector<Problem> problems = standard_problems();
+  const bool colony = !std::is_same_v<Interface, Smoother> && !std::is_same_v<Interface, LocalPlanner>;
+  for (const auto& set : parameter_sets(descriptor.parameters(), options.integer_cap)) {
+    auto result = [&](const std::string& check, const std::string& detail, CheckResult::Status status) {
+      report({label, set.label, check, status, detail});
+    };
+    const ParameterValues values = resolve(descriptor.parameters(), set.given, plugin.kind + ".");
+    // A fresh instance per pass; the factory refusing a value with aco::Error is its right.
+    auto make = [&]() -> std::unique_ptr<Interface> {
+      std::unique_ptr<Strategy> strategy(descriptor.create(values));
+      auto* typed = dynamic_cast<Interface*>(strategy.get());
+      if (!typed) throw Error("the factory made an object that does not implement the " + plugin.kind + " interface");
+      strategy.release();
+      return guard(std::unique_ptr<Interface>(typed), who);
+    };
+    std::unique_ptr<Interface> first;
+    try {
+      first = make();
+    } catch (const Error& e) {
+      result("constructs", std::string("refused with an error: ") + e.what(), CheckResult::Status::skip);
+      continue;
+    } catch (...) {
+      result("constructs", "the factory threw " + describe_current_exception(), CheckResult::Status::fail);
+      continue;
+    }
+    auto pass = [&](std::unique_ptr<Interface> instance, int threads) {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      tbb::task_arena arena(threads);
+      return arena.execute([&] { return Pass<Interface>(*instance, problems, options, colony); });
+    };
+    // A run on 1 thread and one on 4: the same output shows determinism and thread independence
+    // at once. Only when they differ does another run on 1 thread tell which of the two failed.
+    const Pass<Interface> one = pass(std::move(first), 1);
+    std::string by_threads = difference(one.trace, pass(make(), 4).trace);
+    std::string nondeterminism;
+    if (!by_threads.empty()) {
+      nondeterminism = difference(one.trace, pass(make(), 1).trace);
+      if (!nondeterminism.empty()) by_threads = "not separable: two runs on 1 thread differ as well";
+    }
+    if (nondeterminism.empty() && !one.reuse.empty()) nondeterminism = "the same object's second run: " + one.reuse;
+    using S = CheckResult::Status;
+    const auto& problems_found = one.trace.problems;
+    result("values",
+           problems_found.empty() ? ""
+                                  : problems_found.front() + (problems_found.size() > 1
+                                                                  ? " (and " + std::to_string(problems_found.size() - 1) + " more)"
+                                                                  : ""),
+           problems_found.empty() ? S::pass : S::fail);
+    result("deterministic", nondeterminism, nondeterminism.empty() ? S::pass : S::fail);
+    result("threads", by_threads.empty() ? "" : "1 vs 4 threads: " + by_threads, by_threads.empty() ? S::pass : S::fail);
+  }
+}
+
+}  // namespace
+
+void check_plugin(const PluginFile& plugin, const Options& options, const Report& report) {
+  PluginRegistry& registry = *plugins_of(plugin.file).first;
+  if (plugin.kind == "init") return check_typed<PheromoneInit>(registry, plugin, options, report);
+  if (plugin.kind == "heuristic") return check_typed<Heuristic>(registry, plugin, options, report);
+  if (plugin.kind == "update") return check_typed<PheromoneUpdate>(registry, plugin, options, report);
+  if (plugin.kind == "deadlock") return check_typed<DeadlockPolicy>(registry, plugin, options, report);
+  if (plugin.kind == "smoother") return check_typed<Smoother>(registry, plugin, options, report);
+  if (plugin.kind == "local") return check_typed<LocalPlanner>(registry, plugin, options, report);
+  throw Error("plugin " + plugin.kind + "/" + plugin.name + ": unknown slot '" + plugin.kind + "'");
+}
+
+int check_file(const fs::path& file, const Options& options, const Report& report) {
+  int failures = 0;
+  for (const auto& plugin : plugins_in(file)) {
+    check_plugin(plugin, options, [&](const CheckResult& r) {
+      if (r.status == CheckResult::Status::fail) ++failures;
+      report(r);
+    });
+  }
+  return failures;
+}
+
+}  // namespace aco::conformance

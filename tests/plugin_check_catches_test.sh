@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# aco-plugin-check must fail, naming plugin, parameters and check, on plugins that break its
+# rules: tests/fixtures/nonconforming_update.cpp (not deterministic; NaN at q = 10) and
+# throwing_update.cpp (throws 42 from its factory when asked; throws in iteration 3 by default).
+#   tests/plugin_check_catches_test.sh ACO_PLUGIN_CHECK FAULTY_PLUGIN_DIR
+set -euo pipefail
+check=$1 dir=$2
+expect_failures() {  # FILE LINE...: the checker exits 1 and prints every LINE (a regex)
+  local file=$1 out status=0
+  shift
+  out=$("$check" "$file") || status=$?
+  [ "$status" = 1 ] || { echo "plugin-check: exit $status on $file, expected 1" >&2; exit 1; }
+  for line in "$@"; do
+    grep -q "$line" <<< "$out" || { echo "plugin-check: no line '$line' for $file in:" >&2; echo "$out" >&2; exit 1; }
+  done
+}
+expect_failures "$dir/aco_update_nonconforming.so" \
+  '^FAIL update/nonconforming \[defaults\] deterministic: ' \
+  '^FAIL update/nonconforming \[defaults\] threads: 1 vs 4 threads: ' \
+  '^FAIL update/nonconforming \[q=10\] values: .*nan' \
+  '^PASS update/nonconforming \[q=0\] values$'
+expect_failures "$dir/aco_update_throwing.so" \
+  '^FAIL update/throwing \[in_factory=true\] constructs: the factory threw an exception of type int' \
+  '^FAIL update/throwing \[defaults\] values: .*failed in update() in iteration 3: an exception of type int' \
+  '^PASS update/throwing \[at_iteration=0\] deterministic$'
+echo "plugin-check: catches what it must"

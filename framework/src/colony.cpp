@@ -2,7 +2,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <array>
@@ -21,6 +20,7 @@
 #include "aco/dead_ends.hpp"
 #include "aco/error.hpp"
 #include "aco/local_search.hpp"
+#include "aco/parallel.hpp"
 #include "aco/rng.hpp"
 
 namespace aco {
@@ -431,7 +431,7 @@ ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Pip
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&colony};
   return iterate(s, colonies, ants, [&](int it) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
+    aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       Scratch& local = colony.local_scratch();
       for (int k = range.begin(); k != range.end(); ++k) {
         Rng rng = Rng::stream(s.seed, static_cast<std::uint64_t>(it), static_cast<std::uint64_t>(k));
@@ -450,7 +450,7 @@ ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, co
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&forward, &backward};
   return iterate(s, colonies, ants, [&](int it) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
+    aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       Scratch& fs = forward.local_scratch();
       Scratch& bs = backward.local_scratch();
       for (int k = range.begin(); k != range.end(); ++k) {

@@ -1,9 +1,10 @@
 #include "aco/pheromone.hpp"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
+
+#include "aco/parallel.hpp"
 
 namespace aco {
 namespace {
@@ -13,7 +14,7 @@ constexpr std::size_t kGrain = 1 << 15;
 
 template <class Body>
 void for_each_chunk(std::span<double> tau, Body body) {
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tau.size(), kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
+  aco::parallel_for(tbb::blocked_range<std::size_t>(0, tau.size(), kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t e = r.begin(); e != r.end(); ++e) body(tau[e]);
   });
 }

@@ -1,10 +1,11 @@
 #include "aco/potential_field.hpp"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
+
+#include "aco/parallel.hpp"
 
 namespace aco {
 
@@ -31,7 +32,7 @@ std::vector<Eigen::Vector2d> potential_forces(const Graph& graph, NodeId start, 
   const int radius = spacing > 0.0 ? static_cast<int>(std::ceil(gains.rho0 / spacing)) : 0;
 
   // Each node on its own: the result does not depend on the thread count.
-  tbb::parallel_for(tbb::blocked_range<NodeId>(0, graph.num_nodes()), [&](const tbb::blocked_range<NodeId>& r) {
+  aco::parallel_for(tbb::blocked_range<NodeId>(0, graph.num_nodes()), [&](const tbb::blocked_range<NodeId>& r) {
     for (NodeId n = r.begin(); n != r.end(); ++n) {
       if (!graph.passable(n)) continue;
       Eigen::Vector2d force = Eigen::Vector2d::Zero();

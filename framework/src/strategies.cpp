@@ -1,11 +1,11 @@
 #include "aco/strategies.hpp"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <cmath>
 
 #include "aco/error.hpp"
+#include "aco/parallel.hpp"
 
 namespace aco {
 
@@ -24,7 +24,7 @@ void Heuristic::compute_powered(const Context& context, std::span<double> eta_be
   if (context.beta == 1.0) return;
   // Element-wise, so the thread count cannot change a value; on a 512x512 map these are two
   // million pow() calls per run.
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, eta_beta.size(), 16384), [&](const auto& range) {
+  aco::parallel_for(tbb::blocked_range<std::size_t>(0, eta_beta.size(), 16384), [&](const auto& range) {
     for (std::size_t e = range.begin(); e != range.end(); ++e) eta_beta[e] = std::pow(eta_beta[e], context.beta);
   });
 }

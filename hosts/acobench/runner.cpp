@@ -1,6 +1,5 @@
 #include "runner.hpp"
 
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
@@ -13,6 +12,7 @@
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
+#include "aco/parallel.hpp"
 #include "aco/planning.hpp"
 #include "aco/plugin_guard.hpp"
 #include "aco/thread_limit.hpp"
@@ -226,7 +226,7 @@ class Runner {
         }
     if (options_.progress) options_.progress(done_, total_);
     const aco::ThreadLimit threads(options_.threads);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, trials.size(), 1), [&](const auto& range) {
+    aco::parallel_for(tbb::blocked_range<std::size_t>(0, trials.size(), 1), [&](const auto& range) {
       for (std::size_t i = range.begin(); i != range.end(); ++i) {
         const TrialRecord record = guarded_trial(trials[i]);
         db_->store(record);

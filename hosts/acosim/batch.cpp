@@ -1,12 +1,11 @@
 // Batches of generated variations of a scenario: unknown cells near the global path, and discs
 // crossing it.
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
+#include "aco/parallel.hpp"
 #include "aco/planning.hpp"
 #include "aco/rng.hpp"
 #include "batch.hpp"
@@ -82,7 +81,7 @@ std::vector<Scenario> variations(const Scenario& base, int count, std::uint64_t 
 
 BatchSummary run_batch(const std::vector<Scenario>& scenarios, aco::PluginRegistry& registry) {
   std::vector<SimulationResult> results(scenarios.size());
-  tbb::parallel_for(std::size_t(0), scenarios.size(), [&](std::size_t i) {
+  aco::parallel_for(std::size_t(0), scenarios.size(), [&](std::size_t i) {
     SimulationResult r = simulate(scenarios[i], registry);
     r.frames.clear();  // a batch keeps the figures, not the trajectories
     results[i] = std::move(r);

@@ -1,6 +1,5 @@
 #include "ifwa/fireworks.hpp"
 
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <numeric>
 
 #include "aco/error.hpp"
+#include "aco/parallel.hpp"
 #include "aco/rng.hpp"
 #include "aco/settings_table.hpp"
 
@@ -72,7 +72,7 @@ class Search {
   PlannerResult run() {
     PlannerResult r;
     std::vector<Spark> fireworks(s_.fireworks);
-    tbb::parallel_for(0, s_.fireworks, [&](int i) {
+    aco::parallel_for(0, s_.fireworks, [&](int i) {
       Rng rng = Rng::stream(s_.seed, 0, static_cast<std::uint64_t>(i));
       Spark& f = fireworks[i];
       f.weights.resize(dimensions_);
@@ -117,7 +117,7 @@ class Search {
     const double inertia = s_.inertia_start + (s_.inertia_end - s_.inertia_start) * progress;
 
     std::vector<Spark> sparks(exploding.size() + s_.mutation_sparks);
-    tbb::parallel_for(std::size_t{0}, sparks.size(), [&](std::size_t k) {
+    aco::parallel_for(std::size_t{0}, sparks.size(), [&](std::size_t k) {
       Rng rng = Rng::stream(s_.seed, static_cast<std::uint64_t>(generation), k);
       Spark& spark = sparks[k];
       if (k < exploding.size()) {
@@ -141,7 +141,7 @@ class Search {
     std::stable_sort(pool.begin(), pool.end(), by_fitness);
     if (pool.size() <= static_cast<std::size_t>(s_.fireworks)) return pool;
     std::vector<double> spread(pool.size(), 0.0);
-    tbb::parallel_for(std::size_t{0}, pool.size(), [&](std::size_t i) {
+    aco::parallel_for(std::size_t{0}, pool.size(), [&](std::size_t i) {
       for (const auto& other : pool) {
         double d2 = 0.0;
         for (std::size_t k = 0; k < dimensions_; ++k) d2 += (pool[i].weights[k] - other.weights[k]) * (pool[i].weights[k] - other.weights[k]);

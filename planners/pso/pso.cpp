@@ -1,12 +1,12 @@
 #include "pso/pso.hpp"
 
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
 
 #include "aco/error.hpp"
+#include "aco/parallel.hpp"
 #include "aco/rng.hpp"
 #include "aco/settings_table.hpp"
 
@@ -44,7 +44,7 @@ class Swarm {
   PlannerResult run() {
     PlannerResult r;
     std::vector<Particle> swarm(s_.particles);
-    tbb::parallel_for(0, s_.particles, [&](int i) {
+    aco::parallel_for(0, s_.particles, [&](int i) {
       Rng rng = Rng::stream(s_.seed, 0, static_cast<std::uint64_t>(i));
       Particle& p = swarm[i];
       for (int d = 0; d < dims_; ++d) {
@@ -59,7 +59,7 @@ class Swarm {
     for (int t = 0; t <= s_.iterations; ++t) {
       if (t > 0) {
         const std::vector<double> global = swarm[leader].best_position;
-        tbb::parallel_for(0, s_.particles, [&](int i) {
+        aco::parallel_for(0, s_.particles, [&](int i) {
           Rng rng = Rng::stream(s_.seed, static_cast<std::uint64_t>(t), static_cast<std::uint64_t>(i));
           move(swarm[i], global, rng);
           evaluate(swarm[i]);

@@ -518,3 +518,11 @@ configurations:
   // gaps are not measured on them.
   CHECK(shorter_than_grid_optimum > 0);
 }
+
+TEST_CASE("a problem written as a single value is refused with the problem format, not yaml-cpp's exception",
+          "[acobench][bad-input]") {
+  // Found by the experiment fuzz harness (tests/fuzz/regressions/experiment/scalar_problem_found).
+  REQUIRE_THROWS_AS(load("name: x\nproblems:\n  - 'scen: map1.txt.scen, name: map1}'\nbaseline: {name: b}\n"), aco::Error);
+  REQUIRE_THROWS_WITH(load("name: x\nproblems:\n  - 'scen: map1.txt.scen, name: map1}'\nbaseline: {name: b}\n"),
+                      Contains("experiment.yaml:3: a problem is a mapping"));
+}

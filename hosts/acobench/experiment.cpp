@@ -44,6 +44,10 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
   const auto dir = file.parent_path();
   std::vector<Problem> problems;
   for (const auto& entry : list) {
+    // Before any entry["key"]: yaml-cpp throws its own exception for a subscript of a scalar.
+    if (!entry.IsMap())
+      fail(file, entry, "a problem is a mapping ({map: FILE, start: [x, y], goal: [x, y]}, {scen: FILE} or "
+                        "{simulation: FILE}), not a single value");
     if (entry["simulation"]) {
       only_keys(file, entry, {"simulation", "variations", "name"}, "a simulation problem");
       const std::string scenario = scalar(file, entry["simulation"], "simulation");

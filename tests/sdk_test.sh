@@ -14,6 +14,13 @@ trap 'rm -rf "$work"' EXIT
 prefix="$work/prefix"
 cmake --install "$build" --prefix "$prefix" >/dev/null
 bin="$prefix/bin"
+# The SDK of a sanitizer build (presets sanitize, tsan) is instrumented: out-of-tree code is built
+# with the same flags, as its users would, so the sanitizer's runtime is linked first.
+flags=()
+for variable in CMAKE_CXX_FLAGS CMAKE_EXE_LINKER_FLAGS CMAKE_SHARED_LINKER_FLAGS CMAKE_MODULE_LINKER_FLAGS; do
+  value=$(sed -n "s/^$variable:[A-Z]*=//p" "$build/CMakeCache.txt")
+  if [ -n "$value" ]; then flags+=("-D$variable=$value"); fi
+done
 for tool in acoplan aco-new-plugin aco-plugin-check; do
   [ -x "$bin/$tool" ] || { echo "sdk: $tool is not installed in bin/" >&2; exit 1; }
 done
@@ -25,13 +32,13 @@ for kind in init heuristic update deadlock smoother local; do
   "$bin/aco-new-plugin" "$kind" "my_$kind" "$work/plugins/$kind" >/dev/null
   echo "add_subdirectory($kind)" >> "$work/plugins/CMakeLists.txt"
 done
-cmake -S "$work/plugins" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake -S "$work/plugins" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
 cmake --build "$work/build" -j 2 >/dev/null
 ctest --test-dir "$work/build" --output-on-failure > "$work/scaffold-tests.log" || { cat "$work/scaffold-tests.log" >&2; exit 1; }
 grep -q "100% tests passed, 0 tests failed out of 6" "$work/scaffold-tests.log"
 
 # The example plugin, against the installed package, with its own unit test.
-cmake -S "$source/examples/rank_based_as" -B "$work/rank_based_as" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake -S "$source/examples/rank_based_as" -B "$work/rank_based_as" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
 cmake --build "$work/rank_based_as" -j 2 >/dev/null
 ctest --test-dir "$work/rank_based_as" --output-on-failure >/dev/null
 example="$work/rank_based_as/plugins/aco_update_rank_based_as.so"
@@ -78,6 +85,6 @@ fi
 [ "$before" = "$(cat "$work/plugins/update/my_update.cpp")" ]
 "$bin/aco-new-plugin" update ant_system "$work/shadow" 2>&1 >/dev/null | grep -q "also a bundled plugin"
 "$source/tools/new-plugin.sh" update ant_system "$work/shadow2" 2>&1 >/dev/null | grep -q "also a bundled plugin"
-cmake -S "$work/shadow" -B "$work/shadow/build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake -S "$work/shadow" -B "$work/shadow/build" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
 grep -q "CMAKE_BUILD_TYPE:STRING=Release" "$work/shadow/build/CMakeCache.txt"
 echo "sdk: ok"

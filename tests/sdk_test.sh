@@ -46,8 +46,12 @@ example="$work/rank_based_as/plugins/aco_update_rank_based_as.so"
 # The conformance checks on the example and on every installed bundled plugin.
 "$bin/aco-plugin-check" "$example" > "$work/check-example.log"
 grep -q "^PASS update/rank_based_as \[w=1\] threads" "$work/check-example.log"
-"$bin/aco-plugin-check" "$prefix"/lib/aco/plugins/*.so > "$work/check-bundled.log" ||
-  { grep -v "^PASS" "$work/check-bundled.log" >&2; exit 1; }
+# One process per plugin, as the suite's conformance_* tests run them (under ThreadSanitizer, one
+# process over all plugins once reported TBB's task hand-off unsymbolised, so unsuppressed).
+for plugin in "$prefix"/lib/aco/plugins/*.so; do
+  "$bin/aco-plugin-check" "$plugin" >> "$work/check-bundled.log" ||
+    { grep -v "^PASS" "$work/check-bundled.log" >&2; exit 1; }
+done
 [ "$(grep -c "^PASS update/ant_system \[defaults\]" "$work/check-bundled.log")" = 3 ]
 
 # Planning with the installed host: the six scaffolds, then the example.

@@ -18,89 +18,12 @@
 #include "acobench/results_db.hpp"
 #include "acobench/runner.hpp"
 #include "aco/error.hpp"
+#include "acobench_support.hpp"
 #include "support.hpp"
 
 using Catch::Contains;
 
-namespace {
-
-std::string map1() { return (test::data_dir() / "maps/classic20/map1.txt").string(); }
-
-// An experiment file in a fresh folder; {MAP1} and {ARENA} stand for absolute paths.
-std::filesystem::path experiment(const std::string& text) {
-  std::string yaml = text;
-  for (const auto& [key, value] : {std::pair<std::string, std::string>{"{MAP1}", map1()},
-                                   {"{ARENA}", (test::data_dir() / "maps/movingai/arena.map.scen").string()}})
-    for (auto at = yaml.find(key); at != std::string::npos; at = yaml.find(key)) yaml.replace(at, key.size(), value);
-  return test::temp_file("experiment.yaml", yaml);
-}
-
-acobench::Experiment load(const std::string& text) { return acobench::load_experiment(experiment(text), test::plugins()); }
-
-const char* kSmall = R"(name: small
-seed: 7
-repetitions: 4
-problems:
-  - map: {MAP1}
-    start: [0, 0]
-    goal: [19, 19]
-settings:
-  ants: 10
-  iterations: 15
-  corner-cutting: true
-baseline:
-  name: AS
-  update: {plugin: ant_system, rho: 0.3}
-configurations:
-  - name: ACS
-    update: {plugin: acs, xi: 0.2}
-    q0: 0.7
-factorial:
-  beta: [3, 7]
-)";
-
-test::CommandResult run_acobench(const std::vector<std::string>& args) {
-  std::vector<std::string> argv{ACO_TEST_ACOBENCH};
-  argv.insert(argv.end(), args.begin(), args.end());
-  return test::run(argv);
-}
-
-std::string file_bytes(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Every trial's identity and results, ordered, without the times.
-std::vector<std::string> trial_rows(const std::filesystem::path& db) {
-  std::vector<std::string> rows;
-  for (const auto& t : acobench::ResultsDb(db).trials()) {
-    std::ostringstream row;
-    row.precision(17);
-    row << t.problem << " " << t.config << " " << t.repetition << " " << t.seed << " " << t.solved << " " << t.length << " "
-        << t.best_iteration << " " << t.ant_steps << " " << t.path_json;
-    for (double b : t.best_so_far) row << " " << b;
-    rows.push_back(row.str());
-  }
-  return rows;
-}
-
-int count_runs(const std::filesystem::path& db) {
-  sqlite3* handle = nullptr;
-  int count = -1;
-  if (sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
-    sqlite3_stmt* statement = nullptr;
-    if (sqlite3_prepare_v2(handle, "SELECT count(*) FROM runs", -1, &statement, nullptr) == SQLITE_OK &&
-        sqlite3_step(statement) == SQLITE_ROW)
-      count = sqlite3_column_int(statement, 0);
-    sqlite3_finalize(statement);
-  }
-  sqlite3_close(handle);
-  return count;
-}
-
-}  // namespace
+using namespace test::acobench_helpers;
 
 TEST_CASE("an experiment file expands into named, factorial and baseline configurations", "[acobench]") {
   const auto e = load(kSmall);
@@ -222,13 +145,7 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
 }
 
 TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly once", "[acobench][slow]") {
-  // Enough trials that the kill lands mid-way: 2 configurations x 150 repetitions of a few ms.
-  std::string text = kSmall;
-  text.replace(text.find("repetitions: 4"), 14, "repetitions: 150");
-  text.replace(text.find("ants: 10"), 8, "ants: 40");
-  text.replace(text.find("iterations: 15"), 14, "iterations: 60");
-  text.resize(text.find("factorial:"));
-  const auto file = experiment(text);
+  const auto file = experiment(kill_me_text());
   const auto killed = file.parent_path() / "killed.db", whole = file.parent_path() / "whole.db";
   REQUIRE(run_acobench({"run", file.string(), "--db", whole.string()}).exit_code == 0);
 
@@ -243,12 +160,8 @@ TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly
   pid_t child = 0;
   REQUIRE(posix_spawn(&child, exe.c_str(), &actions, nullptr, argv.data(), environ) == 0);
   posix_spawn_file_actions_destroy(&actions);
-  // Kill once some trials are committed; the loop gives up after a minute rather than hang.
-  int stored = 0;
-  for (int i = 0; i < 60000 && stored < 10; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    if (std::filesystem::exists(killed)) stored = std::max(stored, count_runs(killed));
-  }
+  // Kill once some trials are committed.
+  wait_for_trials(killed, 10);
   kill(child, SIGKILL);
   int status = 0;
   waitpid(child, &status, 0);

@@ -3,10 +3,11 @@
 set -euo pipefail
 # libssl-dev: SHA-256 of plugin files (provenance). clang: the test that loads a clang-built
 # plugin, and with libclang-rt-14-dev tools/fuzz.sh (libFuzzer, sanitizers). chromium: the tests
-# that open the HTML report and player. python3: the player test's arithmetic.
+# that open the HTML report and player. python3: the player test's arithmetic. openmpi-bin and
+# libopenmpi-dev: acobench under mpirun (the release and debug presets build it with MPI).
 packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
           nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev catch2 clang libclang-rt-14-dev
-          chromium python3)
+          chromium python3 openmpi-bin libopenmpi-dev)
 # r-cran-irace: tools/irace/run.sh and the irace_tuning_run test. Installed without its
 # recommended packages: they pull in hundreds of R packages (GDAL, spatial statistics) irace never loads.
 packages_without_recommends=(r-cran-irace)

@@ -1,6 +1,8 @@
 // acobench: ablation studies of plugin combinations, with a results database and reports.
-//   acobench run EXPERIMENT.yaml [--db FILE] [--threads N]
+//   acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--shard K/N]   (also under mpirun)
+//   acobench merge SHARD.db... [--db FILE]
 //   acobench report DATABASE [--out DIR]
+#include <signal.h>
 #include <unistd.h>
 
 #include <boost/program_options.hpp>
@@ -12,8 +14,10 @@
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
 #include "experiment.hpp"
+#include "mpi.hpp"
 #include "report.hpp"
 #include "runner.hpp"
+#include "shards.hpp"
 
 namespace po = boost::program_options;
 
@@ -22,10 +26,14 @@ namespace {
 constexpr const char* kUsage =
     "acobench: fair, reproducible comparisons of ant-colony plugin combinations.\n\n"
     "Usage:\n"
-    "  acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--plugin-dir DIR] [--max-memory SIZE]\n"
+    "  acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--shard K/N] [--plugin-dir DIR] [--max-memory SIZE]\n"
     "      run every trial the database does not hold yet (rerun the same command to continue);\n"
+    "      --shard K/N: only shard K of N of the trials, into its own database (merge them after);\n"
     "      --max-memory: refuse maps whose planning would need more (512M, 4G; default: 3/4 of the\n"
-    "      memory available at start)\n"
+    "      memory available at start). Under mpirun -n N (or srun), rank 0 writes the database and\n"
+    "      the other ranks run the trials, each on --threads threads\n"
+    "  acobench merge DATABASE... [--db FILE]\n"
+    "      one database of the trials of several of an experiment's (shards, or any runs of it)\n"
     "  acobench report DATABASE [--out DIR]\n"
     "      statistics, Markdown and HTML report, CSV of all runs\n\n";
 
@@ -73,14 +81,84 @@ class Progress {
   std::chrono::steady_clock::time_point began_, last_;
 };
 
+// Told when a run is stopped (Ctrl-C, a scheduler's time limit, mpirun ending the job after a
+// rank died): every trial finished before is stored, and the same command runs only the others.
+// Written with write(), the only output a signal handler may use, from text made beforehand.
+std::string stopped_message;
+
+void tell_stopped(int signal_number) {
+  [[maybe_unused]] const auto written = write(STDERR_FILENO, stopped_message.data(), stopped_message.size());
+  ::signal(signal_number, SIG_DFL);
+  ::raise(signal_number);
+}
+
+void on_stop_tell(const std::string& database, const std::string& command) {
+  stopped_message = "\nacobench: stopped by a signal; every trial finished before it is stored in " + database +
+                    ": run `" + command + "` again to run the others\n";
+  for (const int s : {SIGINT, SIGTERM, SIGHUP}) ::signal(s, tell_stopped);
+}
+
+std::string command_line(const std::vector<std::string>& args) {
+  std::string text = "acobench run";
+  for (const auto& a : args) text += " " + a;
+  return text;
+}
+
+void print_summary(const acobench::RunSummary& s, const acobench::Experiment& experiment, const acobench::RunOptions& run) {
+  std::cout << "acobench: " << experiment.name << (run.shard ? " shard " + acobench::to_string(*run.shard) : "") << ": "
+            << s.trials << " trials, " << s.skipped << " already in " << run.database.string() << ", " << s.ran
+            << " run in " << s.seconds << " s (" << (s.seconds > 0 ? s.ran / s.seconds : 0.0) << " trials/s)\n";
+  if (s.ablation_left)
+    std::cout << "acobench: the experiment's ablation path is not run by shards: merge the shards (acobench merge), "
+                 "then `acobench run` of the merged database runs it\n";
+  if (!s.failures.empty()) {
+    // The experiment went on; the failed trials are stored as such (runs.error) and reported.
+    std::cerr << "acobench: " << s.failures.size() << " trials failed:\n";
+    for (std::size_t i = 0; i < s.failures.size() && i < 10; ++i) std::cerr << "  " << s.failures[i] << "\n";
+    if (s.failures.size() > 10) std::cerr << "  ... (all in the report)\n";
+  }
+}
+
+#ifdef ACOBENCH_WITH_MPI
+// Rank 0 coordinates and writes the database, the others run trials. A rank that fails ends the
+// job (the others would wait for it forever); mpirun reports which.
+int run_with_ranks(const acobench::mpi::Session& session, const acobench::Experiment& experiment,
+                   aco::PluginRegistry& registry, acobench::RunOptions run, const std::vector<std::string>& args) {
+  try {
+    if (session.rank() > 0) {
+      acobench::mpi::serve_trials(session, experiment, registry, run.threads);
+      return 0;
+    }
+    acobench::mpi::Coordinator coordinator(session, experiment.fingerprint(registry));
+    run.executor = &coordinator;
+    run.progress = Progress();
+    on_stop_tell(run.database.string(), command_line(args));
+    const auto s = acobench::run_experiment(experiment, registry, run);
+    coordinator.finish();
+    print_summary(s, experiment, run);
+    const auto per_trial = [&](double seconds) { return s.ran ? 1e6 * seconds / static_cast<double>(s.ran) : 0.0; };
+    std::cout << "acobench: " << session.size() - 1 << " worker ranks; the coordinator (rank 0) handled messages for "
+              << coordinator.busy_seconds() << " s, " << per_trial(coordinator.busy_seconds())
+              << " us per trial, of which storing in the database " << per_trial(coordinator.storing_seconds())
+              << " us and handing out and receiving "
+              << per_trial(coordinator.busy_seconds() - coordinator.storing_seconds()) << " us\n";
+    return 0;
+  } catch (...) {
+    std::cerr << "acobench: rank " << session.rank() << ": error: " << aco::describe_current_exception() << "\n";
+    session.abort(1);
+  }
+}
+#endif
+
 int run(const std::vector<std::string>& args) {
   po::options_description options("acobench run");
-  std::string db;
+  std::string db, shard;
   int threads = 0;
   std::vector<std::string> plugin_dirs;
   options.add_options()("experiment", po::value<std::string>()->required(), "experiment file (YAML)")
       ("db", po::value(&db), "results database (default: the experiment file's name with .db, in the current folder)")
       ("threads", po::value(&threads), "worker threads, 0 = all cores; results do not depend on it")
+      ("shard", po::value(&shard)->value_name("K/N"), "only shard K of N of the trials, into its own database")
       ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins")
       ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
   po::positional_options_description positional;
@@ -93,23 +171,67 @@ int run(const std::vector<std::string>& args) {
   if (vm.count("max-memory")) max_memory = aco::parse_memory_size(vm["max-memory"].as<std::string>());
   const aco::MemoryLimit memory(max_memory);
   const std::filesystem::path file = vm["experiment"].as<std::string>();
+  acobench::RunOptions run;
+  if (!shard.empty()) run.shard = acobench::parse_shard(shard);
+  const std::string stem = file.stem().string();
+  run.database = !db.empty() ? std::filesystem::path(db)
+                 : run.shard ? std::filesystem::path(stem + ".shard-" + std::to_string(run.shard->index) + "-of-" +
+                                                     std::to_string(run.shard->count) + ".db")
+                             : std::filesystem::path(stem + ".db");
+  run.threads = threads;
   std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
   aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));
+#ifndef ACOBENCH_WITH_MPI
+  if (acobench::mpi::launched_ranks() > 1)
+    throw aco::Error("this acobench was built without MPI but was started as one of " +
+                     std::to_string(acobench::mpi::launched_ranks()) +
+                     " MPI processes, which would each run every trial: build it with MPI (libopenmpi-dev installed, "
+                     "cmake -DACO_WITH_MPI=ON) or run one process");
+#endif
+  // Before MPI starts: loading probes each plugin in a forked child, and some MPI transports
+  // (InfiniBand's) object to fork().
   const acobench::Experiment experiment = acobench::load_experiment(file, registry);
-  acobench::RunOptions run;
-  run.database = db.empty() ? std::filesystem::path(file.stem().string() + ".db") : std::filesystem::path(db);
-  run.threads = threads;
+#ifdef ACOBENCH_WITH_MPI
+  std::optional<acobench::mpi::Session> session;
+  if (acobench::mpi::started_by_launcher()) session.emplace();
+  if (session && session->size() > 1) return run_with_ranks(*session, experiment, registry, run, args);
+#endif
   run.progress = Progress();
-  const auto s = acobench::run_experiment(experiment, registry, run);
-  std::cout << "acobench: " << experiment.name << ": " << s.trials << " trials, " << s.skipped << " already in "
-            << run.database.string() << ", " << s.ran << " run in " << s.seconds << " s ("
-            << (s.seconds > 0 ? s.ran / s.seconds : 0.0) << " trials/s)\n";
-  if (!s.failures.empty()) {
-    // The experiment went on; the failed trials are stored as such (runs.error) and reported.
-    std::cerr << "acobench: " << s.failures.size() << " trials failed:\n";
-    for (std::size_t i = 0; i < s.failures.size() && i < 10; ++i) std::cerr << "  " << s.failures[i] << "\n";
-    if (s.failures.size() > 10) std::cerr << "  ... (all in the report)\n";
+  on_stop_tell(run.database.string(), command_line(args));
+  print_summary(acobench::run_experiment(experiment, registry, run), experiment, run);
+  return 0;
+}
+
+int merge(const std::vector<std::string>& args) {
+  po::options_description options("acobench merge");
+  std::string db;
+  options.add_options()("databases", po::value<std::vector<std::string>>()->required(), "results databases to merge")
+      ("db", po::value(&db), "the merged database, created or added to (default: the experiment file's name with "
+                             ".db, in the current folder)");
+  po::positional_options_description positional;
+  positional.add("databases", -1);
+  po::variables_map vm;
+  po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
+  po::notify(vm);
+  const auto names = vm["databases"].as<std::vector<std::string>>();
+  const std::vector<std::filesystem::path> inputs(names.begin(), names.end());
+  std::string experiment_file = "EXPERIMENT.yaml";
+  if (const auto stored = acobench::ResultsDb(inputs.front()).find_meta("experiment_file")) experiment_file = *stored;
+  const std::filesystem::path output =
+      db.empty() ? std::filesystem::path(std::filesystem::path(experiment_file).stem().string() + ".db")
+                 : std::filesystem::path(db);
+  const auto s = acobench::merge_databases(inputs, output);
+  std::cout << "acobench: merged " << inputs.size() << " databases into " << output.string() << ": " << s.copied
+            << " trials copied, " << s.duplicates << " held twice (identical, kept once), "
+            << s.expected - s.missing << " of the configurations' " << s.expected << " trials now stored\n";
+  const std::string rerun = "acobench run " + experiment_file + " --db " + output.string();
+  if (s.missing) {
+    std::cerr << "acobench: warning: " << s.missing << " trials are in none of the databases:\n";
+    for (const auto& line : s.missing_by_shard) std::cerr << "  " << line << "\n";
+    std::cerr << "  rerun those shards and merge again, or run them here: " << rerun << "\n";
   }
+  if (s.ablation_left)
+    std::cout << "acobench: the experiment's ablation path is not in the shards: " << rerun << " runs it\n";
   return 0;
 }
 
@@ -139,8 +261,9 @@ int main(int argc, char** argv) {
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     if (args[0] == "run") return run(rest);
+    if (args[0] == "merge") return merge(rest);
     if (args[0] == "report") return report(rest);
-    throw aco::Error("unknown command '" + args[0] + "' (use run or report)");
+    throw aco::Error("unknown command '" + args[0] + "' (use run, merge or report)");
   } catch (const po::error& e) {
     std::cerr << "acobench: error: " << e.what() << "\n";
   } catch (...) {  // anything, a std::exception or not, is reported and exits 1

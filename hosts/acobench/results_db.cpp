@@ -201,33 +201,6 @@ std::string first_difference(const std::string& stored, const std::string& now) 
 
 std::string shortened(const std::string& text) { return text.size() > 300 ? text.substr(0, 300) + "..." : text; }
 
-// Why a stored fingerprint is not the experiment's: for acobench's fingerprints (JSON objects,
-// Experiment::fingerprint), the plugin binary or the part of the experiment that changed; for any
-// other text, its first differing line.
-std::string fingerprint_change(const std::string& stored, const std::string& now) {
-  const auto a = nlohmann::json::parse(stored, nullptr, false), b = nlohmann::json::parse(now, nullptr, false);
-  if (!a.is_object() || !b.is_object()) return "the experiment file changed since (" + first_difference(stored, now) + ")";
-  if (b.contains("plugins") && !a.contains("plugins"))
-    return "its trials were stored by an acobench that did not record which plugin binaries ran them, so "
-           "resuming could mix the trials of two builds (the database can still be reported)";
-  if (a.value("plugins", nlohmann::json::object()) != b.value("plugins", nlohmann::json::object())) {
-    const auto pa = a.at("plugins"), pb = b.at("plugins");
-    for (const auto& [plugin, then] : pa.items())
-      if (pb.contains(plugin) && pb.at(plugin) != then)
-        return "another binary of plugin " + plugin + " (stored: version " + then.value("version", "?") + ", sha256 " +
-               then.value("sha256", "?") + "; now: version " + pb.at(plugin).value("version", "?") + ", sha256 " +
-               pb.at(plugin).value("sha256", "?") + ", " + pb.at(plugin).value("file", "?") +
-               "): resuming would mix the trials of two binaries; run the stored binary again";
-  }
-  for (const auto& [key, then] : a.items())
-    if (!b.contains(key) || b.at(key) != then)
-      return "the experiment file changed since (" + key + ": stored " + shortened(then.dump()) + ", now " +
-             (b.contains(key) ? shortened(b.at(key).dump()) : "(missing)") + ")";
-  for (const auto& [key, value] : b.items())
-    if (!a.contains(key)) return "the experiment file changed since (" + key + ": new, " + shortened(value.dump()) + ")";
-  return "the experiment file changed since (" + first_difference(stored, now) + ")";
-}
-
 std::string hostname() {
   char name[256] = {};
   return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
@@ -587,12 +560,44 @@ std::vector<TrialRecord> ResultsDb::trials() const {
   return all;
 }
 
+// acobench's fingerprints are JSON objects (Experiment::fingerprint); of any other text, the first
+// differing line is told.
+std::string fingerprint_change(const std::string& stored, const std::string& now) {
+  const auto a = nlohmann::json::parse(stored, nullptr, false), b = nlohmann::json::parse(now, nullptr, false);
+  if (!a.is_object() || !b.is_object()) return "the experiment file changed since (" + first_difference(stored, now) + ")";
+  if (b.contains("plugins") && !a.contains("plugins"))
+    return "its trials were stored by an acobench that did not record which plugin binaries ran them, so "
+           "resuming could mix the trials of two builds (the database can still be reported)";
+  if (a.value("plugins", nlohmann::json::object()) != b.value("plugins", nlohmann::json::object())) {
+    const auto pa = a.at("plugins"), pb = b.at("plugins");
+    for (const auto& [plugin, then] : pa.items())
+      if (pb.contains(plugin) && pb.at(plugin) != then)
+        return "another binary of plugin " + plugin + " (stored: version " + then.value("version", "?") + ", sha256 " +
+               then.value("sha256", "?") + "; now: version " + pb.at(plugin).value("version", "?") + ", sha256 " +
+               pb.at(plugin).value("sha256", "?") + ", " + pb.at(plugin).value("file", "?") +
+               "): resuming would mix the trials of two binaries; run the stored binary again";
+  }
+  for (const auto& [key, then] : a.items())
+    if (!b.contains(key) || b.at(key) != then)
+      return "the experiment file changed since (" + key + ": stored " + shortened(then.dump()) + ", now " +
+             (b.contains(key) ? shortened(b.at(key).dump()) : "(missing)") + ")";
+  for (const auto& [key, value] : b.items())
+    if (!a.contains(key)) return "the experiment file changed since (" + key + ": new, " + shortened(value.dump()) + ")";
+  return "the experiment file changed since (" + first_difference(stored, now) + ")";
+}
+
 std::string ResultsDb::meta(const std::string& key) const {
+  const auto value = find_meta(key);
+  if (!value) throw Error(impl_->file() + ": no " + in_quotes(key) + " in acobench_meta");
+  return *value;
+}
+
+std::optional<std::string> ResultsDb::find_meta(const std::string& key) const {
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
   Statement read(d.db, "SELECT value FROM acobench_meta WHERE key = ?1");
   read.run(key);
-  if (!read.next()) throw Error(d.file() + ": no " + in_quotes(key) + " in acobench_meta");
+  if (!read.next()) return std::nullopt;
   return read.text(0);
 }
 

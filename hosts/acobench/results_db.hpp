@@ -115,6 +115,7 @@ class ResultsDb {
   std::vector<std::pair<int, ConfigRecord>> configs() const;  // (id, record) in insertion order
   std::vector<TrialRecord> trials() const;                    // ordered by (problem, config, repetition)
   std::string meta(const std::string& key) const;             // Error if the key is not stored
+  std::optional<std::string> find_meta(const std::string& key) const;
   // Stores a key of acobench_meta beyond those open() writes (e.g. the ablation path).
   void set_meta(const std::string& key, const std::string& value);
 
@@ -122,5 +123,9 @@ class ResultsDb {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// Why the fingerprint `now` is not the `stored` one, for messages: for acobench's fingerprints,
+// the plugin binary or the part of the experiment that changed.
+std::string fingerprint_change(const std::string& stored, const std::string& now);
 
 }  // namespace acobench

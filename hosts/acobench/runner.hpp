@@ -1,29 +1,60 @@
 #pragma once
-// Runs an experiment's trials in parallel into a results database, skipping trials the
-// database already holds, so an interrupted run continues where it stopped.
+// Runs an experiment's trials into a results database, skipping trials the database already
+// holds, so an interrupted run continues where it stopped. Where the trials run is an executor's
+// business: threads of this process (the default), or MPI worker ranks (mpi.hpp).
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "aco/plugin_registry.hpp"
 #include "experiment.hpp"
+#include "shards.hpp"
+#include "trial_runner.hpp"
 
 namespace acobench {
+
+// Runs batches of trials and hands back each record.
+class TrialExecutor {
+ public:
+  virtual ~TrialExecutor() = default;
+  // Runs every trial (their configurations are prepared in `runner`) and calls `finished` with
+  // each record, from one thread at a time, in any order.
+  virtual void run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+                   const std::function<void(const TrialRecord&)>& finished) = 0;
+};
+
+// The trials on this process's threads (TBB); results do not depend on their number.
+class ThreadExecutor : public TrialExecutor {
+ public:
+  explicit ThreadExecutor(int threads) : threads_(threads) {}
+  void run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+           const std::function<void(const TrialRecord&)>& finished) override;
+
+ private:
+  int threads_;
+};
 
 struct RunOptions {
   std::filesystem::path database;
   int threads = 0;  // 0 = all cores; results do not depend on it
   // Called after every stored trial with (done, total); from one thread at a time.
   std::function<void(std::size_t done, std::size_t total)> progress;
+  // Only this shard's trials of the configurations (an ablation path is left to a run of the
+  // merged database: its rounds need every trial of the round before).
+  std::optional<Shard> shard;
+  // Where the trials run; nullptr: a ThreadExecutor with `threads`.
+  TrialExecutor* executor = nullptr;
 };
 
 struct RunSummary {
-  std::size_t trials = 0;   // trials of the experiment
+  std::size_t trials = 0;   // trials of the experiment (of the shard)
   std::size_t skipped = 0;  // already in the database
   std::size_t ran = 0;
   std::vector<std::string> failures;  // the messages of the trials run now that threw (stored as failed)
   double seconds = 0.0;
+  bool ablation_left = false;  // a shard: the experiment's ablation path was not run
 };
 
 RunSummary run_experiment(const Experiment& experiment, aco::PluginRegistry& registry, const RunOptions& options);

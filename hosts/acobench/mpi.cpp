@@ -1,0 +1,330 @@
+#include "mpi.hpp"
+
+#include <mpi.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <iostream>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <thread>
+
+#include "aco/error.hpp"
+#include "aco/thread_limit.hpp"
+
+namespace acobench::mpi {
+namespace {
+
+using nlohmann::json;
+
+// Worker -> coordinator: {"want": n, "records": [...]}, the first also {"hello": {...}}.
+// Coordinator -> worker: {"configs": [...], "trials": [[problem, config, repetition], ...]}.
+constexpr int kToCoordinator = 1, kWork = 2, kStop = 3;
+
+// Messages are CBOR: it keeps every double's bits, infinities and NaN included, which the
+// records' best-so-far curves and simulation measures hold.
+void send(const json& message, int to, int tag) {
+  const std::vector<std::uint8_t> bytes = json::to_cbor(message);
+  MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, to, tag, MPI_COMM_WORLD);
+}
+
+struct Received {
+  int from = 0, tag = 0;
+  json message;
+};
+
+// The next message from `from` (MPI_ANY_SOURCE: anyone), if one has arrived.
+std::optional<Received> try_receive(int from) {
+  int arrived = 0;
+  MPI_Status status;
+  MPI_Iprobe(from, MPI_ANY_TAG, MPI_COMM_WORLD, &arrived, &status);
+  if (!arrived) return std::nullopt;
+  int size = 0;
+  MPI_Get_count(&status, MPI_BYTE, &size);
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+  MPI_Recv(bytes.data(), size, MPI_BYTE, status.MPI_SOURCE, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+  return Received{status.MPI_SOURCE, status.MPI_TAG, bytes.empty() ? json() : json::from_cbor(bytes)};
+}
+
+// Blocking MPI calls spin on a core (Open MPI's default); the ranks poll and sleep instead,
+// briefly at first, so the cores run trials.
+class Backoff {
+ public:
+  void idle() {
+    std::this_thread::sleep_for(wait_);
+    longer();
+  }
+  void longer() { wait_ = std::min(wait_ * 2, std::chrono::microseconds(1000)); }
+  void busy() { wait_ = std::chrono::microseconds(20); }
+  std::chrono::microseconds wait() const { return wait_; }
+
+ private:
+  std::chrono::microseconds wait_{20};
+};
+
+Received receive(int from) {
+  Backoff backoff;
+  for (;;) {
+    if (auto message = try_receive(from)) return std::move(*message);
+    backoff.idle();
+  }
+}
+
+std::string host_name() {
+  char name[256] = {};
+  return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string("?");
+}
+
+json to_json(const TrialRecord& t) {
+  json j = {{"problem", t.problem},     {"config", t.config},       {"repetition", t.repetition},
+            {"seed", t.seed},           {"solved", t.solved},       {"length", t.length},
+            {"grid_length", t.grid_length}, {"turns", t.turns},     {"iterations", t.iterations},
+            {"best_iteration", t.best_iteration}, {"time", t.time_s}, {"ant_steps", t.ant_steps},
+            {"stopped_by", t.stopped_by}, {"path", t.path_json},    {"best_so_far", t.best_so_far},
+            {"error", t.error}};
+  if (const auto& s = t.simulation)
+    j["simulation"] = {{"outcome", s->outcome},   {"time_to_goal", s->time_to_goal}, {"collisions", s->collisions},
+                       {"replans", s->replans},   {"clearance", s->clearance},       {"control_steps", s->control_steps}};
+  return j;
+}
+
+TrialRecord record_from(const json& j) {
+  TrialRecord t;
+  t.problem = j.at("problem");
+  t.config = j.at("config");
+  t.repetition = j.at("repetition");
+  t.seed = j.at("seed");
+  t.solved = j.at("solved");
+  t.length = j.at("length");
+  t.grid_length = j.at("grid_length");
+  t.turns = j.at("turns");
+  t.iterations = j.at("iterations");
+  t.best_iteration = j.at("best_iteration");
+  t.time_s = j.at("time");
+  t.ant_steps = j.at("ant_steps");
+  t.stopped_by = j.at("stopped_by");
+  t.path_json = j.at("path");
+  t.best_so_far = j.at("best_so_far").get<std::vector<double>>();
+  t.error = j.at("error");
+  if (j.contains("simulation")) {
+    const json& s = j.at("simulation");
+    t.simulation = SimulationRecord{s.at("outcome"), s.at("time_to_goal"), s.at("collisions"),
+                                    s.at("replans"), s.at("clearance"),    s.at("control_steps")};
+  }
+  return t;
+}
+
+}  // namespace
+
+Session::Session() {
+  int provided = 0;
+  // Only the main thread of a rank calls MPI.
+  MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+Session::~Session() { MPI_Finalize(); }
+
+void Session::abort(int code) const {
+  std::cerr.flush();
+  MPI_Abort(MPI_COMM_WORLD, code);
+  std::_Exit(code);  // MPI_Abort does not return; this is for the compiler
+}
+
+struct Coordinator::State {
+  const Session& session;
+  std::string fingerprint;
+  std::deque<std::pair<int, int>> waiting;  // (rank, trials wanted) of workers that asked for work
+  std::map<int, std::set<int>> known;       // per rank: the configuration ids it has been sent
+  std::set<int> greeted;                    // ranks whose fingerprint was checked
+  std::chrono::steady_clock::duration busy{}, stored{};  // handling messages; of that, storing records
+
+  int workers() const { return session.size() - 1; }
+
+  // Records go to `finished`; a request for work waits in `waiting`.
+  void handle(const Received& m, std::size_t& outstanding, const std::function<void(const TrialRecord&)>& finished) {
+    const auto began = std::chrono::steady_clock::now();
+    if (m.message.contains("hello")) greet(m.from, m.message.at("hello"));
+    for (const json& r : m.message.at("records")) {
+      --outstanding;
+      TrialRecord record = record_from(r);
+      const auto storing = std::chrono::steady_clock::now();
+      finished(record);
+      stored += std::chrono::steady_clock::now() - storing;
+    }
+    if (const int want = m.message.at("want"); want > 0) waiting.emplace_back(m.from, want);
+    busy += std::chrono::steady_clock::now() - began;
+  }
+
+  void greet(int rank, const json& hello) {
+    greeted.insert(rank);
+    if (hello.at("fingerprint") == fingerprint) return;
+    std::cerr << "acobench: error: rank " << rank << " on host " << hello.at("host").get<std::string>()
+              << " loaded another experiment than rank 0 on " << host_name() << ": "
+              << fingerprint_change(fingerprint, hello.at("fingerprint"))
+              << " (every rank must see the same experiment file, maps and plugin binaries)\n";
+    session.abort(1);
+  }
+
+  // Hands trials to the workers that asked, each at most its share of what is left, so the
+  // last trials spread over the workers.
+  void serve(TrialRunner& runner, std::deque<TrialOrder>& queue, std::size_t& outstanding) {
+    while (!waiting.empty() && !queue.empty()) {
+      const auto began = std::chrono::steady_clock::now();
+      const auto [rank, want] = waiting.front();
+      waiting.pop_front();
+      const std::size_t share = (queue.size() + workers() - 1) / workers();
+      const std::size_t count = std::min<std::size_t>(static_cast<std::size_t>(want), share);
+      json work = {{"configs", json::array()}, {"trials", json::array()}};
+      for (std::size_t i = 0; i < count; ++i) {
+        const TrialOrder t = queue.front();
+        queue.pop_front();
+        if (known[rank].insert(t.config).second) {
+          const Configuration& c = runner.config(t.config);
+          work["configs"].push_back({{"id", t.config}, {"name", c.name}, {"keys", c.keys}});
+        }
+        work["trials"].push_back({t.problem, t.config, t.repetition});
+      }
+      send(work, rank, kWork);
+      outstanding += count;
+      busy += std::chrono::steady_clock::now() - began;
+    }
+  }
+};
+
+Coordinator::Coordinator(const Session& session, std::string fingerprint)
+    : state_(std::make_unique<State>(State{session, std::move(fingerprint), {}, {}, {}, {}, {}})) {}
+
+Coordinator::~Coordinator() = default;
+
+void Coordinator::run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+                      const std::function<void(const TrialRecord&)>& finished) {
+  std::deque<TrialOrder> queue(trials.begin(), trials.end());
+  std::size_t outstanding = 0;
+  State& s = *state_;
+  s.serve(runner, queue, outstanding);
+  while (!queue.empty() || outstanding > 0) {
+    s.handle(receive(MPI_ANY_SOURCE), outstanding, finished);
+    s.serve(runner, queue, outstanding);
+  }
+}
+
+void Coordinator::finish() {
+  State& s = *state_;
+  std::set<int> stopped;
+  const auto stop_waiting = [&] {
+    for (const auto& [rank, want] : s.waiting)
+      if (stopped.insert(rank).second) send(json(), rank, kStop);
+    s.waiting.clear();
+  };
+  stop_waiting();
+  std::size_t none = 0;
+  while (static_cast<int>(stopped.size()) < s.workers()) {
+    s.handle(receive(MPI_ANY_SOURCE), none, [](const TrialRecord&) {
+      throw aco::Error("a worker sent a trial that was not handed out");
+    });
+    stop_waiting();
+  }
+}
+
+double Coordinator::busy_seconds() const { return std::chrono::duration<double>(state_->busy).count(); }
+
+double Coordinator::storing_seconds() const { return std::chrono::duration<double>(state_->stored).count(); }
+
+void serve_trials(const Session&, const Experiment& experiment, aco::PluginRegistry& registry, int threads) {
+  TrialRunner runner(experiment, registry);
+  const aco::ThreadLimit limit(threads);
+  const int lanes = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+
+  // The lanes take trials from `queue` and put records in `done`; the main thread talks to rank 0.
+  std::mutex mutex;
+  std::condition_variable work_ready, record_ready;
+  std::deque<TrialOrder> queue;
+  std::vector<TrialRecord> done;
+  bool stopping = false;
+  std::vector<std::thread> pool;
+  for (int i = 0; i < lanes; ++i)
+    pool.emplace_back([&] {
+      std::unique_lock lock(mutex);
+      for (;;) {
+        work_ready.wait(lock, [&] { return stopping || !queue.empty(); });
+        if (queue.empty()) return;
+        const TrialOrder t = queue.front();
+        queue.pop_front();
+        lock.unlock();
+        TrialRecord record = runner.run(t);
+        lock.lock();
+        done.push_back(std::move(record));
+        record_ready.notify_one();
+      }
+    });
+
+  // Asks for work when half its lanes' worth is left, for up to two lanes' worth in hand.
+  const auto finish = [&] {
+    {
+      const std::lock_guard lock(mutex);
+      stopping = true;
+    }
+    work_ready.notify_all();
+    for (auto& thread : pool) thread.join();
+  };
+  try {
+    std::size_t in_hand = 0;  // handed out to this rank, not yet sent back
+    bool asked = false, told_to_stop = false, greeted = false;
+    Backoff backoff;
+    for (;;) {
+      std::vector<TrialRecord> records;
+      {
+        std::unique_lock lock(mutex);
+        record_ready.wait_for(lock, backoff.wait(), [&] { return !done.empty(); });
+        records.swap(done);
+      }
+      const int want = !asked && !told_to_stop && in_hand <= static_cast<std::size_t>(lanes)
+                           ? 2 * lanes - static_cast<int>(in_hand)
+                           : 0;
+      if (want > 0 || !records.empty()) {
+        json message = {{"want", want}, {"records", json::array()}};
+        for (const auto& r : records) message["records"].push_back(to_json(r));
+        if (!greeted) message["hello"] = {{"fingerprint", experiment.fingerprint(registry)}, {"host", host_name()}};
+        send(message, 0, kToCoordinator);
+        greeted = true;
+        in_hand -= records.size();
+        asked = asked || want > 0;
+        backoff.busy();
+      }
+      if (auto m = try_receive(0)) {
+        backoff.busy();
+        if (m->tag == kStop) {
+          told_to_stop = true;
+        } else {
+          for (const json& c : m->message.at("configs")) {
+            Configuration config;
+            config.name = c.at("name");
+            config.keys = c.at("keys").get<aco::Keys>();
+            runner.add_config(c.at("id"), config);
+          }
+          {
+            const std::lock_guard lock(mutex);
+            for (const json& t : m->message.at("trials")) queue.push_back({t.at(0), t.at(1), t.at(2)});
+          }
+          in_hand += m->message.at("trials").size();
+          asked = false;
+          work_ready.notify_all();
+        }
+      } else if (records.empty()) {
+        backoff.longer();  // the wait for a record above is the sleep
+      }
+      if (told_to_stop && in_hand == 0) break;
+    }
+  } catch (...) {
+    finish();
+    throw;
+  }
+  finish();
+}
+
+}  // namespace acobench::mpi

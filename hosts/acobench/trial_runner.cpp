@@ -1,0 +1,230 @@
+#include "trial_runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <shared_mutex>
+
+#include "aco/error.hpp"
+#include "aco/map_io.hpp"
+#include "aco/plugin_guard.hpp"
+#include "acosim/batch.hpp"
+
+namespace acobench {
+namespace {
+
+std::string path_json(const aco::Waypoints& path) {
+  const bool flat = std::all_of(path.begin(), path.end(), [](const auto& p) { return p.z() == 0.0; });
+  nlohmann::json j = nlohmann::json::array();
+  for (const auto& p : path) {
+    if (flat) j.push_back({p.x(), p.y()});
+    else j.push_back({p.x(), p.y(), p.z()});
+  }
+  return j.dump();
+}
+
+// A problem's maps by terrain options, and their graphs by neighbourhood and corner rule.
+// Loading checks start and goal as acoplan does (aco::load_problem).
+struct PreparedProblem {
+  using TerrainKey = std::tuple<double, double, double>;
+  using GraphKey = std::tuple<TerrainKey, int, bool>;
+  std::string name;
+  aco::ProblemSpec spec;
+  std::map<TerrainKey, aco::LoadedProblem> maps;
+  std::map<GraphKey, aco::Graph> graphs;
+
+  static TerrainKey terrain_key(const aco::TerrainOptions& t) { return {t.max_slope_deg, t.height_scale, t.cell_size}; }
+  static GraphKey graph_key(const aco::RunSpec& run) {
+    return {terrain_key(run.problem.terrain), static_cast<int>(run.graph.neighbourhood), run.graph.corner_cutting};
+  }
+  const aco::Map& map(const aco::TerrainOptions& terrain) {
+    auto it = maps.find(terrain_key(terrain));
+    if (it == maps.end()) {
+      aco::ProblemSpec with = spec;
+      with.terrain = terrain;
+      it = maps.emplace(terrain_key(terrain), aco::load_problem(with)).first;
+    }
+    return *it->second.map;
+  }
+  // Errors (a map that does not load, a blocked start with these terrain options) name the problem.
+  const aco::Graph& graph(const aco::RunSpec& run) {
+    auto it = graphs.find(graph_key(run));
+    if (it != graphs.end()) return it->second;
+    try {
+      return graphs.emplace(graph_key(run), aco::build_graph(map(run.problem.terrain), run.graph)).first->second;
+    } catch (const aco::Error& error) {
+      throw aco::Error("problem '" + name + "': " + error.what());
+    }
+  }
+};
+
+}  // namespace
+
+// add_config() may prepare a configuration (on an MPI worker) while trials of others run: it
+// writes under the lock, a trial looks up its configuration and graph under it.
+struct TrialRunner::Problems {
+  std::vector<PreparedProblem> list;
+  std::shared_mutex mutex;
+};
+
+struct TrialRunner::Prepared {
+  Configuration config;
+  aco::RunSpec run;
+  std::map<int, acosim::Scenario> scenarios;  // per simulation problem: its scenario with this configuration's keys
+};
+
+TrialRunner::TrialRunner(const Experiment& experiment, aco::PluginRegistry& registry)
+    : experiment_(experiment), registry_(registry), problems_(std::make_unique<Problems>()) {
+  for (const Problem& p : experiment.problems) {
+    PreparedProblem prepared;
+    prepared.name = p.name;
+    prepared.spec.map = p.map;
+    prepared.spec.start = p.start;
+    prepared.spec.goal = p.goal;
+    problems_->list.push_back(std::move(prepared));
+  }
+}
+
+TrialRunner::~TrialRunner() = default;
+
+void TrialRunner::add_config(int id, const Configuration& c) {
+  const std::unique_lock lock(problems_->mutex);
+  if (configs_.contains(id)) return;
+  auto prepared = std::make_unique<Prepared>();
+  prepared->config = c;
+  prepared->run = c.run ? *c.run : resolve(c, experiment_.problems, registry_);
+  try {
+    for (std::size_t p = 0; p < problems_->list.size(); ++p) {
+      if (const auto& scenario = experiment_.problems[p].simulation) {
+        try {
+          prepared->scenarios.emplace(static_cast<int>(p), acosim::with_run_keys(*scenario, c, registry_));
+        } catch (const aco::Error& error) {
+          throw aco::Error("problem '" + problems_->list[p].name + "': " + error.what());
+        }
+      } else {
+        problems_->list[p].graph(prepared->run);
+      }
+    }
+  } catch (const aco::Error& error) {
+    throw aco::Error("configuration '" + c.name + "', " + error.what());
+  }
+  configs_.emplace(id, std::move(prepared));
+}
+
+const Configuration& TrialRunner::config(int id) const {
+  const std::shared_lock lock(problems_->mutex);
+  return configs_.at(id)->config;
+}
+
+bool TrialRunner::has_config(int id) const {
+  const std::shared_lock lock(problems_->mutex);
+  return configs_.contains(id);
+}
+
+const aco::RunSpec& TrialRunner::run(int id) const {
+  const std::shared_lock lock(problems_->mutex);
+  return configs_.at(id)->run;
+}
+
+const aco::Graph& TrialRunner::graph(int problem, const aco::RunSpec& run) {
+  const std::unique_lock lock(problems_->mutex);
+  return problems_->list.at(static_cast<std::size_t>(problem)).graph(run);
+}
+
+TrialRecord TrialRunner::run(const TrialOrder& t) {
+  try {
+    return experiment_.problems[t.problem].simulation ? simulate(t) : plan(t);
+  } catch (...) {
+    TrialRecord r;
+    r.problem = t.problem;
+    r.config = t.config;
+    r.repetition = t.repetition;
+    r.seed = trial_seed(experiment_.seed, experiment_.problems[t.problem].name, t.repetition);
+    r.stopped_by = "error";
+    r.path_json = "[]";
+    r.error = "configuration '" + config(t.config).name + "', problem '" + experiment_.problems[t.problem].name +
+              "', repetition " + std::to_string(t.repetition) + ": " + aco::describe_current_exception();
+    return r;
+  }
+}
+
+TrialRecord TrialRunner::plan(const TrialOrder& t) {
+  const Problem& problem = experiment_.problems[t.problem];
+  const aco::Graph* graph = nullptr;
+  aco::RunSpec run;
+  {
+    const std::shared_lock lock(problems_->mutex);
+    run = configs_.at(t.config)->run;
+    graph = &problems_->list[t.problem].graphs.at(PreparedProblem::graph_key(run));
+  }
+  run.colony.seed = trial_seed(experiment_.seed, problem.name, t.repetition);
+  const aco::PlanOutcome o = aco::plan(registry_, *graph, graph->node(problem.start), graph->node(problem.goal), run);
+  TrialRecord r;
+  r.problem = t.problem;
+  r.config = t.config;
+  r.repetition = t.repetition;
+  r.seed = o.seed;
+  r.solved = o.solved();
+  r.length = o.length;
+  r.grid_length = o.search.length;
+  r.turns = o.turns;
+  r.iterations = o.search.iterations;
+  r.best_iteration = o.search.best_iteration;
+  r.time_s = o.time_ms / 1000.0;
+  r.ant_steps = static_cast<std::uint64_t>(o.count("ant_steps"));
+  r.stopped_by = o.text("stopped_by");
+  r.path_json = path_json(o.path);
+  r.best_so_far = o.search.best_so_far;
+  return r;
+}
+
+// A simulation trial: the robot driven through the scenario (or the trial's variation of it)
+// with the configuration's run; the colony's seed is the trial's. length is the distance
+// driven, path the trajectory.
+TrialRecord TrialRunner::simulate(const TrialOrder& t) {
+  const Problem& problem = experiment_.problems[t.problem];
+  const std::uint64_t seed = trial_seed(experiment_.seed, problem.name, t.repetition);
+  const auto began = std::chrono::steady_clock::now();
+  // Variations are drawn on the scenario as written, so every configuration meets the same ones.
+  acosim::Scenario scenario = problem.variations ? acosim::variations(*problem.simulation, 1, seed, registry_).front()
+                                                 : *problem.simulation;
+  {
+    const std::shared_lock lock(problems_->mutex);
+    const acosim::Scenario& configured = configs_.at(t.config)->scenarios.at(t.problem);
+    scenario.keys = configured.keys;
+    scenario.run = configured.run;
+  }
+  scenario.run.colony.seed = seed;
+  const acosim::SimulationResult sim = acosim::simulate(scenario, registry_);
+  TrialRecord r;
+  r.problem = t.problem;
+  r.config = t.config;
+  r.repetition = t.repetition;
+  r.seed = seed;
+  r.solved = sim.reached;
+  r.length = r.grid_length = sim.distance;
+  r.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  r.stopped_by = sim.outcome;
+  aco::Waypoints trajectory;
+  const std::size_t every = std::max<std::size_t>(1, sim.frames.size() / 500);  // at most ~500 points
+  for (std::size_t i = 0; i < sim.frames.size(); i += every) trajectory.emplace_back(sim.frames[i].robot.x, sim.frames[i].robot.y, 0.0);
+  trajectory.emplace_back(sim.frames.back().robot.x, sim.frames.back().robot.y, 0.0);
+  r.path_json = path_json(trajectory);
+  r.simulation = SimulationRecord{sim.outcome, sim.reached ? sim.time : std::nan(""), sim.collisions, sim.replans,
+                                  std::isfinite(sim.min_clearance) ? sim.min_clearance : std::nan(""), sim.steps};
+  return r;
+}
+
+std::string settings_json(const Configuration& config, const aco::RunSpec& run, const aco::PluginRegistry& registry) {
+  nlohmann::json j;
+  j["keys"] = config.keys;
+  j["run"] = nlohmann::ordered_json::parse(aco::to_json(run));
+  // Name, version and hash of each slot's binary; not its file: a moved build is the same.
+  j["plugins"] = nlohmann::ordered_json::parse(aco::plugins_json(run, registry));
+  for (auto& plugin : j["plugins"]) plugin.erase("file");
+  return j.dump();
+}
+
+}  // namespace acobench

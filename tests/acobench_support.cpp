@@ -1,0 +1,161 @@
+// Helpers of the acobench tests (acobench_support.hpp).
+#include "acobench_support.hpp"
+
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+#include <fstream>
+#include <sstream>
+
+#include "acobench/results_db.hpp"
+
+namespace test::acobench_helpers {
+
+std::string map1() { return (test::data_dir() / "maps/classic20/map1.txt").string(); }
+
+std::filesystem::path experiment(const std::string& text) {
+  std::string yaml = text;
+  for (const auto& [key, value] : {std::pair<std::string, std::string>{"{MAP1}", map1()},
+                                   {"{ARENA}", (test::data_dir() / "maps/movingai/arena.map.scen").string()}})
+    for (auto at = yaml.find(key); at != std::string::npos; at = yaml.find(key)) yaml.replace(at, key.size(), value);
+  return test::temp_file("experiment.yaml", yaml);
+}
+
+acobench::Experiment load(const std::string& text) { return acobench::load_experiment(experiment(text), test::plugins()); }
+
+const char* const kSmall = R"(name: small
+seed: 7
+repetitions: 4
+problems:
+  - map: {MAP1}
+    start: [0, 0]
+    goal: [19, 19]
+settings:
+  ants: 10
+  iterations: 15
+  corner-cutting: true
+baseline:
+  name: AS
+  update: {plugin: ant_system, rho: 0.3}
+configurations:
+  - name: ACS
+    update: {plugin: acs, xi: 0.2}
+    q0: 0.7
+factorial:
+  beta: [3, 7]
+)";
+
+std::string kill_me_text() {
+  std::string text = kSmall;
+  text.replace(text.find("repetitions: 4"), 14, "repetitions: 150");
+  text.replace(text.find("ants: 10"), 8, "ants: 40");
+  text.replace(text.find("iterations: 15"), 14, "iterations: 60");
+  text.resize(text.find("factorial:"));
+  return text;
+}
+
+void wait_for_trials(const std::filesystem::path& db, int count) {
+  for (int i = 0; i < 60000; ++i) {
+    if (std::filesystem::exists(db) && count_runs(db) >= count) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
+test::CommandResult run_acobench(const std::vector<std::string>& args, const std::vector<std::string>& env) {
+  std::vector<std::string> argv{ACO_TEST_ACOBENCH};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return test::run(argv, env);
+}
+
+std::string file_bytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> trial_rows(const std::filesystem::path& db) {
+  std::vector<std::string> rows;
+  for (const auto& t : acobench::ResultsDb(db).trials()) {
+    std::ostringstream row;
+    row.precision(17);
+    row << t.problem << " " << t.config << " " << t.repetition << " " << t.seed << " " << t.solved << " " << t.length << " "
+        << t.best_iteration << " " << t.ant_steps << " " << t.path_json;
+    for (double b : t.best_so_far) row << " " << b;
+    rows.push_back(row.str());
+  }
+  return rows;
+}
+
+namespace {
+
+// Every row of a query, its columns as text (reals with all their digits), sorted.
+std::vector<std::string> query_rows(sqlite3* handle, const std::string& sql) {
+  std::vector<std::string> rows;
+  sqlite3_stmt* statement = nullptr;
+  if (sqlite3_prepare_v2(handle, sql.c_str(), -1, &statement, nullptr) != SQLITE_OK)
+    return {std::string("cannot query: ") + sqlite3_errmsg(handle)};
+  while (sqlite3_step(statement) == SQLITE_ROW) {
+    std::ostringstream row;
+    row.precision(17);
+    for (int c = 0; c < sqlite3_column_count(statement); ++c) {
+      switch (sqlite3_column_type(statement, c)) {
+        case SQLITE_NULL: row << "NULL"; break;
+        case SQLITE_INTEGER: row << sqlite3_column_int64(statement, c); break;
+        case SQLITE_FLOAT: row << sqlite3_column_double(statement, c); break;
+        default: row << '"' << reinterpret_cast<const char*>(sqlite3_column_text(statement, c)) << '"';
+      }
+      row << '|';
+    }
+    rows.push_back(row.str());
+  }
+  sqlite3_finalize(statement);
+  std::sort(rows.begin(), rows.end());
+  return rows;
+}
+
+}  // namespace
+
+std::vector<std::string> database_rows(const std::filesystem::path& db) {
+  sqlite3* handle = nullptr;
+  if (sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
+    sqlite3_close(handle);
+    return {"cannot open " + db.string()};
+  }
+  const std::string trial = "e.name, c.name, r.repetition";
+  std::vector<std::string> all;
+  for (const std::string& sql : std::vector<std::string>{
+           "SELECT 'problem', name, version, setup, optimal_length FROM experiments",
+        "SELECT 'config', id, name, settings FROM plannerConfigs",
+        "SELECT 'run', " + trial + ", r.seed, r.solved, r.length, r.grid_length, r.gap, r.turns, r.iterations, "
+        "r.best_iteration, r.ant_steps, r.stopped_by, r.path, r.outcome, r.time_to_goal, r.collisions, r.replans, "
+        "r.clearance, r.control_steps, r.error FROM runs r JOIN experiments e ON e.id = r.experimentid "
+        "JOIN plannerConfigs c ON c.id = r.plannerid",
+        "SELECT 'progress', " + trial + ", p.iteration, p.best_cost FROM progress p JOIN runs r ON r.id = p.runid "
+        "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
+        "SELECT 'meta', key, value FROM acobench_meta WHERE key NOT IN ('experiment_file', 'shard')"}) {
+    const auto rows = query_rows(handle, sql);
+    all.insert(all.end(), rows.begin(), rows.end());
+  }
+  sqlite3_close(handle);
+  return all;
+}
+
+int count_runs(const std::filesystem::path& db) {
+  sqlite3* handle = nullptr;
+  int count = -1;
+  if (sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
+    sqlite3_stmt* statement = nullptr;
+    if (sqlite3_prepare_v2(handle, "SELECT count(*) FROM runs", -1, &statement, nullptr) == SQLITE_OK &&
+        sqlite3_step(statement) == SQLITE_ROW)
+      count = sqlite3_column_int(statement, 0);
+    sqlite3_finalize(statement);
+  }
+  sqlite3_close(handle);
+  return count;
+}
+
+
+}  // namespace test::acobench_helpers

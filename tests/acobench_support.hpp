@@ -1,0 +1,43 @@
+#pragma once
+// Helpers of the acobench tests: experiment files in fresh folders, running the acobench binary,
+// and reading results databases back for comparison.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "acobench/experiment.hpp"
+#include "support.hpp"
+
+namespace test::acobench_helpers {
+
+std::string map1();  // data/maps/classic20/map1.txt
+
+// An experiment file in a fresh folder; {MAP1} and {ARENA} stand for absolute paths.
+std::filesystem::path experiment(const std::string& text);
+acobench::Experiment load(const std::string& text);
+
+// Four configurations (AS, ACS, beta=3, beta=7) of 4 repetitions on map1: 16 quick trials.
+extern const char* const kSmall;
+
+// kSmall without the factorial, with 150 repetitions of heavier trials: 300 trials of a few ms,
+// enough that a process killed once some are stored is killed mid-way.
+std::string kill_me_text();
+
+// Waits until `db` holds at least `count` trials; gives up after a minute rather than hang.
+void wait_for_trials(const std::filesystem::path& db, int count);
+
+test::CommandResult run_acobench(const std::vector<std::string>& args, const std::vector<std::string>& env = {});
+
+std::string file_bytes(const std::filesystem::path& file);
+
+// Every trial's identity and results, ordered, without the times.
+std::vector<std::string> trial_rows(const std::filesystem::path& db);
+
+// The whole database as text rows, read with SQLite alone, without what may differ between two
+// runs of one experiment: row ids, times, the creation date and host. Two databases of the same
+// trials give the same rows whatever order the trials were stored in.
+std::vector<std::string> database_rows(const std::filesystem::path& db);
+
+int count_runs(const std::filesystem::path& db);
+
+}  // namespace test::acobench_helpers

@@ -2,7 +2,8 @@
 # acobench beyond one process, on this machine: bench/throughput.yaml (10,000 trials of the
 # papers' 20x20 setting) as one process, under mpirun with 1, 2 and 4 ranks (rank 0 coordinates,
 # the others run trials on all cores each, or on one thread each), and as 3 shards plus their
-# merge. Prints trials per second and the coordinator's time per trial.
+# merge. Prints trials per second and the coordinator's time per trial. mpirun runs with
+# --bind-to none: by default it binds each rank to one core when -n is 2 or less.
 #   tools/bench-cluster.sh [REPETITIONS]   (default 10000)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,11 +25,11 @@ report() {
 "$acobench" run "$work/throughput.yaml" --db "$work/single.db" >"$work/single.log" 2>/dev/null
 report "one process, $(nproc) threads" "$work/single.log"
 for ranks in 1 2 4; do
-  mpirun --oversubscribe -n "$ranks" "$acobench" run "$work/throughput.yaml" --db "$work/mpi$ranks.db" \
+  mpirun --oversubscribe --bind-to none -n "$ranks" "$acobench" run "$work/throughput.yaml" --db "$work/mpi$ranks.db" \
     >"$work/mpi$ranks.log" 2>/dev/null
   report "mpirun -n $ranks, workers on all cores" "$work/mpi$ranks.log"
 done
-mpirun --oversubscribe -n 3 "$acobench" run "$work/throughput.yaml" --db "$work/mpi3t1.db" --threads 1 \
+mpirun --oversubscribe --bind-to none -n 3 "$acobench" run "$work/throughput.yaml" --db "$work/mpi3t1.db" --threads 1 \
   >"$work/mpi3t1.log" 2>/dev/null
 report "mpirun -n 3, workers on 1 thread each" "$work/mpi3t1.log"
 

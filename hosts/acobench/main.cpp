@@ -195,6 +195,7 @@ int run(const std::vector<std::string>& args) {
   std::optional<acobench::mpi::Session> session;
   if (acobench::mpi::started_by_launcher()) session.emplace();
   if (session && session->size() > 1) return run_with_ranks(*session, experiment, registry, run, args);
+  if (session) acobench::mpi::warn_if_bound(*session, threads);
 #endif
   run.progress = Progress();
   on_stop_tell(run.database.string(), command_line(args));

@@ -1,6 +1,7 @@
 #include "mpi.hpp"
 
 #include <mpi.h>
+#include <sched.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -235,10 +236,30 @@ double Coordinator::busy_seconds() const { return std::chrono::duration<double>(
 
 double Coordinator::storing_seconds() const { return std::chrono::duration<double>(state_->stored).count(); }
 
-void serve_trials(const Session&, const Experiment& experiment, aco::PluginRegistry& registry, int threads) {
+int usable_cpus() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::max(1, CPU_COUNT(&set));
+}
+
+void warn_if_bound(const Session& session, int threads) {
+  const int usable = usable_cpus(), all = static_cast<int>(std::thread::hardware_concurrency());
+  if (usable >= all || (threads > 0 && threads <= usable)) return;
+  std::cerr << "acobench: warning: rank " << session.rank() << " on " << host_name() << " may use " << usable << " of its "
+            << all << " CPUs: the launcher bound it (mpirun binds each rank to one core when -n is 2 or less); "
+            << "start mpirun with --bind-to none, or give each rank its cores (Slurm: --cpus-per-task)\n";
+}
+
+void serve_trials(const Session& session, const Experiment& experiment, aco::PluginRegistry& registry, int threads) {
+  warn_if_bound(session, threads);
   TrialRunner runner(experiment, registry);
-  const aco::ThreadLimit limit(threads);
-  const int lanes = threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // All the CPUs this rank may use (its affinity mask, which a launcher may have narrowed), one
+  // trial on each. A trial's own TBB loops then run on its lane: TBB workers beside the lanes
+  // would only oversubscribe the cores (one process does the same, nesting them in its loop
+  // over trials).
+  const int lanes = threads > 0 ? threads : usable_cpus();
+  const aco::ThreadLimit limit(1);
 
   // The lanes take trials from `queue` and put records in `done`; the main thread talks to rank 0.
   std::mutex mutex;
@@ -263,7 +284,8 @@ void serve_trials(const Session&, const Experiment& experiment, aco::PluginRegis
       }
     });
 
-  // Asks for work when half its lanes' worth is left, for up to two lanes' worth in hand.
+  // Asks for work when two trials per lane are left, for up to four per lane in hand: the lanes
+  // keep busy while the request travels and rank 0 stores the records of others.
   const auto finish = [&] {
     {
       const std::lock_guard lock(mutex);
@@ -283,8 +305,8 @@ void serve_trials(const Session&, const Experiment& experiment, aco::PluginRegis
         record_ready.wait_for(lock, backoff.wait(), [&] { return !done.empty(); });
         records.swap(done);
       }
-      const int want = !asked && !told_to_stop && in_hand <= static_cast<std::size_t>(lanes)
-                           ? 2 * lanes - static_cast<int>(in_hand)
+      const int want = !asked && !told_to_stop && in_hand <= static_cast<std::size_t>(2 * lanes)
+                           ? 4 * lanes - static_cast<int>(in_hand)
                            : 0;
       if (want > 0 || !records.empty()) {
         json message = {{"want", want}, {"records", json::array()}};

@@ -71,6 +71,9 @@ class Coordinator : public TrialExecutor {
   std::unique_ptr<State> state_;
 };
 
+// Warns when the launcher bound this rank to fewer CPUs than it would use (`threads`, 0 = all).
+void warn_if_bound(const Session& session, int threads);
+
 // A worker rank: runs the trials rank 0 hands out, on `threads` threads (0 = all cores), until
 // told to stop.
 void serve_trials(const Session& session, const Experiment& experiment, aco::PluginRegistry& registry, int threads);

@@ -87,7 +87,7 @@ TEST_CASE("a trial's seed depends on the master seed, the problem and the repeti
   CHECK(a < (std::uint64_t{1} << 63));  // within the colony's seed range
 }
 
-TEST_CASE("the ablation path flips one component at a time; a slot's plugin carries its parameters", "[acobench]") {
+TEST_CASE("the ablation path flips one component at a time, and a slot's plugin carries its parameters", "[acobench]") {
   acobench::Configuration from{{{{"update", "ant_system"}, {"update.rho", "0.3"}, {"beta", "7"}}, {}}, "from", {}};
   acobench::Configuration to{{{{"update", "acs"}, {"update.xi", "0.2"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}}, "to", {}};
   const auto components = acobench::ablation_components(from, to);

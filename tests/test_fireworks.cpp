@@ -59,7 +59,7 @@ TEST_CASE("fireworks finds a valid start-goal path and its curve tells when", "[
   CHECK(r.evaluations <= 15u + 20u * (15u * 3u + 10u));
 }
 
-TEST_CASE("fireworks: same seed, same result on 1, 2 and 4 threads; another seed differs", "[fireworks][determinism]") {
+TEST_CASE("fireworks: same seed, same result on 1, 2 and 4 threads, and another seed differs", "[fireworks][determinism]") {
   const auto map = test::classic_map(2);
   const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::eight, false});
   aco::FireworksSettings s = defaults();

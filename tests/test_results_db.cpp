@@ -260,7 +260,7 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   CHECK_FALSE(fs::exists(missing));
 }
 
-TEST_CASE("simulation and failed trials store their measures; a format-1 database gains the columns and resumes",
+TEST_CASE("simulation and failed trials store their measures, and a format-1 database gains the columns and resumes",
           "[resultsdb]") {
   const fs::path file = fresh_db();
   int id = 0;

@@ -24,7 +24,7 @@ std::string key_error(const aco::Keys& keys, std::string* key = nullptr) {
 
 }  // namespace
 
-TEST_CASE("resolve_run types every key once; to_keys and JSON give the same run back", "[run_spec]") {
+TEST_CASE("resolve_run types every key once, and to_keys and JSON give the same run back", "[run_spec]") {
   const aco::Keys keys{{"map", "m.map"},          {"start", "1,2"},         {"goal", "30,4"},
                        {"max-slope", "35"},        {"neighbourhood", "16"},  {"corner-cutting", "true"},
                        {"ants", "20"},             {"search", "bidirectional"}, {"update", "acs"},

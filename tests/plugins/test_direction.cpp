@@ -59,7 +59,7 @@ TEST_CASE("direction: eta = 1 / (d(next, goal) + gamma * |turn| / pi), raised to
   CHECK(one[0] == 1.0);
 }
 
-TEST_CASE("direction with gamma 0 is the distance heuristic; distance=step uses the step length", "[plugin][direction]") {
+TEST_CASE("direction with gamma 0 is the distance heuristic, and distance=step uses the step length", "[plugin][direction]") {
   const auto map = test::grid({"....", "....", "...."});
   const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::sixteen, false});
   const auto context = test::context(g, {0, 0}, {3, 2});

@@ -29,7 +29,7 @@ TEST_CASE("fireworks init: tau0 everywhere, plus Q / L_best on the fireworks pat
   CHECK(raised == static_cast<int>(best.path.size()) - 1);  // the path's direction only
 }
 
-TEST_CASE("fireworks init: its table is tau0, q and the fireworks table; bad values are rejected", "[plugin][fireworks]") {
+TEST_CASE("fireworks init: its table is tau0, q and the fireworks table, and bad values are rejected", "[plugin][fireworks]") {
   const auto& d = test::plugins().load("init", "fireworks");
   const auto params = d.parameters();
   REQUIRE(params.size() == 2 + aco::fireworks_parameters().size());

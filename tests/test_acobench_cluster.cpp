@@ -167,14 +167,17 @@ std::vector<std::string> mpirun(int ranks, const std::vector<std::string>& args)
   return argv;
 }
 
-// The pid of the acobench process that is MPI rank `rank`, from the processes' environments.
-pid_t rank_pid(int rank) {
+// The pid of the acobench process that is MPI rank `rank` of the run writing `db` (other tests
+// may run other mpiruns at the same time), from the processes' command lines and environments.
+pid_t rank_pid(int rank, const std::filesystem::path& db) {
   const std::string wanted = "OMPI_COMM_WORLD_RANK=" + std::to_string(rank);
   for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
     const std::string name = entry.path().filename().string();
     if (name.find_first_not_of("0123456789") != std::string::npos) continue;
     std::error_code error;
     if (std::filesystem::read_symlink(entry.path() / "exe", error).filename() != "acobench") continue;
+    const std::string command = file_bytes(entry.path() / "cmdline");
+    if (command.find(db.string() + '\0') == std::string::npos) continue;
     const std::string environment = file_bytes(entry.path() / "environ");
     for (std::size_t at = 0; at < environment.size(); at = environment.find('\0', at) + 1) {
       if (environment.compare(at, wanted.size() + 1, wanted + '\0') == 0) return std::stoi(name);
@@ -204,7 +207,10 @@ TEST_CASE("under mpirun -n 3 the database is the single-process one, the ablatio
 
 TEST_CASE("under mpirun a worker killed mid-run ends the run with a message, and the rerun runs the missing trials only",
           "[acobench][mpi][slow]") {
-  const auto file = experiment(kill_me_text());
+  // Three times the single-process test's trials: two workers are faster than one process.
+  std::string text = kill_me_text();
+  text.replace(text.find("iterations: 60"), 14, "iterations: 180");
+  const auto file = experiment(text);
   const auto killed = sibling(file, "killed.db"), whole = sibling(file, "whole.db");
   REQUIRE(run_acobench({"run", file.string(), "--db", whole.string()}).exit_code == 0);
 
@@ -227,7 +233,7 @@ TEST_CASE("under mpirun a worker killed mid-run ends the run with a message, and
   posix_spawn_file_actions_destroy(&actions);
   // Kill rank 2 once some trials are stored.
   wait_for_trials(killed, 10);
-  const pid_t worker = rank_pid(2);
+  const pid_t worker = rank_pid(2, killed);
   REQUIRE(worker > 0);
   kill(worker, SIGKILL);
   int status = 0;

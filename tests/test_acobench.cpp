@@ -243,7 +243,10 @@ TEST_CASE("an experiment sets terrain keys per configuration: max-slope limits t
   REQUIRE(e.configurations.size() == 3);
   CHECK(acobench::resolve(e.configurations[1], test::plugins()).problem.terrain.max_slope_deg == 60.0);
   const auto db_file = file.parent_path() / "slopes.db";
-  const auto summary = acobench::run_experiment(e, test::plugins(), {db_file, 2, {}});
+  acobench::RunOptions options;
+  options.database = db_file;
+  options.threads = 2;
+  const auto summary = acobench::run_experiment(e, test::plugins(), options);
   CHECK(summary.ran == 6);
   const acobench::ResultsDb db(db_file);
   const auto configs = db.configs();
@@ -295,7 +298,10 @@ TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per co
 
   const auto run = [&](const std::string& name, int threads) {
     const auto db_file = file.parent_path() / name;
-    acobench::run_experiment(e, test::plugins(), {db_file, threads, {}});
+    acobench::RunOptions options;
+    options.database = db_file;
+    options.threads = threads;
+    acobench::run_experiment(e, test::plugins(), options);
     return acobench::ResultsDb(db_file).trials();
   };
   const auto trials = run("sim1.db", 1);

@@ -2,7 +2,6 @@
 
 #include <mpi.h>
 #include <sched.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <condition_variable>
@@ -72,11 +71,6 @@ Received receive(int from) {
     if (auto message = try_receive(from)) return std::move(*message);
     backoff.idle();
   }
-}
-
-std::string host_name() {
-  char name[256] = {};
-  return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string("?");
 }
 
 json to_json(const TrialRecord& t) {
@@ -165,7 +159,7 @@ struct Coordinator::State {
     greeted.insert(rank);
     if (hello.at("fingerprint") == fingerprint) return;
     std::cerr << "acobench: error: rank " << rank << " on host " << hello.at("host").get<std::string>()
-              << " loaded another experiment than rank 0 on " << host_name() << ": "
+              << " loaded another experiment than rank 0 on " << hostname() << ": "
               << fingerprint_change(fingerprint, hello.at("fingerprint"))
               << " (every rank must see the same experiment file, maps and plugin binaries)\n";
     session.abort(1);
@@ -246,7 +240,7 @@ int usable_cpus() {
 void warn_if_bound(const Session& session, int threads) {
   const int usable = usable_cpus(), all = static_cast<int>(std::thread::hardware_concurrency());
   if (usable >= all || (threads > 0 && threads <= usable)) return;
-  std::cerr << "acobench: warning: rank " << session.rank() << " on " << host_name() << " may use " << usable << " of its "
+  std::cerr << "acobench: warning: rank " << session.rank() << " on " << hostname() << " may use " << usable << " of its "
             << all << " CPUs: the launcher bound it (mpirun binds each rank to one core when -n is 2 or less); "
             << "start mpirun with --bind-to none, or give each rank its cores (Slurm: --cpus-per-task)\n";
 }
@@ -311,7 +305,7 @@ void serve_trials(const Session& session, const Experiment& experiment, aco::Plu
       if (want > 0 || !records.empty()) {
         json message = {{"want", want}, {"records", json::array()}};
         for (const auto& r : records) message["records"].push_back(to_json(r));
-        if (!greeted) message["hello"] = {{"fingerprint", experiment.fingerprint(registry)}, {"host", host_name()}};
+        if (!greeted) message["hello"] = {{"fingerprint", experiment.fingerprint(registry)}, {"host", hostname()}};
         send(message, 0, kToCoordinator);
         greeted = true;
         in_hand -= records.size();

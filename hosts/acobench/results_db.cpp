@@ -201,10 +201,6 @@ std::string first_difference(const std::string& stored, const std::string& now) 
 
 std::string shortened(const std::string& text) { return text.size() > 300 ? text.substr(0, 300) + "..." : text; }
 
-std::string hostname() {
-  char name[256] = {};
-  return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
-}
 
 // The CPU model and thread count, as OMPL records its cpuinfo: for reading results, not using them.
 std::string cpuinfo() {
@@ -233,6 +229,11 @@ const std::filesystem::path& checked_before_opening(const std::filesystem::path&
 }
 
 }  // namespace
+
+std::string hostname() {
+  char name[256] = {};
+  return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
+}
 
 struct ResultsDb::Impl {
   explicit Impl(const std::filesystem::path& file) : db(file) {}

@@ -124,6 +124,9 @@ class ResultsDb {
   std::unique_ptr<Impl> impl_;
 };
 
+// This machine's name, as the experiments table records it ("" if unknown).
+std::string hostname();
+
 // Why the fingerprint `now` is not the `stored` one, for messages: for acobench's fingerprints,
 // the plugin binary or the part of the experiment that changed.
 std::string fingerprint_change(const std::string& stored, const std::string& now);

@@ -118,16 +118,6 @@ const Configuration& TrialRunner::config(int id) const {
   return configs_.at(id)->config;
 }
 
-bool TrialRunner::has_config(int id) const {
-  const std::shared_lock lock(problems_->mutex);
-  return configs_.contains(id);
-}
-
-const aco::RunSpec& TrialRunner::run(int id) const {
-  const std::shared_lock lock(problems_->mutex);
-  return configs_.at(id)->run;
-}
-
 const aco::Graph& TrialRunner::graph(int problem, const aco::RunSpec& run) {
   const std::unique_lock lock(problems_->mutex);
   return problems_->list.at(static_cast<std::size_t>(problem)).graph(run);

@@ -35,9 +35,6 @@ class TrialRunner {
   // every graph and scenario its trials need built. Errors name the configuration and problem.
   void add_config(int id, const Configuration& config);
   const Configuration& config(int id) const;
-  bool has_config(int id) const;
-  // The configuration's run as resolved, for the database's settings.
-  const aco::RunSpec& run(int id) const;
 
   // The graph of a problem with a run's terrain and graph options (built on first use).
   const aco::Graph& graph(int problem, const aco::RunSpec& run);

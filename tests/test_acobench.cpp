@@ -342,6 +342,11 @@ TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per co
   CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()), Contains("configuration 'bad'") && Contains("local.follow"));
   std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: missing.yaml}\n";
   CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("cannot open the scenario file"));
+  // Found by the experiment fuzz harness: a folder given as the scenario escaped as the stream
+  // library's std::ios_base::failure (acobench printed "basic_filebuf::underflow error").
+  std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: ../}\n";
+  CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("is a directory, not a scenario file"));
+  CHECK_THROWS_WITH(acobench::load_experiment(file.parent_path(), test::plugins()), Contains("is a directory, not an experiment file"));
 }
 
 TEST_CASE("a trial whose plugin throws is stored as failed, named, and the experiment goes on", "[acobench][boundary]") {

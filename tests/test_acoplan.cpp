@@ -165,6 +165,14 @@ TEST_CASE("acoplan rejects malformed map files with the file, line and problem",
   expect_error({"--map", "/tmp", "--start", "0,0", "--goal", "1,0"}, "/tmp: is a directory, not a file");
 }
 
+// A folder read as a config file used to read as an empty one: a run with the defaults, no
+// error. /dev/zero never ended.
+TEST_CASE("acoplan refuses a config file that is a folder or a device", "[acoplan][bad-input]") {
+  expect_error({"--config", "/tmp"}, "/tmp: is a directory, not a config file");
+  expect_error({"--config", "/dev/zero"}, "/dev/zero: not a regular file");
+  expect_error({"--config", "/nonexistent/run.ini"}, "/nonexistent/run.ini: cannot open the config file");
+}
+
 TEST_CASE("acoplan rejects blocked, out-of-range and malformed start and goal cells", "[acoplan][bad-input]") {
   expect_error({"--map", map1, "--start", "6,0", "--goal", "19,19"}, "start (6,0) is blocked: an obstacle (" + map1 + ")");
   expect_error({"--map", map1, "--start", "0,0", "--goal", "25,3"}, "goal (25,3) is outside the 20x20 map");
@@ -202,7 +210,7 @@ TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range val
   expect_error({"stray"}, "stray");
   const auto config = test::temp_file("bad.ini", "ants = 10\n[update]\nrhoo = 0.2\n");
   expect_error({"--config", config.string()}, "unknown option '--update.rhoo'; did you mean '--update.rho'?");
-  expect_error({"--config", "/nonexistent.ini"}, "--config: cannot open '/nonexistent.ini'");
+  expect_error({"--config", "/nonexistent.ini"}, "/nonexistent.ini: cannot open the config file");
 }
 
 TEST_CASE("acoplan refuses a plugin built for another ABI version", "[acoplan][bad-input][abi]") {

@@ -136,6 +136,9 @@ TEST_CASE("acosim: bad scenarios are errors naming the file, the line and the ke
   CHECK_THAT(error("run: {map: open.txt, start: [0, 2]}\n"), Contains("'run' needs 'goal'"));
   CHECK_THAT(error(run + "obstacles: []\n"), Contains("unknown key 'obstacles'"));
   CHECK_THAT(error(run + "moving:\n  - {route: [[3, 3]], speed: 1}\n"), Contains("at least two points"));
+  CHECK_THROWS_WITH(acosim::load_scenario(std::filesystem::temp_directory_path(), test::plugins()),
+                    Contains("is a directory, not a scenario file"));
+  CHECK_THROWS_WITH(acosim::load_scenario("/dev/zero", test::plugins()), Contains("/dev/zero: not a regular file"));
 }
 
 TEST_CASE("acosim: the bundled paper-003 scenarios reach the goal without a collision", "[acosim]") {

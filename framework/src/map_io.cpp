@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/input_file.hpp"
 #include "aco/memory_limit.hpp"
 
 namespace aco {
@@ -91,19 +92,8 @@ std::string lower_case(std::string text) {
   return text;
 }
 
-// Only regular files are read: a directory is not a map, and a device or a pipe (/dev/zero)
-// may never end.
-void check_regular_file(const std::filesystem::path& file) {
-  std::error_code error;
-  const auto status = std::filesystem::status(file, error);
-  if (error || !std::filesystem::exists(status)) throw Error(file.string() + ": cannot open file");
-  if (std::filesystem::is_directory(status)) throw Error(file.string() + ": is a directory, not a file");
-  if (!std::filesystem::is_regular_file(status))
-    throw Error(file.string() + ": not a regular file (a device, pipe or socket may never end): refused");
-}
-
 std::ifstream open(const std::filesystem::path& file) {
-  check_regular_file(file);
+  check_input_file(file);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw Error(file.string() + ": cannot open file");
   return in;
@@ -241,7 +231,7 @@ GreyImage read_pgm(std::istream& in, const std::string& name) {
 
 OccupancyGrid load_ros_map(const std::filesystem::path& yaml_file) {
   const std::string name = yaml_file.string();
-  check_regular_file(yaml_file);
+  check_input_file(yaml_file);
   YAML::Node doc;
   try {
     doc = YAML::LoadFile(name);

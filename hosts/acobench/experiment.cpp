@@ -9,6 +9,7 @@
 
 #include "aco/colony.hpp"
 #include "aco/error.hpp"
+#include "aco/input_file.hpp"
 #include "aco/map_io.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/rng.hpp"
@@ -165,6 +166,7 @@ aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& pr
 }
 
 Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistry& registry) {
+  aco::check_input_file(file, "experiment");
   YAML::Node doc;
   try {
     doc = YAML::LoadFile(file.string());

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/input_file.hpp"
 #include "aco/install_layout.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/planning.hpp"
@@ -101,8 +102,9 @@ po::variables_map parse(const po::options_description& options, int argc, const 
   po::store(parsed, vm);
   if (vm.count("config")) {
     const auto file = vm["config"].as<std::string>();
+    aco::check_input_file(file, "config");
     std::ifstream in(file);
-    if (!in) throw aco::Error("--config: cannot open '" + file + "'");
+    if (!in) throw aco::Error(file + ": cannot open the config file");
     po::store(po::parse_config_file(in, options, lenient), vm);
   }
   po::notify(vm);

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "aco/error.hpp"
+#include "aco/input_file.hpp"
 #include "aco/settings_table.hpp"
 #include "aco/yaml_keys.hpp"
 #include "simulation.hpp"
@@ -129,6 +130,7 @@ Scenario with_run_keys(const Scenario& scenario, const aco::KeyedValues& changes
 }
 
 Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& registry) {
+  aco::check_input_file(file, "scenario");
   YAML::Node doc;
   try {
     doc = YAML::LoadFile(file.string());

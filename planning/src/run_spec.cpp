@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "aco/input_file.hpp"
 #include "aco/map_io.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/planning.hpp"
@@ -293,6 +294,7 @@ KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
 }
 
 Keys read_config_file(const std::string& path) {
+  check_input_file(path, "config");
   std::ifstream in(path);
   if (!in) throw Error(path + ": cannot open the config file");
   namespace po = boost::program_options;

@@ -4,6 +4,8 @@
 #   tools/fuzz.sh short          CI: each harness for FUZZ_SECONDS (default 15) seconds, one at a time
 #   tools/fuzz.sh long [RUNS]    RUNS executions per harness (default 1000000), two at a time, niced
 #   tools/fuzz.sh TARGET [libFuzzer options...]   one harness, e.g. tools/fuzz.sh esri_ascii -runs=1000
+#     A slow harness on both cores, sharing one corpus (each job's log is fuzz-N.log here):
+#     tools/fuzz.sh experiment -jobs=2 -workers=2 -runs=500000
 # FUZZ_TARGETS="esri_ascii pgm_heights" limits short and long runs (and the build) to those.
 # Seeds: the small files of data/ (and ../shared/data) of each format, tests/fuzz/corpus/<target>
 # and the regression inputs. A crash leaves its input in build/fuzz/crashes/<target>/: fix the
@@ -61,8 +63,9 @@ summary() {
   local target="$1" status log="$out/logs/$1.log"
   status=$(cat "$out/logs/$target.status")
   local runs seconds
-  runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
-  seconds=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | grep -o 'in [0-9]*' | grep -o '[0-9]*' || echo "?")
+  # With -jobs=J the log holds each job's figures: executions add up, seconds are the longest job's.
+  runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{n += $2} END {print NR ? n : "?"}')
+  seconds=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | awk '$5 > s {s = $5} END {print NR ? s : "?"}')
   if [ "$status" -eq 0 ]; then
     printf 'fuzz: %-14s %10s executions in %5s s, no crash\n' "$target" "$runs" "$seconds"
   else

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the build needs; only the missing ones, so it is quick to rerun.
+#   tools/setup.sh [PACKAGE...]   also these (a tool's own needs, e.g. tools/slurm-check.sh's Slurm)
 set -euo pipefail
 # libssl-dev: SHA-256 of plugin files (provenance). clang: the test that loads a clang-built
 # plugin, and with libclang-rt-14-dev tools/fuzz.sh (libFuzzer, sanitizers). chromium: the tests
@@ -7,7 +8,7 @@ set -euo pipefail
 # libopenmpi-dev: acobench under mpirun (the release and debug presets build it with MPI).
 packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
           nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev catch2 clang libclang-rt-14-dev
-          chromium python3 openmpi-bin libopenmpi-dev)
+          chromium python3 openmpi-bin libopenmpi-dev "$@")
 # r-cran-irace: tools/irace/run.sh and the irace_tuning_run test. Installed without its
 # recommended packages: they pull in hundreds of R packages (GDAL, spatial statistics) irace never loads.
 packages_without_recommends=(r-cran-irace)

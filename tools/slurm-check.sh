@@ -6,25 +6,19 @@
 # The scripts run as written; only their size is scaled down from the sbatch command line
 # (one node, 3 tasks, 1 CPU each). The study is data/experiments/ablation.yaml (every paper's
 # plugins on 11 problems, then an ablation path) with REPETITIONS repetitions.
-# Without a running Slurm it starts a one-node cluster (Debian's slurm-wlm and munge, as root):
+# Without a running Slurm it starts a one-node cluster (Debian's slurm-wlm and munge, installed by
+# tools/setup.sh; as root):
 # slurmctld and slurmd for this host, no cgroups.
 #   tools/slurm-check.sh [REPETITIONS]   (default 2)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repo=$PWD
+tools/setup.sh slurm-wlm munge
 tools/build.sh release >/dev/null
 export PATH="$repo/build/release/hosts/acobench:$PATH"
 
 start_local_slurm() {
   [ "$(id -u)" -eq 0 ] || { echo "slurm-check: no Slurm is running, and starting one needs root" >&2; exit 1; }
-  local missing=()
-  for package in slurm-wlm munge; do
-    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
-  done
-  if ((${#missing[@]})); then
-    apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
-  fi
   local host marker="# A one-node Slurm written by tools/slurm-check.sh"
   if [ -e /etc/slurm/slurm.conf ] && [ "$(head -1 /etc/slurm/slurm.conf)" != "$marker" ]; then
     echo "slurm-check: no Slurm is running, and /etc/slurm/slurm.conf is not this script's: start that Slurm first" >&2
@@ -34,7 +28,8 @@ start_local_slurm() {
   mkdir -p /var/spool/slurmd /var/log/slurm /run/munge /var/lib/slurm/slurmctld
   chown slurm:slurm /var/log/slurm /var/lib/slurm/slurmctld
   chown munge:munge /run/munge
-  # The node line as slurmd measures this machine (CPUs, sockets, memory).
+  # The node line as slurmd measures this machine (CPUs, sockets, cores), without its memory:
+  # a node found with less memory than configured is drained.
   cat >/etc/slurm/slurm.conf <<EOF
 $marker
 ClusterName=local
@@ -98,19 +93,39 @@ same_as_reference() {
   echo "slurm-check: $label: the same $copied trials as the single-process run, with the same results"
 }
 
+# Submits a batch job from folder $1 (the other arguments are sbatch's), waits for it, and prints
+# its final state: COMPLETED, FAILED, CANCELLED... (sbatch --wait exits 0 for a job cancelled
+# because the jobs it depends on failed).
+run_job() {
+  local folder=$1 id
+  shift
+  id=$(cd "$folder" && sbatch --parsable --wait "$@") || true
+  scontrol show job "$id" -o | grep -o 'JobState=[A-Z_]*' | cut -d= -f2
+}
+
 failed=0
+# A batch job's verdict: it completed, and its database is the reference's.
+verdict() {
+  local label=$1 state=$2 db=$3
+  if [ "$state" != COMPLETED ]; then
+    echo "slurm-check: $label FAILED: its last batch job ended $state (the output is above)" >&2
+    failed=1
+  else
+    same_as_reference "$label" "$db" || failed=1
+  fi
+}
+
 study mpi
-(cd "$work/mpi" && sbatch --wait --quiet --nodes=1 --ntasks=3 --cpus-per-task=1 --output=slurm-%j.out \
-  "$repo/docs/slurm/study-mpi.sh") || { failed=1; cat "$work"/mpi/slurm-*.out >&2; }
-sed 's/^/  mpi | /' "$work"/mpi/slurm-*.out
-[ "$failed" -eq 1 ] || same_as_reference "study-mpi.sh (srun --mpi=pmix, 3 ranks)" "$work/mpi/study.db" || failed=1
+state=$(run_job "$work/mpi" --nodes=1 --ntasks=3 --cpus-per-task=1 --output=slurm-%j.out "$repo/docs/slurm/study-mpi.sh")
+sed 's/^/  mpi | /' "$work"/mpi/*.out || true
+verdict "study-mpi.sh (srun --mpi=pmix, 3 ranks)" "$state" "$work/mpi/study.db"
 
 study array
 array=$(cd "$work/array" && sbatch --parsable --array=1-3 --cpus-per-task=1 --output=slurm-%A_%a.out \
   "$repo/docs/slurm/study-array.sh")
-(cd "$work/array" && sbatch --wait --quiet --dependency="afterok:$array" --cpus-per-task=1 --output=merge-%j.out \
-  "$repo/docs/slurm/study-merge.sh") || { failed=1; cat "$work"/array/*.out >&2; }
-sed 's/^/  array | /' "$work"/array/slurm-*.out "$work"/array/merge-*.out
-[ "$failed" -eq 1 ] ||
-  same_as_reference "study-array.sh (3 shards) + study-merge.sh" "$work/array/study.db" || failed=1
+# --kill-on-invalid-dep: if a shard fails, the merge job is cancelled instead of waiting forever.
+state=$(run_job "$work/array" --dependency="afterok:$array" --kill-on-invalid-dep=yes --cpus-per-task=1 \
+  --output=merge-%j.out "$repo/docs/slurm/study-merge.sh")
+sed 's/^/  array | /' "$work"/array/slurm-*.out "$work"/array/merge-*.out || true
+verdict "study-array.sh (3 shards) + study-merge.sh" "$state" "$work/array/study.db"
 exit "$failed"

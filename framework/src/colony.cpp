@@ -106,8 +106,13 @@ class Colony {
   }
 
   void begin() {
-    p_.init->initialize(context_, tau_);
-    p_.update->start(context_, tau_);
+    if (s_.null_model == NullModel::no_learning) {
+      // The init and update plugins are never asked: with tau = 1 every candidate's tau^alpha is 1.
+      std::fill(tau_.begin(), tau_.end(), 1.0);
+    } else {
+      p_.init->initialize(context_, tau_);
+      p_.update->start(context_, tau_);
+    }
     uses_walk_ = p_.heuristic->uses_walk();
     compute_heuristic();
     by_node_ = p_.heuristic->varies_by_iteration() && p_.heuristic->updates_by_node();
@@ -118,6 +123,9 @@ class Colony {
   }
 
   void prepare(int iteration) {
+    // Every walk of the restart twin is a run's first: the first iteration's heuristic, and no
+    // walk limit, which would hand it the best path so far.
+    if (s_.null_model == NullModel::restarts) return;
     context_.iteration = iteration;
     if (s_.walk_limit > 0.0 && has_best_)
       max_moves_ = static_cast<std::uint64_t>(std::ceil(s_.walk_limit * static_cast<double>(best_.edges.size())));
@@ -143,7 +151,8 @@ class Colony {
 
   // Moves the ant one node on, backing off first while it is stuck. False: the ant died.
   bool step(Ant& ant, Scratch& scratch, Rng& rng) const {
-    return s_.alpha == 1.0 ? step<true>(ant, scratch, rng) : step<false>(ant, scratch, rng);
+    const bool tau_alpha_is_tau = s_.alpha == 1.0 || s_.null_model == NullModel::no_learning;
+    return tau_alpha_is_tau ? step<true>(ant, scratch, rng) : step<false>(ant, scratch, rng);
   }
 
   // One ant's whole walk to the goal; returns the number of moves it made.
@@ -164,7 +173,9 @@ class Colony {
     ant.length = 0.0;
     for (EdgeId e : ant.edges) ant.length += g_.costs[e];
     // A walk that retraces the best path (already shortened) has nothing to gain: skip the work.
-    const bool retraces_best = has_best_ && ant.length == best_.length && ant.nodes == best_.nodes;
+    // Not in the restart twin, whose walks must not depend on each other.
+    const bool retraces_best = s_.null_model != NullModel::restarts && has_best_ && ant.length == best_.length &&
+                               ant.nodes == best_.nodes;
     if (local_search_ && scratch != nullptr && !retraces_best) shortener_.shorten(ant, scratch->walk);
   }
 
@@ -177,6 +188,7 @@ class Colony {
       best_ = *iteration_best;
       has_best_ = true;
     }
+    if (s_.null_model != NullModel::none) return iteration_best;  // the twins learn nothing
     const Iteration view{ants, iteration_best, best()};
     p_.deadlock->after_iteration(context_, view, tau_, forbidden_);
     forbidden_[context_.start] = forbidden_[context_.goal] = 0;
@@ -383,6 +395,14 @@ std::uint64_t construct_pair(const Graph& g, const Colony& forward, const Colony
   return moves;
 }
 
+// The random stream of walk k of iteration `it` (of `walks_per_iteration`). The restart twin
+// numbers its walks through the whole run instead, so that its result depends on the walks
+// alone, not on how they are split into iterations.
+Rng walk_stream(const ColonySettings& s, int it, std::uint64_t k, std::uint64_t walks_per_iteration) {
+  if (s.null_model == NullModel::restarts) return Rng::stream(s.seed, 0, static_cast<std::uint64_t>(it) * walks_per_iteration + k);
+  return Rng::stream(s.seed, static_cast<std::uint64_t>(it), k);
+}
+
 // The iteration loop shared by both searches: `construct` fills the forward colony's ants (and
 // the backward ones) for one iteration and returns the moves made.
 template <class Construct>
@@ -434,7 +454,7 @@ ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Pip
     aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       Scratch& local = colony.local_scratch();
       for (int k = range.begin(); k != range.end(); ++k) {
-        Rng rng = Rng::stream(s.seed, static_cast<std::uint64_t>(it), static_cast<std::uint64_t>(k));
+        Rng rng = walk_stream(s, it, static_cast<std::uint64_t>(k), static_cast<std::uint64_t>(s.ants));
         steps[k] = colony.construct(ants[0][k], local, rng);
       }
     });
@@ -454,8 +474,8 @@ ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, co
       Scratch& fs = forward.local_scratch();
       Scratch& bs = backward.local_scratch();
       for (int k = range.begin(); k != range.end(); ++k) {
-        const auto i = static_cast<std::uint64_t>(it), a = 2 * static_cast<std::uint64_t>(k);
-        Rng frng = Rng::stream(s.seed, i, a), brng = Rng::stream(s.seed, i, a + 1);
+        const auto a = 2 * static_cast<std::uint64_t>(k), pairs = 2 * static_cast<std::uint64_t>(s.ants);
+        Rng frng = walk_stream(s, it, a, pairs), brng = walk_stream(s, it, a + 1, pairs);
         steps[k] = construct_pair(graph, forward, backward, ants[0][k], ants[1][k], fs, bs, frng, brng);
       }
     });

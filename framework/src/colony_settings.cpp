@@ -31,6 +31,10 @@ const SettingsTable<ColonySettings>& colony_table() {
             "longest stretch of a walk, in nodes, that straighten replaces by one straight segment"),
       field("walk-limit", &S::walk_limit, "0:1e6",
             "an ant dies after this many times as many moves as the best path so far has steps (0 = no limit)"),
+      choice("null-model", &S::null_model, {"none", "no-learning", "restarts"},
+             {NullModel::none, NullModel::no_learning, NullModel::restarts},
+             "run a null model of the pipeline instead (docs/learning.md): no-learning = the pheromone ignored and never "
+             "updated; restarts = the same number of walks as independent one-iteration runs"),
   });
   return table;
 }

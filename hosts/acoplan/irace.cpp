@@ -143,9 +143,12 @@ void add_slot(ParameterFile& file, aco::PluginRegistry& registry, const std::str
 
 std::string irace_parameters(aco::PluginRegistry& registry, const std::vector<std::string>& slots) {
   ParameterFile file;
+  // The seed is irace's (the target runner passes it); a null model is a question asked of a
+  // pipeline, not a setting to tune.
   file.comment("colony (seed is irace's: the target runner passes it)");
   for (const auto& spec : aco::colony_parameters())
-    if (std::string_view(spec.name) != "seed") file.add(irace_name(spec.name), spec.name, spec);
+    if (std::string_view(spec.name) != "seed" && std::string_view(spec.name) != "null-model")
+      file.add(irace_name(spec.name), spec.name, spec);
   for (const auto& slot : slots) {
     file.comment(slot);
     add_slot(file, registry, slot);

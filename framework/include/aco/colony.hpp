@@ -13,6 +13,14 @@
 
 namespace aco {
 
+// The null models a colony is compared with to ask whether its pheromone matters
+// (docs/learning.md says exactly what each keeps and drops):
+// - no_learning: the same pipeline and budget with the pheromone ignored in the ants' choice and
+//   never changed; nothing passes from one iteration to the next but the best-so-far path;
+// - restarts: the same number of walks as independent one-iteration runs, each on the initial
+//   pheromone; they share nothing but the best result.
+enum class NullModel { none, no_learning, restarts };
+
 struct ColonySettings {
   int ants = 50;
   int iterations = 100;
@@ -39,6 +47,7 @@ struct ColonySettings {
   // An ant that has made walk_limit times as many moves as the best path so far has steps dies
   // (0 = no limit): on large maps a lost ant can otherwise fill whole rooms before it backs out.
   double walk_limit = 0.0;
+  NullModel null_model = NullModel::none;
 };
 
 // The colony's parameter table (ants, iterations, alpha, beta, seed, ...; defaults from the

@@ -1,0 +1,205 @@
+// The colony's null models (docs/learning.md): what each twin keeps and drops, checked on runs.
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <catch2/catch.hpp>
+
+#include "aco/colony.hpp"
+#include "aco/map_io.hpp"
+#include "support.hpp"
+
+using Catch::Contains;
+
+namespace {
+
+// Counts the calls the engine makes to an update rule, then hands them on.
+class CountingUpdate final : public aco::PheromoneUpdate {
+ public:
+  explicit CountingUpdate(aco::PheromoneUpdate& inner) : inner_(inner) {}
+  void start(const aco::Context& c, std::span<double> tau) override {
+    ++starts;
+    inner_.start(c, tau);
+  }
+  void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
+    ++updates;
+    inner_.update(c, it, tau);
+  }
+  int starts = 0;
+  int updates = 0;
+
+ private:
+  aco::PheromoneUpdate& inner_;
+};
+
+// A pipeline of named plugins (defaults), kept alive with the test.
+struct Strategies {
+  Strategies(const std::string& init_name, const std::string& heuristic_name, const std::string& update_name,
+             const std::string& deadlock_name)
+      : init(test::make<aco::PheromoneInit>("init", init_name)),
+        heuristic(test::make<aco::Heuristic>("heuristic", heuristic_name)),
+        update(test::make<aco::PheromoneUpdate>("update", update_name)),
+        deadlock(test::make<aco::DeadlockPolicy>("deadlock", deadlock_name)),
+        counting(*update) {}
+  aco::Pipeline pipeline() { return {init.get(), heuristic.get(), &counting, deadlock.get()}; }
+  std::unique_ptr<aco::PheromoneInit> init;
+  std::unique_ptr<aco::Heuristic> heuristic;
+  std::unique_ptr<aco::PheromoneUpdate> update;
+  std::unique_ptr<aco::DeadlockPolicy> deadlock;
+  CountingUpdate counting;
+};
+
+struct Arena {
+  std::unique_ptr<aco::Map> map = aco::load_map(test::data_dir() / "maps/movingai/arena.map");
+  aco::Graph graph = aco::build_graph(*map, {});
+  aco::NodeId start = graph.node({3, 3});
+  aco::NodeId goal = graph.node({44, 40});
+};
+
+aco::ColonySettings twin_settings(aco::NullModel model) {
+  aco::ColonySettings s;
+  s.ants = 8;
+  s.iterations = 12;
+  s.beta = 3;
+  s.seed = 5;
+  s.walk_limit = 4;
+  s.local_search = "straighten";
+  s.null_model = model;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("the no-learning twin never changes the pheromone: no init, update or deadlock learning is used",
+          "[colony][null-model]") {
+  Arena a;
+  const auto settings = twin_settings(aco::NullModel::no_learning);
+  std::vector<aco::ColonyResult> runs;
+  // Different init and update rules, and a deadlock policy that changes the pheromone and
+  // forbids nodes after every iteration: the twin of each is the same run.
+  for (const auto& [init, update, deadlock] : {std::tuple{"uniform", "ant_system", "backtrack"},
+                                               std::tuple{"potential_field", "max_min", "backtrack"},
+                                               std::tuple{"obstacle_density", "acs", "backtrack_penalty"},
+                                               std::tuple{"uniform", "gaussian", "discard"},
+                                               std::tuple{"fireworks", "wolf_pack", "clear_and_tabu"}}) {
+    Strategies p(init, "progress", update, deadlock);
+    runs.push_back(aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), settings));
+    CHECK(p.counting.starts == 0);
+    CHECK(p.counting.updates == 0);
+    const auto& tau = runs.back().pheromone;
+    CHECK(std::all_of(tau.begin(), tau.end(), [](double t) { return t == 1.0; }));
+  }
+  REQUIRE(runs[0].solved);
+  CHECK(runs[0].iterations == settings.iterations);
+  // A stuck ant backs off (backtrack) or dies (backtrack_penalty, discard): beyond that, the
+  // pipeline's learning plugins make no difference to the twin.
+  test::check_same_run(runs[1], runs[0]);
+  test::check_same_run(runs[3], runs[2]);
+}
+
+TEST_CASE("the no-learning twin walks as the colony with alpha 0 does when nothing else carries over",
+          "[colony][null-model]") {
+  // With alpha 0 the colony's choice ignores tau (tau^0 = 1); the backtrack policy learns
+  // nothing between iterations. So the two runs walk the same walks, bit for bit: the twin is
+  // the colony with the pheromone ignored, and nothing else changed (walk limit included).
+  Arena a;
+  auto twin = twin_settings(aco::NullModel::no_learning);
+  auto alpha_zero = twin_settings(aco::NullModel::none);
+  alpha_zero.alpha = 0.0;
+  for (double q0 : {0.0, 0.7}) {
+    twin.q0 = alpha_zero.q0 = q0;
+    Strategies p("uniform", "progress", "acs", "backtrack"), q("uniform", "progress", "acs", "backtrack");
+    const auto t = aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), twin);
+    const auto c = aco::run_colony(a.graph, a.start, a.goal, q.pipeline(), alpha_zero);
+    CHECK(t.path == c.path);
+    CHECK(t.best_so_far == c.best_so_far);
+    CHECK(t.iteration_best == c.iteration_best);
+    CHECK(t.ant_steps == c.ant_steps);
+    CHECK(q.counting.updates == alpha_zero.iterations);  // the colony did learn, and ignored it
+    CHECK(c.pheromone != t.pheromone);
+  }
+}
+
+TEST_CASE("the restart twin's walks are independent: the same result however they are split into iterations",
+          "[colony][null-model]") {
+  Arena a;
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
+  for (bool bidirectional : {false, true}) {
+    std::vector<aco::ColonyResult> runs;
+    for (const auto& [ants, iterations, threads] : {std::tuple{6, 5, 1}, std::tuple{30, 1, 2}, std::tuple{1, 30, 1},
+                                                     std::tuple{10, 3, 4}, std::tuple{6, 5, 2}}) {
+      auto s = twin_settings(aco::NullModel::restarts);
+      s.ants = ants;
+      s.iterations = iterations;
+      s.bidirectional = bidirectional;
+      Strategies p("uniform", "progress", "acs", "backtrack"), back("uniform", "progress", "acs", "backtrack");
+      const aco::Pipeline backward = back.pipeline();
+      tbb::task_arena arena(threads);
+      arena.execute([&] { runs.push_back(aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), s, &backward)); });
+      CHECK(p.counting.updates == 0);
+      CHECK(runs.back().ant_steps > 0);
+    }
+    REQUIRE(runs[0].solved);
+    for (std::size_t i = 1; i < runs.size(); ++i) {
+      CAPTURE(bidirectional, i);
+      CHECK(runs[i].path == runs[0].path);
+      CHECK(runs[i].length == runs[0].length);
+      CHECK(runs[i].ant_steps == runs[0].ant_steps);
+      CHECK(runs[i].best_so_far.back() == runs[0].best_so_far.back());
+    }
+    test::check_same_run(runs[4], runs[0]);  // same split, other thread count: everything equal
+  }
+}
+
+TEST_CASE("the restart twin's walks see the initial pheromone, as the colony's first iteration does",
+          "[colony][null-model]") {
+  Arena a;
+  auto colony = twin_settings(aco::NullModel::none);
+  auto restarts = twin_settings(aco::NullModel::restarts);
+  Strategies p("potential_field", "progress", "acs", "backtrack"), q("potential_field", "progress", "acs", "backtrack");
+  const auto c = aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), colony);
+  const auto r = aco::run_colony(a.graph, a.start, a.goal, q.pipeline(), restarts);
+  // The same first walks (same streams, no walk limit yet in the colony's first iteration)...
+  CHECK(r.iteration_best.front() == c.iteration_best.front());
+  CHECK(r.arrived.front() == c.arrived.front());
+  // ... and the twin's field stays the one both started from: the init's, rescaled by ACS's start().
+  Strategies fresh("potential_field", "progress", "acs", "backtrack");
+  std::vector<double> initial(static_cast<std::size_t>(a.graph.num_edges()));
+  aco::Context context = test::context(a.graph, {3, 3}, {44, 40}, 0, restarts.iterations);
+  context.ants = restarts.ants;
+  context.beta = restarts.beta;
+  context.seed = restarts.seed;
+  fresh.init->initialize(context, initial);
+  fresh.update->start(context, initial);
+  CHECK(r.pheromone == initial);
+  CHECK(q.counting.starts == 1);
+  CHECK(q.counting.updates == 0);
+  CHECK(c.pheromone != initial);
+}
+
+TEST_CASE("both twins are bit-identical for any thread count", "[colony][null-model][determinism]") {
+  Arena a;
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
+  for (auto model : {aco::NullModel::no_learning, aco::NullModel::restarts}) {
+    std::vector<aco::ColonyResult> runs;
+    for (int threads : {1, 2, 4}) {
+      Strategies p("uniform", "adaptive", "max_min", "backtrack");
+      tbb::task_arena arena(threads);
+      arena.execute([&] { runs.push_back(aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), twin_settings(model))); });
+    }
+    for (std::size_t i = 1; i < runs.size(); ++i) test::check_same_run(runs[i], runs[0]);
+  }
+}
+
+TEST_CASE("acoplan runs either twin with --null-model and records it", "[acoplan][null-model]") {
+  const auto map = (test::data_dir() / "maps/classic20/map2.txt").string();
+  for (const std::string model : {"no-learning", "restarts"}) {
+    const auto r = test::acoplan({"--map", map, "--start", "0,0", "--goal", "19,19", "--iterations", "5", "--null-model",
+                                  model, "--json"});
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Contains("\"null-model\":\"" + model + "\""));
+    CHECK_THAT(r.out, Contains("\"solved\":true"));
+  }
+  const auto bad = test::acoplan({"--map", map, "--start", "0,0", "--goal", "19,19", "--null-model", "restart"});
+  CHECK(bad.exit_code != 0);
+  CHECK_THAT(bad.err, Contains("null-model") && Contains("no-learning"));
+}

@@ -6,6 +6,7 @@
 
 #include "aco/colony.hpp"
 #include "aco/map_io.hpp"
+#include "acobench_support.hpp"
 #include "support.hpp"
 
 using Catch::Contains;
@@ -202,4 +203,73 @@ TEST_CASE("acoplan runs either twin with --null-model and records it", "[acoplan
   const auto bad = test::acoplan({"--map", map, "--start", "0,0", "--goal", "19,19", "--null-model", "restart"});
   CHECK(bad.exit_code != 0);
   CHECK_THAT(bad.err, Contains("null-model") && Contains("no-learning"));
+}
+
+TEST_CASE("an experiment's null-models key adds each named colony configuration's two twins", "[acobench][null-model]") {
+  using test::acobench_helpers::kSmall;
+  using test::acobench_helpers::load;
+  const auto all = load(std::string(kSmall) + "null-models: true\n");
+  REQUIRE(all.configurations.size() == 4 * 3);
+  CHECK(all.configurations[4].name == "AS (no learning)");
+  CHECK(all.configurations[5].name == "AS (restarts)");
+  CHECK(all.configurations[11].name == "beta=7 (restarts)");
+  CHECK(all.configurations[5].run->colony.null_model == aco::NullModel::restarts);
+  CHECK(all.configurations[4].run->colony.null_model == aco::NullModel::no_learning);
+  // A twin is its subject with one key more.
+  auto keys = all.configurations[7].keys;
+  CHECK(keys.at("null-model") == "restarts");
+  keys.erase("null-model");
+  CHECK(keys == all.configurations[1].keys);
+
+  const auto named = load(std::string(kSmall) + "null-models: [ACS]\n");
+  REQUIRE(named.configurations.size() == 4 + 2);
+  CHECK(named.configurations[4].name == "ACS (no learning)");
+  CHECK(load(std::string(kSmall) + "null-models: false\n").configurations.size() == 4);
+
+  CHECK_THROWS_WITH(load(std::string(kSmall) + "null-models: [ACZ]\n"),
+                    Contains("experiment.yaml:") && Contains("'ACZ' is not a configuration"));
+  CHECK_THROWS_WITH(load(std::string(kSmall) + "null-models: maybe\n"), Contains("null-models"));
+  CHECK_THROWS_WITH(load(std::string(kSmall) + "null-models: {ACS: 1}\n"), Contains("true, false or a list"));
+  std::string with_astar = kSmall;
+  with_astar.replace(with_astar.find("    q0: 0.7\n"), 12, "    q0: 0.7\n  - {name: exact, planner: astar}\n");
+  CHECK(load(with_astar + "null-models: true\n").configurations.size() == 5 + 4 * 2);  // A* has no twins
+  CHECK_THROWS_WITH(load(with_astar + "null-models: [exact]\n"), Contains("only a colony has twins"));
+  std::string with_twin = kSmall;
+  with_twin.replace(with_twin.find("    q0: 0.7\n"), 12, "    q0: 0.7\n  - {name: hand-made, null-model: restarts}\n");
+  CHECK_THROWS_WITH(load(with_twin + "null-models: [hand-made]\n"), Contains("is itself a null model"));
+  CHECK(load(with_twin + "null-models: true\n").configurations.size() == 5 + 4 * 2);  // the hand-made one has none
+}
+
+TEST_CASE("the report asks of every configuration with twins whether its pheromone matters", "[acobench][null-model][report]") {
+  using namespace test::acobench_helpers;
+  // ACS's twins from null-models, and the baseline's no-learning twin written by hand: the report
+  // finds a twin by its settings, whoever wrote it.
+  const auto file = experiment(R"(name: twins
+seed: 3
+repetitions: 4
+problems:
+  - map: {MAP1}
+    start: [0, 0]
+    goal: [19, 19]
+  - {scen: {ARENA}, count: 2}
+settings: {ants: 10, iterations: 10, beta: 3}
+baseline: {name: AS}
+configurations:
+  - {name: ACS, update: acs, q0: 0.7}
+  - {name: AS by hand, null-model: no-learning}
+null-models: [ACS]
+)");
+  const auto db = file.parent_path() / "twins.db";
+  const auto run = run_acobench({"run", file.string(), "--db", db.string()});
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const auto out = file.parent_path() / "report";
+  REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
+  const std::string md = file_bytes(out / "report.md");
+  CHECK_THAT(md, Contains("## Does the pheromone matter?"));
+  CHECK_THAT(md, Contains("| AS | no-learning | 12/12 vs 12/12 |"));
+  CHECK_THAT(md, Contains("| ACS | no-learning | 12/12 vs 12/12 |"));
+  CHECK_THAT(md, Contains("| ACS | restarts | 12/12 vs 12/12 |"));
+  CHECK_THAT(md, !Contains("| AS | restarts |"));
+  CHECK_THAT(file_bytes(out / "report.html"), Contains("Does the pheromone matter?"));
 }

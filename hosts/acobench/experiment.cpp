@@ -137,6 +137,47 @@ std::vector<Configuration> factorial(const std::filesystem::path& file, const YA
   return configs;
 }
 
+// The configurations whose twins `null-models` asks for (docs/learning.md): true = every colony
+// configuration that is not itself a null model, false = none, or a list of names.
+std::vector<const Configuration*> null_model_subjects(const std::filesystem::path& file, const YAML::Node& node,
+                                                      const std::vector<Configuration>& configs) {
+  const auto is_twin = [](const Configuration& c) { return c.run->colony.null_model != aco::NullModel::none; };
+  std::vector<const Configuration*> subjects;
+  if (node.IsScalar()) {
+    if (aco::yaml::boolean(file, node, "null-models"))
+      for (const auto& c : configs)
+        if (c.run->planner == "aco" && !is_twin(c)) subjects.push_back(&c);
+    return subjects;
+  }
+  if (!node.IsSequence()) fail(file, node, "'null-models' is true, false or a list of configuration names");
+  for (const auto& entry : node) {
+    const std::string name = scalar(file, entry, "null-models");
+    const auto it = std::find_if(configs.begin(), configs.end(), [&](const auto& c) { return c.name == name; });
+    if (it == configs.end()) fail(file, entry, "null-models: '" + name + "' is not a configuration of this file");
+    if (it->run->planner != "aco")
+      fail(file, entry, "null-models: '" + name + "' runs the planner '" + it->run->planner + "'; only a colony has twins");
+    if (is_twin(*it)) fail(file, entry, "null-models: '" + name + "' is itself a null model (it sets null-model)");
+    if (std::find(subjects.begin(), subjects.end(), &*it) != subjects.end())
+      fail(file, entry, "null-models: '" + name + "' is named twice");
+    subjects.push_back(&*it);
+  }
+  return subjects;
+}
+
+// The no-learning and restart twins of `subject`: its keys with null-model set.
+std::vector<Configuration> twins(const Configuration& subject, const std::string& origin) {
+  std::vector<Configuration> result;
+  for (const auto& [model, label] : {std::pair{"no-learning", " (no learning)"}, std::pair{"restarts", " (restarts)"}}) {
+    Configuration twin = subject;
+    twin.name += label;
+    twin.keys["null-model"] = model;
+    twin.origins["null-model"] = origin;
+    twin.run.reset();
+    result.push_back(std::move(twin));
+  }
+  return result;
+}
+
 }  // namespace
 
 aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry) {
@@ -176,7 +217,9 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
     throw aco::Error(file.string() + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML: " + e.msg);
   }
   if (!doc.IsMap()) throw aco::Error(file.string() + ": an experiment file is a YAML mapping (name, problems, ...)");
-  only_keys(file, doc, {"name", "seed", "repetitions", "problems", "settings", "baseline", "configurations", "factorial", "ablation"},
+  only_keys(file, doc,
+            {"name", "seed", "repetitions", "problems", "settings", "baseline", "configurations", "factorial", "ablation",
+             "null-models"},
             "the experiment");
   Experiment e;
   e.file = file;
@@ -207,11 +250,19 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
     if (it == e.configurations.end()) fail(file, target, "the ablation target '" + name + "' is not a configuration of this file");
     e.ablation_target = *it;
   }
-  std::set<std::string> names;
-  for (auto& c : e.configurations) {
-    if (!names.insert(c.name).second) throw aco::Error(file.string() + ": two configurations are named '" + c.name + "'");
-    c.run = resolve(c, e.problems, registry);
+  for (auto& c : e.configurations) c.run = resolve(c, e.problems, registry);
+  if (doc["null-models"]) {
+    std::vector<Configuration> added;
+    for (const Configuration* subject : null_model_subjects(file, doc["null-models"], e.configurations))
+      for (Configuration& twin : twins(*subject, where(file, doc["null-models"]))) {
+        twin.run = resolve(twin, e.problems, registry);
+        added.push_back(std::move(twin));
+      }
+    for (auto& twin : added) e.configurations.push_back(std::move(twin));
   }
+  std::set<std::string> names;
+  for (const auto& c : e.configurations)
+    if (!names.insert(c.name).second) throw aco::Error(file.string() + ": two configurations are named '" + c.name + "'");
   e.baseline.run = e.configurations.front().run;
   return e;
 }

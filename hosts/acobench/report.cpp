@@ -238,9 +238,91 @@ std::vector<Table> failure_tables(const Analysis& a) {
   return {t};
 }
 
+// A configuration's settings without its null model: what a twin shares with its subject.
+std::string settings_without_null_model(const ConfigRecord& config, std::string* null_model) {
+  auto j = nlohmann::json::parse(config.settings_json);
+  nlohmann::json& run = j["run"];
+  const std::string model = run.contains("null-model") ? run["null-model"].get<std::string>() : "none";
+  if (null_model) *null_model = model;
+  run.erase("null-model");
+  j.erase("keys");  // the twin's keys add null-model; the resolved run says all
+  return j.dump();
+}
+
+// Each configuration against its null models (docs/learning.md), found by their settings: a
+// twin is a configuration whose resolved settings equal the subject's but for null-model.
+std::vector<Table> pheromone_tables(const Analysis& a) {
+  Table t{"Does the pheromone matter?",
+          "Each configuration against its null models, over every run of every problem with a known optimum: the "
+          "no-learning twin (the same pipeline with the pheromone ignored and never updated) and the restart twin (the "
+          "same number of walks as independent one-iteration runs); docs/learning.md defines them. Solved runs, mean "
+          "and largest gap %, the ratio of the mean gaps; p is the two-sided Mann-Whitney U test of the configuration's "
+          "gaps against the twin's, Holm-corrected across the rows; A12 < 0.5 means smaller gaps than the twin. "
+          "'problems better / worse': problems where the configuration's lengths differ from the twin's (Mann-Whitney, "
+          "Holm-corrected across all problems and rows, p < 0.05) in its favour / against it.",
+          {"configuration", "twin", "solved", "mean gap %", "twin's", "ratio", "max gap %", "twin's", "p (Holm)", "A12",
+           "problems better / worse", "verdict"},
+          {}};
+  std::vector<std::string> subject_key(a.configs.size()), model(a.configs.size());
+  for (std::size_t c = 0; c < a.configs.size(); ++c) subject_key[c] = settings_without_null_model(a.configs[c].second, &model[c]);
+  struct Pair {
+    std::size_t subject, twin;
+    std::vector<double> gaps, twin_gaps;
+    std::size_t solved = 0, twin_solved = 0, runs = 0, twin_runs = 0;
+  };
+  std::vector<Pair> pairs;
+  for (std::size_t s = 0; s < a.configs.size(); ++s)
+    for (std::size_t w = 0; model[s] == "none" && w < a.configs.size(); ++w)
+      if (model[w] != "none" && subject_key[w] == subject_key[s]) pairs.push_back({s, w, {}, {}});
+  if (pairs.empty()) return {};
+
+  std::vector<double> pooled_p, per_problem_p;
+  std::vector<std::pair<std::size_t, bool>> per_problem;  // (pair, subject shorter) per comparison
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    Pair& pair = pairs[i];
+    for (std::size_t p = 0; p < a.problems.size(); ++p) {
+      const Result& r = a.results[p][pair.subject];
+      const Result& w = a.results[p][pair.twin];
+      pair.runs += r.runs.size(), pair.twin_runs += w.runs.size();
+      pair.solved += r.lengths.size(), pair.twin_solved += w.lengths.size();
+      pair.gaps.insert(pair.gaps.end(), r.gaps.begin(), r.gaps.end());
+      pair.twin_gaps.insert(pair.twin_gaps.end(), w.gaps.begin(), w.gaps.end());
+      if (r.lengths.empty() || w.lengths.empty()) continue;
+      per_problem_p.push_back(mann_whitney_u(r.lengths, w.lengths).p);
+      per_problem.emplace_back(i, vargha_delaney_a12(r.lengths, w.lengths) < 0.5);
+    }
+    pooled_p.push_back(pair.gaps.empty() || pair.twin_gaps.empty() ? 1.0 : mann_whitney_u(pair.gaps, pair.twin_gaps).p);
+  }
+  const auto pooled_holm = holm_adjust(pooled_p);
+  const auto per_problem_holm = holm_adjust(per_problem_p);
+  std::vector<int> better(pairs.size(), 0), worse(pairs.size(), 0);
+  for (std::size_t k = 0; k < per_problem.size(); ++k)
+    if (per_problem_holm[k] < 0.05) ++(per_problem[k].second ? better : worse)[per_problem[k].first];
+
+  const auto largest = [](const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); };
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const Pair& pair = pairs[i];
+    const bool compared = !pair.gaps.empty() && !pair.twin_gaps.empty();
+    const double a12 = compared ? vargha_delaney_a12(pair.gaps, pair.twin_gaps) : NAN;
+    const double mean = mean_of(pair.gaps), twin_mean = mean_of(pair.twin_gaps);
+    std::string verdict = "no optimum known";
+    if (compared)
+      verdict = pooled_holm[i] >= 0.05 ? "no evidence of a difference" : a12 < 0.5 ? "beats the twin" : "the twin is better";
+    t.rows.push_back({a.configs[pair.subject].second.name, model[pair.twin],
+                      std::to_string(pair.solved) + "/" + std::to_string(pair.runs) + " vs " + std::to_string(pair.twin_solved) +
+                          "/" + std::to_string(pair.twin_runs),
+                      fixed(mean, 3), fixed(twin_mean, 3), twin_mean > 0 ? fixed(mean / twin_mean, 2) : "-",
+                      fixed(largest(pair.gaps), 2), fixed(largest(pair.twin_gaps), 2), compared ? number(pooled_holm[i], 3) : "-",
+                      compared ? fixed(a12, 2) + " " + std::string(to_string(effect_size(a12))) : "-",
+                      std::to_string(better[i]) + " / " + std::to_string(worse[i]), verdict});
+  }
+  return {t};
+}
+
 std::vector<Table> summary_tables(const Analysis& a) {
   std::vector<Table> tables = failure_tables(a);
   for (Table& t : simulation_tables(a)) tables.push_back(std::move(t));
+  for (Table& t : pheromone_tables(a)) tables.push_back(std::move(t));
   std::vector<std::string> sets;
   std::map<std::string, std::vector<std::size_t>> members;
   for (std::size_t p = 0; p < a.problems.size(); ++p) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -256,8 +257,9 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
           "Each configuration against its null models, over every run of every problem with a known optimum: the "
           "no-learning twin (the same pipeline with the pheromone ignored and never updated) and the restart twin (the "
           "same number of walks as independent one-iteration runs); docs/learning.md defines them. Solved runs, mean "
-          "and largest gap %, the ratio of the mean gaps; p is the two-sided Mann-Whitney U test of the configuration's "
-          "gaps against the twin's, Holm-corrected across the rows; A12 < 0.5 means smaller gaps than the twin. "
+          "and largest gap % of the solved runs, the ratio of the mean gaps; p is the two-sided Mann-Whitney U test of "
+          "the configuration's gaps against the twin's over all runs (an unsolved run ranks as the largest gap), "
+          "Holm-corrected across the rows; A12 < 0.5 means smaller gaps than the twin. "
           "'problems better / worse': problems where the configuration's lengths differ from the twin's (Mann-Whitney, "
           "Holm-corrected across all problems and rows, p < 0.05) in its favour / against it.",
           {"configuration", "twin", "solved", "mean gap %", "twin's", "ratio", "max gap %", "twin's", "p (Holm)", "A12",
@@ -267,7 +269,8 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
   for (std::size_t c = 0; c < a.configs.size(); ++c) subject_key[c] = settings_without_null_model(a.configs[c].second, &model[c]);
   struct Pair {
     std::size_t subject, twin;
-    std::vector<double> gaps, twin_gaps;
+    std::vector<double> gaps, twin_gaps;  // solved runs
+    std::vector<double> ranked, twin_ranked;  // every run, an unsolved one as the largest gap: for the test and A12
     std::size_t solved = 0, twin_solved = 0, runs = 0, twin_runs = 0;
   };
   std::vector<Pair> pairs;
@@ -285,13 +288,18 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
       const Result& w = a.results[p][pair.twin];
       pair.runs += r.runs.size(), pair.twin_runs += w.runs.size();
       pair.solved += r.lengths.size(), pair.twin_solved += w.lengths.size();
+      if (!(a.problems[p].optimal_length > 0)) continue;
       pair.gaps.insert(pair.gaps.end(), r.gaps.begin(), r.gaps.end());
       pair.twin_gaps.insert(pair.twin_gaps.end(), w.gaps.begin(), w.gaps.end());
+      for (auto [from, to] : {std::pair{&r, &pair.ranked}, std::pair{&w, &pair.twin_ranked}}) {
+        to->insert(to->end(), from->gaps.begin(), from->gaps.end());
+        to->insert(to->end(), from->runs.size() - from->gaps.size(), std::numeric_limits<double>::max());
+      }
       if (r.lengths.empty() || w.lengths.empty()) continue;
       per_problem_p.push_back(mann_whitney_u(r.lengths, w.lengths).p);
       per_problem.emplace_back(i, vargha_delaney_a12(r.lengths, w.lengths) < 0.5);
     }
-    pooled_p.push_back(pair.gaps.empty() || pair.twin_gaps.empty() ? 1.0 : mann_whitney_u(pair.gaps, pair.twin_gaps).p);
+    pooled_p.push_back(pair.ranked.empty() || pair.twin_ranked.empty() ? 1.0 : mann_whitney_u(pair.ranked, pair.twin_ranked).p);
   }
   const auto pooled_holm = holm_adjust(pooled_p);
   const auto per_problem_holm = holm_adjust(per_problem_p);
@@ -302,8 +310,8 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
   const auto largest = [](const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); };
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const Pair& pair = pairs[i];
-    const bool compared = !pair.gaps.empty() && !pair.twin_gaps.empty();
-    const double a12 = compared ? vargha_delaney_a12(pair.gaps, pair.twin_gaps) : NAN;
+    const bool compared = !pair.ranked.empty() && !pair.twin_ranked.empty();
+    const double a12 = compared ? vargha_delaney_a12(pair.ranked, pair.twin_ranked) : NAN;
     const double mean = mean_of(pair.gaps), twin_mean = mean_of(pair.twin_gaps);
     std::string verdict = "no optimum known";
     if (compared)

@@ -525,16 +525,20 @@ std::string scenarios(const OccupancyGrid& g, int count, aco::Rng& rng) {
 // 8room/64room, maze512-1 (perfect, corridor 1), so the parameters here differ: 25 % and 20 %
 // obstacles, 32-cell rooms, corridors 2 and 4 cells wide with loops.
 // first_seed shifts every seed, for a tuning set disjoint from the shipped one.
-void write_benchmark(const std::filesystem::path& dir, int first_seed) {
-  constexpr int kScenarios = 20;
+// With `large`, the same families at 1024x1024 and 2048x2048 instead, one seed and 10 scenarios
+// each: the scale measurements' maps.
+void write_benchmark(const std::filesystem::path& dir, int first_seed, bool large) {
+  const int kScenarios = large ? 10 : 20;
   struct Spec {
     std::string family;
     int size;
   };
-  const std::vector<Spec> specs{{"random", 32}, {"random", 64}, {"random", 512}, {"room", 32}, {"room", 64},
+  const std::vector<Spec> specs =
+      large ? std::vector<Spec>{{"random", 1024}, {"random", 2048}, {"room", 1024}, {"room", 2048}, {"maze", 1024}, {"maze", 2048}}
+            : std::vector<Spec>{{"random", 32}, {"random", 64}, {"random", 512}, {"room", 32}, {"room", 64},
                                 {"room", 512},  {"maze", 32},   {"maze", 64},    {"maze", 512}};
   for (const auto& spec : specs) {
-    const int seeds = spec.size <= 64 ? 3 : 2;
+    const int seeds = spec.size <= 64 ? 3 : spec.size <= 512 ? 2 : 1;
     for (int seed = first_seed; seed < first_seed + seeds; ++seed) {
       aco::Rng rng(static_cast<std::uint64_t>(spec.size) * 1000 + seed);
       std::string name;
@@ -564,21 +568,24 @@ void write_benchmark(const std::filesystem::path& dir, int first_seed) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool benchmark = (argc == 3 || argc == 4) && std::string(argv[1]) == "--benchmark";
+  const bool large = argc > 1 && std::string(argv[1]) == "--large";
+  const bool benchmark = (argc == 3 || argc == 4) && (std::string(argv[1]) == "--benchmark" || large);
   // Any other option (--help) is not a folder to fill with maps.
   const bool option = argc > 1 && !benchmark && argv[1][0] == '-';
   if (option || (!benchmark && argc != 2 && argc != 3)) {
     std::cerr << "usage: aco_mapgen OUTDIR [TERRAIN_OUTDIR]\n"
                  "       aco_mapgen --benchmark OUTDIR [FIRST_SEED]\n"
+                 "       aco_mapgen --large OUTDIR [FIRST_SEED]\n"
                  "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR,\n"
                  "and paper004 into TERRAIN_OUTDIR if given (data/terrain); with --benchmark, the generated\n"
-                 "random, room and maze validation maps with 20 scenarios each (data/maps/generated)\n";
+                 "random, room and maze validation maps with 20 scenarios each (data/maps/generated); with\n"
+                 "--large, the same families at 1024x1024 and 2048x2048 with 10 scenarios each\n";
     return 1;
   }
   try {
     if (benchmark) {
       std::filesystem::create_directories(argv[2]);
-      write_benchmark(argv[2], argc == 4 ? std::stoi(argv[3]) : 1);
+      write_benchmark(argv[2], argc == 4 ? std::stoi(argv[3]) : 1, large);
       return 0;
     }
     const std::filesystem::path dir = argv[1];

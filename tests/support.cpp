@@ -140,6 +140,20 @@ void check_same_run(const aco::ColonyResult& a, const aco::ColonyResult& b) {
   CHECK(a.arrived == b.arrived);
   CHECK(a.ant_steps == b.ant_steps);
   CHECK(a.pheromone == b.pheromone);
+  CHECK(a.walks == b.walks);
+}
+
+void check_anytime_curves(const aco::SearchResult& r, std::uint64_t total_walks) {
+  REQUIRE(r.elapsed_s.size() == static_cast<std::size_t>(r.iterations));
+  REQUIRE(r.walks.size() == static_cast<std::size_t>(r.iterations));
+  REQUIRE(r.iterations > 0);
+  CHECK(r.elapsed_s.front() >= 0.0);
+  for (std::size_t i = 1; i < r.elapsed_s.size(); ++i) {
+    CHECK(r.elapsed_s[i] >= r.elapsed_s[i - 1]);
+    CHECK(r.walks[i] > r.walks[i - 1]);
+  }
+  CHECK(r.walks.front() > 0);
+  CHECK(r.walks.back() == total_walks);
 }
 
 aco::PipelineSpec pipeline(const aco::Keys& keys) { return aco::resolve_run(keys, plugins()).pipeline; }

@@ -52,8 +52,12 @@ aco::Context context(const aco::Graph& graph, aco::Cell start, aco::Cell goal, i
                      int max_iterations = 100);
 
 // Checks (Catch CHECKs) that two colony runs are the same bit for bit: path, length, curves,
-// arrivals, ant steps and final pheromone, every double compared exactly.
+// arrivals, ant steps, walks and final pheromone, every double compared exactly (the times aside).
 void check_same_run(const aco::ColonyResult& a, const aco::ColonyResult& b);
+
+// Checks the anytime curves of a search: as long as its iterations, the time since the search
+// began never decreasing, the walks built growing every iteration, ending at `total_walks`.
+void check_anytime_curves(const aco::SearchResult& r, std::uint64_t total_walks);
 
 // An arrived ant following the given cells (consecutive cells must be neighbours).
 aco::Ant ant(const aco::Graph& graph, const std::vector<aco::Cell>& cells);

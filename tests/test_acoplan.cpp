@@ -25,6 +25,13 @@ json run_json(const std::vector<std::string>& args) {
   return json::parse(r.out);
 }
 
+// A run's JSON without what its wall clock measured, which differs from run to run.
+json without_times(json j) {
+  j.erase("time_ms");
+  j.erase("convergence_time_s");
+  return j;
+}
+
 // An error: exit status 1, nothing on stdout, one message on stderr containing `expected`.
 void expect_error(const std::vector<std::string>& args, const std::string& expected) {
   const auto r = test::acoplan(args);
@@ -62,6 +69,9 @@ TEST_CASE("acoplan --json reports every documented field", "[acoplan]") {
   CHECK(j["grid_length"].get<double>() >= j["optimal_length"].get<double>() - 1e-9);
   CHECK(j["optimal_length"].get<double>() == Approx(34.3848).margin(1e-4));
   CHECK(j["convergence"].size() == 100);
+  CHECK(j["convergence_time_s"].size() == 100);
+  CHECK(j["convergence_walks"].size() == 100);
+  CHECK(j["convergence_walks"].back() == 100 * j["config"]["ants"].get<int>());
   // The configuration: every run key with its resolved value, as --print-config and acobench name them.
   CHECK(j["config"]["update"] == "ant_system");
   CHECK(j["config"]["update.rho"] == 0.3);
@@ -70,20 +80,16 @@ TEST_CASE("acoplan --json reports every documented field", "[acoplan]") {
 }
 
 TEST_CASE("acoplan is deterministic for a seed, whatever the thread count", "[acoplan][determinism]") {
-  auto strip = [](json j) {
-    j.erase("time_ms");
-    return j;
-  };
   const std::vector<std::string> base{"--scen", arena_scen, "--scen-index", "120", "--iterations", "40"};
   auto one = base, two = base;
   one.insert(one.end(), {"--threads", "1"});
   two.insert(two.end(), {"--threads", "2"});
-  const json a = strip(run_json(one)), b = strip(run_json(two)), c = strip(run_json(one));
+  const json a = without_times(run_json(one)), b = without_times(run_json(two)), c = without_times(run_json(one));
   CHECK(a == b);
   CHECK(a == c);
   auto other_seed = one;
   other_seed.insert(other_seed.end(), {"--seed", "99"});
-  CHECK(strip(run_json(other_seed))["ant_steps"] != a["ant_steps"]);
+  CHECK(without_times(run_json(other_seed))["ant_steps"] != a["ant_steps"]);
 }
 
 TEST_CASE("acoplan with no arguments plans on the bundled map and prints a summary", "[acoplan]") {
@@ -97,6 +103,12 @@ TEST_CASE("acoplan plans Moving AI scenarios and the exact reference", "[acoplan
   REQUIRE(j["solved"].get<bool>());
   const json exact = run_json({"--scen", arena_scen, "--scen-index", "100", "--planner", "astar"});
   CHECK(exact["grid_length"].get<double>() == Approx(j["optimal_length"].get<double>()));
+  // A* is one iteration building one path, so that it has anytime curves like the others.
+  CHECK(exact["iterations"] == 1);
+  CHECK(exact["best_iteration"] == 1);
+  CHECK(exact["convergence"] == json::array({exact["grid_length"]}));
+  CHECK(exact["convergence_walks"] == json::array({1}));
+  CHECK(exact["convergence_time_s"].size() == 1);
   CHECK(j["grid_length"].get<double>() >= exact["grid_length"].get<double>() - 1e-9);
   const json classic = run_json({"--planner", "astar"});
   CHECK(classic["length"].get<double>() == Approx(37.8995).margin(1e-4));
@@ -114,9 +126,7 @@ TEST_CASE("acoplan composes plugins and parameters from the command line and a c
   const auto config = test::temp_file("run.ini", printed.out);
   json from_file = run_json({"--config", config.string()});
   json direct = run_json({"--update", "acs", "--q0", "0.5", "--update.xi", "0.3", "--ants", "20"});
-  from_file.erase("time_ms");
-  direct.erase("time_ms");
-  CHECK(from_file == direct);
+  CHECK(without_times(from_file) == without_times(direct));
   // The command line wins over the file.
   CHECK(run_json({"--config", config.string(), "--ants", "7"})["config"]["ants"] == 7);
 }
@@ -316,9 +326,6 @@ TEST_CASE("acoplan in-process: the command line resolves into one RunSpec, run()
   CHECK(j["convergence"].size() == 8);
   // The same run through the binary gives the same result.
   std::vector<std::string> binary_args(args.begin() + 1, args.end());
-  json binary = run_json({binary_args.begin(), binary_args.end() - 1});
-  json in_process = j;
-  binary.erase("time_ms");
-  in_process.erase("time_ms");
-  CHECK(binary == in_process);
+  const json binary = run_json({binary_args.begin(), binary_args.end() - 1});
+  CHECK(without_times(binary) == without_times(j));
 }

@@ -133,6 +133,17 @@ TEST_CASE("the bidirectional search finds the classic map's paths and composes w
   }
 }
 
+TEST_CASE("the bidirectional search counts both ants of a pair as walks", "[bidirectional]") {
+  const auto map = test::classic_map(1);
+  const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
+  Baseline forward, backward;
+  const aco::Pipeline bp = backward.pipeline();
+  const auto result = aco::run_colony(graph, 0, graph.node({19, 19}), forward.pipeline(), bidirectional(9, 12), &bp);
+  REQUIRE(result.iterations == 12);
+  test::check_anytime_curves(result, 2u * 9u * 12u);
+  for (std::size_t i = 0; i < result.walks.size(); ++i) CHECK(result.walks[i] == 2u * 9u * (i + 1));
+}
+
 TEST_CASE("the bidirectional search refuses a missing or shared backward pipeline", "[bidirectional]") {
   const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {});

@@ -104,7 +104,8 @@ TEST_CASE("every ant walks a loop-free chain of edges from the start", "[colony]
   for (std::size_t i = 1; i < result.best_so_far.size(); ++i) CHECK(result.best_so_far[i] <= result.best_so_far[i - 1]);
 }
 
-TEST_CASE("the stagnation rule stops a run after that many iterations without improvement", "[colony]") {
+TEST_CASE("the stagnation rule stops a run after that many iterations without improvement, and its curves with it",
+          "[colony]") {
   const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   Baseline b;
@@ -116,6 +117,14 @@ TEST_CASE("the stagnation rule stops a run after that many iterations without im
   CHECK(result.iterations < 1000);
   CHECK(result.iterations - result.best_iteration == 5);
   CHECK(result.best_so_far.size() == std::size_t(result.iterations));
+  // The anytime curves: a time per iteration run, never decreasing, and one walk per ant.
+  const auto ants = static_cast<std::uint64_t>(s.ants);
+  test::check_anytime_curves(result, ants * static_cast<std::uint64_t>(result.iterations));
+  for (std::size_t i = 0; i < result.walks.size(); ++i) CHECK(result.walks[i] == ants * (i + 1));
+  // start == goal: no search, no iteration, no curve.
+  const auto trivial = aco::run_colony(graph, 0, 0, b.pipeline(), s);
+  CHECK(trivial.elapsed_s.empty());
+  CHECK(trivial.walks.empty());
 }
 
 namespace {

@@ -57,6 +57,14 @@ TEST_CASE("fireworks finds a valid start-goal path and its curve tells when", "[
   // 15 initial fireworks, then per generation 2 or 3 explosion sparks per firework and 10 mutation sparks.
   CHECK(r.evaluations >= 15u + 20u * (15u * 2u + 10u));
   CHECK(r.evaluations <= 15u + 20u * (15u * 3u + 10u));
+  // The walks are the evaluations, the initial fireworks counting towards generation 1.
+  test::check_anytime_curves(r, r.evaluations);
+  CHECK(r.walks[0] >= 15u + 15u * 2u + 10u);
+  CHECK(r.walks[0] <= 15u + 15u * 3u + 10u);
+  for (std::size_t i = 1; i < r.walks.size(); ++i) {
+    CHECK(r.walks[i] - r.walks[i - 1] >= 15u * 2u + 10u);
+    CHECK(r.walks[i] - r.walks[i - 1] <= 15u * 3u + 10u);
+  }
 }
 
 TEST_CASE("fireworks: same seed, same result on 1, 2 and 4 threads, and another seed differs", "[fireworks][determinism]") {

@@ -59,6 +59,9 @@ TEST_CASE("pso: a valid graph path from start to goal on an empty, a classic and
     CHECK(r.best_so_far.back() == r.length);
     CHECK(r.best_so_far[r.best_iteration - 1] == r.length);
     CHECK(r.evaluations == 50u * 101u);
+    // The walks are the evaluations: the initial swarm counts towards iteration 1.
+    test::check_anytime_curves(r, r.evaluations);
+    for (std::size_t i = 0; i < r.walks.size(); ++i) CHECK(r.walks[i] == 50u * (i + 2));
   }
   // On an empty map the straight line is a walk of every swarm: the optimum.
   const aco::Graph g = aco::build_graph(empty, {aco::Neighbourhood::eight, false});
@@ -82,6 +85,7 @@ TEST_CASE("pso: same seed, same result on 1, 2 and 4 threads", "[pso][determinis
     CHECK(r.path == results[0].path);
     CHECK(r.length == results[0].length);
     CHECK(r.best_so_far == results[0].best_so_far);
+    CHECK(r.walks == results[0].walks);
   }
 }
 

@@ -409,6 +409,7 @@ template <class Construct>
 ColonyResult iterate(const ColonySettings& s, std::span<Colony* const> colonies, std::span<std::vector<Ant>> ants,
                      Construct&& construct) {
   ColonyResult result;
+  const SearchClock clock;
   for (Colony* colony : colonies) colony->begin();
   int last_improvement = 0;
   for (int it = 0; it < s.iterations; ++it) {
@@ -429,6 +430,7 @@ ColonyResult iterate(const ColonySettings& s, std::span<Colony* const> colonies,
     result.best_so_far.push_back(result.length);
     result.arrived.push_back(arrived);
     result.iterations = it + 1;
+    clock.record(result, static_cast<std::uint64_t>(result.iterations) * static_cast<std::uint64_t>(s.ants) * colonies.size());
 
     if (s.stagnation > 0 && it + 1 - last_improvement >= s.stagnation) {
       result.stopped_by = "stagnation";

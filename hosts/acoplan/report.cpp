@@ -69,6 +69,8 @@ nlohmann::json run_json(const aco::Graph& graph, const Outcome& o) {
   j["optimal_length"] = o.optimal_length ? nlohmann::json(*o.optimal_length) : nlohmann::json(nullptr);
   j["convergence"] = nlohmann::json::array();
   for (double v : o.search.best_so_far) j["convergence"].push_back(number_or_null(v));
+  j["convergence_time_s"] = o.search.elapsed_s;
+  j["convergence_walks"] = o.search.walks;
   return j;
 }
 

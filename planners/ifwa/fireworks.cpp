@@ -71,6 +71,7 @@ class Search {
 
   PlannerResult run() {
     PlannerResult r;
+    const SearchClock clock;
     std::vector<Spark> fireworks(s_.fireworks);
     aco::parallel_for(0, s_.fireworks, [&](int i) {
       Rng rng = Rng::stream(s_.seed, 0, static_cast<std::uint64_t>(i));
@@ -91,6 +92,7 @@ class Search {
       fireworks = select(std::move(pool), generation);
       if (fireworks[0].fitness < best_so_far.fitness) best_so_far = fireworks[0];  // select() puts the best first
       r.best_so_far.push_back(best_so_far.path.empty() ? PlannerResult::none : best_so_far.fitness);
+      clock.record(r, r.evaluations);
     }
     r.iterations = s_.iterations;
     if (best_so_far.path.empty()) return r;

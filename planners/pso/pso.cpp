@@ -43,6 +43,7 @@ class Swarm {
 
   PlannerResult run() {
     PlannerResult r;
+    const SearchClock clock;
     std::vector<Particle> swarm(s_.particles);
     aco::parallel_for(0, s_.particles, [&](int i) {
       Rng rng = Rng::stream(s_.seed, 0, static_cast<std::uint64_t>(i));
@@ -79,7 +80,10 @@ class Swarm {
           r.path = p.walk.nodes;
         }
       }
-      if (t > 0) r.best_so_far.push_back(r.length);
+      if (t > 0) {
+        r.best_so_far.push_back(r.length);
+        clock.record(r, r.evaluations);
+      }
     }
     r.iterations = s_.iterations;
     r.solved = !r.path.empty();

@@ -4,6 +4,7 @@
 // a swarm update). Planner-specific measures go beside it (ColonyResult, PlannerResult, and a
 // PlanOutcome's property map).
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -23,12 +24,31 @@ struct SearchResult {
   int iterations = 0;        // iterations run
   int best_iteration = 0;    // first iteration (1-based) whose best had the final length; 0 if unsolved
   std::vector<double> best_so_far;  // per iteration (none until a path is found)
+  // The anytime curves, per iteration like best_so_far, for plotting quality against effort:
+  // wall-clock seconds from the start of the search loop to the end of the iteration (steady
+  // clock; the per-map setup before the loop, e.g. the colony's per-edge fields, not counted), and
+  // the walks built by then, cumulative: candidate paths, one per ant per colony, per decoded spark
+  // or particle (the initial population counting towards iteration 1), one for A*.
+  std::vector<double> elapsed_s;
+  std::vector<std::uint64_t> walks;
 
   // Sets best_iteration from the curve, once path and length are final.
   void finish() {
     if (!solved) return;
     best_iteration = 1 + static_cast<int>(std::find(best_so_far.begin(), best_so_far.end(), length) - best_so_far.begin());
   }
+};
+
+// Started where a search loop starts; records the end of each iteration into the anytime curves.
+class SearchClock {
+ public:
+  void record(SearchResult& result, std::uint64_t walks_so_far) const {
+    result.elapsed_s.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count());
+    result.walks.push_back(walks_so_far);
+  }
+
+ private:
+  std::chrono::steady_clock::time_point began_ = std::chrono::steady_clock::now();
 };
 
 // The baseline planners' result (IFWA, PSO): the core and the candidate solutions they decoded.

@@ -84,6 +84,8 @@ std::vector<std::string> trial_rows(const std::filesystem::path& db) {
     row << t.problem << " " << t.config << " " << t.repetition << " " << t.seed << " " << t.solved << " " << t.length << " "
         << t.best_iteration << " " << t.ant_steps << " " << t.path_json;
     for (double b : t.best_so_far) row << " " << b;
+    row << " walks";
+    for (auto w : t.walks) row << " " << w;
     rows.push_back(row.str());
   }
   return rows;
@@ -133,7 +135,7 @@ std::vector<std::string> database_rows(const std::filesystem::path& db) {
         "r.best_iteration, r.ant_steps, r.stopped_by, r.path, r.outcome, r.time_to_goal, r.collisions, r.replans, "
         "r.clearance, r.control_steps, r.error FROM runs r JOIN experiments e ON e.id = r.experimentid "
         "JOIN plannerConfigs c ON c.id = r.plannerid",
-        "SELECT 'progress', " + trial + ", p.iteration, p.best_cost FROM progress p JOIN runs r ON r.id = p.runid "
+        "SELECT 'progress', " + trial + ", p.iteration, p.best_cost, p.walks FROM progress p JOIN runs r ON r.id = p.runid "
         "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
         "SELECT 'meta', key, value FROM acobench_meta WHERE key NOT IN ('experiment_file', 'shard')"}) {
     const auto rows = query_rows(handle, sql);

@@ -63,7 +63,11 @@ acobench::TrialRecord trial(int problem, int config_id, int repetition, bool sol
   t.ant_steps = 1000 + static_cast<std::uint64_t>(repetition);
   t.stopped_by = solved ? "stagnation" : "iterations";
   t.path_json = solved ? "[[0,0],[5.5,4],[19,19]]" : "[]";
-  for (int i = 1; i <= iterations; ++i) t.best_so_far.push_back(solved && i >= 3 ? 40.0 - i : kInf);
+  for (int i = 1; i <= iterations; ++i) {
+    t.best_so_far.push_back(solved && i >= 3 ? 40.0 - i : kInf);
+    t.elapsed_s.push_back(0.015625 * i * (repetition + 1));
+    t.walks.push_back(static_cast<std::uint64_t>(10 * i));
+  }
   return t;
 }
 
@@ -83,6 +87,16 @@ void check_equal(const acobench::TrialRecord& a, const acobench::TrialRecord& b)
   CHECK(a.stopped_by == b.stopped_by);
   CHECK(a.path_json == b.path_json);
   CHECK(a.best_so_far == b.best_so_far);  // infinities compare equal
+  CHECK(a.elapsed_s == b.elapsed_s);
+  CHECK(a.walks == b.walks);
+}
+
+// Creates the database with one Ant System trial; returns its configuration's id.
+int with_one_trial(const fs::path& file) {
+  auto db = open(file);
+  const int id = db.add_config(config("ant_system", 0.1));
+  db.store(trial(0, id, 0));
+  return id;
 }
 
 std::string bytes(const fs::path& file) {
@@ -153,7 +167,7 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
   CHECK(configs[1].second.settings_json == config("max_min", 0.02).settings_json);
   CHECK(db.meta("experiment_name") == kName);
   CHECK(db.meta("fingerprint") == kFingerprint);
-  CHECK(db.meta("format_version") == "3");
+  CHECK(db.meta("format_version") == "4");
   REQUIRE_THROWS_WITH(db.meta("colour"), Contains("no 'colour'"));
 
   const auto read = db.trials();
@@ -177,9 +191,10 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
         Approx(31.25 / 28.38 - 1.0));
   CHECK(sql_value(file, "SELECT count(*) FROM progress") == "48");
   CHECK(sql_value(file, "SELECT count(*) FROM progress WHERE best_cost IS NULL") == "24");  // 6 solved x 2 + 2 unsolved x 6
-  // The estimated time of the last iteration is the trial's time.
-  CHECK(sql_value(file, "SELECT count(*) FROM progress p JOIN runs r ON p.runid = r.id "
-                        "WHERE p.iteration = r.iterations AND p.time != r.time") == "0");
+  // The measured anytime curves: OMPL's time column and the walks.
+  CHECK(sql_value(file, "SELECT p.time FROM progress p JOIN runs r ON p.runid = r.id WHERE r.repetition = 1 "
+                        "AND p.iteration = 4 LIMIT 1") == "0.125");
+  CHECK(sql_value(file, "SELECT count(*) FROM progress WHERE walks != 10 * iteration OR walks IS NULL") == "0");
 }
 
 TEST_CASE("a configuration name keeps one set of settings", "[resultsdb]") {
@@ -204,6 +219,12 @@ TEST_CASE("a trial is stored once, and a malformed one not at all", "[resultsdb]
   auto bad_curve = trial(0, id, 1);
   bad_curve.best_so_far.pop_back();
   REQUIRE_THROWS_WITH(db.store(bad_curve), Contains("5 best-so-far values for 6 iterations"));
+  auto bad_times = trial(0, id, 1);
+  bad_times.elapsed_s.pop_back();
+  REQUIRE_THROWS_WITH(db.store(bad_times), Contains("5 elapsed times for 6 iterations"));
+  auto bad_walks = trial(0, id, 1);
+  bad_walks.walks.push_back(70);
+  REQUIRE_THROWS_WITH(db.store(bad_walks), Contains("7 walk counts for 6 iterations"));
   auto bad_path = trial(0, id, 1);
   bad_path.path_json = "[[0,0],";
   REQUIRE_THROWS_WITH(db.store(bad_path), Contains("path of trial") && Contains("not valid JSON"));
@@ -250,7 +271,7 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   const fs::path file = fresh_db();
   open(file);  // creates it
   sql_value(file, "UPDATE acobench_meta SET value = '0' WHERE key = 'format_version' RETURNING value");
-  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 3"));
+  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 4"));
 
   const fs::path missing = fresh_db();
   auto problems = kProblems;
@@ -263,24 +284,20 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
 TEST_CASE("simulation and failed trials store their measures, and a format-1 database gains the columns and resumes",
           "[resultsdb]") {
   const fs::path file = fresh_db();
-  int id = 0;
-  {
-    auto db = open(file);
-    id = db.add_config(config("ant_system", 0.1));
-    db.store(trial(0, id, 0));
-  }
+  const int id = with_one_trial(file);
   // What acobench before simulations wrote: no simulation columns, format 1.
   const auto make_format_1 = [&] {
     for (const char* column : {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps", "error"})
       sql_exec(file, std::string("ALTER TABLE runs DROP COLUMN ") + column);
+    sql_exec(file, "ALTER TABLE progress DROP COLUMN walks");
     sql_exec(file, "UPDATE acobench_meta SET value = '1' WHERE key = 'format_version'");
   };
   make_format_1();
-  CHECK(acobench::ResultsDb(file).meta("format_version") == "3");  // a report upgrades it too
+  CHECK(acobench::ResultsDb(file).meta("format_version") == "4");  // a report upgrades it too
   make_format_1();
 
   auto db = open(file);
-  CHECK(db.meta("format_version") == "3");
+  CHECK(db.meta("format_version") == "4");
   auto reached = trial(0, id, 1, true, 0);
   reached.simulation = acobench::SimulationRecord{"reached", 87.5, 0, 1, 0.047, 875};
   auto hit = trial(1, id, 0, false, 0);
@@ -307,6 +324,40 @@ TEST_CASE("simulation and failed trials store their measures, and a format-1 dat
   CHECK(std::isnan(read[2].simulation->time_to_goal));
   CHECK(read[2].simulation->collisions == 1);
   CHECK(sql_value(file, "SELECT time_to_goal FROM runs WHERE outcome = 'collision'") == "NULL");
+}
+
+TEST_CASE("a format-3 database gains progress.walks: its runs read back without anytime curves, and resume",
+          "[resultsdb]") {
+  const fs::path file = fresh_db();
+  const int id = with_one_trial(file);
+  // What acobench before the measured times wrote: no walks, an estimated time, format 3.
+  sql_exec(file, "ALTER TABLE progress DROP COLUMN walks");
+  sql_exec(file, "UPDATE progress SET time = iteration * (SELECT time FROM runs WHERE runs.id = progress.runid) / 6");
+  sql_exec(file, "UPDATE acobench_meta SET value = '3' WHERE key = 'format_version'");
+
+  auto db = open(file);
+  CHECK(db.meta("format_version") == "4");
+  db.store(trial(0, id, 1));
+  const auto read = db.trials();
+  REQUIRE(read.size() == 2);
+  CHECK(read[0].best_so_far.size() == 6);
+  CHECK(read[0].elapsed_s.empty());  // its times were estimates: not read as measured
+  CHECK(read[0].walks.empty());
+  check_equal(read[1], trial(0, id, 1));
+  CHECK(sql_value(file, "SELECT count(*) FROM progress WHERE walks IS NULL") == "6");
+
+  // Copied on (acobench merge stores what it reads), an old run keeps the older rows.
+  const fs::path copy = fresh_db();
+  auto out = open(copy);
+  const int out_id = out.add_config(config("ant_system", 0.1));
+  for (auto t : read) {
+    t.config = out_id;
+    out.store(t);
+  }
+  CHECK(sql_value(copy, "SELECT count(*) FROM progress WHERE walks IS NULL") == "6");
+  CHECK(sql_value(copy, "SELECT abs(p.time - 0.125) < 1e-12 FROM progress p JOIN runs r ON p.runid = r.id "
+                        "WHERE r.repetition = 0 AND p.iteration = 6") == "1");  // the estimate: the run's time
+  check_equal(out.trials()[1], trial(0, out_id, 1));
 }
 
 TEST_CASE("a file that is not an acobench database is refused and left as it was", "[resultsdb]") {

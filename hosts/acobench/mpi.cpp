@@ -25,7 +25,8 @@ using nlohmann::json;
 constexpr int kToCoordinator = 1, kWork = 2, kStop = 3;
 
 // Messages are CBOR: it keeps every double's bits, infinities and NaN included, which the
-// records' best-so-far curves and simulation measures hold.
+// records' best-so-far curves and simulation measures hold (and the measured times, which the
+// coordinator stores as the worker measured them).
 void send(const json& message, int to, int tag) {
   const std::vector<std::uint8_t> bytes = json::to_cbor(message);
   MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, to, tag, MPI_COMM_WORLD);
@@ -79,7 +80,7 @@ json to_json(const TrialRecord& t) {
             {"grid_length", t.grid_length}, {"turns", t.turns},     {"iterations", t.iterations},
             {"best_iteration", t.best_iteration}, {"time", t.time_s}, {"ant_steps", t.ant_steps},
             {"stopped_by", t.stopped_by}, {"path", t.path_json},    {"best_so_far", t.best_so_far},
-            {"error", t.error}};
+            {"elapsed_s", t.elapsed_s}, {"walks", t.walks},         {"error", t.error}};
   if (const auto& s = t.simulation)
     j["simulation"] = {{"outcome", s->outcome},   {"time_to_goal", s->time_to_goal}, {"collisions", s->collisions},
                        {"replans", s->replans},   {"clearance", s->clearance},       {"control_steps", s->control_steps}};
@@ -103,6 +104,8 @@ TrialRecord record_from(const json& j) {
   t.stopped_by = j.at("stopped_by");
   t.path_json = j.at("path");
   t.best_so_far = j.at("best_so_far").get<std::vector<double>>();
+  t.elapsed_s = j.at("elapsed_s").get<std::vector<double>>();
+  t.walks = j.at("walks").get<std::vector<std::uint64_t>>();
   t.error = j.at("error");
   if (j.contains("simulation")) {
     const json& s = j.at("simulation");

@@ -22,10 +22,13 @@ namespace {
 using aco::Error;
 
 // Bumped whenever the tables change in a way older readers would misread.
-const std::string kFormatVersion = "3";  // 2: the simulation columns of runs; 3: runs.error
+// 2: the simulation columns of runs; 3: runs.error; 4: progress.walks, progress.time measured.
+const std::string kFormatVersion = "4";
 
 // This version, or an earlier one upgrade() brings to it.
-bool upgradable(const std::string& version) { return version == kFormatVersion || version == "1" || version == "2"; }
+bool upgradable(const std::string& version) {
+  return version == kFormatVersion || version == "1" || version == "2" || version == "3";
+}
 
 // OMPL's tables (as ompl_benchmark_statistics.py creates them) with our run and progress
 // attributes as columns; see the header for what each holds.
@@ -43,7 +46,7 @@ CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, p
   FOREIGN KEY (experimentid) REFERENCES experiments(id) ON DELETE CASCADE,
   FOREIGN KEY (plannerid) REFERENCES plannerConfigs(id) ON DELETE CASCADE,
   UNIQUE (experimentid, plannerid, repetition));
-CREATE TABLE progress (runid INTEGER, time REAL, iteration INTEGER, best_cost REAL,
+CREATE TABLE progress (runid INTEGER, time REAL, iteration INTEGER, best_cost REAL, walks INTEGER,
   PRIMARY KEY (runid, iteration), FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
 CREATE TABLE acobench_meta (key TEXT PRIMARY KEY, value TEXT);
 )";
@@ -273,18 +276,27 @@ struct ResultsDb::Impl {
     return stored;
   }
 
-  // Formats 1 and 2 lack columns of runs (1: the simulation measures, 2: error): they are added,
-  // NULL for the stored runs, so results of earlier runs are resumed and reported.
+  // Formats 1 to 3 lack columns (1: the simulation measures of runs, 2: runs.error, 3:
+  // progress.walks): they are added, NULL for the stored rows, so results of earlier runs are
+  // resumed and reported. Their progress times stay the estimates they were; a NULL walks marks them.
   void upgrade() {
     if (meta().at("format_version") == kFormatVersion) return;
-    std::set<std::string> present;
-    Statement columns(db, "SELECT name FROM pragma_table_info('runs')");
-    columns.run();
-    while (columns.next()) present.insert(columns.text(0));
+    const auto columns_of = [&](const std::string& table) {
+      std::set<std::string> present;
+      Statement columns(db, "SELECT name FROM pragma_table_info('" + table + "')");
+      columns.run();
+      while (columns.next()) present.insert(columns.text(0));
+      return present;
+    };
+    const std::map<std::string, std::set<std::string>> present{{"runs", columns_of("runs")},
+                                                               {"progress", columns_of("progress")}};
     Transaction transaction(db);
-    for (const std::string column : {"outcome TEXT", "time_to_goal REAL", "collisions INTEGER", "replans INTEGER",
-                                     "clearance REAL", "control_steps INTEGER", "error TEXT"})
-      if (!present.contains(column.substr(0, column.find(' ')))) db.exec("ALTER TABLE runs ADD COLUMN " + column);
+    for (const auto& [table, column] : std::initializer_list<std::pair<std::string, std::string>>{
+             {"runs", "outcome TEXT"}, {"runs", "time_to_goal REAL"}, {"runs", "collisions INTEGER"},
+             {"runs", "replans INTEGER"}, {"runs", "clearance REAL"}, {"runs", "control_steps INTEGER"},
+             {"runs", "error TEXT"}, {"progress", "walks INTEGER"}})
+      if (!present.at(table).contains(column.substr(0, column.find(' '))))
+        db.exec("ALTER TABLE " + table + " ADD COLUMN " + column);
     Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
     set.run(kFormatVersion).finish();
     transaction.commit();
@@ -360,9 +372,16 @@ struct ResultsDb::Impl {
       throw Error(file() + ": a trial names configuration id " + std::to_string(t.config) +
                   ", which add_config() did not return");
     const std::string label = trial_label(t);
-    if (t.best_so_far.size() != static_cast<std::size_t>(t.iterations))
-      throw Error(file() + ": " + label + " has " + std::to_string(t.best_so_far.size()) +
-                  " best-so-far values for " + std::to_string(t.iterations) + " iterations");
+    const auto check_curve = [&](std::size_t size, const char* what) {
+      if (size != static_cast<std::size_t>(t.iterations))
+        throw Error(file() + ": " + label + " has " + std::to_string(size) + " " + what + " for " +
+                    std::to_string(t.iterations) + " iterations");
+    };
+    check_curve(t.best_so_far.size(), "best-so-far values");
+    if (!t.elapsed_s.empty() || !t.walks.empty()) {
+      check_curve(t.elapsed_s.size(), "elapsed times");
+      check_curve(t.walks.size(), "walk counts");
+    }
     if (!nlohmann::json::accept(t.path_json))
       throw Error(file() + ": the path of " + label + " is not valid JSON: " + t.path_json.substr(0, 200));
   }
@@ -436,7 +455,7 @@ void ResultsDb::Impl::load() {
                        "turns, iterations, best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, "
                        "collisions, replans, clearance, control_steps, error) "
                        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22)");
-  insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost) VALUES (?1, ?2, ?3, ?4)");
+  insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost, walks) VALUES (?1, ?2, ?3, ?4, ?5)");
   add_time.emplace(db, "UPDATE experiments SET totaltime = totaltime + ?2 WHERE id = ?1");
 }
 
@@ -494,11 +513,15 @@ void ResultsDb::store(const TrialRecord& t) {
             t.error.empty() ? std::nullopt : std::optional<std::string>(t.error))
       .finish();
   const std::int64_t run = sqlite3_last_insert_rowid(d.db.handle());
-  const double seconds_per_iteration = t.iterations > 0 ? t.time_s / t.iterations : 0.0;
-  for (int i = 1; i <= t.iterations; ++i)
+  const bool measured = !t.elapsed_s.empty();
+  const double seconds_per_iteration = t.iterations > 0 ? t.time_s / t.iterations : 0.0;  // an older trial's estimate
+  for (int i = 1; i <= t.iterations; ++i) {
+    const auto at = static_cast<std::size_t>(i - 1);
     d.insert_progress
-        ->run(run, i * seconds_per_iteration, i, finite_or_null(t.best_so_far[static_cast<std::size_t>(i - 1)]))
+        ->run(run, measured ? t.elapsed_s[at] : i * seconds_per_iteration, i, finite_or_null(t.best_so_far[at]),
+              measured ? std::optional(to_sql(t.walks[at])) : std::nullopt)
         .finish();
+  }
   d.add_time->run(experiment, t.time_s).finish();
   transaction.commit();
 }
@@ -527,7 +550,7 @@ std::vector<TrialRecord> ResultsDb::trials() const {
                  "best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, collisions, replans, clearance, "
                  "control_steps, error FROM runs "
                  "ORDER BY experimentid, plannerid, repetition");
-  Statement progress(d.db, "SELECT best_cost FROM progress WHERE runid = ?1 ORDER BY iteration");
+  Statement progress(d.db, "SELECT best_cost, time, walks FROM progress WHERE runid = ?1 ORDER BY iteration");
   runs.run();
   while (runs.next()) {
     TrialRecord t;
@@ -554,8 +577,17 @@ std::vector<TrialRecord> ResultsDb::trials() const {
                                       runs.null(19) ? std::nan("") : runs.real(19),
                                       static_cast<int>(runs.integer(20))};
     progress.run(runs.integer(0));
-    while (progress.next())
+    bool measured = true;
+    while (progress.next()) {
       t.best_so_far.push_back(progress.null(0) ? std::numeric_limits<double>::infinity() : progress.real(0));
+      t.elapsed_s.push_back(progress.real(1));
+      t.walks.push_back(from_sql(progress.integer(2)));
+      measured = measured && !progress.null(2);
+    }
+    if (!measured) {
+      t.elapsed_s.clear();
+      t.walks.clear();
+    }
     all.push_back(std::move(t));
   }
   return all;

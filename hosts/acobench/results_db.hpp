@@ -23,10 +23,14 @@
 //                   exact A* on the same graph, as acoplan reports it), NULL if the optimum is
 //                   unknown. seed holds the 64-bit seed's bits as SQLite's signed integer.
 //   progress        one row per iteration of a trial: runid, time, iteration (1-based),
-//                   best_cost (NULL until an ant arrived). OMPL's time is seconds since the run
-//                   started; the colony does not time its iterations, so time is estimated as
-//                   iteration * time / iterations. The key is (runid, iteration), not OMPL's
-//                   (runid, time): estimated times of a very fast run may coincide.
+//                   best_cost (NULL until an ant arrived), walks. time is OMPL's: seconds since
+//                   the search started, measured at the end of the iteration (steady clock);
+//                   walks is the candidate paths the planner built by then, cumulative (ants'
+//                   walks, one per ant and colony; IFWA's and PSO's evaluations; 1 for A*). Rows
+//                   stored by an acobench of format 3 or earlier have walks NULL and an estimated
+//                   time (iteration * runs.time / iterations): the report leaves those runs out of
+//                   its time and walk charts. The key is (runid, iteration), not OMPL's (runid,
+//                   time): the times of two iterations of a very fast run may coincide.
 //   acobench_meta   key/value: format_version, experiment_name and fingerprint (a canonical text
 //                   from the caller naming everything that defines the trials).
 //
@@ -80,6 +84,10 @@ struct TrialRecord {
   std::string stopped_by;
   std::string path_json;            // "[[x,y],...]" or "[[x,y,z],...]"
   std::vector<double> best_so_far;  // one per iteration; +infinity until solved (stored as NULL)
+  // The anytime curves (aco::SearchResult's), one value per iteration each; both empty for a trial
+  // read from rows without them (stored by an acobench of format 3 or earlier).
+  std::vector<double> elapsed_s;
+  std::vector<std::uint64_t> walks;
   std::optional<SimulationRecord> simulation;  // simulation trials only (NULL columns otherwise)
   std::string error;  // a trial that threw: the message (solved false, stopped_by "error"); else ""
 };
@@ -107,7 +115,8 @@ class ResultsDb {
 
   // Stores one trial and its progress rows in one transaction. Thread-safe. A trial already
   // stored, an unknown problem or config, or a curve whose length is not `iterations` is an
-  // Error, and nothing is written.
+  // Error, and nothing is written. A trial without anytime curves (copied from an older
+  // database) gets the older rows: the estimated time, walks NULL.
   void store(const TrialRecord& trial);
 
   // For reports.

@@ -22,7 +22,9 @@ std::optional<int> whole_number(const std::string& text) {
   return value;
 }
 
-// What a trial measured, its time aside: two copies of a trial must agree on it.
+// What a trial measured, its times aside: two copies of a trial must agree on it. Its walks are
+// left out too: a copy stored by an acobench of format 3 has none, and they follow from the same
+// seeded search as the best-so-far curve, which is compared.
 std::string results_text(const TrialRecord& t) {
   std::ostringstream text;
   text.precision(17);

@@ -167,6 +167,8 @@ TrialRecord TrialRunner::plan(const TrialOrder& t) {
   r.stopped_by = o.text("stopped_by");
   r.path_json = path_json(o.path);
   r.best_so_far = o.search.best_so_far;
+  r.elapsed_s = o.search.elapsed_s;
+  r.walks = o.search.walks;
   return r;
 }
 

@@ -25,6 +25,16 @@ using Catch::Contains;
 
 using namespace test::acobench_helpers;
 
+namespace {
+
+std::size_t count_of(const std::string& text, const std::string& word) {
+  std::size_t found = 0;
+  for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + word.size())) ++found;
+  return found;
+}
+
+}  // namespace
+
 TEST_CASE("an experiment file expands into named, factorial and baseline configurations", "[acobench]") {
   const auto e = load(kSmall);
   CHECK(e.name == "small");
@@ -117,6 +127,15 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   const auto db2 = file.parent_path() / "two_threads.db";
   REQUIRE(run_acobench({"run", file.string(), "--db", db2.string(), "--threads", "2"}).exit_code == 0);
   CHECK(trial_rows(db) == trial_rows(db2));
+  // Each trial's anytime curves: a time per iteration, never decreasing, and its ants' walks.
+  for (const auto& t : acobench::ResultsDb(db).trials()) {
+    REQUIRE(t.elapsed_s.size() == static_cast<std::size_t>(t.iterations));
+    REQUIRE(t.walks.size() == static_cast<std::size_t>(t.iterations));
+    for (std::size_t i = 0; i < t.walks.size(); ++i) {
+      CHECK(t.walks[i] == 10u * (i + 1));
+      if (i > 0) CHECK(t.elapsed_s[i] >= t.elapsed_s[i - 1]);
+    }
+  }
 
   // Another experiment (more repetitions) must not touch this database.
   std::string other = kSmall;
@@ -136,8 +155,16 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   CHECK_THAT(html, Contains("class=\"convergence\""));
   CHECK_THAT(html, Contains("class=\"paths\""));
   CHECK_THAT(html, Contains("Ablation path"));
+  // The anytime view: the gap against time and walks for the one problem, an ECDF per target.
+  CHECK(count_of(html, "class=\"anytime\"") == 2);
+  CHECK(count_of(html, "class=\"ecdf\"") == 2);
+  CHECK_THAT(html, Contains("best-so-far gap against time") && Contains("best-so-far gap against walks") &&
+                       Contains("runs within 1 % of the optimum, by time (ECDF)") &&
+                       Contains("runs within 5 % of the optimum, by time (ECDF)") && Contains("<h2>Anytime: fixed targets</h2>"));
   CHECK(html.find("http://") == html.find("http://www.w3.org/2000/svg"));  // no link but the SVG namespace
   const std::string md = file_bytes(out / "report.md");
+  CHECK_THAT(md, Contains("## Anytime: fixed targets") && Contains("| ACS | gap <= 1 % | 4 |") &&
+                     Contains("| ACS | gap <= 5 % | 4 |"));
   CHECK_THAT(md, Contains("| ACS | 4 | 100 % |"));
   CHECK_THAT(md, Contains("## Ranking across problems"));
   const std::string csv = file_bytes(out / "runs.csv");
@@ -441,6 +468,32 @@ configurations:
   // The pruned paths are any-angle: A*'s, pruned, is shorter than the grid optimum, which is why
   // gaps are not measured on them.
   CHECK(shorter_than_grid_optimum > 0);
+}
+
+TEST_CASE("a report of a database from before the measured times leaves its runs out of the anytime view",
+          "[acobench][report]") {
+  const auto file = experiment("name: old\nrepetitions: 2\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
+                               "settings: {ants: 5, iterations: 4}\n");
+  const auto db = file.parent_path() / "old.db";
+  REQUIRE(run_acobench({"run", file.string(), "--db", db.string()}).exit_code == 0);
+  // What an acobench of format 3 wrote: no walks column (and estimated times).
+  sqlite3* handle = nullptr;
+  REQUIRE(sqlite3_open(db.c_str(), &handle) == SQLITE_OK);
+  CHECK(sqlite3_exec(handle, "ALTER TABLE progress DROP COLUMN walks; UPDATE acobench_meta SET value = '3' WHERE key = "
+                             "'format_version'", nullptr, nullptr, nullptr) == SQLITE_OK);
+  sqlite3_close(handle);
+  const auto out = file.parent_path() / "report";
+  const auto report = run_acobench({"report", db.string(), "--out", out.string()});
+  INFO(report.err);
+  REQUIRE(report.exit_code == 0);
+  const std::string md = file_bytes(out / "report.md"), html = file_bytes(out / "report.html");
+  CHECK_THAT(md, Contains("## Anytime: fixed targets") &&
+                     Contains("2 runs stored by an older acobench (format 3 or earlier) have no measured times"));
+  CHECK(count_of(html, "class=\"anytime\"") == 0);
+  CHECK(count_of(html, "class=\"ecdf\"") == 0);
+  CHECK_THAT(html, Contains("class=\"convergence\""));  // the per-iteration view is still there
+  // Reading it for the report brought it to the current format.
+  CHECK(acobench::ResultsDb(db).meta("format_version") == "4");
 }
 
 TEST_CASE("a problem written as a single value is refused with the problem format, not yaml-cpp's exception",

@@ -350,13 +350,106 @@ TEST_CASE("convergence charts draw a line and a band per series, a legend and ax
   CHECK(svg == acobench::line_chart_svg(chart));
 
   acobench::LineChart flat;
-  flat.series = {{"one run", {5, 5, 5}, {}, {}}, {"one point", {7}, {}, {}}};
+  flat.series = {{"one run", {5, 5, 5}, {}, {}, {}}, {"one point", {7}, {}, {}, {}}};
   const std::string flat_svg = acobench::line_chart_svg(flat);
   CHECK(well_formed(flat_svg));
   CHECK(count(flat_svg, "class=\"band\"") == 0);
   CHECK_FALSE(has_undefined_number(flat_svg));
   CHECK_FALSE(has_undefined_number(acobench::line_chart_svg({})));
 
-  flat.series.push_back({"bad band", {1, 2}, {1}, {2, 3}});
+  flat.series.push_back({"bad band", {1, 2}, {1}, {2, 3}, {}});
   CHECK_THROWS_WITH(acobench::line_chart_svg(flat), Contains("\"bad band\"") && Contains("band has 1 low"));
+  flat.series.back() = {"bad x", {1, 2}, {}, {}, {0.5}};
+  CHECK_THROWS_WITH(acobench::line_chart_svg(flat), Contains("\"bad x\"") && Contains("1 x values for 2 values"));
+}
+
+TEST_CASE("hitting times, the fixed-target ECDF and the expected running time on a hand-worked case",
+          "[statistics][anytime]") {
+  const double never = std::numeric_limits<double>::infinity();
+  // A run's efforts (seconds) per iteration and its best gap by then.
+  const std::vector<double> effort{0.1, 0.2, 0.4, 0.8}, gap{never, 7.0, 4.5, 1.0};
+  CHECK(acobench::hitting_time(effort, gap, 5.0) == 0.4);
+  CHECK(acobench::hitting_time(effort, gap, 7.0) == 0.2);  // reaching the target exactly counts
+  CHECK(acobench::hitting_time(effort, gap, 1.0) == 0.8);
+  CHECK(acobench::hitting_time(effort, gap, 0.5) == never);
+  CHECK_THROWS_WITH(acobench::hitting_time(effort, std::vector<double>{1.0}, 5.0), Contains("4 efforts for 1 values"));
+
+  // Four runs reached the target at 0.5, 2 and 1 s, the third never: 1/4 by 0.5 s, 2/4 by 1 s,
+  // 3/4 from 2 s on, never 4/4.
+  const std::vector<double> hits{0.5, 2.0, never, 1.0};
+  const std::vector<double> at{0.1, 0.5, 0.99, 1.0, 1.5, 2.0, 1000.0};
+  CHECK(acobench::ecdf(hits, at) == std::vector<double>{0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75});
+  CHECK(acobench::ecdf(std::vector<double>{}, at) == std::vector<double>(at.size(), 0.0));
+  // ERT: the three hits' times plus the whole 4 s of the run that missed, over 3 hits.
+  CHECK(acobench::expected_running_time(hits, std::vector<double>{3.0, 3.0, 4.0, 3.0}) == Approx((0.5 + 2 + 4 + 1) / 3.0));
+  CHECK(acobench::expected_running_time(std::vector<double>{never}, std::vector<double>{2.0}) == never);
+
+  // The ECDF as a step series from 0.25 to 8 s: 0 at the start, a step at each hit, flat to the end.
+  const auto series = acobench::ecdf_series("acs", hits, 0.25, 8.0);
+  CHECK(series.x == std::vector<double>{0.25, 0.5, 1.0, 2.0, 8.0});
+  CHECK(series.value == std::vector<double>{0.0, 0.25, 0.5, 0.75, 0.75});
+}
+
+TEST_CASE("anytime means: step curves on their own x, the same runs throughout if asked", "[statistics][plots][anytime]") {
+  const double none = std::numeric_limits<double>::infinity();
+  // Run 1 ends its iterations at 1, 2, 4 s with gaps inf, 10, 6; run 2 at 3 and 5 s with 20, 2.
+  const std::vector<acobench::StepCurve> runs{{{1, 2, 4}, {none, 10, 6}}, {{3, 5}, {20, 2}}};
+  const std::vector<double> at{1, 2, 3, 4, 5, 6};
+  const auto any = acobench::mean_series("any", runs, at);
+  CHECK(any.x == at);
+  REQUIRE(any.value.size() == 6);
+  CHECK(std::isnan(any.value[0]));  // no path yet
+  CHECK(any.value[1] == 10);        // run 1 alone
+  CHECK(any.value[2] == 15);        // (10 + 20) / 2
+  CHECK(any.value[3] == 13);        // (6 + 20) / 2
+  CHECK(any.value[4] == 4);         // (6 + 2) / 2
+  CHECK(any.value[5] == 4);         // both ended: their last values
+  const auto same = acobench::mean_series("same", runs, at, true);
+  CHECK(std::isnan(same.value[1]));  // run 2 has no path before 3 s
+  CHECK(same.value[2] == 15);
+  CHECK(same.value[5] == 4);
+  // A run that never finds a path does not hold the others' mean back.
+  auto with_unsolved = runs;
+  with_unsolved.push_back({{1, 2}, {none, none}});
+  CHECK(acobench::mean_series("same", with_unsolved, at, true).value[2] == 15);
+
+  const auto points = acobench::log_spaced(0.001, 10, 5);
+  REQUIRE(points.size() == 5);
+  CHECK(points.front() == 0.001);
+  CHECK(points[1] == Approx(0.01));
+  CHECK(points[3] == Approx(1));
+  CHECK(points.back() == 10);
+  CHECK(acobench::log_spaced(2, 2, 5) == std::vector<double>{2});
+}
+
+TEST_CASE("line charts with their own x: a log axis, steps, fixed y range, and a legend never cut", "[statistics][plots][anytime]") {
+  acobench::LineChart chart;
+  chart.title = "within 1 %";
+  chart.x_label = "seconds";
+  chart.css_class = "ecdf";
+  chart.log_x = chart.steps = true;
+  chart.y_range = std::pair(0.0, 1.0);
+  const double never = std::numeric_limits<double>::infinity();
+  chart.series = {acobench::ecdf_series("acs", {0.00002, 0.0004, never}, 0.00001, 0.03),
+                  acobench::ecdf_series("max_min", {0.001, 0.002}, 0.00001, 0.03)};
+  const std::string svg = acobench::line_chart_svg(chart);
+  CHECK(well_formed(svg));
+  CHECK(count(svg, "class=\"ecdf\"") == 1);
+  CHECK(count(svg, "class=\"series\"") == 2);
+  CHECK(count(svg, "class=\"band\"") == 0);
+  // Decades from 1e-5 to 0.1, small ones written with an exponent; shares from 0 to 1.
+  CHECK_THAT(svg, Contains(">1e-5<") && Contains(">1e-4<") && Contains(">0.001<") && Contains(">0.1<") &&
+                      Contains(">0.2<") && Contains(">1<"));
+  CHECK_FALSE(svg.find(">1.2<") != std::string::npos);
+  CHECK_THAT(svg, Contains("V"));  // steps: horizontal, then vertical
+  CHECK_FALSE(has_undefined_number(svg));
+  CHECK(svg == acobench::line_chart_svg(chart));
+  CHECK_THAT(svg, Contains("width=\"640\""));
+
+  // A long configuration name widens the legend (the plotting area first, then the picture).
+  chart.series[1].name = "003 obstacle-density init + wolf-pack update + Gaussian deposition";
+  const std::string wide = acobench::line_chart_svg(chart);
+  CHECK(well_formed(wide));
+  CHECK_FALSE(wide.find("width=\"640\"") != std::string::npos);
+  CHECK_THAT(wide, Contains(">003 obstacle-density init + wolf-pack update + Gaussian deposition<"));
 }

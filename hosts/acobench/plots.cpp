@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 #include "aco/error.hpp"
@@ -23,6 +24,7 @@ constexpr double kBottom = 50.0;          // x tick labels and the x axis label
 constexpr double kRotatedBottom = 130.0;  // sample names written at a slant
 constexpr std::size_t kLongestSlantedName = 24;  // longer names are cut, in full in the tooltip
 constexpr double kCharWidth = 6.5;        // rough width of a 12 px sans-serif character
+constexpr double kMinLineFrameWidth = 300.0;  // a line chart's plotting area, however wide its legend
 constexpr std::array kPalette{"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
                               "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
 
@@ -99,15 +101,17 @@ Axis value_axis(const std::vector<double>& values, const std::optional<double>& 
   if (all.empty()) return nice_axis(0.0, 1.0, true);
   const auto [low, high] = std::minmax_element(all.begin(), all.end());
   const double air = (*high - *low) * 0.03;
-  return nice_axis(*low - air, *high + air, true);
+  // Values that cannot be negative (lengths, gaps) get no negative ticks.
+  return nice_axis(*low >= 0.0 ? std::max(0.0, *low - air) : *low - air, *high + air, true);
 }
 
-void open_svg(std::ostream& out, const char* css_class, const std::string& title) {
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"" << css_class << "\" width=\"" << number(kWidth)
-      << "\" height=\"" << number(kHeight) << "\" viewBox=\"0 0 " << number(kWidth) << ' ' << number(kHeight)
-      << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
-  out << "<rect width=\"" << number(kWidth) << "\" height=\"" << number(kHeight) << "\" fill=\"#fff\"/>\n";
-  out << "<text class=\"title\" x=\"" << number(kWidth / 2) << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">"
+void open_svg(std::ostream& out, const std::string& css_class, const std::string& title, double width = kWidth,
+              double height = kHeight) {
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" class=\"" << aco::xml_escape(css_class) << "\" width=\""
+      << number(width) << "\" height=\"" << number(height) << "\" viewBox=\"0 0 " << number(width) << ' '
+      << number(height) << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  out << "<rect width=\"" << number(width) << "\" height=\"" << number(height) << "\" fill=\"#fff\"/>\n";
+  out << "<text class=\"title\" x=\"" << number(width / 2) << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">"
       << aco::xml_escape(title) << "</text>\n";
 }
 
@@ -218,12 +222,66 @@ Stretches stretches(std::size_t count, Defined defined) {
   return result;
 }
 
-void check_band(const Series& series) {
+void check_series(const Series& series) {
   const bool has_band = !series.band_low.empty() || !series.band_high.empty();
   if (has_band && (series.band_low.size() != series.value.size() || series.band_high.size() != series.value.size()))
     throw aco::Error("line chart series \"" + series.name + "\": the band has " + std::to_string(series.band_low.size()) +
                      " low and " + std::to_string(series.band_high.size()) + " high values for " +
                      std::to_string(series.value.size()) + " values");
+  if (!series.x.empty() && series.x.size() != series.value.size())
+    throw aco::Error("line chart series \"" + series.name + "\": " + std::to_string(series.x.size()) + " x values for " +
+                     std::to_string(series.value.size()) + " values");
+}
+
+// The width of a 12 px sans-serif text, erring on the wide side so that a legend is never cut:
+// capitals and m, w are wider than the other letters.
+double text_width(const std::string& text) {
+  double width = 0.0;
+  for (const char c : text) {
+    if ((static_cast<unsigned char>(c) & 0xC0) == 0x80) continue;  // inside a UTF-8 character
+    width += (c >= 'A' && c <= 'Z') || c == 'm' || c == 'w' ? 9.0 : (c >= '0' && c <= '9') ? 6.7 : 6.3;
+  }
+  return width;
+}
+
+// A line chart's x axis: linear with nice ticks, or logarithmic over whole decades.
+struct XAxis {
+  bool log = false;
+  double low = 0.0;
+  double high = 1.0;
+  std::vector<std::pair<double, std::string>> ticks;  // value, label
+
+  double fraction(double x) const {  // 0 at low, 1 at high
+    return log ? (std::log10(x) - std::log10(low)) / (std::log10(high) - std::log10(low)) : (x - low) / (high - low);
+  }
+};
+
+// `min_step` keeps iteration ticks whole numbers.
+XAxis linear_x_axis(double low, double high, double min_step) {
+  const Axis axis = nice_axis(low, high, false, min_step);
+  XAxis x{false, axis.low, axis.high, {}};
+  for (double tick : axis.ticks()) x.ticks.emplace_back(tick, number(tick, axis.decimals));
+  return x;
+}
+
+// m x 10^e as a tick label: written out near 1, else as "2e-5" (the long form would crowd the axis).
+std::string decade_label(double m, int e) {
+  if (e < -3 || e > 5) return number(m, 0) + "e" + std::to_string(e);
+  return number(m * std::pow(10.0, e), std::max(0, -e));
+}
+
+// Ticks at the powers of ten, and at 2 and 5 times them when the axis spans at most two decades.
+XAxis log_x_axis(double low, double high) {
+  const int first = static_cast<int>(std::floor(std::log10(low) + 1e-9));
+  const int last = std::max(first + 1, static_cast<int>(std::ceil(std::log10(high) - 1e-9)));
+  XAxis x{true, std::pow(10.0, first), std::pow(10.0, last), {}};
+  const std::vector<double> multiples = last - first <= 2 ? std::vector<double>{1, 2, 5} : std::vector<double>{1};
+  for (int e = first; e <= last; ++e)
+    for (double m : multiples) {
+      const double tick = m * std::pow(10.0, e);
+      if (tick <= x.high * (1 + 1e-9)) x.ticks.emplace_back(tick, decade_label(m, e));
+    }
+  return x;
 }
 
 }  // namespace
@@ -261,49 +319,100 @@ std::string box_plot_svg(const BoxPlot& plot) {
   return out.str();
 }
 
-Series convergence_series(std::string name, const std::vector<std::vector<double>>& runs) {
-  std::size_t iterations = 0;
-  for (const auto& run : runs) iterations = std::max(iterations, run.size());
-  Series series{std::move(name), {}, {}, {}};
-  std::vector<double> at_iteration;
-  for (std::size_t i = 0; i < iterations; ++i) {
-    at_iteration.clear();
+Series mean_series(std::string name, const std::vector<StepCurve>& runs, std::vector<double> at, bool same_runs) {
+  Series series{std::move(name), {}, {}, {}, {}};
+  const auto finite = [](double v) { return std::isfinite(v); };
+  const auto counted = static_cast<std::size_t>(std::count_if(runs.begin(), runs.end(), [&](const StepCurve& run) {
+    return std::any_of(run.value.begin(), run.value.end(), finite);
+  }));
+  std::vector<double> by_then;
+  for (const double point : at) {
+    by_then.clear();
     for (const auto& run : runs) {
-      if (run.empty()) continue;
-      const double v = run[std::min(i, run.size() - 1)];
-      if (std::isfinite(v)) at_iteration.push_back(v);
+      const auto ended = std::upper_bound(run.x.begin(), run.x.end(), point) - run.x.begin();  // iterations ended by then
+      if (ended > 0 && finite(run.value[static_cast<std::size_t>(ended - 1)]))
+        by_then.push_back(run.value[static_cast<std::size_t>(ended - 1)]);
     }
-    const Summary s = summarize(at_iteration);
+    if (same_runs && by_then.size() < counted) by_then.clear();
+    const Summary s = summarize(by_then);
     series.value.push_back(s.mean);
     series.band_low.push_back(s.ci_low);
     series.band_high.push_back(s.ci_high);
   }
+  series.x = std::move(at);
   return series;
 }
 
-std::string line_chart_svg(const LineChart& chart) {
+Series convergence_series(std::string name, const std::vector<std::vector<double>>& runs) {
+  std::vector<StepCurve> curves;
   std::size_t iterations = 0;
-  std::vector<double> finite;
+  for (const auto& run : runs) {
+    StepCurve curve{std::vector<double>(run.size()), run};
+    std::iota(curve.x.begin(), curve.x.end(), 1.0);
+    curves.push_back(std::move(curve));
+    iterations = std::max(iterations, run.size());
+  }
+  std::vector<double> at(iterations);
+  std::iota(at.begin(), at.end(), 1.0);
+  Series series = mean_series(std::move(name), curves, std::move(at));
+  series.x.clear();  // the iterations: the chart's default
+  return series;
+}
+
+std::vector<double> log_spaced(double low, double high, std::size_t count) {
+  if (!(low > 0.0) || !(high > low) || count < 2) return {low};
+  std::vector<double> points;
+  for (std::size_t k = 0; k + 1 < count; ++k) points.push_back(low * std::pow(high / low, double(k) / double(count - 1)));
+  points.push_back(high);
+  return points;
+}
+
+Series ecdf_series(std::string name, const std::vector<double>& hitting_times, double low, double high) {
+  std::vector<double> at{low};
+  for (const double t : hitting_times)
+    if (t > low && t < high) at.push_back(t);
+  std::sort(at.begin(), at.end());
+  at.push_back(high);
+  return {std::move(name), ecdf(hitting_times, at), {}, {}, at};
+}
+
+std::string line_chart_svg(const LineChart& chart) {
+  std::vector<double> finite, xs;
+  const auto x_of = [](const Series& s, std::size_t i) { return s.x.empty() ? double(i + 1) : s.x[i]; };
+  const auto on_axis = [&](double x) { return std::isfinite(x) && (!chart.log_x || x > 0.0); };
   for (const auto& series : chart.series) {
-    check_band(series);
-    iterations = std::max(iterations, series.value.size());
+    check_series(series);
     for (const auto* values : {&series.value, &series.band_low, &series.band_high})
       std::copy_if(values->begin(), values->end(), std::back_inserter(finite), [](double v) { return std::isfinite(v); });
+    for (std::size_t i = 0; i < series.value.size(); ++i)
+      if (on_axis(x_of(series, i))) xs.push_back(x_of(series, i));
   }
+  // The legend's column is as wide as its longest entry, taken from the plotting area down to a
+  // minimum and then added to the picture, which is as tall as the legend's rows.
+  double longest = chart.reference ? text_width(reference_text(*chart.reference, chart.reference_label)) : 0.0;
+  for (const auto& series : chart.series) longest = std::max(longest, text_width(series.name));
+  const double legend_width = std::max(kLegendWidth, 16 + 26 + longest + 8);
+  const std::size_t legend_rows = chart.series.size() + (chart.reference ? 1 : 0);
   Frame frame;
-  frame.width = kWidth - kLeft - kLegendWidth;
+  frame.width = std::max(kMinLineFrameWidth, kWidth - kLeft - legend_width);
   frame.height = kHeight - kTop - kBottom;
-  frame.y = value_axis(finite, chart.reference);
-  const Axis x_axis = nice_axis(1.0, double(std::max<std::size_t>(iterations, 1)), false, 1.0);
-  auto px = [&](double x) { return frame.left + frame.width * (x - x_axis.low) / (x_axis.high - x_axis.low); };
+  frame.y = chart.y_range ? nice_axis(chart.y_range->first, chart.y_range->second, false) : value_axis(finite, chart.reference);
+  const double width = frame.right() + legend_width, height = std::max(kHeight, frame.top + 20 * double(legend_rows) + 10);
+  const auto [x_low, x_high] = xs.empty() ? std::pair(1.0, 1.0) : std::pair(*std::min_element(xs.begin(), xs.end()),
+                                                                            *std::max_element(xs.begin(), xs.end()));
+  const bool by_iteration = std::all_of(chart.series.begin(), chart.series.end(), [](const Series& s) { return s.x.empty(); });
+  const XAxis x_axis = chart.log_x       ? log_x_axis(x_low, x_high)
+                       : by_iteration ? linear_x_axis(1.0, std::max(x_high, 1.0), 1.0)
+                                      : linear_x_axis(x_low, x_high, 0.0);
+  auto px = [&](double x) { return frame.left + frame.width * x_axis.fraction(x); };
 
   std::ostringstream out;
-  open_svg(out, "convergence", chart.title);
+  open_svg(out, chart.css_class, chart.title, width, height);
   draw_value_axis(out, frame, chart.y_label);
   out << "<g class=\"x-axis\">\n";
-  for (double tick : x_axis.ticks())
+  for (const auto& [tick, label] : x_axis.ticks)
     out << "<text x=\"" << number(px(tick)) << "\" y=\"" << number(frame.bottom() + 16) << "\" text-anchor=\"middle\">"
-        << number(tick, x_axis.decimals) << "</text>\n";
+        << label << "</text>\n";
   out << "<text x=\"" << number(frame.left + frame.width / 2) << "\" y=\"" << number(frame.bottom() + 38)
       << "\" text-anchor=\"middle\">" << aco::xml_escape(chart.x_label) << "</text>\n</g>\n";
   if (finite.empty()) no_data(out, frame);
@@ -311,22 +420,25 @@ std::string line_chart_svg(const LineChart& chart) {
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const Series& s = chart.series[k];
     const char* stroke = colour(k);
-    auto banded = [&](std::size_t i) { return std::isfinite(s.band_low[i]) && std::isfinite(s.band_high[i]); };
+    auto banded = [&](std::size_t i) { return std::isfinite(s.band_low[i]) && std::isfinite(s.band_high[i]) && on_axis(x_of(s, i)); };
     const Stretches band_pieces = s.band_low.empty() ? Stretches{} : stretches(s.value.size(), banded);
     if (!band_pieces.empty()) {
       out << "<path class=\"band\" fill=\"" << stroke << "\" fill-opacity=\"0.2\" stroke=\"none\" d=\"";
       for (const auto& [begin, end] : band_pieces) {
         for (std::size_t i = begin; i < end; ++i)
-          out << (i == begin ? 'M' : 'L') << number(px(double(i + 1))) << ',' << number(frame.py(s.band_high[i]));
-        for (std::size_t i = end; i-- > begin;) out << 'L' << number(px(double(i + 1))) << ',' << number(frame.py(s.band_low[i]));
+          out << (i == begin ? 'M' : 'L') << number(px(x_of(s, i))) << ',' << number(frame.py(s.band_high[i]));
+        for (std::size_t i = end; i-- > begin;) out << 'L' << number(px(x_of(s, i))) << ',' << number(frame.py(s.band_low[i]));
         out << 'Z';
       }
       out << "\"/>\n";
     }
     out << "<path class=\"series\" fill=\"none\" stroke=\"" << stroke << "\" stroke-width=\"2\" d=\"";
-    for (const auto& [begin, end] : stretches(s.value.size(), [&](std::size_t i) { return std::isfinite(s.value[i]); }))
-      for (std::size_t i = begin; i < end; ++i)
-        out << (i == begin ? 'M' : 'L') << number(px(double(i + 1))) << ',' << number(frame.py(s.value[i]));
+    for (const auto& [begin, end] : stretches(s.value.size(), [&](std::size_t i) { return std::isfinite(s.value[i]) && on_axis(x_of(s, i)); }))
+      for (std::size_t i = begin; i < end; ++i) {
+        if (i == begin) out << 'M' << number(px(x_of(s, i))) << ',' << number(frame.py(s.value[i]));
+        else if (chart.steps) out << 'H' << number(px(x_of(s, i))) << 'V' << number(frame.py(s.value[i]));
+        else out << 'L' << number(px(x_of(s, i))) << ',' << number(frame.py(s.value[i]));
+      }
     out << "\"/>\n";
   }
   draw_reference(out, frame, chart.reference, chart.reference_label, false);

@@ -1,10 +1,11 @@
 #pragma once
 // acobench's plots: self-contained SVG strings (no scripts, no external fonts or images) to
-// paste inline into the HTML report. The root <svg> element carries class="boxplot" or
-// class="convergence". The same input always gives the same bytes: numbers are written with
+// paste inline into the HTML report. The root <svg> element carries class="boxplot" or the line
+// chart's css_class ("convergence" unless set). The same input always gives the same bytes: numbers are written with
 // std::to_chars, never through a locale.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace acobench {
@@ -29,20 +30,42 @@ std::string box_plot_svg(const BoxPlot& plot);
 // The k-th colour of the plots' palette (it repeats after ten), for drawings that match them.
 const char* colour(std::size_t k);
 
-// One curve of a line chart: value[i] is drawn at x = i + 1 (the iteration). A non-finite value
-// leaves a gap; the band is shaded between band_low and band_high where both are finite.
+// One curve of a line chart: value[i] is drawn at x[i], or at x = i + 1 (the iteration) when x is
+// empty. A non-finite value (or on a log axis, an x <= 0) leaves a gap; the band is shaded
+// between band_low and band_high where both are finite.
 struct Series {
   std::string name;
   std::vector<double> value;
   std::vector<double> band_low;   // empty, or as long as value
   std::vector<double> band_high;  // empty, or as long as value
+  std::vector<double> x;          // empty, or as long as value and non-decreasing
 };
 
-// The mean of several runs' per-iteration curves (e.g. best-so-far lengths) with its 95 %
-// confidence interval as the band. A run shorter than the longest (stopped early) keeps its last
-// value, as a best-so-far curve does. At each iteration only the runs with a finite value (a path
-// found by then) count; where fewer than two do, there is no band.
+// One run's best-so-far curve as a step function: value[i] holds from x[i] (its effort by the end
+// of iteration i + 1: the iteration, seconds or walks) until x[i + 1], and after the last x.
+struct StepCurve {
+  std::vector<double> x;
+  std::vector<double> value;
+};
+
+// The mean of several runs' step curves at each point of `at` (ascending), with its 95 %
+// confidence interval as the band; the series' x is `at`. A run counts at a point where it has a
+// finite value by then (a path found), and past its end with its last value, as a best-so-far
+// curve goes on; where fewer than two count, there is no band. With `same_runs`, a point has a
+// value only once every run with any finite value has one by then (runs without are left out):
+// the mean of one set of runs throughout, which never rises for best-so-far curves, instead of a
+// mean that jumps up whenever a run finds its first, poor, path.
+Series mean_series(std::string name, const std::vector<StepCurve>& runs, std::vector<double> at, bool same_runs = false);
+
+// The same per iteration: run[i] is the value of iteration i + 1 (x empty: the chart's iteration).
 Series convergence_series(std::string name, const std::vector<std::vector<double>>& runs);
+
+// `count` points from low to high, evenly spaced on a log scale (low and high > 0 included).
+std::vector<double> log_spaced(double low, double high, std::size_t count);
+
+// The fixed-target ECDF of some runs as a step series from `low` to `high`: the share of the
+// runs (infinity: never reached) whose hitting time is <= x, at low, every hit and high.
+Series ecdf_series(std::string name, const std::vector<double>& hitting_times, double low, double high);
 
 struct LineChart {
   std::string title;
@@ -51,6 +74,10 @@ struct LineChart {
   std::vector<Series> series;
   std::optional<double> reference;
   std::string reference_label = "optimum";
+  std::string css_class = "convergence";
+  bool log_x = false;  // decades, with 2 and 5 between them on a short range
+  bool steps = false;  // each value holds until the next x (a step function) instead of a line to it
+  std::optional<std::pair<double, double>> y_range;  // fixed instead of the values' (e.g. 0 to 1 for shares)
 };
 
 std::string line_chart_svg(const LineChart& chart);

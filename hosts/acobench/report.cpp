@@ -1,6 +1,7 @@
 #include "report.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -58,6 +59,7 @@ struct Analysis {
   std::vector<std::string> ablation_path;
   std::filesystem::path experiment_dir;  // the maps are relative to it
   std::vector<int> buckets;              // per problem: Moving AI bucket, or -1
+  std::size_t unmeasured = 0;            // runs stored without anytime curves (by an older acobench)
 };
 
 // The excess of a solved trial over the problem's optimum, %. The optimum is exact A* on the
@@ -65,7 +67,11 @@ struct Analysis {
 // smoothed (any-angle) path may be shorter than the grid optimum, and its "gap" would be
 // negative without being better than optimal. (A simulation trial's grid length is the distance
 // driven.)
-double gap_percent(const TrialRecord& t, double optimal) { return 100.0 * (t.grid_length / optimal - 1.0); }
+double gap_percent(double grid_length, double optimal) { return 100.0 * (grid_length / optimal - 1.0); }
+double gap_percent(const TrialRecord& t, double optimal) { return gap_percent(t.grid_length, optimal); }
+
+// A planning run whose rows lack the anytime curves: stored by an acobench of format 3 or earlier.
+bool unmeasured(const TrialRecord& t) { return !t.simulation && t.iterations > 0 && t.elapsed_s.empty(); }
 
 double mean_of(const std::vector<double>& v) {
   if (v.empty()) return NAN;
@@ -91,6 +97,7 @@ Analysis analyse(const ResultsDb& db) {
   for (std::size_t p = 0; p < a.problems.size(); ++p)
     for (std::size_t c = 0; c < a.configs.size(); ++c) a.results[p][c].config = static_cast<int>(c);
   for (const auto& t : a.trials) a.results[t.problem][index.at(t.config)].runs.push_back(&t);
+  a.unmeasured = static_cast<std::size_t>(std::count_if(a.trials.begin(), a.trials.end(), unmeasured));
 
   std::vector<double> raw_p;
   std::vector<Result*> compared;
@@ -397,6 +404,169 @@ std::vector<Table> summary_tables(const Analysis& a) {
   return tables;
 }
 
+// The fixed targets of the anytime view, gap to the optimum in %.
+constexpr std::array kTargets{1.0, 5.0};
+
+// One run on a problem with a known optimum, for the anytime view: when it first came within each
+// target, in seconds and in walks (infinity: never), and what it spent in all.
+struct Reach {
+  std::array<double, kTargets.size()> seconds{}, walks{};
+  double seconds_spent = 0.0;
+};
+
+// The best-so-far gap per iteration, % (infinity before the first path).
+std::vector<double> gap_curve(const TrialRecord& t, double optimal) {
+  std::vector<double> gaps;
+  for (const double b : t.best_so_far) gaps.push_back(std::isfinite(b) ? gap_percent(b, optimal) : b);
+  return gaps;
+}
+
+std::vector<double> as_reals(const std::vector<std::uint64_t>& counts) { return {counts.begin(), counts.end()}; }
+
+// Per configuration: its runs on every problem with a known optimum. A run that failed or never
+// started counts as one that never reached a target; a run without measured curves is left out.
+std::vector<std::vector<Reach>> reaches(const Analysis& a) {
+  std::vector<std::vector<Reach>> all(a.configs.size());
+  for (std::size_t p = 0; p < a.problems.size(); ++p) {
+    const double optimal = a.problems[p].optimal_length;
+    if (!(optimal > 0)) continue;
+    for (const Result& r : a.results[p])
+      for (const TrialRecord* t : r.runs) {
+        if (t->simulation || unmeasured(*t)) continue;
+        const std::vector<double> gaps = gap_curve(*t, optimal), walks = as_reals(t->walks);
+        Reach reach;
+        for (std::size_t k = 0; k < kTargets.size(); ++k) {
+          reach.seconds[k] = hitting_time(t->elapsed_s, gaps, kTargets[k]);
+          reach.walks[k] = hitting_time(walks, gaps, kTargets[k]);
+        }
+        reach.seconds_spent = t->elapsed_s.empty() ? t->time_s : t->elapsed_s.back();
+        all[static_cast<std::size_t>(r.config)].push_back(reach);
+      }
+  }
+  return all;
+}
+
+std::string target_name(double target) { return "gap <= " + fixed(target, 0) + " %"; }
+
+std::string unmeasured_note(const Analysis& a) {
+  if (a.unmeasured == 0) return "";
+  return " " + std::to_string(a.unmeasured) + " runs stored by an older acobench (format 3 or earlier) have no measured "
+         "times and walks and are left out.";
+}
+
+// Per configuration and target: how many of its runs on the problems with a known optimum came
+// within the target, and how fast.
+std::vector<Table> anytime_tables(const Analysis& a) {
+  Table t{"Anytime: fixed targets",
+          "Over every (problem, run) pair of the problems with a known optimum: the share of runs whose best-so-far grid "
+          "path came within the target gap to the optimum, the median wall time (since the search began) and walks "
+          "(candidate paths built) at which the runs that did got there, and the expected running time ERT = (time the "
+          "runs spent until they reached the target, or in all if they never did) / runs that reached it." +
+              unmeasured_note(a),
+          {"configuration", "target", "runs", "reached", "median time s", "median walks", "ERT s"},
+          {}};
+  const auto all = reaches(a);
+  for (std::size_t c = 0; c < a.configs.size(); ++c)
+    for (std::size_t k = 0; k < kTargets.size(); ++k) {
+      const auto& runs = all[c];
+      if (runs.empty()) continue;
+      std::vector<double> seconds, walks, hits, spent;
+      for (const Reach& r : runs) {
+        hits.push_back(r.seconds[k]);
+        spent.push_back(r.seconds_spent);
+        if (!std::isfinite(r.seconds[k])) continue;
+        seconds.push_back(r.seconds[k]);
+        walks.push_back(r.walks[k]);
+      }
+      t.rows.push_back({a.configs[c].second.name, target_name(kTargets[k]), std::to_string(runs.size()),
+                        fixed(100.0 * double(seconds.size()) / double(runs.size()), 1) + " %",
+                        number(summarize(seconds).median, 3), number(summarize(walks).median, 6),
+                        number(expected_running_time(hits, spent), 3)});
+    }
+  // Without rows the table still says why, if older runs are the reason.
+  if (t.rows.empty() && a.unmeasured == 0) return {};
+  return {t};
+}
+
+// IOHanalyzer's fixed-target ECDF, one chart per target: per configuration, the share of its
+// (problem, run) pairs within the target by each time.
+std::string ecdf_charts(const Analysis& a) {
+  const auto all = reaches(a);
+  double low = INFINITY, high = 0.0;
+  for (const auto& t : a.trials)
+    if (a.problems[t.problem].optimal_length > 0 && !t.elapsed_s.empty() && t.elapsed_s.front() > 0) {
+      low = std::min(low, t.elapsed_s.front());
+      high = std::max(high, t.elapsed_s.back());
+    }
+  if (!(high >= low)) return "";
+  std::string svg;
+  for (std::size_t k = 0; k < kTargets.size(); ++k) {
+    LineChart chart;
+    chart.title = "runs within " + fixed(kTargets[k], 0) + " % of the optimum, by time (ECDF)";
+    chart.x_label = "wall time since the search began, s (log scale)";
+    chart.y_label = "share of (problem, run) pairs";
+    chart.css_class = "ecdf";
+    chart.log_x = chart.steps = true;
+    chart.y_range = std::pair(0.0, 1.0);
+    for (std::size_t c = 0; c < a.configs.size(); ++c) {
+      if (all[c].empty()) continue;
+      std::vector<double> hits;
+      for (const Reach& r : all[c]) hits.push_back(r.seconds[k]);
+      chart.series.push_back(ecdf_series(a.configs[c].second.name, hits, low, high));
+    }
+    svg += line_chart_svg(chart) + "\n";
+  }
+  return svg;
+}
+
+// The mean best-so-far gap of each configuration's measured runs on problem p, against wall time
+// and against walks (log scales, 100 points between the first iteration's end and the last's).
+std::string anytime_charts(const Analysis& a, std::size_t p) {
+  const double optimal = a.problems[p].optimal_length;
+  if (!(optimal > 0)) return "";
+  struct Effort {
+    const char* title;
+    const char* label;
+    std::function<std::vector<double>(const TrialRecord&)> of;
+  };
+  const Effort efforts[] = {
+      {"best-so-far gap against time (mean of the runs): ", "wall time since the search began, s (log scale)",
+       [](const TrialRecord& t) { return t.elapsed_s; }},
+      {"best-so-far gap against walks (mean of the runs): ", "walks: candidate paths built (log scale)",
+       [](const TrialRecord& t) { return as_reals(t.walks); }},
+  };
+  std::string svg;
+  for (const Effort& effort : efforts) {
+    std::vector<std::pair<std::string, std::vector<StepCurve>>> by_config;
+    double low = INFINITY, high = 0.0;
+    for (const Result& r : a.results[p]) {
+      std::vector<StepCurve> curves;
+      for (const TrialRecord* t : r.runs) {
+        if (t->elapsed_s.empty()) continue;
+        curves.push_back({effort.of(*t), gap_curve(*t, optimal)});
+        low = std::min(low, curves.back().x.front());
+        high = std::max(high, curves.back().x.back());
+      }
+      if (!curves.empty()) by_config.emplace_back(a.configs[r.config].second.name, std::move(curves));
+    }
+    if (by_config.empty() || !(low > 0)) continue;
+    LineChart chart;
+    chart.title = effort.title + a.problems[p].name;
+    chart.x_label = effort.label;
+    chart.y_label = "gap to the optimum %";
+    chart.css_class = "anytime";
+    chart.log_x = true;
+    for (const auto& [name, curves] : by_config) {
+      chart.series.push_back(mean_series(name, curves, log_spaced(low, high, 100), true));
+      // No confidence band: early on, while only one or two runs have a path, it spans hundreds of %.
+      chart.series.back().band_low.clear();
+      chart.series.back().band_high.clear();
+    }
+    svg += line_chart_svg(chart) + "\n";
+  }
+  return svg;
+}
+
 std::string markdown(const Table& t) {
   std::ostringstream md;
   md << "## " << t.title << "\n\n" << t.intro << "\n\n|";
@@ -436,6 +606,12 @@ std::string markdown(const Analysis& a, const std::filesystem::path& database) {
      << (a.configs.empty() ? "" : a.configs[0].second.name)
      << "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline.\n\n";
   for (const Table& t : summary_tables(a)) md << markdown(t);
+  for (const Table& t : anytime_tables(a)) {
+    md << markdown(t);
+    if (!t.rows.empty())
+      md << "report.html plots the share of runs within each target against time (the ECDF) and, per problem, the "
+            "mean best-so-far gap against time and against walks.\n\n";
+  }
   const auto cols = columns();
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
     md << "## " << a.problems[p].name << " (optimal " << fixed(a.problems[p].optimal_length, 4) << ")\n\n| configuration |";
@@ -519,6 +695,7 @@ std::string html(const Analysis& a, const std::string& md_intro) {
          "text-align:left}svg{margin:0.5em}</style></head><body>\n<h1>acobench report: "
       << aco::xml_escape(a.name) << "</h1>\n<p>" << aco::xml_escape(md_intro) << "</p>\n";
   for (const Table& t : summary_tables(a)) out << html(t);
+  for (const Table& t : anytime_tables(a)) out << html(t) << ecdf_charts(a);
   const auto cols = columns();
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
     const double optimal = a.problems[p].optimal_length;
@@ -546,6 +723,7 @@ std::string html(const Analysis& a, const std::string& md_intro) {
     }
     out << box_plot_svg(box) << "\n";
     if (!chart.series.empty()) out << line_chart_svg(chart) << "\n";
+    out << anytime_charts(a, p);
     out << paths_svg(a, p) << "\n";
   }
   if (!a.average_rank.empty()) {
@@ -556,7 +734,8 @@ std::string html(const Analysis& a, const std::string& md_intro) {
   }
   if (!a.ablation_path.empty()) {
     out << "<h2>Ablation path</h2>\n";
-    Series gaps{"mean gap %", {}, {}, {}};
+    Series gaps;
+    gaps.name = "mean gap %";
     for (const auto& name : a.ablation_path) {
       std::vector<double> g;
       for (std::size_t p = 0; p < a.problems.size(); ++p)
@@ -566,7 +745,12 @@ std::string html(const Analysis& a, const std::string& md_intro) {
     }
     out << "<ol start=\"0\">";
     for (const auto& name : a.ablation_path) out << "<li>" << aco::xml_escape(name) << "</li>";
-    out << "</ol>\n" << line_chart_svg({"ablation path: mean gap to the optimum", "step", "gap %", {gaps}, std::nullopt, ""}) << "\n";
+    LineChart chart;
+    chart.title = "ablation path: mean gap to the optimum";
+    chart.x_label = "step";
+    chart.y_label = "gap %";
+    chart.series = {gaps};
+    out << "</ol>\n" << line_chart_svg(chart) << "\n";
   }
   out << "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>\n</body></html>\n";
   return out.str();

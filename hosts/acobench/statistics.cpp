@@ -224,4 +224,38 @@ std::vector<double> average_ranks(const std::vector<std::vector<double>>& scores
   return sums;
 }
 
+double hitting_time(std::span<const double> effort, std::span<const double> value, double target) {
+  if (effort.size() != value.size())
+    throw aco::Error("hitting time: " + std::to_string(effort.size()) + " efforts for " + std::to_string(value.size()) +
+                     " values");
+  for (std::size_t i = 0; i < value.size(); ++i)
+    if (value[i] <= target) return effort[i];
+  return std::numeric_limits<double>::infinity();
+}
+
+std::vector<double> ecdf(std::span<const double> hitting_times, std::span<const double> at) {
+  std::vector<double> sorted(hitting_times.begin(), hitting_times.end());
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<double> shares;
+  for (const double t : at) {
+    const auto reached = std::upper_bound(sorted.begin(), sorted.end(), t) - sorted.begin();
+    shares.push_back(sorted.empty() ? 0.0 : double(reached) / double(sorted.size()));
+  }
+  return shares;
+}
+
+double expected_running_time(std::span<const double> hitting_times, std::span<const double> run_efforts) {
+  if (hitting_times.size() != run_efforts.size())
+    throw aco::Error("expected running time: " + std::to_string(hitting_times.size()) + " hitting times for " +
+                     std::to_string(run_efforts.size()) + " runs");
+  double spent = 0.0;
+  std::size_t hits = 0;
+  for (std::size_t i = 0; i < hitting_times.size(); ++i) {
+    const bool hit = std::isfinite(hitting_times[i]);
+    spent += hit ? hitting_times[i] : run_efforts[i];
+    hits += hit ? 1 : 0;
+  }
+  return hits == 0 ? std::numeric_limits<double>::infinity() : spent / double(hits);
+}
+
 }  // namespace acobench

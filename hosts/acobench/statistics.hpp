@@ -76,4 +76,20 @@ std::string_view to_string(EffectSize size);
 // problems as the first, at least one.
 std::vector<double> average_ranks(const std::vector<std::vector<double>>& scores);
 
+// Fixed-target anytime measures, as IOHanalyzer and COCO define them. A run's curve gives, per
+// iteration, the effort spent by its end (seconds or walks, non-decreasing) and the best value so
+// far (infinity before the first solution). A run that never reaches a target has an infinite
+// hitting time.
+
+// The effort at the end of the first iteration whose value is <= target; infinity if none.
+double hitting_time(std::span<const double> effort, std::span<const double> value, double target);
+
+// The empirical cumulative distribution of hitting times: for each t of `at`, the share of ALL
+// the runs (those that never hit included) whose hitting time is <= t. No runs: 0.
+std::vector<double> ecdf(std::span<const double> hitting_times, std::span<const double> at);
+
+// Expected running time: the effort of every run until it hit the target or ended (`run_efforts`,
+// one per run), divided by the runs that hit; infinity if none did.
+double expected_running_time(std::span<const double> hitting_times, std::span<const double> run_efforts);
+
 }  // namespace acobench

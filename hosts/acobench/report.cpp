@@ -283,7 +283,7 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
   std::vector<Pair> pairs;
   for (std::size_t s = 0; s < a.configs.size(); ++s)
     for (std::size_t w = 0; model[s] == "none" && w < a.configs.size(); ++w)
-      if (model[w] != "none" && subject_key[w] == subject_key[s]) pairs.push_back({s, w, {}, {}});
+      if (model[w] != "none" && subject_key[w] == subject_key[s]) pairs.push_back({s, w, {}, {}, {}, {}});
   if (pairs.empty()) return {};
 
   std::vector<double> pooled_p, per_problem_p;

@@ -22,6 +22,7 @@ import hashlib
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 
@@ -97,6 +98,7 @@ def main():
     ap.add_argument("--twins", action="store_true", help="add no-learning and restarts twins of each variant")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--by-type", action="store_true", help="also one table per map type")
     ap.add_argument("--cache", default="/tmp/learning-cache.jsonl")
     a = ap.parse_args()
 
@@ -117,13 +119,14 @@ def main():
             for line in f:
                 e = json.loads(line)
                 cache[e["key"]] = e["result"]
-    binary = os.stat(ACOPLAN).st_mtime_ns  # a rebuilt acoplan invalidates the cache
+    # A rebuilt acoplan or plugin invalidates the cache.
+    binary = max(os.stat(f).st_mtime_ns for f in [ACOPLAN] + glob.glob(os.path.join(ROOT, "build/release/plugins/*.so")))
     jobs = {}
     for name, extra in variants:
         for scen, index in probs:
             for seed in seeds:
                 full = config + extra
-                key = hashlib.sha1(json.dumps([os.path.abspath(scen), index, seed, full, binary, a.threads]).hexdigest().encode()).hexdigest()
+                key = hashlib.sha1(json.dumps([os.path.abspath(scen), index, seed, full, binary, a.threads]).encode()).hexdigest()
                 jobs[(name, scen, index, seed)] = (key, (scen, index, seed, full, a.threads))
     todo = {k: v for k, v in jobs.items() if v[0] not in cache}
     print(f"{len(probs)} problems x {len(seeds)} seeds x {len(variants)} variants; {len(todo)} runs to do", file=sys.stderr)
@@ -131,6 +134,8 @@ def main():
         futures = {pool.submit(run, v[1]): v[0] for v in todo.values()}
         for done, fut in enumerate(concurrent.futures.as_completed(futures), 1):
             cache[futures[fut]] = fut.result()
+            if "error" in fut.result():
+                continue  # not cached: a mistaken option is fixed and run again
             out.write(json.dumps({"key": futures[fut], "result": fut.result()}) + "\n")
             out.flush()
             if done % 50 == 0:
@@ -141,6 +146,17 @@ def main():
     if errors:
         print(f"{len(errors)} runs failed, e.g.: {errors[0]}", file=sys.stderr)
     pairs = [(scen, index, seed) for scen, index in probs for seed in seeds]
+    if a.by_type:
+        # One table per map type: the file name up to its first digit (maze, random, room, ...).
+        kind = lambda scen: re.match(r"[^0-9]*", os.path.basename(scen)).group(0)
+        for t in sorted({kind(p[0]) for p in pairs}):
+            print(f"\n{t}:")
+            table(variants, results, [p for p in pairs if kind(p[0]) == t])
+        print("\nall:")
+    table(variants, results, pairs)
+
+
+def table(variants, results, pairs):
     first = variants[0][0]
     print(f"| variant | solved | mean gap % | worst gap % | mean time ms | vs {first}: better/equal/worse | Wilcoxon p |")
     print("|---|---|---|---|---|---|---|")

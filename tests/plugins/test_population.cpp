@@ -1,8 +1,5 @@
 #include <catch2/catch.hpp>
-#include <tbb/global_control.h>
-#include <tbb/task_arena.h>
 
-#include "aco/colony.hpp"
 #include "support.hpp"
 
 namespace {
@@ -86,18 +83,8 @@ TEST_CASE("population solves classic map1 bit-identically for any thread count",
   settings.iterations = 30;
   settings.q0 = 0.5;
   settings.local_search = "straighten";
-  std::vector<aco::ColonyResult> results;
-  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
-  for (int threads : {1, 2, 4}) {
-    auto init = test::make<aco::PheromoneInit>("init", "uniform");
-    auto heuristic = test::make<aco::Heuristic>("heuristic", "progress");
-    auto update = test::make<aco::PheromoneUpdate>("update", "population", {{"size", "3"}});
-    auto deadlock = test::make<aco::DeadlockPolicy>("deadlock", "backtrack");
-    const aco::Pipeline pipeline{init.get(), heuristic.get(), update.get(), deadlock.get()};
-    tbb::task_arena arena(threads);
-    arena.execute([&] { results.push_back(aco::run_colony(graph, 0, graph.node({19, 19}), pipeline, settings)); });
-  }
-  REQUIRE(results[0].solved);
-  CHECK(results[0].length < 1.05 * 34.3848);  // within 5 % of the optimum
-  for (std::size_t i = 1; i < results.size(); ++i) test::check_same_run(results[i], results[0]);
+  const aco::ColonyResult result = test::run_on_thread_counts(graph, 0, graph.node({19, 19}), settings,
+                                                              {"uniform", "progress", "population", "backtrack"}, {{"size", "3"}});
+  REQUIRE(result.solved);
+  CHECK(result.length < 1.05 * 34.3848);  // within 5 % of the optimum
 }

@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -240,6 +242,24 @@ std::string walk_problem(const aco::Graph& graph, const aco::Ant& ant, aco::Node
   if (ant.arrived && std::abs(ant.length - aco::path_length(graph, ant.nodes)) > 1e-9 * (1 + ant.length))
     return "length " + std::to_string(ant.length) + " is not the walk's length";
   return "";
+}
+
+aco::ColonyResult run_on_thread_counts(const aco::Graph& graph, aco::NodeId start, aco::NodeId goal,
+                                       const aco::ColonySettings& settings, const std::array<std::string, 4>& plugins,
+                                       const std::map<std::string, std::string>& update_params) {
+  std::vector<aco::ColonyResult> results;
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
+  for (int threads : {1, 2, 4}) {
+    auto init = make<aco::PheromoneInit>("init", plugins[0]);
+    auto heuristic = make<aco::Heuristic>("heuristic", plugins[1]);
+    auto update = make<aco::PheromoneUpdate>("update", plugins[2], update_params);
+    auto deadlock = make<aco::DeadlockPolicy>("deadlock", plugins[3]);
+    const aco::Pipeline pipeline{init.get(), heuristic.get(), update.get(), deadlock.get()};
+    tbb::task_arena arena(threads);
+    arena.execute([&] { results.push_back(aco::run_colony(graph, start, goal, pipeline, settings)); });
+  }
+  for (std::size_t i = 1; i < results.size(); ++i) check_same_run(results[i], results[0]);
+  return results[0];
 }
 
 }  // namespace test

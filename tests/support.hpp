@@ -1,6 +1,8 @@
 #pragma once
 // Helpers shared by the tests: data locations, tiny hand-made maps, loaded plugins, running acoplan.
+#include <array>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <random>
 #include <set>
@@ -58,6 +60,13 @@ void check_same_run(const aco::ColonyResult& a, const aco::ColonyResult& b);
 // Checks the anytime curves of a search: as long as its iterations, the time since the search
 // began never decreasing, the walks built growing every iteration, ending at `total_walks`.
 void check_anytime_curves(const aco::SearchResult& r, std::uint64_t total_walks);
+
+// Runs the colony with 1, 2 and 4 threads, each run with fresh plugins (init, heuristic, update,
+// deadlock; the update plugin with `update_params`), checks that the runs are the same bit for bit
+// and returns the first.
+aco::ColonyResult run_on_thread_counts(const aco::Graph& graph, aco::NodeId start, aco::NodeId goal,
+                                       const aco::ColonySettings& settings, const std::array<std::string, 4>& plugins,
+                                       const std::map<std::string, std::string>& update_params = {});
 
 // An arrived ant following the given cells (consecutive cells must be neighbours).
 aco::Ant ant(const aco::Graph& graph, const std::vector<aco::Cell>& cells);

@@ -18,6 +18,7 @@
 #include "ifwa/fireworks.hpp"
 #include "aco/map_io.hpp"
 #include "aco/pipeline.hpp"
+#include "aco/program_options_error.hpp"
 #include "aco/run_spec.hpp"
 #include "aco/strategies.hpp"
 
@@ -434,6 +435,9 @@ int main(int argc, char** argv) try {
   if (sections.count("large-plugins"))
     identical = time_large_plugins(registry, shared, large, large_index, large_plugin_repeats) && identical;
   return identical ? 0 : 1;
+} catch (po::error& e) {
+  std::cerr << "aco_bench: error: " << aco::program_options_message(e) << "\n";
+  return 1;
 } catch (const std::exception& e) {
   std::cerr << "aco_bench: error: " << e.what() << "\n";
   return 1;

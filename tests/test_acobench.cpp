@@ -258,6 +258,23 @@ TEST_CASE("a configuration starts from an acoplan config file with 'config', its
     CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()),
                       Contains("preset.ini: configuration 'preset'") && Contains("antz") && Contains("ants"));
   }
+  SECTION("a bad line in the config file is named with its file and line") {
+    std::ofstream(file.parent_path() / "preset.ini") << "ants = 12\n%invalid_line%x\n";
+    CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()),
+                      Contains("experiment.yaml:5") && Contains("preset.ini:2: '%invalid_line%x' is not a 'key = value' line"));
+  }
+}
+
+// Boost.ProgramOptions' message for these never came back (aco/program_options_error.hpp).
+TEST_CASE("acobench shows '%' placeholders in its options as typed", "[acobench][bad-input]") {
+  const auto error = [](const std::vector<std::string>& args) {
+    const auto r = run_acobench(args);
+    CHECK(r.exit_code == 1);
+    return r.err;
+  };
+  CHECK(error({"run", "x.yaml", "--threads", "%value%"}) ==
+        "acobench: error: the argument ('%value%') for option '--threads' is invalid\n");
+  CHECK(error({"run", "x.yaml", "--%canonical_option%"}) == "acobench: error: unrecognised option '--%canonical_option%'\n");
 }
 
 TEST_CASE("an experiment sets terrain keys per configuration: max-slope limits the paths", "[acobench][terrain]") {

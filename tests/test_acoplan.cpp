@@ -183,6 +183,22 @@ TEST_CASE("acoplan refuses a config file that is a folder or a device", "[acopla
   expect_error({"--config", "/nonexistent/run.ini"}, "/nonexistent/run.ini: cannot open the config file");
 }
 
+// Found by the ini_config fuzz harness: acoplan --config with this file never ended, inside
+// Boost.ProgramOptions' message for the bad line (aco/program_options_error.hpp).
+TEST_CASE("acoplan names a bad config line, and shows '%' placeholders in any input as typed", "[acoplan][bad-input]") {
+  const auto hang = test::temp_file("hang.ini", "beta = 0.3\n%invalid_line%x\n").string();
+  expect_error({"--config", hang}, hang + ":2: '%invalid_line%x' is not a 'key = value' line");
+  const auto section = test::temp_file("section.ini", "ants = 3\n[]\n").string();
+  expect_error({"--config", section}, section + ":2: '[]' names no section");
+  const auto json = test::temp_file("json.ini", "json = %value%\n").string();
+  expect_error({"--config", json}, json + ": the argument ('%value%') for option 'json' is invalid");
+  expect_error({"--config", test::temp_file("key.ini", "[%x%]\n%canonical_option% = 1\n").string()},
+               "unknown option '--%x%.%canonical_option%'");
+  expect_error({"--config", test::temp_file("value.ini", "beta = %value%\n").string()}, "--beta: '%value%' is not a finite number");
+  expect_error({"--%value%", "1"}, "unknown option '--%value%'");
+  expect_error({"--beta", "%x%"}, "--beta: '%x%' is not a finite number");
+}
+
 TEST_CASE("acoplan rejects blocked, out-of-range and malformed start and goal cells", "[acoplan][bad-input]") {
   expect_error({"--map", map1, "--start", "6,0", "--goal", "19,19"}, "start (6,0) is blocked: an obstacle (" + map1 + ")");
   expect_error({"--map", map1, "--start", "0,0", "--goal", "25,3"}, "goal (25,3) is outside the 20x20 map");

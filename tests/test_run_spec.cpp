@@ -1,7 +1,9 @@
 // aco::RunSpec: one typed configuration per run, resolved once from keys, written back as keys
 // and JSON with the same names.
+#include <boost/program_options.hpp>
 #include <catch2/catch.hpp>
 
+#include "aco/program_options_error.hpp"
 #include "aco/run_spec.hpp"
 #include "aco/settings_table.hpp"
 #include "support.hpp"
@@ -11,6 +13,18 @@ using Catch::Contains;
 namespace {
 
 aco::RunSpec resolve(const aco::Keys& keys) { return aco::resolve_run(keys, test::plugins(), "--"); }
+
+// The error for a config file with this text, without the file's name, or "no error".
+std::string config_error(const std::string& text) {
+  const auto file = test::temp_file("run.ini", text).string();
+  try {
+    aco::read_config_file(file);
+  } catch (const aco::Error& e) {
+    const std::string message = e.what();
+    return message.rfind(file, 0) == 0 ? message.substr(file.size()) : message;
+  }
+  return "no error";
+}
 
 std::string key_error(const aco::Keys& keys, std::string* key = nullptr) {
   try {
@@ -110,4 +124,56 @@ TEST_CASE("load_problem checks start and goal and takes a scenario's cells", "[r
   CHECK(loaded.map->width() == 49);
   scen.scen_index = 100000;
   CHECK_THROWS_WITH(aco::load_problem(scen), Contains("scen-index 100000 is out of range"));
+}
+
+TEST_CASE("a config file holds key = value lines, [sections] and comments", "[run_spec]") {
+  const auto file = test::temp_file("run.ini", "# acoplan\nants = 20  # trailing comment\n; a comment line\n\n"
+                                               "[update]\n  rho=0.2\r\n[ local. ]\nkey = a = b\nempty =\n");
+  CHECK(aco::read_config_file(file.string()) ==
+        aco::Keys{{"ants", "20"}, {"update.rho", "0.2"}, {"local.key", "a = b"}, {"local.empty", ""}});
+  const auto settings = aco::read_config_settings(file.string());
+  REQUIRE(settings.size() == 4);
+  CHECK(settings[1].key == "update.rho");
+  CHECK(settings[1].line == 6);
+  // Text that looks like a Boost.ProgramOptions placeholder is text; resolve_run() judges it.
+  CHECK(aco::read_config_file(test::temp_file("p.ini", "%canonical_option% = %value%\n[%x%]\n%% = %\n").string()) ==
+        aco::Keys{{"%canonical_option%", "%value%"}, {"%x%.%%", "%"}});
+}
+
+// Found by the ini_config fuzz harness: Boost.ProgramOptions' message for the second line never
+// came back (its what() replaced "%invalid_line%" with the line, which holds it again, forever).
+TEST_CASE("a bad config line is an error naming the file, the line number and the line", "[run_spec][errors]") {
+  CHECK(config_error("beta = 0.3\n%invalid_line%x\n") == ":2: '%invalid_line%x' is not a 'key = value' line");
+  for (const std::string line : {"%canonical_option%", "%value%", "%prefix_option%", "%option%", "%%", "%", "[update"})
+    CHECK(config_error("ants = 3\n\n  " + line + "  # comment\n") == ":3: '" + line + "' is not a 'key = value' line");
+  CHECK(config_error("[]\n") == ":1: '[]' names no section");
+  CHECK(config_error("= 5\n") == ":1: '= 5' has no key before the '='");
+  CHECK(config_error("beta = 1\n[x]\n\nbeta = 2\nbeta = 3\n") == ":5: 'x.beta' is set twice (first on line 4)");
+}
+
+// Boost.ProgramOptions' what() never came back on these (aco/program_options_error.hpp).
+TEST_CASE("Boost.ProgramOptions errors are reported with the user's text as typed", "[run_spec][errors]") {
+  namespace po = boost::program_options;
+  const auto message = [](const std::vector<std::string>& args) {
+    po::options_description options;
+    options.add_options()("batch", po::value<int>());
+    std::vector<const char*> argv{"host"};
+    for (const auto& a : args) argv.push_back(a.c_str());
+    try {
+      po::variables_map vm;
+      po::store(po::parse_command_line(static_cast<int>(argv.size()), argv.data(), options), vm);
+    } catch (po::error& e) {
+      return aco::program_options_message(e);
+    }
+    return std::string("no error");
+  };
+  CHECK(message({"--batch", "%value%"}) == "the argument ('%value%') for option '--batch' is invalid");
+  CHECK(message({"--batch=%canonical_option%x"}) == "the argument ('%canonical_option%x') for option '--batch' is invalid");
+  CHECK(message({"--%canonical_option%"}) == "unrecognised option '--%canonical_option%'");
+  CHECK(message({"--batch"}) == "the required argument for option '--batch' is missing");
+  // Text naming a placeholder substituted after it was replaced too: this line showed as ''.
+  po::invalid_config_file_syntax line("%option%", po::invalid_syntax::unrecognized_line);
+  CHECK(aco::program_options_message(line) == "the options configuration file contains an invalid line '%option%'");
+  po::error plain("100% fixed text");
+  CHECK(aco::program_options_message(plain) == "100% fixed text");
 }

@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
 # libFuzzer runs of every loader and parser of hostile input (tests/fuzz/targets.cpp) under
 # AddressSanitizer and UndefinedBehaviorSanitizer; builds the "fuzz" preset (clang) first.
-#   tools/fuzz.sh short          CI: each harness for FUZZ_SECONDS (default 15) seconds, one at a time
-#   tools/fuzz.sh long [RUNS]    RUNS executions per harness (default 1000000), two at a time, niced
+#   tools/fuzz.sh short          CI: each harness, one at a time, for a fixed number of executions
+#                                (short_runs below, about 15 s each) with a fixed libFuzzer seed,
+#                                from its seeds and an empty corpus: the same inputs, so the same
+#                                verdict and figures, on every run of the same checkout
+#   tools/fuzz.sh long [RUNS]    RUNS executions per harness (default 1000000), two at a time, niced,
+#                                random seeds, growing the corpus kept in build/fuzz/corpus/<target>
 #   tools/fuzz.sh TARGET [libFuzzer options...]   one harness, e.g. tools/fuzz.sh esri_ascii -runs=1000
 #     A slow harness on both cores, sharing one corpus (each job's log is fuzz-N.log here):
 #     tools/fuzz.sh experiment -jobs=2 -workers=2 -runs=500000
@@ -17,6 +21,22 @@ shift || true
 read -r -a targets <<<"${FUZZ_TARGETS:-movingai_map movingai_scen matrix_map ros_map esri_ascii pgm_heights ini_config experiment}"
 [[ "$mode" =~ ^(short|long)$ ]] || targets=("$mode")
 out=build/fuzz
+# short's executions per harness, each about 15 s on 2 busy shared cores: a number, not a time,
+# so that a slower or busier machine runs the same inputs. A new harness needs its entry.
+declare -A short_runs=(
+  [movingai_map]=120000 [movingai_scen]=120000 [matrix_map]=250000 [ros_map]=3500 [esri_ascii]=120000
+  [pgm_heights]=200000 [ini_config]=3500 [experiment]=3000
+)
+
+# libFuzzer mutates with the operands of the comparisons an input made, and pointers are among
+# them: with address randomisation, or another environment above the stack, the same seed tries
+# other inputs. So every harness runs with a fixed environment and, where the system allows it,
+# without address randomisation.
+fixed_addresses=(setarch "$(uname -m)" -R)
+if ! "${fixed_addresses[@]}" true 2>/dev/null; then
+  echo "fuzz: address randomisation cannot be turned off here (setarch -R): short's runs may differ" >&2
+  fixed_addresses=()
+fi
 
 tools/setup.sh
 cmake --preset fuzz >/dev/null
@@ -41,33 +61,37 @@ seed_files() {
   return 0
 }
 
-# Runs one harness with extra libFuzzer options; its log goes to build/fuzz/logs/<target>.log.
+# Runs one harness over its seeds, adding what it finds to CORPUS, with extra libFuzzer options;
+# its log goes to build/fuzz/logs/<target>.log.
 run_target() {
-  local target="$1"
-  shift
-  local seeds="$out/seeds/$target" corpus="$out/corpus/$target" crashes="$out/crashes/$target"
+  local target="$1" corpus="$2"
+  shift 2
+  local seeds="$out/seeds/$target" crashes="$out/crashes/$target"
   rm -rf "$seeds"
   mkdir -p "$seeds" "$corpus" "$crashes" "$out/logs"
   seed_files "$target" | while read -r f; do cp "$f" "$seeds/$(echo "$f" | tr / _)"; done
   # -rss_limit_mb / -malloc_limit_mb: the harness sets a 32 MiB planning-memory limit, so a
   # huge header must be refused, never allocated; 2 GiB means a loader ignored it.
   local status=0
-  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-    nice -n 10 "$out/tests/fuzz/fuzz_$target" "$corpus" "$seeds" -rss_limit_mb=2048 -malloc_limit_mb=2048 \
+  nice -n 10 env -i PATH=/usr/bin:/bin ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+    "${fixed_addresses[@]}" "$out/tests/fuzz/fuzz_$target" "$corpus" "$seeds" -rss_limit_mb=2048 -malloc_limit_mb=2048 \
     -timeout=20 -print_final_stats=1 -artifact_prefix="$crashes/" "$@" >"$out/logs/$target.log" 2>&1 || status=$?
   echo "$status" >"$out/logs/$target.status"
 }
 
-# One line per harness: executions, seconds, and whether it crashed.
+# One line per harness: executions, seconds, coverage and whether it crashed.
 summary() {
   local target="$1" status log="$out/logs/$1.log"
   status=$(cat "$out/logs/$target.status")
   local runs seconds
   # With -jobs=J the log holds each job's figures: executions add up, seconds are the longest job's.
   runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | awk '{n += $2} END {print NR ? n : "?"}')
-  seconds=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | awk '$5 > s {s = $5} END {print NR ? s : "?"}')
+  seconds=$(grep -o 'Done [0-9]* runs in [0-9]* second' "$log" | awk 'NR == 1 || $5 > s {s = $5} END {print NR ? s : "?"}')
+  # Coverage and features reached: with short's fixed inputs, the same on every run.
+  local coverage
+  coverage=$(grep -o 'DONE *cov: [0-9]* ft: [0-9]*' "$log" | awk '{c = $3; f = $5} END {if (NR == 1) printf ", cov %s ft %s", c, f}')
   if [ "$status" -eq 0 ]; then
-    printf 'fuzz: %-14s %10s executions in %5s s, no crash\n' "$target" "$runs" "$seconds"
+    printf 'fuzz: %-14s %10s executions in %5s s%s, no crash\n' "$target" "$runs" "$seconds" "$coverage"
   else
     printf 'fuzz: %-14s FAILED (exit %s), see %s and %s\n' "$target" "$status" "$log" "$out/crashes/$target/"
     return 1
@@ -78,7 +102,12 @@ failed=0
 case "$mode" in
   short)
     for target in "${targets[@]}"; do
-      run_target "$target" -max_total_time="${FUZZ_SECONDS:-15}" "$@"
+      # A fresh corpus: inputs an earlier run found would change what this one runs. -reload=0:
+      # libFuzzer re-reads its corpus folder every second, which makes a run depend on its speed.
+      corpus="$out/short-corpus/$target"
+      rm -rf "$corpus"
+      run_target "$target" "$corpus" -seed=1 -runs="${short_runs[$target]}" -reload=0 "$@"
+      rm -rf "$corpus"
       summary "$target" || failed=1
     done
     ;;
@@ -86,13 +115,13 @@ case "$mode" in
     runs="${1:-1000000}"
     for target in "${targets[@]}"; do
       while [ "$(jobs -rp | wc -l)" -ge 2 ]; do wait -n || true; done
-      run_target "$target" -runs="$runs" &
+      run_target "$target" "$out/corpus/$target" -runs="$runs" &
     done
     wait
     for target in "${targets[@]}"; do summary "$target" || failed=1; done
     ;;
   *)
-    run_target "$mode" "$@"
+    run_target "$mode" "$out/corpus/$mode" "$@"
     summary "$mode" || failed=1
     ;;
 esac

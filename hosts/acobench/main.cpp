@@ -13,6 +13,7 @@
 #include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
+#include "aco/program_options_error.hpp"
 #include "experiment.hpp"
 #include "mpi.hpp"
 #include "report.hpp"
@@ -265,8 +266,8 @@ int main(int argc, char** argv) {
     if (args[0] == "merge") return merge(rest);
     if (args[0] == "report") return report(rest);
     throw aco::Error("unknown command '" + args[0] + "' (use run, merge or report)");
-  } catch (const po::error& e) {
-    std::cerr << "acobench: error: " << e.what() << "\n";
+  } catch (po::error& e) {
+    std::cerr << "acobench: error: " << aco::program_options_message(e) << "\n";
   } catch (...) {  // anything, a std::exception or not, is reported and exits 1
     std::cerr << "acobench: error: " << aco::describe_current_exception() << "\n";
   }

@@ -3,14 +3,13 @@
 #include <boost/program_options.hpp>
 
 #include <algorithm>
-#include <fstream>
 #include <sstream>
 
 #include "aco/error.hpp"
-#include "aco/input_file.hpp"
 #include "aco/install_layout.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/planning.hpp"
+#include "aco/program_options_error.hpp"
 
 namespace acoplan {
 namespace po = boost::program_options;
@@ -90,6 +89,21 @@ std::filesystem::path bundled_map() {
   throw aco::Error("no --map given and the bundled map " + relative.string() + " was not found under " + data.string());
 }
 
+// The settings of a --config file as Boost's parse_config_file() gives them, but read by
+// aco::read_config_settings(), whose errors name the file and the line.
+po::parsed_options config_options(const po::options_description& options, const std::string& file, bool lenient) {
+  po::parsed_options parsed(&options);
+  for (const auto& setting : aco::read_config_settings(file)) {
+    po::option option(setting.key, {setting.value});
+    option.original_tokens = {setting.key, setting.value};
+    const auto* known = options.find_nothrow(setting.key, false);
+    option.unregistered = !known || known->long_name() != setting.key;
+    if (option.unregistered && !lenient) throw po::unknown_option(setting.key);
+    parsed.options.push_back(std::move(option));
+  }
+  return parsed;
+}
+
 // Command line first, then the --config file: po keeps the first value stored for a key.
 po::variables_map parse(const po::options_description& options, int argc, const char* const* argv, bool lenient) {
   po::variables_map vm;
@@ -102,10 +116,12 @@ po::variables_map parse(const po::options_description& options, int argc, const 
   po::store(parsed, vm);
   if (vm.count("config")) {
     const auto file = vm["config"].as<std::string>();
-    aco::check_input_file(file, "config");
-    std::ifstream in(file);
-    if (!in) throw aco::Error(file + ": cannot open the config file");
-    po::store(po::parse_config_file(in, options, lenient), vm);
+    const po::parsed_options settings = config_options(options, file, lenient);
+    try {
+      po::store(settings, vm);
+    } catch (po::error& e) {
+      throw aco::Error(file + ": " + aco::program_options_message(e));
+    }
   }
   po::notify(vm);
   return vm;
@@ -288,8 +304,8 @@ Request parse_command_line(int argc, const char* const* argv) {
       r.action = Request::Action::print_config;
       r.config = config_file(r);
     }
-  } catch (const po::error& e) {
-    throw aco::Error(e.what());
+  } catch (po::error& e) {
+    throw aco::Error(aco::program_options_message(e));
   }
   return r;
 }

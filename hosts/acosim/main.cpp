@@ -7,6 +7,7 @@
 #include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
+#include "aco/program_options_error.hpp"
 #include "aco/thread_limit.hpp"
 #include "batch.hpp"
 #include "simulation.hpp"
@@ -111,6 +112,8 @@ int main(int argc, char** argv) {
                 << "collisions " << result.collisions << ", replans " << result.replans << "\n";
     }
     return result.reached ? 0 : kExitNotReached;
+  } catch (po::error& e) {
+    std::cerr << "acosim: error: " << aco::program_options_message(e) << "\n";
   } catch (...) {  // anything, a std::exception or not, is reported and exits 1
     std::cerr << "acosim: error: " << aco::describe_current_exception() << "\n";
   }

@@ -1,7 +1,6 @@
 #include "aco/run_spec.hpp"
 
 #include <algorithm>
-#include <boost/program_options/parsers.hpp>
 #include <charconv>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -293,22 +292,50 @@ KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
   return c;
 }
 
-Keys read_config_file(const std::string& path) {
+// Our own reader, not Boost.ProgramOptions' parse_config_file: its error for a bad line gives
+// no line number, and its what() loops forever on a line that contains "%invalid_line%".
+std::vector<ConfigSetting> read_config_settings(const std::string& path) {
   check_input_file(path, "config");
   std::ifstream in(path);
   if (!in) throw Error(path + ": cannot open the config file");
-  namespace po = boost::program_options;
-  po::parsed_options parsed(nullptr);
-  try {
-    parsed = po::parse_config_file(in, po::options_description(), true);
-  } catch (const po::error& e) {
-    throw Error(path + ": " + e.what());
+  const auto trim = [](std::string_view s) {
+    const auto first = s.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos) return std::string();
+    return std::string(s.substr(first, s.find_last_not_of(" \t\r") - first + 1));
+  };
+  std::vector<ConfigSetting> settings;
+  std::string section;  // "update." under [update]
+  int number = 0;
+  for (std::string text; std::getline(in, text);) {
+    ++number;
+    const std::string line = trim(std::string_view(text).substr(0, text.find('#')));
+    if (line.empty() || line.front() == ';') continue;
+    const auto fail = [&](const std::string& what) {
+      throw Error(path + ":" + std::to_string(number) + ": '" + line + "' " + what);
+    };
+    if (line.front() == '[' && line.back() == ']') {
+      section = trim(std::string_view(line).substr(1, line.size() - 2));
+      if (section.empty()) fail("names no section");
+      if (section.back() != '.') section += '.';
+      continue;
+    }
+    const auto equals = line.find('=');
+    if (equals == std::string::npos) fail("is not a 'key = value' line");
+    const std::string key = trim(std::string_view(line).substr(0, equals));
+    if (key.empty()) fail("has no key before the '='");
+    settings.push_back({section + key, trim(std::string_view(line).substr(equals + 1)), number});
   }
+  return settings;
+}
+
+Keys read_config_file(const std::string& path) {
   Keys keys;
-  for (const auto& option : parsed.options) {
-    if (option.value.empty()) continue;
-    if (!keys.emplace(option.string_key, option.value.front()).second)
-      throw Error(path + ": '" + option.string_key + "' is set twice");
+  std::map<std::string, int> first_line;
+  for (const auto& setting : read_config_settings(path)) {
+    if (const auto [first, fresh] = first_line.emplace(setting.key, setting.line); !fresh)
+      throw Error(path + ":" + std::to_string(setting.line) + ": '" + setting.key + "' is set twice (first on line " +
+                  std::to_string(first->second) + ")");
+    keys.emplace(setting.key, setting.value);
   }
   return keys;
 }

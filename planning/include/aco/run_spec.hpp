@@ -85,9 +85,19 @@ RunSpec run_spec_from_json(const std::string& json, PluginRegistry& registry);
 // run's output records so that a result can be traced to the code that made it.
 std::string plugins_json(const RunSpec& spec, const PluginRegistry& registry);
 
-// The keys of a config file as acoplan --config reads it (key = value lines, [slot] sections
-// for slot.key; # comments), unchecked: resolve_run() checks them. Throws an Error naming the
-// file if it cannot be read or parsed.
+// One "key = value" line of a config file; under a [section] line the key is "section.key".
+struct ConfigSetting {
+  std::string key;
+  std::string value;
+  int line;  // 1-based
+};
+
+// The settings of a config file as acoplan --config reads it, in file order, unchecked:
+// key = value lines, [section] lines, blank lines, '#' comments (to the end of any line) and
+// ';' comment lines. Any other line is an Error naming the file and the line.
+std::vector<ConfigSetting> read_config_settings(const std::string& path);
+
+// The same as keys for resolve_run(), which checks them; a key set twice is an Error.
 Keys read_config_file(const std::string& path);
 
 struct LoadedProblem {

@@ -179,16 +179,8 @@ TEST_CASE("the restart twin's walks see the initial pheromone, as the colony's f
 
 TEST_CASE("both twins are bit-identical for any thread count", "[colony][null-model][determinism]") {
   Arena a;
-  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
-  for (auto model : {aco::NullModel::no_learning, aco::NullModel::restarts}) {
-    std::vector<aco::ColonyResult> runs;
-    for (int threads : {1, 2, 4}) {
-      Strategies p("uniform", "adaptive", "max_min", "backtrack");
-      tbb::task_arena arena(threads);
-      arena.execute([&] { runs.push_back(aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), twin_settings(model))); });
-    }
-    for (std::size_t i = 1; i < runs.size(); ++i) test::check_same_run(runs[i], runs[0]);
-  }
+  for (auto model : {aco::NullModel::no_learning, aco::NullModel::restarts})
+    test::run_on_thread_counts(a.graph, a.start, a.goal, twin_settings(model), {"uniform", "adaptive", "max_min", "backtrack"});
 }
 
 TEST_CASE("acoplan runs either twin with --null-model and records it", "[acoplan][null-model]") {

@@ -80,6 +80,8 @@ double mean_of(const std::vector<double>& v) {
   return s / v.size();
 }
 
+double largest(const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
+
 Analysis analyse(const ResultsDb& db) {
   Analysis a;
   a.name = db.meta("experiment_name");
@@ -314,7 +316,6 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
   for (std::size_t k = 0; k < per_problem.size(); ++k)
     if (per_problem_holm[k] < 0.05) ++(per_problem[k].second ? better : worse)[per_problem[k].first];
 
-  const auto largest = [](const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); };
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     const Pair& pair = pairs[i];
     const bool compared = !pair.ranked.empty() && !pair.twin_ranked.empty();
@@ -364,7 +365,6 @@ std::vector<Table> summary_tables(const Analysis& a) {
         for (const auto* t : r.runs) times.push_back(t->time_s * 1000.0);
         gaps_of(r, gaps);
       }
-      const auto largest = [](const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); };
       totals.rows.push_back({set, a.configs[c].second.name, std::to_string(members[set].size()), std::to_string(runs),
                              runs ? fixed(100.0 * solved / runs, 1) + " %" : "-", fixed(mean_of(gaps), 2),
                              fixed(largest(gaps), 2), number(mean_of(times), 3), number(largest(times), 3)});

@@ -3,6 +3,7 @@
 #include <tbb/task_arena.h>
 
 #include <catch2/catch.hpp>
+#include <sqlite3.h>
 
 #include "aco/colony.hpp"
 #include "aco/map_io.hpp"
@@ -264,4 +265,19 @@ null-models: [ACS]
   CHECK_THAT(md, Contains("| ACS | restarts | 12/12 vs 12/12 |"));
   CHECK_THAT(md, !Contains("| AS | restarts |"));
   CHECK_THAT(file_bytes(out / "report.html"), Contains("Does the pheromone matter?"));
+
+  // A study stopped part-way: the restart twin has not run map1 yet. Its comparison pools the
+  // two arena problems only, on both sides.
+  sqlite3* handle = nullptr;
+  REQUIRE(sqlite3_open(db.string().c_str(), &handle) == SQLITE_OK);
+  REQUIRE(sqlite3_exec(handle,
+                       "DELETE FROM runs WHERE plannerid = (SELECT id FROM plannerConfigs WHERE name = 'ACS (restarts)') "
+                       "AND experimentid = (SELECT id FROM experiments WHERE name = 'map1')",
+                       nullptr, nullptr, nullptr) == SQLITE_OK);
+  sqlite3_close(handle);
+  const auto partial = file.parent_path() / "partial";
+  REQUIRE(run_acobench({"report", db.string(), "--out", partial.string()}).exit_code == 0);
+  const std::string partial_md = file_bytes(partial / "report.md");
+  CHECK_THAT(partial_md, Contains("| ACS | restarts | 8/8 vs 8/8 |"));
+  CHECK_THAT(partial_md, Contains("| ACS | no-learning | 12/12 vs 12/12 |"));
 }

@@ -263,7 +263,7 @@ std::string settings_without_null_model(const ConfigRecord& config, std::string*
 // twin is a configuration whose resolved settings equal the subject's but for null-model.
 std::vector<Table> pheromone_tables(const Analysis& a) {
   Table t{"Does the pheromone matter?",
-          "Each configuration against its null models, over every run of every problem with a known optimum: the "
+          "Each configuration against its null models, over every run of every problem with a known optimum that both ran: the "
           "no-learning twin (the same pipeline with the pheromone ignored and never updated) and the restart twin (the "
           "same number of walks as independent one-iteration runs); docs/learning.md defines them. Solved runs, mean "
           "and largest gap % of the solved runs, the ratio of the mean gaps; p is the two-sided Mann-Whitney U test of "
@@ -295,6 +295,8 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
     for (std::size_t p = 0; p < a.problems.size(); ++p) {
       const Result& r = a.results[p][pair.subject];
       const Result& w = a.results[p][pair.twin];
+      // Only problems both ran: a study stopped part-way must not pool one side's problems alone.
+      if (r.runs.empty() || w.runs.empty()) continue;
       pair.runs += r.runs.size(), pair.twin_runs += w.runs.size();
       pair.solved += r.lengths.size(), pair.twin_solved += w.lengths.size();
       if (!(a.problems[p].optimal_length > 0)) continue;

@@ -5,6 +5,7 @@
 namespace aco {
 
 Error::~Error() = default;
+OutOfMemoryError::~OutOfMemoryError() = default;
 Map::~Map() = default;
 
 std::string to_string(Cell c) {

@@ -4,9 +4,72 @@
 
 #include <cstdlib>
 #include <exception>
+#include <new>
 #include <typeinfo>
 
 namespace aco {
+namespace {
+
+// The innermost guarded call of this thread. Plain pointers and an int: a signal handler reads
+// them without allocating.
+struct PluginCall {
+  const PluginIdentity* who = nullptr;
+  const char* hook = nullptr;
+  int iteration = -1;
+};
+thread_local PluginCall current_call;
+
+// Appends `text` to out[0, size - 1) at `length`; signal-safe (no library call).
+void append(char* out, std::size_t size, std::size_t& length, const char* text) noexcept {
+  for (; text && *text && length + 1 < size; ++text) out[length++] = *text;
+}
+
+void append_number(char* out, std::size_t size, std::size_t& length, long value) noexcept {
+  char digits[24];
+  int n = 0;
+  const bool negative = value < 0;
+  unsigned long v = negative ? 0ul - static_cast<unsigned long>(value) : static_cast<unsigned long>(value);
+  do digits[n++] = static_cast<char>('0' + v % 10); while ((v /= 10) != 0);
+  if (negative) digits[n++] = '-';
+  char text[24];
+  for (int i = 0; i < n; ++i) text[i] = digits[n - 1 - i];
+  text[n] = '\0';
+  append(out, size, length, text);
+}
+
+}  // namespace
+
+PluginCallScope::PluginCallScope(const PluginIdentity& who, const char* hook, int iteration) noexcept
+    : who_(current_call.who), hook_(current_call.hook), iteration_(current_call.iteration) {
+  current_call = {&who, hook, iteration};
+}
+
+PluginCallScope::~PluginCallScope() { current_call = {who_, hook_, iteration_}; }
+
+std::size_t describe_plugin_call(char* out, std::size_t size) noexcept {
+  if (size == 0) return 0;
+  std::size_t length = 0;
+  const PluginCall call = current_call;
+  if (call.who) {
+    append(out, size, length, "plugin ");
+    append(out, size, length, call.who->slot.c_str());
+    append(out, size, length, "/");
+    append(out, size, length, call.who->name.c_str());
+    if (!call.who->file.empty()) {
+      append(out, size, length, " (");
+      append(out, size, length, call.who->file.c_str());
+      append(out, size, length, ")");
+    }
+    append(out, size, length, " in ");
+    append(out, size, length, call.hook);
+    if (call.iteration >= 0) {
+      append(out, size, length, " in iteration ");
+      append_number(out, size, length, call.iteration + 1L);
+    }
+  }
+  out[length] = '\0';
+  return length;
+}
 
 std::string describe_current_exception() {
   try {
@@ -24,11 +87,17 @@ std::string describe_current_exception() {
 }
 
 void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration) {
-  std::string where = "plugin " + who.slot + "/" + who.name;
-  if (!who.file.empty()) where += " (" + who.file + ")";
-  where += std::string(" failed in ") + hook;
-  if (iteration >= 0) where += " in iteration " + std::to_string(iteration + 1);
-  throw Error(where + ": " + describe_current_exception());
+  std::string plugin = "plugin " + who.slot + "/" + who.name;
+  if (!who.file.empty()) plugin += " (" + who.file + ")";
+  std::string in = hook;
+  if (iteration >= 0) in += " in iteration " + std::to_string(iteration + 1);
+  try {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw OutOfMemoryError("out of memory in " + plugin + " in " + in + " (std::bad_alloc)");
+  } catch (...) {
+    throw Error(plugin + " failed in " + in + ": " + describe_current_exception());
+  }
 }
 
 namespace {
@@ -43,6 +112,7 @@ class Guarded : public Interface {
   template <class F>
   auto call(const char* hook, int iteration, F&& f) const -> decltype(f()) {
     try {
+      const PluginCallScope scope(who_, hook, iteration);
       return f();
     } catch (...) {
       rethrow_from_plugin(who_, hook, iteration);

@@ -235,10 +235,12 @@ std::unique_ptr<Strategy> PluginRegistry::create(const std::string& kind, const 
                                                  const ParameterValues& values) {
   const PluginDescriptor& descriptor = load(kind, name);
   std::unique_ptr<Strategy> strategy;
+  const PluginIdentity who = identity(kind, name);
   try {
+    const PluginCallScope scope(who, "its factory", -1);
     strategy.reset(descriptor.create(values));
   } catch (...) {
-    rethrow_from_plugin(identity(kind, name), "its factory");
+    rethrow_from_plugin(who, "its factory");
   }
   if (!strategy) throw Error("plugin " + kind + "/" + name + ": factory returned nothing");
   return strategy;

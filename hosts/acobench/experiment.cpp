@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -11,6 +12,7 @@
 #include "aco/error.hpp"
 #include "aco/input_file.hpp"
 #include "aco/map_io.hpp"
+#include "aco/memory_limit.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/rng.hpp"
 #include "aco/planning.hpp"
@@ -219,13 +221,20 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   if (!doc.IsMap()) throw aco::Error(file.string() + ": an experiment file is a YAML mapping (name, problems, ...)");
   only_keys(file, doc,
             {"name", "seed", "repetitions", "problems", "settings", "baseline", "configurations", "factorial", "ablation",
-             "null-models"},
+             "null-models", "trial-timeout", "trial-memory"},
             "the experiment");
   Experiment e;
   e.file = file;
   e.name = doc["name"] ? scalar(file, doc["name"], "name") : file.stem().string();
   if (doc["seed"]) e.seed = static_cast<std::uint64_t>(integer(file, doc["seed"], "seed", 0));
   if (doc["repetitions"]) e.repetitions = integer(file, doc["repetitions"], "repetitions", 1);
+  try {
+    if (doc["trial-timeout"]) e.trial_timeout_s = parse_seconds(scalar(file, doc["trial-timeout"], "trial-timeout"), "trial-timeout");
+    if (doc["trial-memory"])
+      e.trial_memory_bytes = aco::parse_memory_size(scalar(file, doc["trial-memory"], "trial-memory"), "trial-memory");
+  } catch (const aco::Error& error) {
+    fail(file, doc["trial-timeout"] && !e.trial_timeout_s ? doc["trial-timeout"] : doc["trial-memory"], error.what());
+  }
   e.problems = read_problems(file, doc["problems"], registry);
 
   const Configuration common = doc["settings"] ? read_keys(file, doc["settings"]) : Configuration();
@@ -305,6 +314,15 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
       j["plugins"][p.kind + "/" + p.name] = {{"version", p.version}, {"sha256", p.sha256}};
     }
   return j.dump();
+}
+
+double parse_seconds(const std::string& text, const std::string& option) {
+  double seconds = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, seconds);
+  if (error != std::errc() || stop != end || !(seconds > 0) || !std::isfinite(seconds))
+    throw aco::Error(option + ": '" + text + "' is not a time in seconds (a positive number, such as 30 or 0.5)");
+  return seconds;
 }
 
 std::uint64_t trial_seed(std::uint64_t master_seed, const std::string& problem, int repetition) {

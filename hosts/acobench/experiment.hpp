@@ -57,6 +57,11 @@ struct Experiment {
   std::optional<Configuration> ablation_target;
   int repetitions = 10;
   std::uint64_t seed = 1;
+  // Per-trial limits of the worker processes (keys trial-timeout, trial-memory; acobench run's
+  // --trial-timeout and --trial-memory win). Not part of the fingerprint: they decide which
+  // trials fail, not what a trial computes.
+  std::optional<double> trial_timeout_s;
+  std::optional<std::uint64_t> trial_memory_bytes;
 
   // `path` relative to the experiment file's folder, as the database stores it (absolute when it
   // cannot be relative: another root). Works whether the experiment's path or `path` is relative.
@@ -78,6 +83,10 @@ aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry)
 // first scenario's (a configuration may then set parameters of the scenarios' plugins, such as
 // local.follow of their dwa); every scenario is checked when the trials are prepared.
 aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& problems, aco::PluginRegistry& registry);
+
+// A time limit as --trial-timeout and trial-timeout: take it: seconds, a positive number.
+// Anything else is an Error naming `option`.
+double parse_seconds(const std::string& text, const std::string& option);
 
 // The seed of a trial: a hash of the master seed, the problem's name and the repetition, so
 // that a trial gives the same result whenever and wherever it runs, and every configuration

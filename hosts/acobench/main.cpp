@@ -8,10 +8,14 @@
 #include <boost/program_options.hpp>
 #include <chrono>
 #include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
 #include <iostream>
 
-#include "aco/plugin_guard.hpp"
+#include "aco/crash_report.hpp"
 #include "aco/error.hpp"
+#include "aco/plugin_guard.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/program_options_error.hpp"
 #include "experiment.hpp"
@@ -19,6 +23,7 @@
 #include "report.hpp"
 #include "runner.hpp"
 #include "shards.hpp"
+#include "trial_workers.hpp"
 
 namespace po = boost::program_options;
 
@@ -28,7 +33,11 @@ constexpr const char* kUsage =
     "acobench: fair, reproducible comparisons of ant-colony plugin combinations.\n\n"
     "Usage:\n"
     "  acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--shard K/N] [--plugin-dir DIR] [--max-memory SIZE]\n"
+    "               [--trial-timeout SECONDS] [--trial-memory SIZE] [--in-process]\n"
     "      run every trial the database does not hold yet (rerun the same command to continue);\n"
+    "      each trial runs in a worker process (one per thread): a trial whose plugin crashes, runs\n"
+    "      over --trial-timeout or grows over --trial-memory is stored as failed and the rest go on;\n"
+    "      --in-process: the trials on this process's threads (for a debugger; no limits);\n"
     "      --shard K/N: only shard K of N of the trials, into its own database (merge them after);\n"
     "      --max-memory: refuse maps whose planning would need more (512M, 4G; default: 3/4 of the\n"
     "      memory available at start). Under mpirun -n N (or srun), rank 0 writes the database and\n"
@@ -124,10 +133,12 @@ void print_summary(const acobench::RunSummary& s, const acobench::Experiment& ex
 // Rank 0 coordinates and writes the database, the others run trials. A rank that fails ends the
 // job (the others would wait for it forever); mpirun reports which.
 int run_with_ranks(const acobench::mpi::Session& session, const acobench::Experiment& experiment,
-                   aco::PluginRegistry& registry, acobench::RunOptions run, const std::vector<std::string>& args) {
+                   aco::PluginRegistry& registry, acobench::RunOptions run, const std::vector<std::string>& args,
+                   const std::function<std::unique_ptr<acobench::TrialWorkers>(int lanes)>& make_workers) {
   try {
     if (session.rank() > 0) {
-      acobench::mpi::serve_trials(session, experiment, registry, run.threads);
+      const auto workers = make_workers(acobench::trial_lanes(run.threads));
+      acobench::mpi::serve_trials(session, experiment, registry, run.threads, workers.get());
       return 0;
     }
     acobench::mpi::Coordinator coordinator(session, experiment.fingerprint(registry));
@@ -161,7 +172,10 @@ int run(const std::vector<std::string>& args) {
       ("threads", po::value(&threads), "worker threads, 0 = all cores; results do not depend on it")
       ("shard", po::value(&shard)->value_name("K/N"), "only shard K of N of the trials, into its own database")
       ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins")
-      ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
+      ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp)
+      ("trial-timeout", po::value<std::string>()->value_name("SECONDS"), "a trial running longer is stopped and stored as timed out")
+      ("trial-memory", po::value<std::string>()->value_name("SIZE"), "a trial growing its worker's memory by more is stopped and stored as out of memory")
+      ("in-process", "run the trials on this process's threads, not in worker processes (for a debugger)");
   po::positional_options_description positional;
   positional.add("experiment", 1);
   po::variables_map vm;
@@ -192,16 +206,58 @@ int run(const std::vector<std::string>& args) {
   // Before MPI starts: loading probes each plugin in a forked child, and some MPI transports
   // (InfiniBand's) object to fork().
   const acobench::Experiment experiment = acobench::load_experiment(file, registry);
+  acobench::TrialLimits limits;
+  if (experiment.trial_timeout_s) limits.timeout_s = *experiment.trial_timeout_s;
+  if (experiment.trial_memory_bytes) limits.memory_bytes = *experiment.trial_memory_bytes;
+  if (vm.count("trial-timeout")) limits.timeout_s = acobench::parse_seconds(vm["trial-timeout"].as<std::string>(), "--trial-timeout");
+  if (vm.count("trial-memory")) limits.memory_bytes = aco::parse_memory_size(vm["trial-memory"].as<std::string>(), "--trial-memory");
+  const bool in_process = vm.count("in-process") > 0;
+  if (in_process && (limits.timeout_s > 0 || limits.memory_bytes > 0))
+    std::cerr << "acobench: warning: --in-process: the trial time and memory limits are not enforced (they need "
+                 "worker processes)\n";
+  // Workers are started by the process that runs trials: this one, or each MPI worker rank.
+  const auto make_workers = [&](int lanes) -> std::unique_ptr<acobench::TrialWorkers> {
+    if (in_process) return nullptr;
+    return std::make_unique<acobench::TrialWorkers>(lanes, acobench::worker_command(experiment, plugin_dirs), limits,
+                                                    experiment.fingerprint(registry));
+  };
 #ifdef ACOBENCH_WITH_MPI
   std::optional<acobench::mpi::Session> session;
   if (acobench::mpi::started_by_launcher()) session.emplace();
-  if (session && session->size() > 1) return run_with_ranks(*session, experiment, registry, run, args);
+  if (session && session->size() > 1) return run_with_ranks(*session, experiment, registry, run, args, make_workers);
   if (session) acobench::mpi::warn_if_bound(*session, threads);
 #endif
+  const auto workers = make_workers(acobench::trial_lanes(threads));
+  std::optional<acobench::WorkerExecutor> executor;
+  if (workers) run.executor = &executor.emplace(*workers);
   run.progress = Progress();
   on_stop_tell(run.database.string(), command_line(args));
   print_summary(acobench::run_experiment(experiment, registry, run), experiment, run);
   return 0;
+}
+
+// `acobench worker EXPERIMENT [--plugin-dir DIR]...`: a worker process of `acobench run` (not
+// for users; started with the socket it serves on).
+int worker(const std::vector<std::string>& args) {
+  try {
+    po::options_description options("acobench worker");
+    std::vector<std::string> plugin_dirs;
+    options.add_options()("experiment", po::value<std::string>()->required(), "experiment file (YAML)")
+        ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins");
+    po::positional_options_description positional;
+    positional.add("experiment", 1);
+    po::variables_map vm;
+    po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
+    po::notify(vm);
+    std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
+    aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));
+    const acobench::Experiment experiment = acobench::load_experiment(vm["experiment"].as<std::string>(), registry);
+    acobench::serve_trials_as_worker(experiment, registry);
+    return 0;
+  } catch (...) {
+    if (!aco::is_worker_process()) throw;
+    aco::fail_worker("a worker process failed: " + aco::describe_current_exception());
+  }
 }
 
 int merge(const std::vector<std::string>& args) {
@@ -255,6 +311,7 @@ int report(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  aco::report_crashes("acobench");
   try {
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -265,6 +322,7 @@ int main(int argc, char** argv) {
     if (args[0] == "run") return run(rest);
     if (args[0] == "merge") return merge(rest);
     if (args[0] == "report") return report(rest);
+    if (args[0] == "worker") return worker(rest);
     throw aco::Error("unknown command '" + args[0] + "' (use run, merge or report)");
   } catch (po::error& e) {
     std::cerr << "acobench: error: " << aco::program_options_message(e) << "\n";

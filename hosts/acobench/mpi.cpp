@@ -14,6 +14,7 @@
 
 #include "aco/error.hpp"
 #include "aco/thread_limit.hpp"
+#include "trial_messages.hpp"
 
 namespace acobench::mpi {
 namespace {
@@ -72,47 +73,6 @@ Received receive(int from) {
     if (auto message = try_receive(from)) return std::move(*message);
     backoff.idle();
   }
-}
-
-json to_json(const TrialRecord& t) {
-  json j = {{"problem", t.problem},     {"config", t.config},       {"repetition", t.repetition},
-            {"seed", t.seed},           {"solved", t.solved},       {"length", t.length},
-            {"grid_length", t.grid_length}, {"turns", t.turns},     {"iterations", t.iterations},
-            {"best_iteration", t.best_iteration}, {"time", t.time_s}, {"ant_steps", t.ant_steps},
-            {"stopped_by", t.stopped_by}, {"path", t.path_json},    {"best_so_far", t.best_so_far},
-            {"elapsed_s", t.elapsed_s}, {"walks", t.walks},         {"error", t.error}};
-  if (const auto& s = t.simulation)
-    j["simulation"] = {{"outcome", s->outcome},   {"time_to_goal", s->time_to_goal}, {"collisions", s->collisions},
-                       {"replans", s->replans},   {"clearance", s->clearance},       {"control_steps", s->control_steps}};
-  return j;
-}
-
-TrialRecord record_from(const json& j) {
-  TrialRecord t;
-  t.problem = j.at("problem");
-  t.config = j.at("config");
-  t.repetition = j.at("repetition");
-  t.seed = j.at("seed");
-  t.solved = j.at("solved");
-  t.length = j.at("length");
-  t.grid_length = j.at("grid_length");
-  t.turns = j.at("turns");
-  t.iterations = j.at("iterations");
-  t.best_iteration = j.at("best_iteration");
-  t.time_s = j.at("time");
-  t.ant_steps = j.at("ant_steps");
-  t.stopped_by = j.at("stopped_by");
-  t.path_json = j.at("path");
-  t.best_so_far = j.at("best_so_far").get<std::vector<double>>();
-  t.elapsed_s = j.at("elapsed_s").get<std::vector<double>>();
-  t.walks = j.at("walks").get<std::vector<std::uint64_t>>();
-  t.error = j.at("error");
-  if (j.contains("simulation")) {
-    const json& s = j.at("simulation");
-    t.simulation = SimulationRecord{s.at("outcome"), s.at("time_to_goal"), s.at("collisions"),
-                                    s.at("replans"), s.at("clearance"),    s.at("control_steps")};
-  }
-  return t;
 }
 
 }  // namespace
@@ -233,29 +193,22 @@ double Coordinator::busy_seconds() const { return std::chrono::duration<double>(
 
 double Coordinator::storing_seconds() const { return std::chrono::duration<double>(state_->stored).count(); }
 
-int usable_cpus() {
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) != 0) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::max(1, CPU_COUNT(&set));
-}
-
 void warn_if_bound(const Session& session, int threads) {
-  const int usable = usable_cpus(), all = static_cast<int>(std::thread::hardware_concurrency());
+  const int usable = trial_lanes(0), all = static_cast<int>(std::thread::hardware_concurrency());
   if (usable >= all || (threads > 0 && threads <= usable)) return;
   std::cerr << "acobench: warning: rank " << session.rank() << " on " << hostname() << " may use " << usable << " of its "
             << all << " CPUs: the launcher bound it (mpirun binds each rank to one core when -n is 2 or less); "
             << "start mpirun with --bind-to none, or give each rank its cores (Slurm: --cpus-per-task)\n";
 }
 
-void serve_trials(const Session& session, const Experiment& experiment, aco::PluginRegistry& registry, int threads) {
+void serve_trials(const Session& session, const Experiment& experiment, aco::PluginRegistry& registry, int threads,
+                  TrialWorkers* workers) {
   warn_if_bound(session, threads);
   TrialRunner runner(experiment, registry);
-  // All the CPUs this rank may use (its affinity mask, which a launcher may have narrowed), one
-  // trial on each. A trial's own TBB loops then run on its lane: TBB workers beside the lanes
-  // would only oversubscribe the cores (one process does the same, nesting them in its loop
-  // over trials).
-  const int lanes = threads > 0 ? threads : usable_cpus();
+  const int lanes = workers ? workers->lanes() : trial_lanes(threads);
+  // One trial on each lane. A trial's own TBB loops then run on its lane: TBB workers beside the
+  // lanes would only oversubscribe the cores (one process does the same, nesting them in its
+  // loop over trials).
   const aco::ThreadLimit limit(1);
 
   // The lanes take trials from `queue` and put records in `done`; the main thread talks to rank 0.
@@ -266,7 +219,7 @@ void serve_trials(const Session& session, const Experiment& experiment, aco::Plu
   bool stopping = false;
   std::vector<std::thread> pool;
   for (int i = 0; i < lanes; ++i)
-    pool.emplace_back([&] {
+    pool.emplace_back([&, i] {
       std::unique_lock lock(mutex);
       for (;;) {
         work_ready.wait(lock, [&] { return stopping || !queue.empty(); });
@@ -274,7 +227,7 @@ void serve_trials(const Session& session, const Experiment& experiment, aco::Plu
         const TrialOrder t = queue.front();
         queue.pop_front();
         lock.unlock();
-        TrialRecord record = runner.run(t);
+        TrialRecord record = workers ? workers->run(i, runner, t) : runner.run(t);
         lock.lock();
         done.push_back(std::move(record));
         record_ready.notify_one();
@@ -307,7 +260,7 @@ void serve_trials(const Session& session, const Experiment& experiment, aco::Plu
                            : 0;
       if (want > 0 || !records.empty()) {
         json message = {{"want", want}, {"records", json::array()}};
-        for (const auto& r : records) message["records"].push_back(to_json(r));
+        for (const auto& r : records) message["records"].push_back(record_json(r));
         if (!greeted) message["hello"] = {{"fingerprint", experiment.fingerprint(registry)}, {"host", hostname()}};
         send(message, 0, kToCoordinator);
         greeted = true;

@@ -11,6 +11,7 @@
 #include "aco/plugin_registry.hpp"
 #include "experiment.hpp"
 #include "runner.hpp"
+#include "trial_workers.hpp"
 
 namespace acobench::mpi {
 
@@ -74,9 +75,11 @@ class Coordinator : public TrialExecutor {
 // Warns when the launcher bound this rank to fewer CPUs than it would use (`threads`, 0 = all).
 void warn_if_bound(const Session& session, int threads);
 
-// A worker rank: runs the trials rank 0 hands out, on `threads` threads (0 = all cores), until
-// told to stop.
-void serve_trials(const Session& session, const Experiment& experiment, aco::PluginRegistry& registry, int threads);
+// A worker rank: runs the trials rank 0 hands out until told to stop: in `workers`' processes,
+// one trial per worker, or on `threads` threads (0 = every CPU it may use) when it is nullptr
+// (--in-process).
+void serve_trials(const Session& session, const Experiment& experiment, aco::PluginRegistry& registry, int threads,
+                  TrialWorkers* workers);
 #endif
 
 }  // namespace acobench::mpi

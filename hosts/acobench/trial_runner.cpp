@@ -126,18 +126,26 @@ const aco::Graph& TrialRunner::graph(int problem, const aco::RunSpec& run) {
 TrialRecord TrialRunner::run(const TrialOrder& t) {
   try {
     return experiment_.problems[t.problem].simulation ? simulate(t) : plan(t);
+  } catch (const aco::OutOfMemoryError& e) {
+    return failed(t, "out of memory", e.what());
+  } catch (const std::bad_alloc&) {
+    return failed(t, "out of memory", "out of memory (std::bad_alloc)");
   } catch (...) {
-    TrialRecord r;
-    r.problem = t.problem;
-    r.config = t.config;
-    r.repetition = t.repetition;
-    r.seed = trial_seed(experiment_.seed, experiment_.problems[t.problem].name, t.repetition);
-    r.stopped_by = "error";
-    r.path_json = "[]";
-    r.error = "configuration '" + config(t.config).name + "', problem '" + experiment_.problems[t.problem].name +
-              "', repetition " + std::to_string(t.repetition) + ": " + aco::describe_current_exception();
-    return r;
+    return failed(t, "error", aco::describe_current_exception());
   }
+}
+
+TrialRecord TrialRunner::failed(const TrialOrder& t, const std::string& kind, const std::string& reason) const {
+  TrialRecord r;
+  r.problem = t.problem;
+  r.config = t.config;
+  r.repetition = t.repetition;
+  r.seed = trial_seed(experiment_.seed, experiment_.problems[t.problem].name, t.repetition);
+  r.stopped_by = kind;
+  r.path_json = "[]";
+  r.error = "configuration '" + config(t.config).name + "', problem '" + experiment_.problems[t.problem].name +
+            "', repetition " + std::to_string(t.repetition) + ": " + reason;
+  return r;
 }
 
 TrialRecord TrialRunner::plan(const TrialOrder& t) {

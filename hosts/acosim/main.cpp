@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "aco/crash_report.hpp"
 #include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
@@ -27,6 +28,7 @@ void write(const std::string& file, const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  aco::report_crashes("acosim");
   try {
     std::string scenario_file, csv, svg, html, local;
     std::vector<std::string> plugin_dirs;

@@ -13,4 +13,12 @@ class BOOST_SYMBOL_VISIBLE Error : public std::runtime_error {
   ~Error() override;
 };
 
+// A plugin's allocation failed (std::bad_alloc in a hook): acobench stores the trial as "out of
+// memory" rather than as an error.
+class BOOST_SYMBOL_VISIBLE OutOfMemoryError : public Error {
+ public:
+  using Error::Error;
+  ~OutOfMemoryError() override;
+};
+
 }  // namespace aco

@@ -3,6 +3,7 @@
 // from any hook, on any thread (a std::exception or not: `throw 42`), leaves it as an aco::Error
 // that names the slot, the plugin, its file, the hook and the iteration, so a host reports it and
 // exits 1 (or acobench records the trial as failed) instead of std::terminate.
+#include <cstddef>
 #include <memory>
 #include <string>
 
@@ -17,6 +18,26 @@ struct PluginIdentity {
   std::string name;
   std::string file;
 };
+
+// Marks the calling thread as inside `who`'s `hook` while it lives (iteration < 0: none to
+// name), so a crash report can say where the thread was. The guard opens one around every call.
+class PluginCallScope {
+ public:
+  PluginCallScope(const PluginIdentity& who, const char* hook, int iteration) noexcept;
+  ~PluginCallScope();
+  PluginCallScope(const PluginCallScope&) = delete;
+  PluginCallScope& operator=(const PluginCallScope&) = delete;
+
+ private:
+  const PluginIdentity* who_;
+  const char* hook_;
+  int iteration_;
+};
+
+// Where the calling thread is: "plugin update/crash (FILE) in update() in iteration 3", or ""
+// outside every plugin. Async-signal-safe (a crash handler calls it): writes at most size - 1
+// characters and a NUL into `out` and returns how many.
+std::size_t describe_plugin_call(char* out, std::size_t size) noexcept;
 
 // What the exception being handled says: what() of a std::exception, else its type ("int").
 // Call inside a catch block only.

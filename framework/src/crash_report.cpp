@@ -1,0 +1,83 @@
+#include "aco/crash_report.hpp"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cstring>
+
+#include "aco/plugin_guard.hpp"
+
+namespace aco {
+namespace {
+
+constexpr int kFatalSignals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
+CrashWriter crash_writer = nullptr;
+const char* crash_program = "";
+
+void on_signal(int signal) {
+  char where[1024];
+  const std::size_t length = describe_plugin_call(where, sizeof where);
+  if (crash_writer) crash_writer(signal, where, length);
+  // SA_RESETHAND restored the default action: a fault happens again on return, abort() raises
+  // again, and a signal sent by kill() is delivered again once the handler returns.
+  ::raise(signal);
+}
+
+void write_text(const char* text, std::size_t length) noexcept {
+  while (length > 0) {
+    const ssize_t n = ::write(STDERR_FILENO, text, length);
+    if (n <= 0) return;
+    text += n;
+    length -= static_cast<std::size_t>(n);
+  }
+}
+
+void write_text(const char* text) noexcept { write_text(text, std::strlen(text)); }
+
+void to_stderr(int signal, const char* where, std::size_t length) noexcept {
+  write_text(crash_program);
+  write_text(": error: crashed: ");
+  write_text(signal_name(signal));
+  if (length > 0) {
+    write_text(" in ");
+    write_text(where, length);
+  }
+  write_text("\n");
+}
+
+}  // namespace
+
+const char* signal_name(int signal) noexcept {
+  switch (signal) {
+    case SIGSEGV: return "SIGSEGV";
+    case SIGBUS: return "SIGBUS";
+    case SIGFPE: return "SIGFPE";
+    case SIGILL: return "SIGILL";
+    case SIGABRT: return "SIGABRT";
+    case SIGKILL: return "SIGKILL";
+    case SIGTERM: return "SIGTERM";
+    case SIGUSR1: return "SIGUSR1";
+    default: return "a signal";
+  }
+}
+
+void on_fatal_signal(CrashWriter writer) {
+  crash_writer = writer;
+  static char alternate_stack[64 * 1024];
+  stack_t stack{};
+  stack.ss_sp = alternate_stack;
+  stack.ss_size = sizeof alternate_stack;
+  ::sigaltstack(&stack, nullptr);
+  struct sigaction action {};
+  action.sa_handler = on_signal;
+  action.sa_flags = SA_RESETHAND | SA_ONSTACK;
+  sigemptyset(&action.sa_mask);
+  for (const int signal : kFatalSignals) ::sigaction(signal, &action, nullptr);
+}
+
+void report_crashes(const char* program) {
+  crash_program = program;
+  on_fatal_signal(to_stderr);
+}
+
+}  // namespace aco

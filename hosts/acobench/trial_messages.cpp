@@ -1,0 +1,48 @@
+#include "trial_messages.hpp"
+
+namespace acobench {
+
+using nlohmann::json;
+
+nlohmann::json record_json(const TrialRecord& t) {
+  json j = {{"problem", t.problem},     {"config", t.config},       {"repetition", t.repetition},
+            {"seed", t.seed},           {"solved", t.solved},       {"length", t.length},
+            {"grid_length", t.grid_length}, {"turns", t.turns},     {"iterations", t.iterations},
+            {"best_iteration", t.best_iteration}, {"time", t.time_s}, {"ant_steps", t.ant_steps},
+            {"stopped_by", t.stopped_by}, {"path", t.path_json},    {"best_so_far", t.best_so_far},
+            {"elapsed_s", t.elapsed_s}, {"walks", t.walks},         {"error", t.error}};
+  if (const auto& s = t.simulation)
+    j["simulation"] = {{"outcome", s->outcome},   {"time_to_goal", s->time_to_goal}, {"collisions", s->collisions},
+                       {"replans", s->replans},   {"clearance", s->clearance},       {"control_steps", s->control_steps}};
+  return j;
+}
+
+TrialRecord record_from(const nlohmann::json& j) {
+  TrialRecord t;
+  t.problem = j.at("problem");
+  t.config = j.at("config");
+  t.repetition = j.at("repetition");
+  t.seed = j.at("seed");
+  t.solved = j.at("solved");
+  t.length = j.at("length");
+  t.grid_length = j.at("grid_length");
+  t.turns = j.at("turns");
+  t.iterations = j.at("iterations");
+  t.best_iteration = j.at("best_iteration");
+  t.time_s = j.at("time");
+  t.ant_steps = j.at("ant_steps");
+  t.stopped_by = j.at("stopped_by");
+  t.path_json = j.at("path");
+  t.best_so_far = j.at("best_so_far").get<std::vector<double>>();
+  t.elapsed_s = j.at("elapsed_s").get<std::vector<double>>();
+  t.walks = j.at("walks").get<std::vector<std::uint64_t>>();
+  t.error = j.at("error");
+  if (j.contains("simulation")) {
+    const json& s = j.at("simulation");
+    t.simulation = SimulationRecord{s.at("outcome"), s.at("time_to_goal"), s.at("collisions"),
+                                    s.at("replans"), s.at("clearance"),    s.at("control_steps")};
+  }
+  return t;
+}
+
+}  // namespace acobench

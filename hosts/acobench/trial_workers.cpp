@@ -1,0 +1,118 @@
+#include "trial_workers.hpp"
+
+#include <atomic>
+#include <filesystem>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <thread>
+
+#include "aco/error.hpp"
+#include "aco/thread_limit.hpp"
+#include "trial_messages.hpp"
+
+namespace acobench {
+
+using nlohmann::json;
+
+// Request: {"fingerprint": ... (a fresh worker's first), "configs": [{id, name, keys}...] (those
+// it has not been told yet), "trial": [problem, config, repetition]}. Reply: the record.
+struct TrialWorkers::Lane {
+  aco::WorkerProcess process;
+  std::set<int> known;  // configuration ids this worker was told
+};
+
+std::vector<std::string> worker_command(const Experiment& experiment, const std::vector<std::string>& plugin_dirs) {
+  std::vector<std::string> command{aco::this_program(), "worker", std::filesystem::absolute(experiment.file).string()};
+  for (const auto& dir : plugin_dirs) {
+    command.push_back("--plugin-dir");
+    command.push_back(std::filesystem::absolute(dir).string());
+  }
+  return command;
+}
+
+TrialWorkers::TrialWorkers(int lanes, std::vector<std::string> command, TrialLimits limits, std::string fingerprint)
+    : limits_(limits), fingerprint_(std::move(fingerprint)) {
+  for (int i = 0; i < std::max(1, lanes); ++i) lanes_.push_back(std::unique_ptr<Lane>(new Lane{aco::WorkerProcess(command), {}}));
+}
+
+TrialWorkers::~TrialWorkers() = default;
+
+TrialRecord TrialWorkers::run(int lane_index, const TrialRunner& runner, const TrialOrder& t) {
+  Lane& lane = *lanes_.at(static_cast<std::size_t>(lane_index));
+  json request = {{"configs", json::array()}, {"trial", {t.problem, t.config, t.repetition}}};
+  if (lane.process.start()) {
+    lane.known.clear();
+    request["fingerprint"] = fingerprint_;
+  }
+  if (lane.known.insert(t.config).second) {
+    const Configuration& c = runner.config(t.config);
+    request["configs"].push_back({{"id", t.config}, {"name", c.name}, {"keys", c.keys}});
+  }
+  const std::vector<std::uint8_t> cbor = json::to_cbor(request);
+  const aco::WorkerReply reply =
+      lane.process.request(std::string(cbor.begin(), cbor.end()), {limits_.timeout_s, limits_.memory_bytes});
+  using Status = aco::WorkerReply::Status;
+  switch (reply.status) {
+    case Status::replied: return record_from(json::from_cbor(reply.bytes));
+    case Status::crashed: return runner.failed(t, "crashed", reply.failure);
+    case Status::timed_out: return runner.failed(t, "timed out", reply.failure);
+    case Status::out_of_memory: return runner.failed(t, "out of memory", reply.failure);
+  }
+  throw aco::Error("unknown worker reply");
+}
+
+void WorkerExecutor::run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+                         const std::function<void(const TrialRecord&)>& finished) {
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::exception_ptr error;
+  const auto lane = [&](int index) {
+    try {
+      for (std::size_t i; (i = next++) < trials.size();) {
+        const TrialRecord record = workers_.run(index, runner, trials[i]);
+        const std::lock_guard lock(mutex);
+        if (error) return;
+        finished(record);
+      }
+    } catch (...) {
+      const std::lock_guard lock(mutex);
+      if (!error) error = std::current_exception();
+      next = trials.size();
+    }
+  };
+  std::vector<std::thread> lanes;
+  const int count = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(workers_.lanes()), trials.size()));
+  for (int i = 0; i < count; ++i) lanes.emplace_back(lane, i);
+  for (auto& thread : lanes) thread.join();
+  if (error) std::rethrow_exception(error);
+}
+
+void serve_trials_as_worker(const Experiment& experiment, aco::PluginRegistry& registry) {
+  TrialRunner runner(experiment, registry);
+  // One trial at a time on this thread: the parent runs one worker per core, and the parent's
+  // "where are you" signal goes to this thread.
+  const aco::ThreadLimit threads(1);
+  std::string fingerprint;
+  aco::serve_worker_requests([&](const std::string& bytes) {
+    const json request = json::from_cbor(bytes);
+    if (request.contains("fingerprint")) {
+      if (fingerprint.empty()) fingerprint = experiment.fingerprint(registry);
+      if (request.at("fingerprint") != fingerprint)
+        throw aco::Error("a worker process loaded another experiment than acobench: " +
+                         fingerprint_change(request.at("fingerprint"), fingerprint) +
+                         " (was the experiment file, a map or a plugin binary changed during the run?)");
+    }
+    for (const json& c : request.at("configs")) {
+      Configuration config;
+      config.name = c.at("name");
+      config.keys = c.at("keys").get<aco::Keys>();
+      runner.add_config(c.at("id"), config);
+    }
+    const json& t = request.at("trial");
+    const std::vector<std::uint8_t> reply = json::to_cbor(record_json(runner.run({t.at(0), t.at(1), t.at(2)})));
+    return std::string(reply.begin(), reply.end());
+  });
+}
+
+}  // namespace acobench

@@ -160,4 +160,15 @@ int count_runs(const std::filesystem::path& db) {
 }
 
 
+#ifdef ACO_TEST_MPIEXEC
+const std::vector<std::string> kMpiEnvironment{"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
+                                               "OMPI_MCA_rmaps_base_oversubscribe=1"};
+
+std::vector<std::string> mpirun(int ranks, const std::vector<std::string>& args) {
+  std::vector<std::string> argv{ACO_TEST_MPIEXEC, "--oversubscribe", "-n", std::to_string(ranks), ACO_TEST_ACOBENCH};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return argv;
+}
+#endif
+
 }  // namespace test::acobench_helpers

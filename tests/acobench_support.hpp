@@ -40,4 +40,11 @@ std::vector<std::string> database_rows(const std::filesystem::path& db);
 
 int count_runs(const std::filesystem::path& db);
 
+#ifdef ACO_TEST_MPIEXEC
+// mpirun refuses to start as root unless told twice; CI runs as root.
+extern const std::vector<std::string> kMpiEnvironment;
+// mpirun -n RANKS acobench ARGS... (run with kMpiEnvironment).
+std::vector<std::string> mpirun(int ranks, const std::vector<std::string>& args);
+#endif
+
 }  // namespace test::acobench_helpers

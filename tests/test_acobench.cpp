@@ -423,7 +423,7 @@ TEST_CASE("a trial whose plugin throws is stored as failed, named, and the exper
   const auto out = file.parent_path() / "report";
   REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
   const std::string md = file_bytes(out / "report.md");
-  CHECK_THAT(md, Contains("## Failed trials") && Contains("| thrower | 3 | 3 | configuration 'thrower'"));
+  CHECK_THAT(md, Contains("## Failed trials") && Contains("| thrower | 3 | 3 | 3 | 0 | 0 | 0 | configuration 'thrower'"));
 }
 
 TEST_CASE("an experiment given by a relative path, with absolute map paths, stores and draws its maps", "[acobench]") {

@@ -157,16 +157,6 @@ TEST_CASE("a shard's database takes only that shard", "[acobench][shards][errors
 #ifdef ACO_TEST_MPIEXEC
 namespace {
 
-// mpirun refuses to start as root unless told twice; CI runs as root.
-const std::vector<std::string> kMpiEnvironment{"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",
-                                               "OMPI_MCA_rmaps_base_oversubscribe=1"};
-
-std::vector<std::string> mpirun(int ranks, const std::vector<std::string>& args) {
-  std::vector<std::string> argv{ACO_TEST_MPIEXEC, "--oversubscribe", "-n", std::to_string(ranks), ACO_TEST_ACOBENCH};
-  argv.insert(argv.end(), args.begin(), args.end());
-  return argv;
-}
-
 // The pid of the acobench process that is MPI rank `rank` of the run writing `db` (other tests
 // may run other mpiruns at the same time), from the processes' command lines and environments.
 pid_t rank_pid(int rank, const std::filesystem::path& db) {

@@ -226,23 +226,32 @@ std::vector<Table> simulation_tables(const Analysis& a) {
   return {t};
 }
 
-// Trials that threw (a plugin's failure): how many per configuration and the first message.
+// Trials that failed (a plugin's exception, crash, time-out or memory overrun): how many per
+// configuration and kind (runs.stopped_by), and the first message.
 std::vector<Table> failure_tables(const Analysis& a) {
+  const std::vector<std::string> kinds{"error", "crashed", "timed out", "out of memory"};
   Table t{"Failed trials",
-          "Trials that ended in an exception (from a plugin or the host) instead of a result: they count as unsolved "
+          "Trials that ended without a result: an exception (from a plugin or the host), a crash, a time-out "
+          "(--trial-timeout) or a memory overrun (--trial-memory) in their worker process. They count as unsolved "
           "above; the experiment went on without them.",
-          {"configuration", "failed", "runs", "first failure"},
+          {"configuration", "failed", "runs", "exception", "crashed", "timed out", "out of memory", "first failure"},
           {}};
   for (std::size_t c = 0; c < a.configs.size(); ++c) {
     std::size_t failed = 0, runs = 0;
+    std::map<std::string, std::size_t> by_kind;
     std::string first;
     for (std::size_t p = 0; p < a.problems.size(); ++p)
       for (const auto* trial : a.results[p][c].runs) {
         ++runs;
         if (trial->error.empty()) continue;
+        ++by_kind[trial->stopped_by];
         if (failed++ == 0) first = trial->error;
       }
-    if (failed > 0) t.rows.push_back({a.configs[c].second.name, std::to_string(failed), std::to_string(runs), first});
+    if (failed == 0) continue;
+    std::vector<std::string> row{a.configs[c].second.name, std::to_string(failed), std::to_string(runs)};
+    for (const auto& kind : kinds) row.push_back(std::to_string(by_kind[kind]));
+    row.push_back(first);
+    t.rows.push_back(row);
   }
   if (t.rows.empty()) return {};
   return {t};

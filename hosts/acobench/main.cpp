@@ -36,7 +36,8 @@ constexpr const char* kUsage =
     "               [--trial-timeout SECONDS] [--trial-memory SIZE] [--in-process]\n"
     "      run every trial the database does not hold yet (rerun the same command to continue);\n"
     "      each trial runs in a worker process (one per thread): a trial whose plugin crashes, runs\n"
-    "      over --trial-timeout or grows over --trial-memory is stored as failed and the rest go on;\n"
+    "      over --trial-timeout or grows over --trial-memory (default: each thread's share of 3/4 of\n"
+    "      the memory available) is stored as failed and the rest go on;\n"
     "      --in-process: the trials on this process's threads (for a debugger; no limits);\n"
     "      --shard K/N: only shard K of N of the trials, into its own database (merge them after);\n"
     "      --max-memory: refuse maps whose planning would need more (512M, 4G; default: 3/4 of the\n"
@@ -174,7 +175,7 @@ int run(const std::vector<std::string>& args) {
       ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins")
       ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp)
       ("trial-timeout", po::value<std::string>()->value_name("SECONDS"), "a trial running longer is stopped and stored as timed out")
-      ("trial-memory", po::value<std::string>()->value_name("SIZE"), "a trial growing its worker's memory by more is stopped and stored as out of memory")
+      ("trial-memory", po::value<std::string>()->value_name("SIZE"), "a trial growing its worker's memory by more is stopped and stored as out of memory (default: each thread's share of 3/4 of the memory available at start)")
       ("in-process", "run the trials on this process's threads, not in worker processes (for a debugger)");
   po::positional_options_description positional;
   positional.add("experiment", 1);
@@ -216,9 +217,13 @@ int run(const std::vector<std::string>& args) {
     std::cerr << "acobench: warning: --in-process: the trial time and memory limits are not enforced (they need "
                  "worker processes)\n";
   // Workers are started by the process that runs trials: this one, or each MPI worker rank.
+  // Without a memory limit, each lane's share of 3/4 of the memory available: a plugin filling
+  // memory stops its trial before the machine swaps.
   const auto make_workers = [&](int lanes) -> std::unique_ptr<acobench::TrialWorkers> {
     if (in_process) return nullptr;
-    return std::make_unique<acobench::TrialWorkers>(lanes, acobench::worker_command(experiment, plugin_dirs), limits,
+    acobench::TrialLimits lane_limits = limits;
+    if (!lane_limits.memory_bytes) lane_limits.memory_bytes = aco::default_memory_limit() / static_cast<std::uint64_t>(lanes);
+    return std::make_unique<acobench::TrialWorkers>(lanes, acobench::worker_command(experiment, plugin_dirs), lane_limits,
                                                     experiment.fingerprint(registry));
   };
 #ifdef ACOBENCH_WITH_MPI

@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <csignal>
 #include <fstream>
 
 #include "acosim/batch.hpp"
@@ -207,4 +208,124 @@ TEST_CASE("acosim batch: no variation seals the goal off", "[acosim]") {
     CHECK(v.unknown.empty());
     CHECK(!v.moving.empty());
   }
+}
+
+namespace {
+
+// acosim with these arguments.
+test::CommandResult acosim_run(const std::vector<std::string>& args) {
+  std::vector<std::string> argv{ACO_TEST_ACOSIM};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return test::run(argv);
+}
+
+}  // namespace
+
+TEST_CASE("acosim --batch: worker processes give the in-process results, whatever the thread count", "[acosim][contain]") {
+  const auto file = scenario("run: {map: two.txt, start: [0, 1], goal: [9, 1], local: dwa, local.predict: true}\n");
+  const acosim::Scenario base = acosim::load_scenario(file, test::plugins());
+  const auto in_process = acosim::run_batch(acosim::variations(base, 6, 5, test::plugins()), test::plugins());
+  const std::vector<std::string> command{ACO_TEST_ACOSIM, "--variation-worker", file.string(), "--batch", "6", "--seed", "5"};
+  for (const int lanes : {1, 2}) {
+    INFO(lanes << " worker processes");
+    const auto workers = acosim::run_batch_in_workers(6, command, lanes, {}, [](int k, const acosim::SimulationResult& r) {
+      FAIL("variation " << k << " failed: " << r.reason);
+    });
+    REQUIRE(workers.results.size() == in_process.results.size());
+    for (std::size_t k = 0; k < workers.results.size(); ++k) {
+      const auto &a = workers.results[k], &b = in_process.results[k];
+      CHECK(a.reached == b.reached);
+      CHECK(a.outcome == b.outcome);
+      CHECK(a.reason == b.reason);
+      CHECK(a.time == b.time);  // exact: doubles cross the processes bit for bit
+      CHECK(a.distance == b.distance);
+      CHECK(a.min_clearance == b.min_clearance);
+      CHECK(a.collisions == b.collisions);
+      CHECK(a.replans == b.replans);
+      CHECK(a.steps == b.steps);
+      CHECK(a.plans == b.plans);
+      CHECK(a.sensed == b.sensed);
+      CHECK(a.frames.empty());
+    }
+    CHECK(workers.outcomes == in_process.outcomes);
+    CHECK(workers.mean_time == in_process.mean_time);
+    CHECK(workers.mean_clearance == in_process.mean_clearance);
+  }
+  CHECK(in_process.replans > 0);  // the plans and sensed cells compared are more than the first
+
+  // The command line: the same summary in worker processes on 1 or 2 lanes and in-process.
+  const std::vector<std::string> batch{file.string(), "--batch", "6", "--seed", "5"};
+  std::vector<std::string> outputs;
+  for (const auto& more : std::vector<std::vector<std::string>>{{"--threads", "1"}, {"--threads", "2"}, {"--in-process"}}) {
+    auto args = batch;
+    args.insert(args.end(), more.begin(), more.end());
+    const auto r = acosim_run(args);
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.err.empty());
+    outputs.push_back(r.out);
+  }
+  CHECK_THAT(outputs[0], Contains("batch:      6 variations"));
+  CHECK(outputs[1] == outputs[0]);
+  CHECK(outputs[2] == outputs[0]);
+}
+
+TEST_CASE("acosim --batch: a variation whose plugin crashes or hangs costs only itself, and says which plugin hook",
+          "[acosim][contain]") {
+  const auto file = [](const std::string& update) {
+    return scenario("run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa, update: " + update + "}\n").string();
+  };
+  const std::string hostile = ACO_TEST_HOSTILE_PLUGIN_DIR;
+  // One lane: the worker that crashed is started again for the next variation.
+  const auto crashed = acosim_run({file("crashing"), "--batch", "3", "--threads", "1", "--plugin-dir", hostile});
+  INFO(crashed.out << crashed.err);
+  CHECK(crashed.exit_code == 0);
+  CHECK_THAT(crashed.out, Contains("outcomes:   crashed 3;"));
+  CHECK_THAT(crashed.out, Contains("reached:    0 (0 %)"));
+  const std::string where = " in update() in iteration 3";
+  for (const char* k : {"0", "1", "2"}) {
+    CHECK_THAT(crashed.out, Contains(std::string("variation ") + k + ": crashed (crashed: SIGSEGV in plugin update/crashing ("));
+    CHECK_THAT(crashed.err, Contains(std::string("acosim: variation ") + k + ": crashed: SIGSEGV in plugin update/crashing ("));
+  }
+  CHECK_THAT(crashed.err, Contains("aco_update_crashing.so)" + where + "\n"));
+
+  // abort(), as a failed assert does, on two lanes.
+  const auto aborted = acosim_run({file("crashing, update.abort: true"), "--batch", "2", "--threads", "2", "--plugin-dir", hostile});
+  CHECK(aborted.exit_code == 0);
+  CHECK_THAT(aborted.out, Contains("outcomes:   crashed 2;"));
+  CHECK_THAT(aborted.err, Contains("crashed: SIGABRT in plugin update/crashing (") && Contains(where));
+
+  // An endless loop: stopped at the time limit, which says where the worker was.
+  const auto hung = acosim_run({file("hanging"), "--batch", "2", "--variation-timeout", "0.5", "--plugin-dir", hostile});
+  CHECK(hung.exit_code == 0);
+  CHECK_THAT(hung.out, Contains("outcomes:   timed out 2;"));
+  CHECK_THAT(hung.out, Contains("variation 1: timed out (timed out after 0.5 s in plugin update/hanging (") && Contains(where));
+  CHECK_THAT(hung.err, Contains("acosim: variation 0: timed out after 0.5 s in plugin update/hanging ("));
+
+  // Filling memory: stopped at the limit.
+  const auto hogged = acosim_run({file("hogging, update.megabytes: 1024"), "--batch", "1", "--variation-memory", "128M",
+                                  "--plugin-dir", hostile});
+  CHECK(hogged.exit_code == 0);
+  CHECK_THAT(hogged.out, Contains("outcomes:   out of memory 1;"));
+  CHECK_THAT(hogged.err, Contains("acosim: variation 0: out of memory (over 128 MiB) in plugin update/hogging (") && Contains(where));
+
+  // --in-process is the old way: the crash ends the batch (and is named).
+  const auto in_process = acosim_run({file("crashing"), "--batch", "2", "--in-process", "--plugin-dir", hostile});
+  CHECK(in_process.exit_code == 128 + SIGSEGV);
+  CHECK(in_process.out.empty());
+  CHECK_THAT(in_process.err, Contains("acosim: error: crashed: SIGSEGV in plugin update/crashing (") && Contains(where));
+
+  // An error is still an error, in a worker process too.
+  const auto walled = scenario("run: {map: walled.txt, start: [0, 0], goal: [2, 0], local: dwa}\n");
+  std::ofstream(walled.parent_path() / "walled.txt") << "0 1 0\n0 1 0\n";
+  for (const auto& more : std::vector<std::vector<std::string>>{{}, {"--in-process"}}) {
+    std::vector<std::string> args{walled.string(), "--batch", "2"};
+    args.insert(args.end(), more.begin(), more.end());
+    const auto r = acosim_run(args);
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.err, Contains("acosim: error: batch: the scenario's map has no path from start to goal"));
+  }
+  const auto bad = acosim_run({file("crashing"), "--batch", "2", "--variation-timeout", "soon", "--plugin-dir", hostile});
+  CHECK(bad.exit_code == 1);
+  CHECK_THAT(bad.err, Contains("acosim: error: --variation-timeout: 'soon' is not a time in seconds"));
 }

@@ -16,6 +16,7 @@
 #include "support.hpp"
 
 using Catch::Contains;
+using Catch::StartsWith;
 using nlohmann::json;
 
 namespace {
@@ -306,4 +307,67 @@ TEST_CASE("tools/irace/target-runner calls acoplan as irace would and prints the
   REQUIRE(direct.exit_code == 0);
   REQUIRE(!lines(r.out).empty());
   CHECK(std::stod(lines(r.out).back()) == json::parse(direct.out)["length"].get<double>());
+}
+
+TEST_CASE("tools/irace/target-runner gives a crashed or timed-out evaluation the failure cost and logs why",
+          "[acoplan][irace][contain]") {
+  const auto runner = (test::data_dir().parent_path() / "tools/irace/target-runner").string();
+  const std::string hostile = ACO_TEST_HOSTILE_PLUGIN_DIR;
+  const std::string acoplan = std::string("ACOPLAN=") + ACO_TEST_ACOPLAN;
+  const std::string options = "ACOPLAN_OPTIONS=--threads 1 --iterations 20 --corner-cutting";
+  const auto log = test::temp_file("failures.log", "");
+  const std::string to_log = "ACOPLAN_FAILURE_LOG=" + log.string();
+  const auto read_log = [&] {
+    std::ifstream in(log);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  };
+  // irace reads the runner's stdout and stderr together, every word a number: only the cost.
+  const auto check_failure_cost = [](const test::CommandResult& r, double cost) {
+    INFO(r.out << r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.err.empty());
+    REQUIRE(lines(r.out).size() == 1);
+    CHECK(std::stod(r.out) == cost);
+  };
+
+  const auto crashed = test::run({"/bin/bash", runner, "3", "1", "42", map1_scen, "--update", "crashing", "--plugin-dir", hostile},
+                                 {acoplan, options, to_log});
+  check_failure_cost(crashed, 1e10);
+  CHECK_THAT(read_log(), Contains("configuration 3, instance 1, seed 42: crashed: SIGSEGV (acoplan: error: crashed: SIGSEGV "
+                                  "in plugin update/crashing (") &&
+                             Contains("aco_update_crashing.so) in update() in iteration 3)\n") &&
+                             Contains(" --seed 42 --irace --threads 1 --iterations 20 --corner-cutting --update crashing "));
+
+  // A hang, stopped at ACOPLAN_TIMEOUT: acoplan says where it was.
+  std::filesystem::remove(log);
+  const auto hung = test::run({"/bin/bash", runner, "4", "2", "7", map1_scen, "--update", "hanging", "--plugin-dir", hostile},
+                              {acoplan, options, to_log, "ACOPLAN_TIMEOUT=0.5", "ACOPLAN_FAILURE_COST=5e9"});
+  check_failure_cost(hung, 5e9);
+  CHECK_THAT(read_log(), StartsWith("configuration 4, instance 2, seed 7: timed out after 0.5 s (acoplan: error: stopped: "
+                                    "SIGUSR1 in plugin update/hanging (") &&
+                             Contains("aco_update_hanging.so) in update() in iteration 3)\n  timeout -s USR1 -k 2 0.5 "));
+
+  // By default the log is in the current folder: irace's execution directory.
+  const auto dir = log.parent_path() / "exec-dir";
+  std::filesystem::create_directories(dir);
+  const auto aborted = test::run({"/bin/sh", "-c", "cd \"$0\" && exec /bin/bash \"$@\"", dir.string(), runner, "5", "1", "9",
+                                  map1_scen, "--update", "crashing", "--update.abort=true", "--plugin-dir", hostile},
+                                 {acoplan, options});
+  check_failure_cost(aborted, 1e10);
+  std::ifstream in(dir / "target-runner-failures.log");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(text, StartsWith("configuration 5, instance 1, seed 9: crashed: SIGABRT (acoplan: error: crashed: SIGABRT in "
+                              "plugin update/crashing ("));
+
+  // An error is not a failure of the configuration: it stops irace, with acoplan's message.
+  std::filesystem::remove(log);
+  const auto wrong = test::run({"/bin/bash", runner, "6", "1", "1", map1_scen, "--update", "nope"}, {acoplan, options, to_log});
+  CHECK(wrong.exit_code == 1);
+  CHECK(wrong.out.empty());
+  CHECK_THAT(wrong.err, Contains("acoplan: error: unknown update plugin 'nope'"));
+  CHECK_FALSE(std::filesystem::exists(log));
+  const auto bad_limit = test::run({"/bin/bash", runner, "6", "1", "1", map1_scen}, {acoplan, options, to_log, "ACOPLAN_TIMEOUT=soon"});
+  CHECK(bad_limit.exit_code != 0);
+  CHECK_THAT(bad_limit.err, Contains("invalid time interval"));
+  CHECK_FALSE(std::filesystem::exists(log));
 }

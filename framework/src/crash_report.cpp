@@ -34,15 +34,28 @@ void write_text(const char* text, std::size_t length) noexcept {
 
 void write_text(const char* text) noexcept { write_text(text, std::strlen(text)); }
 
-void to_stderr(int signal, const char* where, std::size_t length) noexcept {
+// "PROGRAM: error: crashed: SIGSEGV in plugin ...", or "stopped: SIGUSR1 ...".
+void report(const char* what, int signal, const char* where, std::size_t length) noexcept {
   write_text(crash_program);
-  write_text(": error: crashed: ");
+  write_text(": error: ");
+  write_text(what);
+  write_text(": ");
   write_text(signal_name(signal));
   if (length > 0) {
     write_text(" in ");
     write_text(where, length);
   }
   write_text("\n");
+}
+
+void to_stderr(int signal, const char* where, std::size_t length) noexcept { report("crashed", signal, where, length); }
+
+// SIGUSR1, as `timeout -s USR1` sends it: say where this thread was, then end as the signal would
+// have (SA_RESETHAND restored its default action).
+void on_stop(int signal) {
+  char where[1024];
+  report("stopped", signal, where, describe_plugin_call(where, sizeof where));
+  ::raise(signal);
 }
 
 }  // namespace
@@ -78,6 +91,11 @@ void on_fatal_signal(CrashWriter writer) {
 void report_crashes(const char* program) {
   crash_program = program;
   on_fatal_signal(to_stderr);
+  struct sigaction action {};
+  action.sa_handler = on_stop;
+  action.sa_flags = SA_RESETHAND | SA_ONSTACK;
+  sigemptyset(&action.sa_mask);
+  ::sigaction(SIGUSR1, &action, nullptr);
 }
 
 }  // namespace aco

@@ -16,6 +16,7 @@
 #include "aco/pipeline.hpp"
 #include "aco/rng.hpp"
 #include "aco/planning.hpp"
+#include "aco/worker_process.hpp"
 #include "aco/yaml_keys.hpp"
 
 namespace acobench {
@@ -229,7 +230,7 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   if (doc["seed"]) e.seed = static_cast<std::uint64_t>(integer(file, doc["seed"], "seed", 0));
   if (doc["repetitions"]) e.repetitions = integer(file, doc["repetitions"], "repetitions", 1);
   try {
-    if (doc["trial-timeout"]) e.trial_timeout_s = parse_seconds(scalar(file, doc["trial-timeout"], "trial-timeout"), "trial-timeout");
+    if (doc["trial-timeout"]) e.trial_timeout_s = aco::parse_seconds(scalar(file, doc["trial-timeout"], "trial-timeout"), "trial-timeout");
     if (doc["trial-memory"])
       e.trial_memory_bytes = aco::parse_memory_size(scalar(file, doc["trial-memory"], "trial-memory"), "trial-memory");
   } catch (const aco::Error& error) {
@@ -314,15 +315,6 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
       j["plugins"][p.kind + "/" + p.name] = {{"version", p.version}, {"sha256", p.sha256}};
     }
   return j.dump();
-}
-
-double parse_seconds(const std::string& text, const std::string& option) {
-  double seconds = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, seconds);
-  if (error != std::errc() || stop != end || !(seconds > 0) || !std::isfinite(seconds))
-    throw aco::Error(option + ": '" + text + "' is not a time in seconds (a positive number, such as 30 or 0.5)");
-  return seconds;
 }
 
 std::uint64_t trial_seed(std::uint64_t master_seed, const std::string& problem, int repetition) {

@@ -84,10 +84,6 @@ aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry)
 // local.follow of their dwa); every scenario is checked when the trials are prepared.
 aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& problems, aco::PluginRegistry& registry);
 
-// A time limit as --trial-timeout and trial-timeout: take it: seconds, a positive number.
-// Anything else is an Error naming `option`.
-double parse_seconds(const std::string& text, const std::string& option);
-
 // The seed of a trial: a hash of the master seed, the problem's name and the repetition, so
 // that a trial gives the same result whenever and wherever it runs, and every configuration
 // meets the same random streams on the same problem and repetition (common random numbers).

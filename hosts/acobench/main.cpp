@@ -138,7 +138,7 @@ int run_with_ranks(const acobench::mpi::Session& session, const acobench::Experi
                    const std::function<std::unique_ptr<acobench::TrialWorkers>(int lanes)>& make_workers) {
   try {
     if (session.rank() > 0) {
-      const auto workers = make_workers(acobench::trial_lanes(run.threads));
+      const auto workers = make_workers(aco::lane_count(run.threads));
       acobench::mpi::serve_trials(session, experiment, registry, run.threads, workers.get());
       return 0;
     }
@@ -210,7 +210,7 @@ int run(const std::vector<std::string>& args) {
   acobench::TrialLimits limits;
   if (experiment.trial_timeout_s) limits.timeout_s = *experiment.trial_timeout_s;
   if (experiment.trial_memory_bytes) limits.memory_bytes = *experiment.trial_memory_bytes;
-  if (vm.count("trial-timeout")) limits.timeout_s = acobench::parse_seconds(vm["trial-timeout"].as<std::string>(), "--trial-timeout");
+  if (vm.count("trial-timeout")) limits.timeout_s = aco::parse_seconds(vm["trial-timeout"].as<std::string>(), "--trial-timeout");
   if (vm.count("trial-memory")) limits.memory_bytes = aco::parse_memory_size(vm["trial-memory"].as<std::string>(), "--trial-memory");
   const bool in_process = vm.count("in-process") > 0;
   if (in_process && (limits.timeout_s > 0 || limits.memory_bytes > 0))
@@ -232,7 +232,7 @@ int run(const std::vector<std::string>& args) {
   if (session && session->size() > 1) return run_with_ranks(*session, experiment, registry, run, args, make_workers);
   if (session) acobench::mpi::warn_if_bound(*session, threads);
 #endif
-  const auto workers = make_workers(acobench::trial_lanes(threads));
+  const auto workers = make_workers(aco::lane_count(threads));
   std::optional<acobench::WorkerExecutor> executor;
   if (workers) run.executor = &executor.emplace(*workers);
   run.progress = Progress();

@@ -1,7 +1,6 @@
 #include "mpi.hpp"
 
 #include <mpi.h>
-#include <sched.h>
 
 #include <chrono>
 #include <condition_variable>
@@ -194,7 +193,7 @@ double Coordinator::busy_seconds() const { return std::chrono::duration<double>(
 double Coordinator::storing_seconds() const { return std::chrono::duration<double>(state_->stored).count(); }
 
 void warn_if_bound(const Session& session, int threads) {
-  const int usable = trial_lanes(0), all = static_cast<int>(std::thread::hardware_concurrency());
+  const int usable = aco::lane_count(0), all = static_cast<int>(std::thread::hardware_concurrency());
   if (usable >= all || (threads > 0 && threads <= usable)) return;
   std::cerr << "acobench: warning: rank " << session.rank() << " on " << hostname() << " may use " << usable << " of its "
             << all << " CPUs: the launcher bound it (mpirun binds each rank to one core when -n is 2 or less); "
@@ -205,7 +204,7 @@ void serve_trials(const Session& session, const Experiment& experiment, aco::Plu
                   TrialWorkers* workers) {
   warn_if_bound(session, threads);
   TrialRunner runner(experiment, registry);
-  const int lanes = workers ? workers->lanes() : trial_lanes(threads);
+  const int lanes = workers ? workers->lanes() : aco::lane_count(threads);
   // One trial on each lane. A trial's own TBB loops then run on its lane: TBB workers beside the
   // lanes would only oversubscribe the cores (one process does the same, nesting them in its
   // loop over trials).

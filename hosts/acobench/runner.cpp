@@ -1,7 +1,5 @@
 #include "runner.hpp"
 
-#include <sched.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,14 +15,6 @@
 #include "results_db.hpp"
 
 namespace acobench {
-
-int trial_lanes(int threads) {
-  if (threads > 0) return threads;
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) != 0) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::max(1, CPU_COUNT(&set));
-}
 
 void ThreadExecutor::run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
                          const std::function<void(const TrialRecord&)>& finished) {

@@ -36,10 +36,6 @@ class ThreadExecutor : public TrialExecutor {
   int threads_;
 };
 
-// How many trials run at a time for --threads N: N, or for 0 every CPU this process may use (its
-// affinity mask, which a launcher such as mpirun or srun may have narrowed).
-int trial_lanes(int threads);
-
 struct RunOptions {
   std::filesystem::path database;
   int threads = 0;  // 0 = all cores; results do not depend on it

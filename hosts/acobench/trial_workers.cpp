@@ -1,11 +1,9 @@
 #include "trial_workers.hpp"
 
-#include <atomic>
 #include <filesystem>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <set>
-#include <thread>
 
 #include "aco/error.hpp"
 #include "aco/thread_limit.hpp"
@@ -52,40 +50,18 @@ TrialRecord TrialWorkers::run(int lane_index, const TrialRunner& runner, const T
   const std::vector<std::uint8_t> cbor = json::to_cbor(request);
   const aco::WorkerReply reply =
       lane.process.request(std::string(cbor.begin(), cbor.end()), {limits_.timeout_s, limits_.memory_bytes});
-  using Status = aco::WorkerReply::Status;
-  switch (reply.status) {
-    case Status::replied: return record_from(json::from_cbor(reply.bytes));
-    case Status::crashed: return runner.failed(t, "crashed", reply.failure);
-    case Status::timed_out: return runner.failed(t, "timed out", reply.failure);
-    case Status::out_of_memory: return runner.failed(t, "out of memory", reply.failure);
-  }
-  throw aco::Error("unknown worker reply");
+  if (reply.status == aco::WorkerReply::Status::replied) return record_from(json::from_cbor(reply.bytes));
+  return runner.failed(t, aco::to_string(reply.status), reply.failure);
 }
 
 void WorkerExecutor::run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
                          const std::function<void(const TrialRecord&)>& finished) {
-  std::atomic<std::size_t> next{0};
   std::mutex mutex;
-  std::exception_ptr error;
-  const auto lane = [&](int index) {
-    try {
-      for (std::size_t i; (i = next++) < trials.size();) {
-        const TrialRecord record = workers_.run(index, runner, trials[i]);
-        const std::lock_guard lock(mutex);
-        if (error) return;
-        finished(record);
-      }
-    } catch (...) {
-      const std::lock_guard lock(mutex);
-      if (!error) error = std::current_exception();
-      next = trials.size();
-    }
-  };
-  std::vector<std::thread> lanes;
-  const int count = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(workers_.lanes()), trials.size()));
-  for (int i = 0; i < count; ++i) lanes.emplace_back(lane, i);
-  for (auto& thread : lanes) thread.join();
-  if (error) std::rethrow_exception(error);
+  aco::run_on_lanes(workers_.lanes(), trials.size(), [&](int lane, std::size_t i) {
+    const TrialRecord record = workers_.run(lane, runner, trials[i]);
+    const std::lock_guard lock(mutex);
+    finished(record);
+  });
 }
 
 void serve_trials_as_worker(const Experiment& experiment, aco::PluginRegistry& registry) {

@@ -2,16 +2,22 @@
 // crossing it.
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
+#include <nlohmann/json.hpp>
 
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/parallel.hpp"
 #include "aco/planning.hpp"
 #include "aco/rng.hpp"
+#include "aco/thread_limit.hpp"
 #include "batch.hpp"
 
 namespace acosim {
 namespace {
+
+using nlohmann::json;
 
 // The point at arc-length share u of a polyline, and the direction of travel there.
 std::pair<Eigen::Vector2d, Eigen::Vector2d> along(const std::vector<Eigen::Vector2d>& path, double u) {
@@ -24,6 +30,61 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> along(const std::vector<Eigen::Vecto
     left -= leg.norm();
   }
   return {path.front(), Eigen::Vector2d(1.0, 0.0)};
+}
+
+// A variation's result between processes, without its frames: JSON sent as CBOR, which keeps
+// every double's bits (the smallest clearance of a run that saw nothing is infinite).
+json result_json(const SimulationResult& r) {
+  json plans = json::array(), sensed = json::array();
+  for (const auto& plan : r.plans) {
+    json points = json::array();
+    for (const Eigen::Vector2d& p : plan) points.push_back({p.x(), p.y()});
+    plans.push_back(std::move(points));
+  }
+  for (const aco::Cell& c : r.sensed) sensed.push_back({c.x, c.y});
+  return {{"reached", r.reached},   {"outcome", r.outcome},         {"reason", r.reason},
+          {"time", r.time},         {"distance", r.distance},       {"min_clearance", r.min_clearance},
+          {"collisions", r.collisions}, {"replans", r.replans},     {"steps", r.steps},
+          {"plans", plans},         {"sensed", sensed}};
+}
+
+SimulationResult result_from(const json& j) {
+  SimulationResult r;
+  r.reached = j.at("reached");
+  r.outcome = j.at("outcome");
+  r.reason = j.at("reason");
+  r.time = j.at("time");
+  r.distance = j.at("distance");
+  r.min_clearance = j.at("min_clearance");
+  r.collisions = j.at("collisions");
+  r.replans = j.at("replans");
+  r.steps = j.at("steps");
+  for (const json& points : j.at("plans")) {
+    r.plans.emplace_back();
+    for (const json& p : points) r.plans.back().emplace_back(p.at(0).get<double>(), p.at(1).get<double>());
+  }
+  for (const json& c : j.at("sensed")) r.sensed.push_back({c.at(0).get<int>(), c.at(1).get<int>()});
+  return r;
+}
+
+BatchSummary summarize(std::vector<SimulationResult> results) {
+  BatchSummary b;
+  b.runs = static_cast<int>(results.size());
+  double time = 0.0, clearance = 0.0;
+  int clear_count = 0;
+  for (const SimulationResult& r : results) {
+    b.reached += r.reached;
+    b.collisions += r.collisions;
+    b.replans += r.replans;
+    b.outcomes[r.outcome] += 1;
+    if (r.reached) time += r.time;
+    if (std::isfinite(r.min_clearance)) clearance += r.min_clearance, ++clear_count;
+    if (r.reached && r.collisions > 0) ++b.reached_with_collision;
+  }
+  b.results = std::move(results);
+  b.mean_time = b.reached ? time / b.reached : 0.0;
+  b.mean_clearance = clear_count ? clearance / clear_count : 0.0;
+  return b;
 }
 
 }  // namespace
@@ -86,23 +147,42 @@ BatchSummary run_batch(const std::vector<Scenario>& scenarios, aco::PluginRegist
     r.frames.clear();  // a batch keeps the figures, not the trajectories
     results[i] = std::move(r);
   });
-  BatchSummary b;
-  b.runs = static_cast<int>(results.size());
-  double time = 0.0, clearance = 0.0;
-  int clear_count = 0;
-  for (const SimulationResult& r : results) {
-    b.reached += r.reached;
-    b.collisions += r.collisions;
-    b.replans += r.replans;
-    b.outcomes[r.outcome] += 1;
-    if (r.reached) time += r.time;
-    if (std::isfinite(r.min_clearance)) clearance += r.min_clearance, ++clear_count;
-    if (r.reached && r.collisions > 0) ++b.reached_with_collision;
-  }
-  b.results = std::move(results);
-  b.mean_time = b.reached ? time / b.reached : 0.0;
-  b.mean_clearance = clear_count ? clearance / clear_count : 0.0;
-  return b;
+  return summarize(std::move(results));
+}
+
+BatchSummary run_batch_in_workers(int count, const std::vector<std::string>& command, int lanes,
+                                  const aco::WorkerLimits& limits,
+                                  const std::function<void(int variation, const SimulationResult&)>& failed) {
+  std::vector<std::unique_ptr<aco::WorkerProcess>> workers;  // each started by its first request
+  for (int i = 0; i < lanes; ++i) workers.push_back(std::make_unique<aco::WorkerProcess>(command));
+  std::vector<SimulationResult> results(static_cast<std::size_t>(count));
+  std::mutex mutex;
+  aco::run_on_lanes(lanes, results.size(), [&](int lane, std::size_t k) {
+    const aco::WorkerReply reply = workers[static_cast<std::size_t>(lane)]->request(std::to_string(k), limits);
+    if (reply.status == aco::WorkerReply::Status::replied) {
+      results[k] = result_from(json::from_cbor(reply.bytes));
+      return;
+    }
+    results[k].outcome = aco::to_string(reply.status);
+    results[k].reason = reply.failure;
+    const std::lock_guard lock(mutex);
+    failed(static_cast<int>(k), results[k]);
+  });
+  return summarize(std::move(results));
+}
+
+void serve_variations(const Scenario& base, int count, std::uint64_t seed, aco::PluginRegistry& registry) {
+  // One variation at a time on this thread: the parent runs a worker per core, and its "where
+  // are you" signal goes to this thread.
+  const aco::ThreadLimit threads(1);
+  std::vector<Scenario> runs;
+  aco::serve_worker_requests([&](const std::string& request) {
+    if (runs.empty()) runs = variations(base, count, seed, registry);
+    SimulationResult r = simulate(runs.at(std::stoul(request)), registry);
+    r.frames.clear();
+    const std::vector<std::uint8_t> reply = json::to_cbor(result_json(r));
+    return std::string(reply.begin(), reply.end());
+  });
 }
 
 }  // namespace acosim

@@ -10,6 +10,7 @@
 #include "aco/memory_limit.hpp"
 #include "aco/program_options_error.hpp"
 #include "aco/thread_limit.hpp"
+#include "aco/worker_process.hpp"
 #include "batch.hpp"
 #include "simulation.hpp"
 
@@ -23,6 +24,12 @@ constexpr int kExitNotReached = 3;  // as acoplan's unsolved: the run ended with
 void write(const std::string& file, const std::string& text) {
   std::ofstream out(file);
   if (!out || !(out << text)) throw aco::Error("cannot write " + file);
+}
+
+// An error: on stderr, or from a worker process of --batch to the acosim that started it.
+void report_error(const std::string& message) {
+  if (aco::is_worker_process()) aco::fail_worker(message);
+  std::cerr << "acosim: error: " << message << "\n";
 }
 
 }  // namespace
@@ -45,10 +52,14 @@ int main(int argc, char** argv) {
         ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch or --variation: the variations' seed")
         ("variation", po::value<int>()->value_name("K"), "run variation K (0-based) of --batch's, with every output")
         ("threads", po::value<int>()->default_value(0), "with --batch: worker threads, 0 = all cores; results do not depend on it")
+        ("variation-timeout", po::value<std::string>()->value_name("SECONDS"), "with --batch: a variation running longer is stopped and counted as timed out")
+        ("variation-memory", po::value<std::string>()->value_name("SIZE"), "with --batch: a variation growing its worker's memory by more is stopped and counted as out of memory")
+        ("in-process", "with --batch: run the variations on this process's threads, not in worker processes (for a debugger; a crash ends the batch, no limits)")
         ("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"), "also search DIR for plugins")
         ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
     po::options_description hidden;
-    hidden.add_options()("scenario", po::value(&scenario_file));
+    hidden.add_options()("scenario", po::value(&scenario_file))
+        ("variation-worker", "serve --batch's variations to the acosim that started this one");
     po::options_description all;
     all.add(options).add(hidden);
     po::positional_options_description positional;
@@ -78,10 +89,33 @@ int main(int argc, char** argv) {
       const int n = vm["batch"].as<int>(), threads = vm["threads"].as<int>();
       if (n < 1) throw aco::Error("--batch: N must be at least 1");
       if (threads < 0) throw aco::Error("--threads: must be 0 (all cores) or more");
-      const aco::ThreadLimit limit(threads);
-      const auto runs = acosim::variations(scenario, n, vm["seed"].as<std::uint64_t>(), registry);
-      const acosim::BatchSummary b = acosim::run_batch(runs, registry);
-      std::cout << "batch:      " << b.runs << " variations of " << scenario_file << " (seed " << vm["seed"].as<std::uint64_t>()
+      const std::uint64_t seed = vm["seed"].as<std::uint64_t>();
+      if (vm.count("variation-worker")) {
+        acosim::serve_variations(scenario, n, seed, registry);
+        return 0;
+      }
+      aco::WorkerLimits limits;
+      if (vm.count("variation-timeout"))
+        limits.timeout_s = aco::parse_seconds(vm["variation-timeout"].as<std::string>(), "--variation-timeout");
+      if (vm.count("variation-memory"))
+        limits.memory_bytes = aco::parse_memory_size(vm["variation-memory"].as<std::string>(), "--variation-memory");
+      acosim::BatchSummary b;
+      if (vm.count("in-process")) {
+        if (limits.timeout_s > 0 || limits.memory_bytes > 0)
+          std::cerr << "acosim: warning: --in-process: the variation time and memory limits are not enforced (they need "
+                       "worker processes)\n";
+        const aco::ThreadLimit limit(threads);
+        b = acosim::run_batch(acosim::variations(scenario, n, seed, registry), registry);
+      } else {
+        // Each variation in a worker process: this acosim started again with the same arguments.
+        std::vector<std::string> command{aco::this_program(), "--variation-worker"};
+        command.insert(command.end(), argv + 1, argv + argc);
+        b = acosim::run_batch_in_workers(n, command, aco::lane_count(threads), limits,
+                                         [](int k, const acosim::SimulationResult& r) {
+                                           std::cerr << "acosim: variation " << k << ": " << r.reason << "\n";
+                                         });
+      }
+      std::cout << "batch:      " << b.runs << " variations of " << scenario_file << " (seed " << seed
                 << ", local planner " << scenario.run.pipeline.at("local").plugin << ")\n"
                 << "reached:    " << b.reached << " (" << 100.0 * b.reached / b.runs << " %)\n"
                 << "collisions: " << b.collisions << " (in reached runs: " << b.reached_with_collision << ")\n"
@@ -115,9 +149,9 @@ int main(int argc, char** argv) {
     }
     return result.reached ? 0 : kExitNotReached;
   } catch (po::error& e) {
-    std::cerr << "acosim: error: " << aco::program_options_message(e) << "\n";
+    report_error(aco::program_options_message(e));
   } catch (...) {  // anything, a std::exception or not, is reported and exits 1
-    std::cerr << "acosim: error: " << aco::describe_current_exception() << "\n";
+    report_error(aco::describe_current_exception());
   }
   return kExitError;
 }

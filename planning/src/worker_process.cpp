@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sched.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/socket.h>
@@ -9,13 +10,18 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cerrno>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <thread>
 
 #include "aco/crash_report.hpp"
@@ -112,6 +118,53 @@ void send_frame(char kind, const std::string& payload) {
 }
 
 }  // namespace
+
+const char* to_string(WorkerReply::Status status) {
+  switch (status) {
+    case WorkerReply::Status::replied: return "replied";
+    case WorkerReply::Status::crashed: return "crashed";
+    case WorkerReply::Status::timed_out: return "timed out";
+    case WorkerReply::Status::out_of_memory: return "out of memory";
+  }
+  return "unknown";
+}
+
+double parse_seconds(const std::string& text, const std::string& option) {
+  double seconds = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, seconds);
+  if (error != std::errc() || stop != end || !(seconds > 0) || !std::isfinite(seconds))
+    throw Error(option + ": '" + text + "' is not a time in seconds (a positive number, such as 30 or 0.5)");
+  return seconds;
+}
+
+int lane_count(int threads) {
+  if (threads > 0) return threads;
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) != 0) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return std::max(1, CPU_COUNT(&set));
+}
+
+void run_on_lanes(int lanes, std::size_t count, const std::function<void(int lane, std::size_t item)>& work) {
+  std::atomic<std::size_t> next{0};
+  std::mutex mutex;
+  std::exception_ptr error;
+  const auto lane = [&](int index) {
+    try {
+      for (std::size_t i; (i = next++) < count;) work(index, i);
+    } catch (...) {
+      const std::lock_guard lock(mutex);
+      if (!error) error = std::current_exception();
+      next = count;
+    }
+  };
+  std::vector<std::thread> threads;
+  const int used = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, lanes)), count));
+  for (int i = 0; i < used; ++i) threads.emplace_back(lane, i);
+  for (auto& thread : threads) thread.join();
+  if (error) std::rethrow_exception(error);
+}
 
 std::string this_program() {
   std::error_code error;

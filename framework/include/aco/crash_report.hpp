@@ -21,7 +21,10 @@ using CrashWriter = void (*)(int signal, const char* where, std::size_t length) 
 BOOST_SYMBOL_VISIBLE void on_fatal_signal(CrashWriter writer);
 
 // on_fatal_signal() with a writer of "PROGRAM: error: crashed: SIGSEGV in plugin update/crash
-// (FILE) in update() in iteration 3" to stderr. `program` must outlive the process (a literal).
+// (FILE) in update() in iteration 3" to stderr; and SIGUSR1 (`timeout -s USR1`: time is up)
+// writes "PROGRAM: error: stopped: SIGUSR1 in plugin ... in update() in iteration 3" (where the
+// thread it reached was: with one thread, the plugin that hangs), then ends the process as
+// SIGUSR1 does. `program` must outlive the process (a literal).
 BOOST_SYMBOL_VISIBLE void report_crashes(const char* program);
 
 }  // namespace aco

@@ -11,6 +11,7 @@
 // the parent's.
 #include <sys/types.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -31,6 +32,14 @@ struct WorkerReply {
   // 3", "timed out after 5 s in plugin ...", "out of memory (over 512 MiB) in plugin ...".
   std::string failure;
 };
+
+// How a request that did not get a reply is counted: "crashed", "timed out", "out of memory"
+// ("replied" for a reply).
+const char* to_string(WorkerReply::Status status);
+
+// A time limit as the hosts' options (--trial-timeout, --variation-timeout) take it: seconds, a
+// positive number. Anything else is an Error naming `option`.
+double parse_seconds(const std::string& text, const std::string& option);
 
 class WorkerProcess {
  public:
@@ -56,6 +65,16 @@ class WorkerProcess {
   std::string received_;  // bytes read, not yet a whole frame
   std::string note_;      // where the worker said it was (its signal handler's note)
 };
+
+// How many lanes (threads, worker processes) --threads N means: N, or for 0 every CPU this
+// process may use (its affinity mask, which a launcher such as mpirun or srun may have narrowed).
+int lane_count(int threads);
+
+// Calls `work(lane, item)` for every item in [0, count), in order, on `lanes` threads (at most
+// `count`), lane l always with l: a caller holding a WorkerProcess per lane gives each one
+// request at a time. The first exception stops handing out items and is rethrown once every
+// lane has ended.
+void run_on_lanes(int lanes, std::size_t count, const std::function<void(int lane, std::size_t item)>& work);
 
 // The program this process runs (for WorkerProcess's argv[0]).
 std::string this_program();

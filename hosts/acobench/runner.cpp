@@ -73,6 +73,11 @@ class Runner {
     for (const auto& c : e_.configurations) fixed.push_back(add(c));
     std::vector<std::vector<std::string>> components;
     if (e_.ablation_target && !options_.shard) components = ablation_components(e_.baseline, *e_.ablation_target);
+    // The local planner drives simulations only: flipping it in planning trials would spend a
+    // round on a change that changes nothing (a paper's preset names its local planner).
+    const bool simulations = std::any_of(e_.problems.begin(), e_.problems.end(), [](const Problem& p) { return p.simulation != nullptr; });
+    if (!simulations)
+      std::erase_if(components, [](const std::vector<std::string>& c) { return c.front() == "local" || c.front().rfind("local.", 0) == 0; });
     summary.ablation_left = e_.ablation_target && options_.shard;
     const std::size_t n = components.size();
     total_ = (fixed.size() + n * (n + 1) / 2) * e_.problems.size() * e_.repetitions;

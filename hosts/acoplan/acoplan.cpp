@@ -100,6 +100,7 @@ int run(Request& request, std::ostream& out) {
   switch (request.action) {
     case Request::Action::help: out << request.help; return 0;
     case Request::Action::list_plugins: out << list_plugins(*request.registry); return 0;
+    case Request::Action::list_presets: out << list_presets(); return 0;
     case Request::Action::describe: out << describe_plugin(*request.registry, request.describe); return 0;
     case Request::Action::print_config: out << request.config; return 0;
     case Request::Action::dump_irace_params: dump_irace_params(request, out); return 0;

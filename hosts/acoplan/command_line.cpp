@@ -9,6 +9,7 @@
 #include "aco/install_layout.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/planning.hpp"
+#include "aco/presets.hpp"
 #include "aco/program_options_error.hpp"
 
 namespace acoplan {
@@ -114,8 +115,9 @@ po::variables_map parse(const po::options_description& options, int argc, const 
     for (const auto& option : parsed.options)
       if (option.position_key >= 0) throw aco::Error("unexpected argument '" + option.value.front() + "' (options start with --)");
   po::store(parsed, vm);
-  if (vm.count("config")) {
-    const auto file = vm["config"].as<std::string>();
+  if (vm.count("config") && vm.count("preset")) throw aco::Error("--config and --preset: give one of them");
+  if (vm.count("config") || vm.count("preset")) {
+    const auto file = vm.count("preset") ? aco::preset_file(vm["preset"].as<std::string>()).string() : vm["config"].as<std::string>();
     const po::parsed_options settings = config_options(options, file, lenient);
     try {
       po::store(settings, vm);
@@ -197,6 +199,8 @@ Request parse_command_line(int argc, const char* const* argv) {
        "with --dump-irace-params: the slots whose plugin irace chooses, comma separated (default: all but local, which acoplan does not use)")
       ("svg", po::value<std::string>()->value_name("FILE"), "write a picture of the map, the path and the convergence curve")
       ("config", po::value<std::string>()->value_name("FILE"), "read options from an INI file (command line wins)")
+      ("preset", po::value<std::string>()->value_name("NAME"), "read options from the named preset's INI file (see --list-presets; command line wins)")
+      ("list-presets", po::bool_switch(), "list the named presets and exit")
       ("print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")
       ("list-plugins", po::bool_switch(), "list the plugins found and exit")
       ("describe", po::value<std::string>()->value_name("NAME"), "print a plugin's parameter table and exit")
@@ -228,6 +232,10 @@ Request parse_command_line(int argc, const char* const* argv) {
     r.registry = std::make_unique<aco::PluginRegistry>(aco::PluginRegistry::default_search_dirs(dirs));
     if (first["list-plugins"].as<bool>()) {
       r.action = Request::Action::list_plugins;
+      return r;
+    }
+    if (first["list-presets"].as<bool>()) {
+      r.action = Request::Action::list_presets;
       return r;
     }
     if (first.count("dump-irace-params")) {
@@ -336,6 +344,13 @@ std::string list_plugins(aco::PluginRegistry& registry) {
   out << "searched:";
   for (const auto& dir : registry.search_dirs()) out << " " << dir.string();
   out << "\n";
+  return out.str();
+}
+
+std::string list_presets() {
+  std::ostringstream out;
+  out << "presets (--preset NAME; files in " << aco::preset_folder().string() << "):\n";
+  for (const auto& preset : aco::list_presets()) out << "  " << preset.name << "  " << preset.summary << "\n";
   return out.str();
 }
 

@@ -16,7 +16,7 @@
 namespace acoplan {
 
 struct Request {
-  enum class Action { plan, help, list_plugins, describe, print_config, dump_irace_params };
+  enum class Action { plan, help, list_plugins, list_presets, describe, print_config, dump_irace_params };
   Action action = Action::plan;
   std::string describe;  // plugin to describe
   std::string help;      // full --help text
@@ -39,5 +39,7 @@ Request parse_command_line(int argc, const char* const* argv);
 
 std::string describe_plugin(aco::PluginRegistry& registry, const std::string& name);
 std::string list_plugins(aco::PluginRegistry& registry);
+// The named presets, each with its first comment line.
+std::string list_presets();
 
 }  // namespace acoplan

@@ -6,6 +6,7 @@
 #include "aco/error.hpp"
 #include "aco/parameters.hpp"
 #include "aco/pipeline.hpp"
+#include "aco/presets.hpp"
 
 namespace aco::yaml {
 
@@ -88,15 +89,20 @@ aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::No
   aco::KeyedValues own;
   for (const auto& entry : node) {
     const std::string key = entry.first.Scalar();
-    if (key != "config" && std::find(skip.begin(), skip.end(), key) == skip.end()) read_key(file, entry.first, entry.second, own);
+    if (key != "config" && key != "preset" && std::find(skip.begin(), skip.end(), key) == skip.end())
+      read_key(file, entry.first, entry.second, own);
   }
-  if (!node["config"]) return own;
-  const std::filesystem::path ini = (file.parent_path() / scalar(file, node["config"], "config")).lexically_normal();
+  if (!node["config"] && !node["preset"]) return own;
+  if (node["config"] && node["preset"]) fail(file, node["preset"], "'config' and 'preset': give one of them");
+  const YAML::Node named = node["config"] ? node["config"] : node["preset"];
+  std::filesystem::path ini;
   aco::KeyedValues preset;
   try {
+    ini = node["config"] ? (file.parent_path() / scalar(file, named, "config")).lexically_normal()
+                         : preset_file(scalar(file, named, "preset"));
     preset.keys = read_config_file(ini.string());
   } catch (const Error& e) {
-    fail(file, node["config"], e.what());
+    fail(file, named, e.what());
   }
   for (const auto& [key, value] : preset.keys) preset.origins[key] = ini.string();
   return overlay(preset, own);

@@ -33,6 +33,7 @@ problems:
     start: [0, 0]
     goal: [19, 19]
 settings:
+  preset: ant-system
   ants: 10
   iterations: 15
   corner-cutting: true

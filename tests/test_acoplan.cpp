@@ -73,7 +73,8 @@ TEST_CASE("acoplan --json reports every documented field", "[acoplan]") {
   CHECK(j["convergence_walks"].size() == 100);
   CHECK(j["convergence_walks"].back() == 100 * j["config"]["ants"].get<int>());
   // The configuration: every run key with its resolved value, as --print-config and acobench name them.
-  CHECK(j["config"]["update"] == "ant_system");
+  // Naming no pipeline runs the recommended one (data/presets/robust.ini).
+  CHECK(j["config"]["update"] == "acs");
   CHECK(j["config"]["update.rho"] == 0.3);
   CHECK(j["config"]["corner-cutting"] == true);
   CHECK(j["config"]["seed"] == 3);
@@ -225,13 +226,13 @@ TEST_CASE("an unreachable goal is reported as unsolved with its own exit status"
 TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range values", "[acoplan][bad-input]") {
   expect_error({"--update", "nope"}, "unknown update plugin 'nope'");
   expect_error({"--update.rhoo", "0.5"}, "unknown option '--update.rhoo'; did you mean '--update.rho'?");
-  expect_error({"--update.p_best", "0.5"}, "the update plugin 'ant_system' has parameters: rho q");
+  expect_error({"--update.p_best", "0.5"}, "the update plugin 'acs' has parameters: rho xi q tau0");
   expect_error({"--antz", "5"}, "did you mean '--ants'?");
   expect_error({"--ants", "0"}, "--ants: 0 is outside the range [1, 1000000]");
   expect_error({"--ants", "-3"}, "--ants: -3 is outside the range");
   expect_error({"--ants", "many"}, "--ants: 'many' is not a whole number");
-  expect_error({"--update.rho", "1.5"}, "--update.rho: 1.5 is outside the range [0, 1]");
-  expect_error({"--update.rho", "-0.1"}, "--update.rho: -0.1 is outside the range [0, 1]");
+  expect_error({"--update.rho", "1.5"}, "--update.rho: 1.5 is outside the range (0, 1]");
+  expect_error({"--update.rho", "-0.1"}, "--update.rho: -0.1 is outside the range (0, 1]");
   expect_error({"--neighbourhood", "6"}, "--neighbourhood: '6' is not one of 4,8,16");
   expect_error({"stray"}, "stray");
   const auto config = test::temp_file("bad.ini", "ants = 10\n[update]\nrhoo = 0.2\n");
@@ -288,7 +289,7 @@ TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acopl
   CHECK(s["length"]["mean"].get<double>() == Approx(mean));
   CHECK(s["length"]["sd"].get<double>() == Approx(std::sqrt(sum_sq / 5)).margin(1e-12));
   CHECK(s["turns"].contains("max"));
-  CHECK(j["config"]["update"] == "ant_system");
+  CHECK(j["config"]["update"] == "acs");
   // Run 3 of the repetition is the same as a single run with its seed.
   json single = run_json({"--seed", "13", "--iterations", "30", "--corner-cutting"});
   CHECK(single["grid_path"] == j["runs"][3]["grid_path"]);

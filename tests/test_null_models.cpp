@@ -245,7 +245,7 @@ problems:
     start: [0, 0]
     goal: [19, 19]
   - {scen: {ARENA}, count: 2}
-settings: {ants: 10, iterations: 10, beta: 3}
+settings: {preset: ant-system, ants: 10, iterations: 10, beta: 3}
 baseline: {name: AS}
 configurations:
   - {name: ACS, update: acs, q0: 0.7}

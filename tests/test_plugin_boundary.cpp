@@ -129,7 +129,7 @@ TEST_CASE("a plugin named like a bundled one shadows it, with a warning, and lis
   const auto described = test::acoplan({"--plugin-dir", dir, "--describe", "update/ant_system"});
   CHECK_THAT(described.out, Contains("file: " + mine.string() + "\n      shadows " + bundled.string()));
 
-  const auto run = test::acoplan(plan_on_map1({"--plugin-dir", dir, "--json"}));
+  const auto run = test::acoplan(plan_on_map1({"--plugin-dir", dir, "--update", "ant_system", "--json"}));
   REQUIRE(run.exit_code == 0);
   CHECK_THAT(run.err, Contains("warning: plugin update/ant_system from " + mine.string() + " shadows " + bundled.string()));
   CHECK(nlohmann::json::parse(run.out)["plugins"]["update"]["file"] == mine.string());

@@ -74,3 +74,71 @@ TEST_CASE("each paper's preset is the pipeline its experiment ran before presets
                          "baseline: {preset: robust, config: x.ini}\n"),
                     Contains("'config' and 'preset': give one of them"));
 }
+
+TEST_CASE("a command naming no pipeline runs the recommended preset for its map's kind", "[presets][acoplan]") {
+  const std::string terrain = (test::data_dir() / "terrain" / "epf20.asc.scen").string();
+  // acoplan: robust on 2D maps (the bundled demo map, a Moving AI scenario), terrain on height maps.
+  CHECK(pipeline_of({"--print-config"}) == pipeline_of({"--preset", "robust", "--print-config"}));
+  const std::string room = (test::data_dir() / "maps" / "generated" / "room32-8-s1.map.scen").string();
+  CHECK(pipeline_of({"--scen", room, "--print-config"}) == pipeline_of({"--scen", room, "--preset", "robust", "--print-config"}));
+  CHECK(pipeline_of({"--scen", terrain, "--print-config"}) == pipeline_of({"--scen", terrain, "--preset", "terrain", "--print-config"}));
+  CHECK(pipeline_of({"--scen", terrain, "--print-config"}) != pipeline_of({"--scen", terrain, "--preset", "robust", "--print-config"}));
+  // Another plugin in a slot drops the preset's parameters of that slot instead of refusing them.
+  CHECK_THAT(pipeline_of({"--heuristic", "distance", "--print-config"}), Contains("heuristic = distance") && !Contains("floor"));
+}
+
+TEST_CASE("acobench configurations naming no pipeline run the recommended preset", "[presets][acobench]") {
+  const std::string problems = "name: p\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n";
+  const auto e = load(problems + "baseline: {name: bare}\nconfigurations:\n  - {name: mmas, update: max_min}\n"
+                                 "  - {name: classic, preset: ant-system}\n");
+  const auto robust = load(problems + "baseline: {name: robust, preset: robust}\n");
+  CHECK(aco::to_json(*e.configurations[0].run) == aco::to_json(*robust.configurations[0].run));
+  CHECK(e.configurations[1].run->colony.fill_dead_ends);  // robust's, under its own update
+  CHECK(e.configurations[1].run->pipeline.at("update").plugin == "max_min");
+  // A configuration naming a preset gets that preset alone, not the recommended one beneath it.
+  CHECK_FALSE(e.configurations[2].run->colony.fill_dead_ends);
+  CHECK(e.configurations[2].run->pipeline.at("heuristic").plugin == "distance");
+  // Height maps: terrain's; a mix of kinds must name one.
+  const std::string terrain = "  - {scen: " + (test::data_dir() / "terrain" / "epf20.asc.scen").string() + ", count: 1}\n";
+  const auto t = load("name: t\nproblems:\n" + terrain + "baseline: {name: bare}\n");
+  CHECK(t.configurations[0].run->colony.bidirectional);
+  CHECK_THROWS_WITH(load(problems + terrain + "baseline: {name: bare}\n"), Contains("the problems mix 2D maps and height maps"));
+  CHECK_NOTHROW(load(problems + terrain + "baseline: {name: named, preset: robust}\n"));
+}
+
+TEST_CASE("acosim runs the recommended pipeline under a scenario naming none and takes run keys on its command line",
+          "[presets][acosim]") {
+  const auto scenario = test::temp_file("bare.yaml", "run:\n  map: " + map1() + "\n  start: [0, 0]\n  goal: [19, 19]\n  local: dwa\n");
+  const auto json_of = [&](const std::vector<std::string>& args) {
+    std::vector<std::string> argv{ACO_TEST_ACOSIM, scenario.string(), "--json"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const auto r = test::run(argv);
+    INFO(r.err);
+    REQUIRE(r.exit_code != 1);  // 0 reached, 3 not: the configuration is what is looked at
+    return nlohmann::json::parse(r.out)["config"];
+  };
+  const auto bare = json_of({});
+  CHECK(bare["update"] == "acs");
+  CHECK(bare["fill-dead-ends"] == true);
+  CHECK(bare["local.follow"] == 0.5);  // the DWA's defaults: the measured best
+  CHECK(bare["local.predict"] == true);
+  const auto keyed = json_of({"--ants", "20", "--local.follow=0", "--corner-cutting", "--update", "max_min"});
+  CHECK(keyed["ants"] == 20);
+  CHECK(keyed["local.follow"] == 0.0);
+  CHECK(keyed["corner-cutting"] == true);
+  CHECK(keyed["update"] == "max_min");
+  const auto paper = json_of({"--preset", "paper003"});
+  CHECK(paper["update"] == "wolf_pack");
+  CHECK(paper["local.follow"] == 0.0);
+  CHECK(paper["local.predict"] == false);
+  const auto error = [&](const std::vector<std::string>& args) {
+    std::vector<std::string> argv{ACO_TEST_ACOSIM, scenario.string()};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const auto r = test::run(argv);
+    CHECK(r.exit_code == 1);
+    return r.err;
+  };
+  CHECK_THAT(error({"--local.folow", "1"}), Contains("did you mean 'local.follow'"));
+  CHECK_THAT(error({"--start", "1,1"}), Contains("--start: the scenario file sets it"));
+  CHECK_THAT(error({"--preset", "nope"}), Contains("unknown preset 'nope'"));
+}

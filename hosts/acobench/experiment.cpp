@@ -14,6 +14,7 @@
 #include "aco/map_io.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/pipeline.hpp"
+#include "aco/presets.hpp"
 #include "aco/rng.hpp"
 #include "aco/planning.hpp"
 #include "aco/worker_process.hpp"
@@ -33,6 +34,24 @@ Configuration overlay(const Configuration& base, const Configuration& changes, c
   Configuration c;
   static_cast<aco::KeyedValues&>(c) = aco::overlay(base, changes);
   c.name = name;
+  return c;
+}
+
+bool names_pipeline(const YAML::Node& node) { return node && node.IsMap() && (node["config"] || node["preset"]); }
+
+// The recommended preset for the experiment's maps, for configurations that name none: robust on
+// 2D maps, terrain on height maps. Simulation problems keep their scenario's own pipeline.
+Configuration default_pipeline(const std::filesystem::path& file, const YAML::Node& doc, const std::vector<Problem>& problems) {
+  std::set<std::string> kinds;
+  for (const Problem& p : problems) {
+    if (p.simulation) return Configuration();
+    kinds.insert(aco::default_preset(p.map));
+  }
+  if (kinds.size() > 1)
+    fail(file, doc["problems"], "the problems mix 2D maps and height maps, whose recommended pipelines differ: name one "
+                                "(settings: {preset: robust}, or terrain, or config: FILE)");
+  Configuration c;
+  static_cast<aco::KeyedValues&>(c) = aco::preset_keys(kinds.empty() ? "robust" : *kinds.begin());
   return c;
 }
 
@@ -240,13 +259,19 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
 
   const Configuration common = doc["settings"] ? read_keys(file, doc["settings"]) : Configuration();
   const Configuration own = doc["baseline"] ? read_keys(file, doc["baseline"]) : Configuration();
-  e.baseline = overlay(common, own, doc["baseline"] && doc["baseline"]["name"] ? scalar(file, doc["baseline"]["name"], "name") : "baseline");
+  const std::string baseline_name = doc["baseline"] && doc["baseline"]["name"] ? scalar(file, doc["baseline"]["name"], "name") : "baseline";
+  // A configuration that names no pipeline (config or preset, in itself, the baseline or the
+  // settings) runs the recommended one, as acoplan does.
+  const Configuration named_baseline = overlay(common, own, baseline_name);
+  const bool base_names_one = names_pipeline(doc["settings"]) || names_pipeline(doc["baseline"]);
+  e.baseline = base_names_one ? named_baseline : overlay(default_pipeline(file, doc, e.problems), named_baseline, baseline_name);
   e.configurations.push_back(e.baseline);
   if (doc["configurations"]) {
     if (!doc["configurations"].IsSequence()) fail(file, doc["configurations"], "'configurations' must be a list");
     for (const auto& node : doc["configurations"]) {
       if (!node.IsMap() || !node["name"]) fail(file, node, "every configuration needs a 'name'");
-      e.configurations.push_back(overlay(e.baseline, read_keys(file, node), scalar(file, node["name"], "name")));
+      const Configuration& base = names_pipeline(node) ? named_baseline : e.baseline;
+      e.configurations.push_back(overlay(base, read_keys(file, node), scalar(file, node["name"], "name")));
     }
   }
   if (doc["factorial"])

@@ -92,9 +92,25 @@ std::filesystem::path bundled_map() {
 
 // The settings of a --config file as Boost's parse_config_file() gives them, but read by
 // aco::read_config_settings(), whose errors name the file and the line.
-po::parsed_options config_options(const po::options_description& options, const std::string& file, bool lenient) {
+// A slot the command line sets to another plugin than the file's drops the file's parameters of
+// that slot (as in experiment files): `--preset robust --heuristic distance` is not refused for
+// robust's heuristic.floor.
+po::parsed_options config_options(const po::options_description& options, const std::string& file, bool lenient,
+                                  const po::variables_map& command_line) {
   po::parsed_options parsed(&options);
-  for (const auto& setting : aco::read_config_settings(file)) {
+  const auto settings = aco::read_config_settings(file);
+  const auto replaced = [&](const std::string& key) {
+    const auto dot = key.find('.');
+    if (dot == std::string::npos) return false;
+    const std::string slot = key.substr(0, dot);
+    if (std::find(aco::kSlots.begin(), aco::kSlots.end(), slot) == aco::kSlots.end() || !command_line.count(slot)) return false;
+    std::string in_file = aco::default_plugin(slot);
+    for (const auto& s : settings)
+      if (s.key == slot) in_file = s.value;
+    return command_line[slot].as<std::string>() != in_file;
+  };
+  for (const auto& setting : settings) {
+    if (replaced(setting.key)) continue;
     po::option option(setting.key, {setting.value});
     option.original_tokens = {setting.key, setting.value};
     const auto* known = options.find_nothrow(setting.key, false);
@@ -116,9 +132,14 @@ po::variables_map parse(const po::options_description& options, int argc, const 
       if (option.position_key >= 0) throw aco::Error("unexpected argument '" + option.value.front() + "' (options start with --)");
   po::store(parsed, vm);
   if (vm.count("config") && vm.count("preset")) throw aco::Error("--config and --preset: give one of them");
-  if (vm.count("config") || vm.count("preset")) {
-    const auto file = vm.count("preset") ? aco::preset_file(vm["preset"].as<std::string>()).string() : vm["config"].as<std::string>();
-    const po::parsed_options settings = config_options(options, file, lenient);
+  {
+    // Neither: the recommended pipeline for the map's kind, as if named.
+    std::string file;
+    if (vm.count("config")) file = vm["config"].as<std::string>();
+    else if (vm.count("preset")) file = aco::preset_file(vm["preset"].as<std::string>()).string();
+    else file = aco::preset_file(aco::default_preset(vm.count("map") ? vm["map"].as<std::string>()
+                                                      : vm.count("scen") ? vm["scen"].as<std::string>() : "")).string();
+    const po::parsed_options settings = config_options(options, file, lenient, vm);
     try {
       po::store(settings, vm);
     } catch (po::error& e) {
@@ -199,7 +220,7 @@ Request parse_command_line(int argc, const char* const* argv) {
        "with --dump-irace-params: the slots whose plugin irace chooses, comma separated (default: all but local, which acoplan does not use)")
       ("svg", po::value<std::string>()->value_name("FILE"), "write a picture of the map, the path and the convergence curve")
       ("config", po::value<std::string>()->value_name("FILE"), "read options from an INI file (command line wins)")
-      ("preset", po::value<std::string>()->value_name("NAME"), "read options from the named preset's INI file (see --list-presets; command line wins)")
+      ("preset", po::value<std::string>()->value_name("NAME"), "read options from the named preset's INI file (see --list-presets; command line wins); default: robust on 2D maps, terrain on height maps, unless --config is given")
       ("list-presets", po::bool_switch(), "list the named presets and exit")
       ("print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")
       ("list-plugins", po::bool_switch(), "list the plugins found and exit")
@@ -306,6 +327,13 @@ Request parse_command_line(int argc, const char* const* argv) {
     r.host = aco::resolve(kHostParameters, host, "--");
     if (auto v = text(vm, "svg")) r.svg = *v;
     if (auto v = text(vm, "max-memory")) r.max_memory = aco::parse_memory_size(*v);
+    if (vm.count("preset")) r.pipeline_source = vm["preset"].as<std::string>();
+    else if (vm.count("config")) r.pipeline_source = "none (--config " + vm["config"].as<std::string>() + ")";
+    else {
+      const std::string preset = aco::default_preset(keys.count("map") ? keys["map"] : keys.count("scen") ? keys["scen"] : "");
+      r.pipeline_source = preset + " (the default for " + (preset == "terrain" ? "height" : "2D") +
+                          " maps; --preset NAME for another, --list-presets for the papers')";
+    }
     r.json = vm["json"].as<bool>();
     r.irace = vm["irace"].as<bool>();
     if (vm["print-config"].as<bool>()) {

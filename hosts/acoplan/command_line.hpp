@@ -20,7 +20,8 @@ struct Request {
   Action action = Action::plan;
   std::string describe;  // plugin to describe
   std::string help;      // full --help text
-  std::string config;    // the resolved configuration as a config file (--print-config)
+  std::string config;
+  std::string pipeline_source;  // "preset robust (the default for 2D maps ...)", "preset paper001", "config FILE"    // the resolved configuration as a config file (--print-config)
   std::string irace_params_file;         // --dump-irace-params: where to write the table ("-" = stdout)
   std::vector<std::string> irace_slots;  // the slots whose plugins irace chooses (--irace-slots)
 

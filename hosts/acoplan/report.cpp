@@ -40,6 +40,7 @@ std::string pipeline_lines(const Request& request) {
   }
   out << "colony:   " << run.colony.ants << " ants x " << run.colony.iterations << " iterations, alpha "
       << aco::to_string(run.colony.alpha) << ", beta " << aco::to_string(run.colony.beta) << ", seed " << run.colony.seed << "\n";
+  if (!request.pipeline_source.empty()) out << "preset:   " << request.pipeline_source << "\n";
   out << "pipeline:";
   for (const char* slot : aco::kSlots) out << " " << slot << "=" << run.pipeline.at(slot).plugin;
   out << "\n";

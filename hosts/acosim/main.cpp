@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "aco/presets.hpp"
 #include "aco/crash_report.hpp"
 #include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
@@ -32,6 +33,19 @@ void report_error(const std::string& message) {
   std::cerr << "acosim: error: " << message << "\n";
 }
 
+// A run key given as an option: "--key value", "--key=value", or "--flag" alone for true.
+void add_run_key(const std::string& token, const char* next, aco::KeyedValues& keys) {
+  std::string key = token.substr(2), value = next ? next : "true";
+  if (const auto equals = key.find('='); equals != std::string::npos) {
+    value = key.substr(equals + 1);
+    key.resize(equals);
+  }
+  for (const char* scenario_key : {"map", "scen", "scen-index", "start", "goal", "seed"})
+    if (key == scenario_key) throw aco::Error("--" + key + ": the scenario file sets it (acosim takes run keys over the scenario's)");
+  keys.keys[key] = value;
+  keys.origins[key] = "--" + key;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -55,6 +69,8 @@ int main(int argc, char** argv) {
         ("variation-timeout", po::value<std::string>()->value_name("SECONDS"), "with --batch: a variation running longer is stopped and counted as timed out")
         ("variation-memory", po::value<std::string>()->value_name("SIZE"), "with --batch: a variation growing its worker's memory by more is stopped and counted as out of memory")
         ("in-process", "with --batch: run the variations on this process's threads, not in worker processes (for a debugger; a crash ends the batch, no limits)")
+        ("preset", po::value<std::string>()->value_name("NAME"), "run the named preset's pipeline (acoplan --list-presets) over the scenario's")
+        ("config", po::value<std::string>()->value_name("FILE"), "run a config file's pipeline (as acoplan --config) over the scenario's")
         ("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"), "also search DIR for plugins")
         ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
     po::options_description hidden;
@@ -65,10 +81,25 @@ int main(int argc, char** argv) {
     po::positional_options_description positional;
     positional.add("scenario", 1);
     po::variables_map vm;
-    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+    // Any other --key [value] is a run key, as on acoplan's command line, over the scenario's.
+    std::vector<std::string> own_options;
+    aco::KeyedValues command_line_keys;
+    for (int i = 1; i < argc; ++i) {
+      const std::string token = argv[i];
+      const std::string name = token.rfind("--", 0) == 0 ? token.substr(2, token.find('=') - 2) : "";
+      if (name.empty() || all.find_nothrow(name, true)) {  // with Boost's abbreviations (--thr)
+        own_options.push_back(token);
+        continue;
+      }
+      const bool valued = token.find('=') == std::string::npos && i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0;
+      add_run_key(token, valued ? argv[++i] : nullptr, command_line_keys);
+    }
+    po::store(po::command_line_parser(own_options).options(all).positional(positional).run(), vm);
     po::notify(vm);
     if (vm.count("help")) {
-      std::cout << options << "\n";
+      std::cout << options
+                << "\nAny run key of acoplan (--ants 20, --local.follow 0.5, --update max_min, --update.rho 0.2) goes over\n"
+                   "the scenario's run keys (map, start and goal are the scenario's).\n";
       return 0;
     }
     if (scenario_file.empty()) throw aco::Error("no scenario file (acosim SCENARIO.yaml; --help for options)");
@@ -79,11 +110,17 @@ int main(int argc, char** argv) {
     std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
     aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));
     acosim::Scenario scenario = acosim::load_scenario(scenario_file, registry);
-    if (!local.empty()) {
-      aco::KeyedValues change;
-      change.keys["local"] = local;
-      change.origins["local"] = "--local";
-      scenario = acosim::with_run_keys(scenario, change, registry);
+    {
+      aco::KeyedValues changes;
+      if (vm.count("preset") && vm.count("config")) throw aco::Error("--config and --preset: give one of them");
+      if (vm.count("preset")) changes = aco::preset_keys(vm["preset"].as<std::string>());
+      if (vm.count("config")) changes = aco::config_file_keys(vm["config"].as<std::string>());
+      changes = aco::overlay(changes, command_line_keys);
+      if (!local.empty()) {
+        changes.keys["local"] = local;
+        changes.origins["local"] = "--local";
+      }
+      if (!changes.keys.empty()) scenario = acosim::with_run_keys(scenario, changes, registry);
     }
     if (vm.count("batch")) {
       const int n = vm["batch"].as<int>(), threads = vm["threads"].as<int>();

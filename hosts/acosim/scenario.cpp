@@ -2,6 +2,7 @@
 // map does not show.
 #include <yaml-cpp/yaml.h>
 
+#include "aco/presets.hpp"
 #include "aco/error.hpp"
 #include "aco/input_file.hpp"
 #include "aco/settings_table.hpp"
@@ -147,6 +148,8 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
 
   const YAML::Node run = doc["run"];
   aco::KeyedValues keys = aco::yaml::read_run_keys(file, run, {"start", "goal"});
+  // Naming no pipeline runs the recommended one, as acoplan does.
+  if (!run["config"] && !run["preset"]) keys = aco::overlay(aco::preset_keys("robust"), keys);
   for (const char* end : {"start", "goal"}) {
     if (!run[end]) fail(file, run, "'run' needs '" + std::string(end) + "' [x, y]");
     const aco::Cell c = aco::yaml::cell(file, run[end], end);

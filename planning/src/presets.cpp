@@ -6,6 +6,7 @@
 #include "aco/error.hpp"
 #include "aco/install_layout.hpp"
 #include "aco/parameters.hpp"
+#include "aco/run_spec.hpp"
 
 namespace aco {
 
@@ -29,6 +30,13 @@ std::vector<PresetInfo> list_presets() {
   return presets;
 }
 
+std::string default_preset(const std::filesystem::path& map_or_scenario) {
+  std::filesystem::path map = map_or_scenario;
+  if (map.extension() == ".scen") map.replace_extension();
+  const std::string extension = map.extension().string();
+  return extension == ".asc" || extension == ".pgm" ? "terrain" : "robust";
+}
+
 std::filesystem::path preset_file(const std::string& name) {
   std::vector<std::string> names;
   for (const auto& preset : list_presets()) {
@@ -41,5 +49,18 @@ std::filesystem::path preset_file(const std::string& name) {
   for (const auto& n : names) message += " " + n;
   throw Error(message + "; in " + preset_folder().string() + ")");
 }
+
+}  // namespace aco
+
+namespace aco {
+
+KeyedValues config_file_keys(const std::filesystem::path& file) {
+  KeyedValues values;
+  values.keys = read_config_file(file.string());
+  for (const auto& [key, value] : values.keys) values.origins[key] = file.string();
+  return values;
+}
+
+KeyedValues preset_keys(const std::string& name) { return config_file_keys(preset_file(name)); }
 
 }  // namespace aco

@@ -40,7 +40,7 @@ constexpr const char* kWorkerVariable = "ACO_WORKER_PARENT";
 
 // Worker -> parent frames: a kind byte, a 4-byte length, the payload. Parent -> worker: the
 // length and the payload.
-constexpr char kReply = 'R', kNote = 'N', kError = 'E';
+constexpr char kReady = 'H', kReply = 'R', kNote = 'N', kError = 'E';
 
 std::string length_prefix(std::size_t n) {
   std::string bytes(4, '\0');
@@ -190,6 +190,7 @@ void serve_worker_requests(const std::function<std::string(const std::string&)>&
   action.sa_handler = on_time_up;
   sigemptyset(&action.sa_mask);
   ::sigaction(SIGUSR1, &action, nullptr);
+  send_frame(kReady, "");
   for (;;) {
     char prefix[4];
     if (!read_all(kWorkerSocket, prefix, 4)) return;  // the parent closed the socket: done
@@ -260,25 +261,36 @@ bool WorkerProcess::start() {
   socket_ = ends[0];
   received_.clear();
   note_.clear();
+  ready_ = false;
   return true;
 }
 
 WorkerReply WorkerProcess::request(const std::string& bytes, const WorkerLimits& limits) {
   start();
+  // A fresh worker first loads what it serves (maps, plugins): that is not the request's time.
+  if (!ready_) {
+    WorkerReply started = await(kReady, {}, 0);
+    if (started.status != WorkerReply::Status::replied) return started;
+    ready_ = true;
+  }
   const std::uint64_t baseline = limits.memory_bytes ? resident_bytes(pid_) : 0;
   const std::string frame = length_prefix(bytes.size()) + bytes;
   // A worker that died before reading is seen below as the end of its socket.
   write_all(socket_, frame.data(), frame.size());
+  return await(kReply, limits, baseline);
+}
+
+WorkerReply WorkerProcess::await(char wanted, const WorkerLimits& limits, std::uint64_t baseline) {
   using clock = std::chrono::steady_clock;
   const auto began = clock::now();
   for (;;) {
-    // Whole frames first: a reply, a note of where the worker is, or its error.
+    // Whole frames first: the one awaited, a note of where the worker is, or its error.
     while (received_.size() >= 5 && received_.size() >= 5 + read_length(received_.data() + 1)) {
       const std::size_t length = read_length(received_.data() + 1);
       const char kind = received_[0];
       std::string payload = received_.substr(5, length);
       received_.erase(0, 5 + length);
-      if (kind == kReply) return {WorkerReply::Status::replied, std::move(payload), ""};
+      if (kind == wanted) return {WorkerReply::Status::replied, std::move(payload), ""};
       if (kind == kNote) note_ = std::move(payload);
       if (kind == kError) {
         end_worker(WorkerReply::Status::crashed, "");

@@ -95,16 +95,13 @@ aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::No
   if (!node["config"] && !node["preset"]) return own;
   if (node["config"] && node["preset"]) fail(file, node["preset"], "'config' and 'preset': give one of them");
   const YAML::Node named = node["config"] ? node["config"] : node["preset"];
-  std::filesystem::path ini;
   aco::KeyedValues preset;
   try {
-    ini = node["config"] ? (file.parent_path() / scalar(file, named, "config")).lexically_normal()
-                         : preset_file(scalar(file, named, "preset"));
-    preset.keys = read_config_file(ini.string());
+    preset = node["preset"] ? preset_keys(scalar(file, named, "preset"))
+                            : config_file_keys((file.parent_path() / scalar(file, named, "config")).lexically_normal());
   } catch (const Error& e) {
     fail(file, named, e.what());
   }
-  for (const auto& [key, value] : preset.keys) preset.origins[key] = ini.string();
   return overlay(preset, own);
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "aco/run_spec.hpp"
+
 namespace aco {
 
 // The folder the presets are in.
@@ -21,5 +23,15 @@ struct PresetInfo {
 };
 // Every preset, by name.
 std::vector<PresetInfo> list_presets();
+
+// A config file's keys as experiment and scenario files take them (each key's origin: the file),
+// and a named preset's.
+KeyedValues config_file_keys(const std::filesystem::path& file);
+KeyedValues preset_keys(const std::string& name);
+
+// What a command without --config or --preset runs (the recommended pipeline for the map's
+// kind): "terrain" for a height map (.asc, .pgm; a Moving AI .scen file by the map it names),
+// "robust" for any other map, or none given.
+std::string default_preset(const std::filesystem::path& map_or_scenario);
 
 }  // namespace aco

@@ -58,12 +58,15 @@ class WorkerProcess {
   WorkerReply request(const std::string& bytes, const WorkerLimits& limits);
 
  private:
+  // Waits for the worker's frame of kind `wanted` within the limits (replied: its payload).
+  WorkerReply await(char wanted, const WorkerLimits& limits, std::uint64_t baseline);
   WorkerReply end_worker(WorkerReply::Status status, const std::string& reason);
   std::vector<std::string> argv_;
   pid_t pid_ = -1;
   int socket_ = -1;
   std::string received_;  // bytes read, not yet a whole frame
   std::string note_;      // where the worker said it was (its signal handler's note)
+  bool ready_ = false;    // the worker said it has loaded what it serves
 };
 
 // How many lanes (threads, worker processes) --threads N means: N, or for 0 every CPU this

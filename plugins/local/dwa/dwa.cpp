@@ -23,9 +23,9 @@ struct Parameters {
   double lookahead = 6.0;
   double dist_cap = 1.0;
   double margin = 0.05;
-  bool predict = false;
+  bool predict = true;
   bool stop_at_goal = true;
-  double follow = 0.0;
+  double follow = 0.5;
 };
 
 const aco::SettingsTable<Parameters> kParams({
@@ -46,13 +46,14 @@ const aco::SettingsTable<Parameters> kParams({
                "(the MATLAB DWA code caps it at 2 x the obstacle radius)"),
     aco::field("margin", &Parameters::margin, "0:1e6", "the robot counts as touching an obstacle closer than this"),
     aco::field("predict", &Parameters::predict, "",
-               "roll moving obstacles forward with their sensed velocity (false: as in the paper, they stand where sensed)"),
+               "roll moving obstacles forward with their sensed velocity (false: as in the paper, they stand where sensed; preset paper003)"),
     aco::field("stop_at_goal", &Parameters::stop_at_goal, "",
                "the velocity term counts v only up to sqrt(2 a_max d_goal), the speed the robot can stop from at the goal, "
                "so it slows down and turns in instead of circling the goal (false: v, as in the paper)"),
     aco::field("follow", &Parameters::follow, "0:1e6",
                "the heading term aims at the point this far along the global path beyond the point nearest to the "
-               "rollout's end, so the robot keeps to the path (through one-cell doors); 0: at the intermediate goal, as in the paper"),
+               "rollout's end, so the robot keeps to the path (through one-cell doors); 0: at the intermediate goal, as in the paper "
+               "(preset paper003)"),
 });
 
 class Dwa final : public aco::LocalPlanner {

@@ -79,6 +79,11 @@ searched=$("$acoplan" --update no_such_rule 2>&1 >/dev/null || true)
 grep -q "searched: $prefix/lib/aco/plugins)" <<< "$searched"
 if grep -q "$build" <<< "$searched"; then echo "sdk: installed acoplan searches the build tree: $searched" >&2; exit 1; fi
 (cd "$work" && "$acoplan" --iterations 2 --json) | grep -q "\"map\":\"$prefix/share/aco/maps/classic20/map1.txt\""
+# Its named presets are the installed ones (--preset NAME, and the default a bare command runs).
+presets=$("$acoplan" --list-presets)
+grep -q "files in $prefix/share/aco/presets" <<< "$presets"
+grep -q "^  paper001  " <<< "$presets"
+(cd "$work" && "$acoplan" --preset paper001 --print-config) | grep -q "^heuristic = direction"
 
 # The scaffold refuses to write over a project, warns on a bundled plugin's name (installed and
 # in the checkout), and builds optimised when no build type is given.

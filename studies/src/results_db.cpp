@@ -1,4 +1,4 @@
-#include "results_db.hpp"
+#include "aco/studies/results_db.hpp"
 
 #include <sqlite3.h>
 #include <unistd.h>

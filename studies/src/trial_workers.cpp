@@ -1,4 +1,4 @@
-#include "trial_workers.hpp"
+#include "aco/studies/trial_workers.hpp"
 
 #include <filesystem>
 #include <mutex>

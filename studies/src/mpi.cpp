@@ -1,4 +1,4 @@
-#include "mpi.hpp"
+#include "aco/studies/mpi.hpp"
 
 #include <mpi.h>
 

@@ -1,4 +1,4 @@
-#include "trial_runner.hpp"
+#include "aco/studies/trial_runner.hpp"
 
 #include <algorithm>
 #include <chrono>

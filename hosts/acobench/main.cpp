@@ -21,6 +21,7 @@
 #include "aco/studies/experiment.hpp"
 #include "aco/studies/mpi.hpp"
 #include "aco/studies/report.hpp"
+#include "aco/studies/results_db.hpp"
 #include "aco/studies/runner.hpp"
 #include "aco/studies/shards.hpp"
 #include "aco/studies/trial_workers.hpp"

@@ -12,7 +12,7 @@
 #include "aco/planning.hpp"
 #include "aco/plugin_registry.hpp"
 #include "aco/studies/experiment.hpp"
-#include "aco/studies/results_db.hpp"
+#include "aco/studies/trial_record.hpp"
 
 namespace acobench {
 

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "acobench/results_db.hpp"
+#include "aco/studies/results_db.hpp"
 
 namespace test::acobench_helpers {
 

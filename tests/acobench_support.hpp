@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "acobench/experiment.hpp"
+#include "aco/studies/experiment.hpp"
 #include "support.hpp"
 
 namespace test::acobench_helpers {

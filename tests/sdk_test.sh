@@ -3,7 +3,8 @@
 # scaffold one out-of-tree plugin of every kind with aco-new-plugin, build them and run their
 # generated unit tests, build examples/ against the prefix and run their tests, run
 # aco-plugin-check on the example and on every installed bundled plugin, and plan with all of
-# them in installed acoplan (acosim's local slot included). The installed host must find the
+# them in installed acoplan (acosim's local slot included), and link the installed libraries
+# (aco::simulation, aco::studies) into a program of its own. The installed host must find the
 # installed plugins and data only, never the build tree's.
 #   tests/sdk_test.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
@@ -96,4 +97,45 @@ fi
 "$source/tools/new-plugin.sh" update ant_system "$work/shadow2" 2>&1 >/dev/null | grep -q "also a bundled plugin"
 cmake -S "$work/shadow" -B "$work/shadow/build" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
 grep -q "CMAKE_BUILD_TYPE:STRING=Release" "$work/shadow/build/CMakeCache.txt"
+# The libraries beside libaco, exported by find_package(aco): an out-of-tree program runs a
+# simulation (aco::simulation) and a study into its own results database (aco::studies), with the
+# installed plugins and data, as acosim and acobench would.
+mkdir -p "$work/library_user"
+cat > "$work/library_user/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.25)
+project(library_user LANGUAGES CXX)
+set(CMAKE_CXX_STANDARD 20)
+find_package(aco REQUIRED)
+add_executable(library_user main.cpp)
+target_link_libraries(library_user PRIVATE aco::studies aco::simulation)
+CMAKE
+cat > "$work/library_user/main.cpp" <<'CPP'
+#include <iostream>
+
+#include "aco/plugin_registry.hpp"
+#include "aco/simulation/simulation.hpp"
+#include "aco/studies/results_db.hpp"
+#include "aco/studies/runner.hpp"
+
+int main(int, char** argv) {
+  aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
+  const acosim::Scenario scenario = acosim::load_scenario(argv[1], registry);
+  std::cout << acosim::summary_json(scenario, acosim::simulate(scenario, registry), registry) << "\n";
+  acobench::RunOptions options;
+  options.database = argv[3];
+  options.threads = 2;
+  const acobench::RunSummary summary = acobench::run_experiment(acobench::load_experiment(argv[2], registry), registry, options);
+  std::cout << "ran " << summary.ran << ", stored " << acobench::ResultsDb(argv[3]).trials().size() << "\n";
+}
+CPP
+cmake -S "$work/library_user" -B "$work/library_user/build" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
+cmake --build "$work/library_user/build" -j 2 >/dev/null
+share="$prefix/share/aco"
+"$work/library_user/build/library_user" "$share/scenarios/paper003_static.yaml" "$share/experiments/paper001.yaml" \
+  "$work/library_user.db" > "$work/library_user.log"
+grep -q '"outcome":"reached"' "$work/library_user.log"
+grep -q "^ran 210, stored 210$" "$work/library_user.log"
+# The same simulation as the installed acosim's.
+[ "$(head -1 "$work/library_user.log")" = "$("$bin/acosim" "$share/scenarios/paper003_static.yaml" --json)" ]
+
 echo "sdk: ok"

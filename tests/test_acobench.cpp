@@ -14,9 +14,9 @@
 #include <sstream>
 #include <thread>
 
-#include "acobench/experiment.hpp"
-#include "acobench/results_db.hpp"
-#include "acobench/runner.hpp"
+#include "aco/studies/experiment.hpp"
+#include "aco/studies/results_db.hpp"
+#include "aco/studies/runner.hpp"
 #include "aco/error.hpp"
 #include "acobench_support.hpp"
 #include "support.hpp"

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <thread>
 
-#include "acobench/shards.hpp"
+#include "aco/studies/shards.hpp"
 #include "aco/error.hpp"
 #include "acobench_support.hpp"
 

@@ -5,8 +5,8 @@
 #include <csignal>
 #include <fstream>
 
-#include "acosim/batch.hpp"
-#include "acosim/simulation.hpp"
+#include "aco/simulation/batch.hpp"
+#include "aco/simulation/simulation.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/error.hpp"
 #include "support.hpp"

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "acobench/results_db.hpp"
+#include "aco/studies/results_db.hpp"
 #include "aco/error.hpp"
 #include "aco/plugin_registry.hpp"
 #include "support.hpp"

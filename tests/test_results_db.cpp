@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-#include "acobench/results_db.hpp"
+#include "aco/studies/results_db.hpp"
 #include "aco/error.hpp"
 #include "support.hpp"
 

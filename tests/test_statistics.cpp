@@ -7,8 +7,8 @@
 #include <numeric>
 
 #include "aco/error.hpp"
-#include "acobench/plots.hpp"
-#include "acobench/statistics.hpp"
+#include "aco/studies/plots.hpp"
+#include "aco/studies/statistics.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <set>
 
-#include "acobench/results_db.hpp"
+#include "aco/studies/results_db.hpp"
 #include "aco/error.hpp"
 #include "acobench_support.hpp"
 

@@ -18,12 +18,13 @@
 #include "aco/plugin_guard.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/program_options_error.hpp"
-#include "experiment.hpp"
-#include "mpi.hpp"
-#include "report.hpp"
-#include "runner.hpp"
-#include "shards.hpp"
-#include "trial_workers.hpp"
+#include "aco/studies/experiment.hpp"
+#include "aco/studies/mpi.hpp"
+#include "aco/studies/report.hpp"
+#include "aco/studies/results_db.hpp"
+#include "aco/studies/runner.hpp"
+#include "aco/studies/shards.hpp"
+#include "aco/studies/trial_workers.hpp"
 
 namespace po = boost::program_options;
 

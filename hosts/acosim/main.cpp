@@ -12,8 +12,8 @@
 #include "aco/program_options_error.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/worker_process.hpp"
-#include "batch.hpp"
-#include "simulation.hpp"
+#include "aco/simulation/batch.hpp"
+#include "aco/simulation/simulation.hpp"
 
 namespace po = boost::program_options;
 

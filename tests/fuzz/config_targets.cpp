@@ -1,4 +1,4 @@
-#include "acobench/experiment.hpp"
+#include "aco/studies/experiment.hpp"
 #include "aco/plugin_registry.hpp"
 #include "aco/run_spec.hpp"
 #include "targets.hpp"

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "aco/plugin_registry.hpp"
-#include "experiment.hpp"
-#include "runner.hpp"
-#include "trial_workers.hpp"
+#include "aco/studies/experiment.hpp"
+#include "aco/studies/runner.hpp"
+#include "aco/studies/trial_workers.hpp"
 
 namespace acobench::mpi {
 

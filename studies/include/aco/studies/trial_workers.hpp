@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "aco/worker_process.hpp"
-#include "runner.hpp"
+#include "aco/studies/runner.hpp"
 
 namespace acobench {
 

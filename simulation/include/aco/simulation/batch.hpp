@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "aco/worker_process.hpp"
-#include "simulation.hpp"
+#include "aco/simulation/simulation.hpp"
 
 namespace acosim {
 

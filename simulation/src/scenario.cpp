@@ -7,7 +7,7 @@
 #include "aco/input_file.hpp"
 #include "aco/settings_table.hpp"
 #include "aco/yaml_keys.hpp"
-#include "simulation.hpp"
+#include "aco/simulation/simulation.hpp"
 
 namespace acosim {
 namespace {

@@ -1,4 +1,4 @@
-#include "statistics.hpp"
+#include "aco/studies/statistics.hpp"
 
 #include <algorithm>
 #include <boost/math/distributions/students_t.hpp>

@@ -1,4 +1,4 @@
-#include "simulation.hpp"
+#include "aco/simulation/simulation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 
 #include "aco/map_io.hpp"
 #include "aco/svg.hpp"
-#include "simulation.hpp"
+#include "aco/simulation/simulation.hpp"
 
 namespace acosim {
 

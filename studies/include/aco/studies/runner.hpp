@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "aco/plugin_registry.hpp"
-#include "experiment.hpp"
-#include "shards.hpp"
-#include "trial_runner.hpp"
+#include "aco/studies/experiment.hpp"
+#include "aco/studies/shards.hpp"
+#include "aco/studies/trial_runner.hpp"
 
 namespace acobench {
 

@@ -12,7 +12,7 @@
 #include "aco/planning.hpp"
 #include "aco/rng.hpp"
 #include "aco/thread_limit.hpp"
-#include "batch.hpp"
+#include "aco/simulation/batch.hpp"
 
 namespace acosim {
 namespace {

@@ -3,7 +3,7 @@
 // CBOR, which keeps every double's bits, infinities and NaN included.
 #include <nlohmann/json.hpp>
 
-#include "results_db.hpp"
+#include "aco/studies/trial_record.hpp"
 
 namespace acobench {
 

@@ -11,8 +11,8 @@
 #include "aco/graph.hpp"
 #include "aco/planning.hpp"
 #include "aco/plugin_registry.hpp"
-#include "experiment.hpp"
-#include "results_db.hpp"
+#include "aco/studies/experiment.hpp"
+#include "aco/studies/trial_record.hpp"
 
 namespace acobench {
 

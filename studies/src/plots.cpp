@@ -1,4 +1,4 @@
-#include "plots.hpp"
+#include "aco/studies/plots.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,7 +9,7 @@
 
 #include "aco/error.hpp"
 #include "aco/svg.hpp"
-#include "statistics.hpp"
+#include "aco/studies/statistics.hpp"
 
 namespace acobench {
 namespace {

@@ -1,4 +1,4 @@
-#include "runner.hpp"
+#include "aco/studies/runner.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -12,7 +12,7 @@
 #include "aco/error.hpp"
 #include "aco/parallel.hpp"
 #include "aco/thread_limit.hpp"
-#include "results_db.hpp"
+#include "aco/studies/results_db.hpp"
 
 namespace acobench {
 

@@ -1,4 +1,4 @@
-#include "mpi.hpp"
+#include "aco/studies/mpi.hpp"
 
 #include <mpi.h>
 
@@ -13,6 +13,7 @@
 
 #include "aco/error.hpp"
 #include "aco/thread_limit.hpp"
+#include "aco/studies/provenance.hpp"
 #include "trial_messages.hpp"
 
 namespace acobench::mpi {

@@ -1,4 +1,4 @@
-#include "shards.hpp"
+#include "aco/studies/shards.hpp"
 
 #include <charconv>
 #include <map>
@@ -8,7 +8,7 @@
 #include <tuple>
 
 #include "aco/error.hpp"
-#include "results_db.hpp"
+#include "aco/studies/results_db.hpp"
 
 namespace acobench {
 namespace {

@@ -1,4 +1,4 @@
-#include "report.hpp"
+#include "aco/studies/report.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,9 +14,9 @@
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
 #include "aco/svg.hpp"
-#include "plots.hpp"
-#include "results_db.hpp"
-#include "statistics.hpp"
+#include "aco/studies/plots.hpp"
+#include "aco/studies/results_db.hpp"
+#include "aco/studies/statistics.hpp"
 
 namespace acobench {
 namespace {

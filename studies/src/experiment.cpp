@@ -1,4 +1,4 @@
-#include "experiment.hpp"
+#include "aco/studies/experiment.hpp"
 
 #include <yaml-cpp/yaml.h>
 

@@ -1,4 +1,4 @@
-#include "trial_workers.hpp"
+#include "aco/studies/trial_workers.hpp"
 
 #include <filesystem>
 #include <mutex>
@@ -7,6 +7,7 @@
 
 #include "aco/error.hpp"
 #include "aco/thread_limit.hpp"
+#include "aco/studies/provenance.hpp"
 #include "trial_messages.hpp"
 
 namespace acobench {

@@ -1,4 +1,4 @@
-#include "trial_runner.hpp"
+#include "aco/studies/trial_runner.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,7 +10,7 @@
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
 #include "aco/plugin_guard.hpp"
-#include "acosim/batch.hpp"
+#include "aco/simulation/batch.hpp"
 
 namespace acobench {
 namespace {

@@ -48,49 +48,10 @@
 #include <utility>
 #include <vector>
 
+#include "aco/studies/provenance.hpp"
+#include "aco/studies/trial_record.hpp"
+
 namespace acobench {
-
-struct ProblemRecord {
-  std::string name;
-  std::string setup_json;  // the problem: map file, start, goal, neighbourhood...
-  double optimal_length;   // < 0: unknown (read back as -1)
-};
-
-struct ConfigRecord {
-  std::string name;
-  std::string settings_json;  // the full resolved settings
-};
-
-// What a simulation trial (an acosim scenario as a problem) measured beyond solved and length.
-struct SimulationRecord {
-  std::string outcome;  // reached, collision, timeout, stuck, no path
-  double time_to_goal;  // simulated seconds; NaN unless reached (stored as NULL)
-  int collisions = 0;
-  int replans = 0;
-  double clearance;     // the smallest distance between the robot and an obstacle
-  int control_steps = 0;
-};
-
-struct TrialRecord {
-  int problem = 0;  // index into the problems given to the constructor
-  int config = 0;   // id returned by add_config()
-  int repetition = 0;
-  std::uint64_t seed = 0;
-  bool solved = false;
-  double length = 0, grid_length = 0;  // only meaningful when solved (read back as 0 otherwise)
-  int turns = 0, iterations = 0, best_iteration = 0;
-  double time_s = 0;
-  std::uint64_t ant_steps = 0;
-  std::string stopped_by;
-  std::string path_json;            // "[[x,y],...]" or "[[x,y,z],...]"
-  std::vector<double> best_so_far;  // one per iteration; +infinity until solved (stored as NULL)
-  // The anytime curves (aco::SearchResult's), one value per iteration each; both empty for a trial
-  // read from rows without them (stored by an acobench of format 3 or earlier).
-  std::vector<double> elapsed_s;
-  std::vector<std::uint64_t> walks;
-  std::optional<SimulationRecord> simulation;  // simulation trials only (NULL columns otherwise)
-  std::string error;  // a trial that threw: the message (solved false, stopped_by "error"); else ""
-};
 
 class ResultsDb {
  public:
@@ -132,12 +93,5 @@ class ResultsDb {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-// This machine's name, as the experiments table records it ("" if unknown).
-std::string hostname();
-
-// Why the fingerprint `now` is not the `stored` one, for messages: for acobench's fingerprints,
-// the plugin binary or the part of the experiment that changed.
-std::string fingerprint_change(const std::string& stored, const std::string& now);
 
 }  // namespace acobench

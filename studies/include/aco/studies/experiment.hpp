@@ -15,7 +15,7 @@
 #include "aco/run_spec.hpp"
 #include "aco/map.hpp"
 #include "aco/plugin_registry.hpp"
-#include "acosim/simulation.hpp"
+#include "aco/simulation/simulation.hpp"
 
 namespace acobench {
 

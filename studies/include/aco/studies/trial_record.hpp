@@ -1,0 +1,54 @@
+#pragma once
+// What a trial of a study measured, and the problems and configurations it names: plain records,
+// which the results database stores (results_db.hpp), the trial runner makes (trial_runner.hpp),
+// and worker processes and MPI ranks send (as CBOR) without knowing of the database.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace acobench {
+
+struct ProblemRecord {
+  std::string name;
+  std::string setup_json;  // the problem: map file, start, goal, neighbourhood...
+  double optimal_length;   // < 0: unknown (read back as -1)
+};
+
+struct ConfigRecord {
+  std::string name;
+  std::string settings_json;  // the full resolved settings
+};
+
+// What a simulation trial (an acosim scenario as a problem) measured beyond solved and length.
+struct SimulationRecord {
+  std::string outcome;  // reached, collision, timeout, stuck, no path
+  double time_to_goal;  // simulated seconds; NaN unless reached (stored as NULL)
+  int collisions = 0;
+  int replans = 0;
+  double clearance;     // the smallest distance between the robot and an obstacle
+  int control_steps = 0;
+};
+
+struct TrialRecord {
+  int problem = 0;  // index into the problems given to the constructor
+  int config = 0;   // id returned by add_config()
+  int repetition = 0;
+  std::uint64_t seed = 0;
+  bool solved = false;
+  double length = 0, grid_length = 0;  // only meaningful when solved (read back as 0 otherwise)
+  int turns = 0, iterations = 0, best_iteration = 0;
+  double time_s = 0;
+  std::uint64_t ant_steps = 0;
+  std::string stopped_by;
+  std::string path_json;            // "[[x,y],...]" or "[[x,y,z],...]"
+  std::vector<double> best_so_far;  // one per iteration; +infinity until solved (stored as NULL)
+  // The anytime curves (aco::SearchResult's), one value per iteration each; both empty for a trial
+  // read from rows without them (stored by an acobench of format 3 or earlier).
+  std::vector<double> elapsed_s;
+  std::vector<std::uint64_t> walks;
+  std::optional<SimulationRecord> simulation;  // simulation trials only (NULL columns otherwise)
+  std::string error;  // a trial that threw: the message (solved false, stopped_by "error"); else ""
+};
+
+}  // namespace acobench

@@ -29,7 +29,7 @@ const std::string kHostile = kHealthy +
 
 std::vector<std::string> hostile_options(const std::filesystem::path& db) {
   return {"--db", db.string(), "--plugin-dir", ACO_TEST_HOSTILE_PLUGIN_DIR, "--plugin-dir", ACO_TEST_FAULTY_PLUGIN_DIR,
-          "--trial-timeout", "1", "--trial-memory", "256M"};
+          "--trial-timeout", "3", "--trial-memory", "128M"};
 }
 
 std::vector<std::string> with(std::vector<std::string> first, const std::vector<std::string>& then) {
@@ -51,8 +51,8 @@ std::map<std::string, int> check_failures(const std::filesystem::path& db) {
   const std::string hostile = ACO_TEST_HOSTILE_PLUGIN_DIR;
   const std::map<int, std::pair<std::string, std::string>> expected{
       {3, {"crashed", "crashed: SIGSEGV in plugin update/crashing (" + hostile + "/aco_update_crashing.so) in update() in iteration 3"}},
-      {4, {"timed out", "timed out after 1 s in plugin update/hanging (" + hostile + "/aco_update_hanging.so) in update() in iteration 3"}},
-      {5, {"out of memory", "out of memory (over 256 MiB) in plugin update/hogging (" + hostile +
+      {4, {"timed out", "timed out after 3 s in plugin update/hanging (" + hostile + "/aco_update_hanging.so) in update() in iteration 3"}},
+      {5, {"out of memory", "out of memory (over 128 MiB) in plugin update/hogging (" + hostile +
                                 "/aco_update_hogging.so) in update() in iteration 3"}},
       {6, {"error", "plugin update/throwing ("}}};
   std::map<std::string, int> kinds;

@@ -293,6 +293,9 @@ Request parse_command_line(int argc, const char* const* argv) {
     std::ostringstream help;
     help << "acoplan: plan a path with an ant colony composed of runtime plugins.\n\n"
          << "Usage: acoplan [--map FILE --start X,Y --goal X,Y | --scen FILE --scen-index N] [options]\n\n"
+         << "A command naming no pipeline (--preset, --config) runs the recommended preset over the engine defaults\n"
+         << "listed below: robust on 2D maps, terrain on height maps; --print-config shows what a command runs,\n"
+         << "--list-presets the others (each paper's pipeline: --preset paper000 ... paper004).\n\n"
          << all
          << "\nExit status: 0 solved, 1 error, 3 no path found (goal unreachable or no ant arrived; 0 with --irace).\n";
     r.help = help.str();

@@ -99,7 +99,8 @@ int main(int argc, char** argv) {
     if (vm.count("help")) {
       std::cout << options
                 << "\nAny run key of acoplan (--ants 20, --local.follow 0.5, --update max_min, --update.rho 0.2) goes over\n"
-                   "the scenario's run keys (map, start and goal are the scenario's).\n";
+                   "the scenario's run keys (map, start and goal are the scenario's). A scenario naming no pipeline\n"
+                   "(config or preset) runs the recommended one, data/presets/robust.ini.\n";
       return 0;
     }
     if (scenario_file.empty()) throw aco::Error("no scenario file (acosim SCENARIO.yaml; --help for options)");

@@ -297,18 +297,20 @@ WorkerReply WorkerProcess::await(char wanted, const WorkerLimits& limits, std::u
         throw Error(payload);
       }
     }
+    // Memory first: a worker over both limits (its parent was slow to look) is out of memory.
+    // A plugin filling memory gains at most a few hundred MiB between two looks.
     int wait_ms = -1;
+    if (limits.memory_bytes) {
+      if (resident_bytes(pid_) > baseline + limits.memory_bytes)
+        return end_worker(WorkerReply::Status::out_of_memory, "out of memory (over " + format_bytes(limits.memory_bytes) + ")");
+      wait_ms = 20;
+    }
     const double elapsed = std::chrono::duration<double>(clock::now() - began).count();
     if (limits.timeout_s > 0) {
       if (elapsed >= limits.timeout_s)
         return end_worker(WorkerReply::Status::timed_out, "timed out after " + seconds_text(limits.timeout_s) + " s");
-      wait_ms = static_cast<int>(std::ceil((limits.timeout_s - elapsed) * 1000));
-    }
-    // A plugin filling memory gains at most a few hundred MiB between two looks.
-    if (limits.memory_bytes) {
-      if (resident_bytes(pid_) > baseline + limits.memory_bytes)
-        return end_worker(WorkerReply::Status::out_of_memory, "out of memory (over " + format_bytes(limits.memory_bytes) + ")");
-      wait_ms = wait_ms < 0 ? 20 : std::min(wait_ms, 20);
+      const int left_ms = static_cast<int>(std::ceil((limits.timeout_s - elapsed) * 1000));
+      wait_ms = wait_ms < 0 ? left_ms : std::min(wait_ms, left_ms);
     }
     pollfd p{socket_, POLLIN, 0};
     const int ready = ::poll(&p, 1, wait_ms);

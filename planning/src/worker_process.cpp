@@ -42,9 +42,14 @@ constexpr const char* kWorkerVariable = "ACO_WORKER_PARENT";
 // length and the payload.
 constexpr char kReady = 'H', kReply = 'R', kNote = 'N', kError = 'E';
 
+// The 4-byte length; signal-safe (the crash note's frame is made in a signal handler).
+void put_length(std::size_t n, char* out) noexcept {
+  for (int i = 0; i < 4; ++i) out[i] = static_cast<char>((n >> (8 * i)) & 0xff);
+}
+
 std::string length_prefix(std::size_t n) {
   std::string bytes(4, '\0');
-  for (int i = 0; i < 4; ++i) bytes[i] = static_cast<char>((n >> (8 * i)) & 0xff);
+  put_length(n, bytes.data());
   return bytes;
 }
 
@@ -87,7 +92,7 @@ void write_note(const char* where, std::size_t length) noexcept {
   char frame[1024 + 5];
   if (length > sizeof frame - 5) length = sizeof frame - 5;
   frame[0] = kNote;
-  for (int i = 0; i < 4; ++i) frame[1 + i] = static_cast<char>((length >> (8 * i)) & 0xff);
+  put_length(length, frame + 1);
   std::memcpy(frame + 5, where, length);
   write_all(kWorkerSocket, frame, length + 5);
 }
@@ -285,13 +290,9 @@ WorkerReply WorkerProcess::await(char wanted, const WorkerLimits& limits, std::u
   const auto began = clock::now();
   for (;;) {
     // Whole frames first: the one awaited, a note of where the worker is, or its error.
-    while (received_.size() >= 5 && received_.size() >= 5 + read_length(received_.data() + 1)) {
-      const std::size_t length = read_length(received_.data() + 1);
-      const char kind = received_[0];
-      std::string payload = received_.substr(5, length);
-      received_.erase(0, 5 + length);
+    for (auto frame = take_frame(); frame; frame = take_frame()) {
+      auto& [kind, payload] = *frame;
       if (kind == wanted) return {WorkerReply::Status::replied, std::move(payload), ""};
-      if (kind == kNote) note_ = std::move(payload);
       if (kind == kError) {
         end_worker(WorkerReply::Status::crashed, "");
         throw Error(payload);
@@ -312,19 +313,30 @@ WorkerReply WorkerProcess::await(char wanted, const WorkerLimits& limits, std::u
       const int left_ms = static_cast<int>(std::ceil((limits.timeout_s - elapsed) * 1000));
       wait_ms = wait_ms < 0 ? left_ms : std::min(wait_ms, left_ms);
     }
-    pollfd p{socket_, POLLIN, 0};
-    const int ready = ::poll(&p, 1, wait_ms);
-    if (ready < 0 && errno != EINTR) throw Error(std::string("waiting for a worker process: ") + std::strerror(errno));
-    if (ready <= 0) continue;
-    char buffer[65536];
-    const ssize_t n = ::read(socket_, buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n > 0) {
-      received_.append(buffer, static_cast<std::size_t>(n));
-      continue;
-    }
-    return end_worker(WorkerReply::Status::crashed, "");  // the worker ended: it crashed
+    if (receive(wait_ms) == Received::closed) return end_worker(WorkerReply::Status::crashed, "");  // it crashed
   }
+}
+
+WorkerProcess::Received WorkerProcess::receive(int timeout_ms) {
+  pollfd p{socket_, POLLIN, 0};
+  const int ready = ::poll(&p, 1, timeout_ms);
+  if (ready < 0 && errno != EINTR) throw Error(std::string("waiting for a worker process: ") + std::strerror(errno));
+  if (ready <= 0) return Received::nothing;
+  char buffer[65536];
+  const ssize_t n = ::read(socket_, buffer, sizeof buffer);
+  if (n < 0 && errno == EINTR) return Received::nothing;
+  if (n <= 0) return Received::closed;
+  received_.append(buffer, static_cast<std::size_t>(n));
+  return Received::bytes;
+}
+
+std::optional<std::pair<char, std::string>> WorkerProcess::take_frame() {
+  if (received_.size() < 5 || received_.size() < 5 + read_length(received_.data() + 1)) return std::nullopt;
+  const std::size_t length = read_length(received_.data() + 1);
+  std::pair<char, std::string> frame{received_[0], received_.substr(5, length)};
+  received_.erase(0, 5 + length);
+  if (frame.first == kNote) note_ = frame.second;
+  return frame;
 }
 
 WorkerReply WorkerProcess::end_worker(WorkerReply::Status status, const std::string& reason) {
@@ -334,19 +346,10 @@ WorkerReply WorkerProcess::end_worker(WorkerReply::Status status, const std::str
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
   for (;;) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    pollfd p{socket_, POLLIN, 0};
-    if (left.count() <= 0 || ::poll(&p, 1, static_cast<int>(left.count())) <= 0) break;
-    char buffer[4096];
-    const ssize_t n = ::read(socket_, buffer, sizeof buffer);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    received_.append(buffer, static_cast<std::size_t>(n));
+    if (left.count() <= 0 || receive(static_cast<int>(left.count())) == Received::closed) break;
   }
-  while (received_.size() >= 5 && received_.size() >= 5 + read_length(received_.data() + 1)) {
-    const std::size_t length = read_length(received_.data() + 1);
-    if (received_[0] == kNote) note_ = received_.substr(5, length);
-    received_.erase(0, 5 + length);
-  }
+  while (take_frame()) {
+  }  // the note among them is kept
   ::kill(pid_, SIGKILL);  // if it is still there
   int wait_status = 0;
   ::waitpid(pid_, &wait_status, 0);

@@ -14,7 +14,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace aco {
@@ -61,6 +63,11 @@ class WorkerProcess {
   // Waits for the worker's frame of kind `wanted` within the limits (replied: its payload).
   WorkerReply await(char wanted, const WorkerLimits& limits, std::uint64_t baseline);
   WorkerReply end_worker(WorkerReply::Status status, const std::string& reason);
+  // Waits up to timeout_ms (-1: no limit) for the worker's bytes and keeps them in received_.
+  enum class Received { bytes, nothing, closed };
+  Received receive(int timeout_ms);
+  // The next whole frame received (kind, payload), if there is one; a note is kept in note_.
+  std::optional<std::pair<char, std::string>> take_frame();
   std::vector<std::string> argv_;
   pid_t pid_ = -1;
   int socket_ = -1;

@@ -58,6 +58,16 @@ void on_stop(int signal) {
   ::raise(signal);
 }
 
+// `handler` for `signal`, once (the default action comes back for the handler to raise it
+// again), on the alternate stack where one is set.
+void handle_once(int signal, void (*handler)(int)) {
+  struct sigaction action {};
+  action.sa_handler = handler;
+  action.sa_flags = SA_RESETHAND | SA_ONSTACK;
+  sigemptyset(&action.sa_mask);
+  ::sigaction(signal, &action, nullptr);
+}
+
 }  // namespace
 
 const char* signal_name(int signal) noexcept {
@@ -81,21 +91,13 @@ void on_fatal_signal(CrashWriter writer) {
   stack.ss_sp = alternate_stack;
   stack.ss_size = sizeof alternate_stack;
   ::sigaltstack(&stack, nullptr);
-  struct sigaction action {};
-  action.sa_handler = on_signal;
-  action.sa_flags = SA_RESETHAND | SA_ONSTACK;
-  sigemptyset(&action.sa_mask);
-  for (const int signal : kFatalSignals) ::sigaction(signal, &action, nullptr);
+  for (const int signal : kFatalSignals) handle_once(signal, on_signal);
 }
 
 void report_crashes(const char* program) {
   crash_program = program;
   on_fatal_signal(to_stderr);
-  struct sigaction action {};
-  action.sa_handler = on_stop;
-  action.sa_flags = SA_RESETHAND | SA_ONSTACK;
-  sigemptyset(&action.sa_mask);
-  ::sigaction(SIGUSR1, &action, nullptr);
+  handle_once(SIGUSR1, on_stop);
 }
 
 }  // namespace aco

@@ -21,7 +21,7 @@ std::vector<PresetInfo> list_presets() {
     std::ifstream in(entry.path());
     for (std::string line; std::getline(in, line);) {
       if (line.rfind('#', 0) != 0) continue;
-      info.summary = line.substr(line.find_first_not_of("# ") == std::string::npos ? line.size() : line.find_first_not_of("# "));
+      info.summary = line.substr(std::min(line.size(), line.find_first_not_of("# ")));
       break;
     }
     presets.push_back(std::move(info));
@@ -49,10 +49,6 @@ std::filesystem::path preset_file(const std::string& name) {
   for (const auto& n : names) message += " " + n;
   throw Error(message + "; in " + preset_folder().string() + ")");
 }
-
-}  // namespace aco
-
-namespace aco {
 
 KeyedValues config_file_keys(const std::filesystem::path& file) {
   KeyedValues values;

@@ -92,25 +92,24 @@ std::filesystem::path bundled_map() {
 
 // The settings of a --config file as Boost's parse_config_file() gives them, but read by
 // aco::read_config_settings(), whose errors name the file and the line.
-// A slot the command line sets to another plugin than the file's drops the file's parameters of
-// that slot (as in experiment files): `--preset robust --heuristic distance` is not refused for
-// robust's heuristic.floor.
+// The file's settings that the command line's slot choices leave, by aco::overlay's rule (as in
+// experiment files: a slot given another plugin drops the file's parameters of that slot; a slot
+// the file leaves unset counts as its default plugin): `--preset robust --heuristic distance` is
+// not refused for robust's heuristic.floor.
 po::parsed_options config_options(const po::options_description& options, const std::string& file, bool lenient,
                                   const po::variables_map& command_line) {
   po::parsed_options parsed(&options);
   const auto settings = aco::read_config_settings(file);
-  const auto replaced = [&](const std::string& key) {
-    const auto dot = key.find('.');
-    if (dot == std::string::npos) return false;
-    const std::string slot = key.substr(0, dot);
-    if (std::find(aco::kSlots.begin(), aco::kSlots.end(), slot) == aco::kSlots.end() || !command_line.count(slot)) return false;
-    std::string in_file = aco::default_plugin(slot);
-    for (const auto& s : settings)
-      if (s.key == slot) in_file = s.value;
-    return command_line[slot].as<std::string>() != in_file;
-  };
+  aco::KeyedValues in_file, chosen;
+  for (const auto& setting : settings) in_file.keys[setting.key] = setting.value;
+  for (const char* slot : aco::kSlots)
+    if (command_line.count(slot)) {
+      in_file.keys.emplace(slot, aco::default_plugin(slot));
+      chosen.keys[slot] = command_line[slot].as<std::string>();
+    }
+  const aco::Keys kept = aco::overlay(in_file, chosen).keys;
   for (const auto& setting : settings) {
-    if (replaced(setting.key)) continue;
+    if (!kept.count(setting.key)) continue;
     po::option option(setting.key, {setting.value});
     option.original_tokens = {setting.key, setting.value};
     const auto* known = options.find_nothrow(setting.key, false);
@@ -119,6 +118,11 @@ po::parsed_options config_options(const po::options_description& options, const 
     parsed.options.push_back(std::move(option));
   }
   return parsed;
+}
+
+// The preset a command naming neither --config nor --preset runs, by the kind of its map.
+std::string default_preset(const po::variables_map& vm) {
+  return aco::default_preset(vm.count("map") ? vm["map"].as<std::string>() : vm.count("scen") ? vm["scen"].as<std::string>() : "");
 }
 
 // Command line first, then the --config file: po keeps the first value stored for a key.
@@ -137,8 +141,7 @@ po::variables_map parse(const po::options_description& options, int argc, const 
     std::string file;
     if (vm.count("config")) file = vm["config"].as<std::string>();
     else if (vm.count("preset")) file = aco::preset_file(vm["preset"].as<std::string>()).string();
-    else file = aco::preset_file(aco::default_preset(vm.count("map") ? vm["map"].as<std::string>()
-                                                      : vm.count("scen") ? vm["scen"].as<std::string>() : "")).string();
+    else file = aco::preset_file(default_preset(vm)).string();
     const po::parsed_options settings = config_options(options, file, lenient, vm);
     try {
       po::store(settings, vm);
@@ -333,7 +336,7 @@ Request parse_command_line(int argc, const char* const* argv) {
     if (vm.count("preset")) r.pipeline_source = vm["preset"].as<std::string>();
     else if (vm.count("config")) r.pipeline_source = "none (--config " + vm["config"].as<std::string>() + ")";
     else {
-      const std::string preset = aco::default_preset(keys.count("map") ? keys["map"] : keys.count("scen") ? keys["scen"] : "");
+      const std::string preset = default_preset(vm);
       r.pipeline_source = preset + " (the default for " + (preset == "terrain" ? "height" : "2D") +
                           " maps; --preset NAME for another, --list-presets for the papers')";
     }

@@ -139,6 +139,6 @@ TEST_CASE("acosim runs the recommended pipeline under a scenario naming none and
     return r.err;
   };
   CHECK_THAT(error({"--local.folow", "1"}), Contains("did you mean 'local.follow'"));
-  CHECK_THAT(error({"--start", "1,1"}), Contains("--start: the scenario file sets it"));
+  CHECK_THAT(error({"--start", "1,1"}), Contains("--start: 'start' is the scenario's, not a run key to change"));
   CHECK_THAT(error({"--preset", "nope"}), Contains("unknown preset 'nope'"));
 }

@@ -33,15 +33,14 @@ void report_error(const std::string& message) {
   std::cerr << "acosim: error: " << message << "\n";
 }
 
-// A run key given as an option: "--key value", "--key=value", or "--flag" alone for true.
+// A run key given as an option: "--key value", "--key=value", or "--flag" alone for true. The
+// scenario's own keys (map, start, goal) are refused by acosim::with_run_keys.
 void add_run_key(const std::string& token, const char* next, aco::KeyedValues& keys) {
   std::string key = token.substr(2), value = next ? next : "true";
   if (const auto equals = key.find('='); equals != std::string::npos) {
     value = key.substr(equals + 1);
     key.resize(equals);
   }
-  for (const char* scenario_key : {"map", "scen", "scen-index", "start", "goal", "seed"})
-    if (key == scenario_key) throw aco::Error("--" + key + ": the scenario file sets it (acosim takes run keys over the scenario's)");
   keys.keys[key] = value;
   keys.origins[key] = "--" + key;
 }
@@ -51,7 +50,7 @@ void add_run_key(const std::string& token, const char* next, aco::KeyedValues& k
 int main(int argc, char** argv) {
   aco::report_crashes("acosim");
   try {
-    std::string scenario_file, csv, svg, html, local;
+    std::string scenario_file, csv, svg, html;
     std::vector<std::string> plugin_dirs;
     po::options_description options("acosim: drive a robot along the colony's path with a local planner.\n\n"
                                     "Usage: acosim SCENARIO.yaml [options]\n\nOptions");
@@ -61,7 +60,6 @@ int main(int argc, char** argv) {
         ("csv", po::value(&csv)->value_name("FILE"), "write the trajectory (t, x, y, heading, v, w) as CSV")
         ("svg", po::value(&svg)->value_name("FILE"), "write a picture: map, unknown cells, plans, trajectory, moving tracks")
         ("html", po::value(&html)->value_name("FILE"), "write a page that plays the run (play/pause, time slider)")
-        ("local", po::value(&local)->value_name("PLUGIN"), "drive with this local planner instead of the scenario's (another plugin starts from its defaults)")
         ("batch", po::value<int>()->value_name("N"), "run N generated variations of the scenario and print their summary")
         ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch or --variation: the variations' seed")
         ("variation", po::value<int>()->value_name("K"), "run variation K (0-based) of --batch's, with every output")
@@ -98,7 +96,7 @@ int main(int argc, char** argv) {
     po::notify(vm);
     if (vm.count("help")) {
       std::cout << options
-                << "\nAny run key of acoplan (--ants 20, --local.follow 0.5, --update max_min, --update.rho 0.2) goes over\n"
+                << "\nAny run key of acoplan (--local track, --local.follow 0.5, --ants 20, --update max_min) goes over\n"
                    "the scenario's run keys (map, start and goal are the scenario's). A scenario naming no pipeline\n"
                    "(config or preset) runs the recommended one, data/presets/robust.ini.\n";
       return 0;
@@ -117,10 +115,6 @@ int main(int argc, char** argv) {
       if (vm.count("preset")) changes = aco::preset_keys(vm["preset"].as<std::string>());
       if (vm.count("config")) changes = aco::config_file_keys(vm["config"].as<std::string>());
       changes = aco::overlay(changes, command_line_keys);
-      if (!local.empty()) {
-        changes.keys["local"] = local;
-        changes.origins["local"] = "--local";
-      }
       if (!changes.keys.empty()) scenario = acosim::with_run_keys(scenario, changes, registry);
     }
     if (vm.count("batch")) {

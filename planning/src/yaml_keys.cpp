@@ -4,11 +4,23 @@
 #include <charconv>
 
 #include "aco/error.hpp"
+#include "aco/input_file.hpp"
 #include "aco/parameters.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/presets.hpp"
 
 namespace aco::yaml {
+
+YAML::Node load_file(const std::filesystem::path& file, const std::string& what) {
+  check_input_file(file, what);
+  try {
+    return YAML::LoadFile(file.string());
+  } catch (const YAML::BadFile&) {
+    throw Error(file.string() + ": cannot open the " + what + " file");
+  } catch (const YAML::Exception& e) {
+    throw Error(file.string() + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML: " + e.msg);
+  }
+}
 
 std::string where(const std::filesystem::path& file, const YAML::Node& node) {
   return file.string() + ":" + std::to_string(node.Mark().line + 1);
@@ -92,7 +104,7 @@ aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::No
     if (key != "config" && key != "preset" && std::find(skip.begin(), skip.end(), key) == skip.end())
       read_key(file, entry.first, entry.second, own);
   }
-  if (!node["config"] && !node["preset"]) return own;
+  if (!names_pipeline(node)) return own;
   if (node["config"] && node["preset"]) fail(file, node["preset"], "'config' and 'preset': give one of them");
   const YAML::Node named = node["config"] ? node["config"] : node["preset"];
   aco::KeyedValues preset;
@@ -104,5 +116,7 @@ aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::No
   }
   return overlay(preset, own);
 }
+
+bool names_pipeline(const YAML::Node& node) { return node && node.IsMap() && (node["config"] || node["preset"]); }
 
 }  // namespace aco::yaml

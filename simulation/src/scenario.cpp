@@ -4,7 +4,6 @@
 
 #include "aco/presets.hpp"
 #include "aco/error.hpp"
-#include "aco/input_file.hpp"
 #include "aco/settings_table.hpp"
 #include "aco/yaml_keys.hpp"
 #include "aco/simulation/simulation.hpp"
@@ -131,15 +130,7 @@ Scenario with_run_keys(const Scenario& scenario, const aco::KeyedValues& changes
 }
 
 Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& registry) {
-  aco::check_input_file(file, "scenario");
-  YAML::Node doc;
-  try {
-    doc = YAML::LoadFile(file.string());
-  } catch (const YAML::BadFile&) {
-    throw aco::Error(file.string() + ": cannot open the scenario file");
-  } catch (const YAML::Exception& e) {
-    throw aco::Error(file.string() + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML: " + e.msg);
-  }
+  const YAML::Node doc = aco::yaml::load_file(file, "scenario");
   if (!doc.IsMap()) throw aco::Error(file.string() + ": a scenario file is a YAML mapping (run, robot, ...)");
   aco::yaml::only_keys(file, doc, {"run", "robot", "simulation", "unknown", "moving"}, "the scenario");
   if (!doc["run"]) fail(file, doc, "the scenario needs 'run' (map, start, goal and the planner's keys)");
@@ -149,7 +140,7 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
   const YAML::Node run = doc["run"];
   aco::KeyedValues keys = aco::yaml::read_run_keys(file, run, {"start", "goal"});
   // Naming no pipeline runs the recommended one, as acoplan does.
-  if (!run["config"] && !run["preset"]) keys = aco::overlay(aco::preset_keys("robust"), keys);
+  if (!aco::yaml::names_pipeline(run)) keys = aco::overlay(aco::preset_keys("robust"), keys);
   for (const char* end : {"start", "goal"}) {
     if (!run[end]) fail(file, run, "'run' needs '" + std::string(end) + "' [x, y]");
     const aco::Cell c = aco::yaml::cell(file, run[end], end);

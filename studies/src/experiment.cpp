@@ -10,7 +10,6 @@
 
 #include "aco/colony.hpp"
 #include "aco/error.hpp"
-#include "aco/input_file.hpp"
 #include "aco/map_io.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/pipeline.hpp"
@@ -26,6 +25,7 @@ namespace {
 using aco::yaml::cell;
 using aco::yaml::fail;
 using aco::yaml::integer;
+using aco::yaml::names_pipeline;
 using aco::yaml::only_keys;
 using aco::yaml::scalar;
 using aco::yaml::where;
@@ -36,8 +36,6 @@ Configuration overlay(const Configuration& base, const Configuration& changes, c
   c.name = name;
   return c;
 }
-
-bool names_pipeline(const YAML::Node& node) { return node && node.IsMap() && (node["config"] || node["preset"]); }
 
 // The recommended preset for the experiment's maps, for configurations that name none: robust on
 // 2D maps, terrain on height maps. Simulation problems keep their scenario's own pipeline.
@@ -229,15 +227,7 @@ aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& pr
 }
 
 Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistry& registry) {
-  aco::check_input_file(file, "experiment");
-  YAML::Node doc;
-  try {
-    doc = YAML::LoadFile(file.string());
-  } catch (const YAML::BadFile&) {
-    throw aco::Error(file.string() + ": cannot open the experiment file");
-  } catch (const YAML::Exception& e) {
-    throw aco::Error(file.string() + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML: " + e.msg);
-  }
+  const YAML::Node doc = aco::yaml::load_file(file, "experiment");
   if (!doc.IsMap()) throw aco::Error(file.string() + ": an experiment file is a YAML mapping (name, problems, ...)");
   only_keys(file, doc,
             {"name", "seed", "repetitions", "problems", "settings", "baseline", "configurations", "factorial", "ablation",

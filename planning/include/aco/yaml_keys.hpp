@@ -14,6 +14,10 @@
 
 namespace aco::yaml {
 
+// A YAML file (`what`: "experiment", "scenario"), checked as an input file; errors name the file
+// and, for malformed YAML, the line.
+YAML::Node load_file(const std::filesystem::path& file, const std::string& what);
+
 std::string where(const std::filesystem::path& file, const YAML::Node& node);  // "file:line"
 [[noreturn]] void fail(const std::filesystem::path& file, const YAML::Node& node, const std::string& message);
 std::string scalar(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);
@@ -25,8 +29,11 @@ void only_keys(const std::filesystem::path& file, const YAML::Node& map, const s
                const std::string& what);
 
 // The run keys of a mapping; a slot may be given as {plugin: NAME, param: value, ...}, and
-// `config: FILE` (relative to `file`) starts from an acoplan config file's keys, which the
-// mapping's own keys override. Keys listed in `skip` are not run keys (a configuration's name).
+// `config: FILE` (relative to `file`) or `preset: NAME` starts from an acoplan config file's keys,
+// which the mapping's own keys override. Keys listed in `skip` are not run keys (a configuration's name).
 aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node, const std::vector<std::string>& skip);
+// Whether a mapping of run keys names its pipeline (`config:` or `preset:`); one that does not
+// runs the recommended preset.
+bool names_pipeline(const YAML::Node& node);
 
 }  // namespace aco::yaml

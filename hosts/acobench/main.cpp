@@ -224,7 +224,7 @@ int run(const std::vector<std::string>& args) {
     if (in_process) return nullptr;
     acobench::TrialLimits lane_limits = limits;
     if (!lane_limits.memory_bytes) lane_limits.memory_bytes = aco::default_memory_limit() / static_cast<std::uint64_t>(lanes);
-    return std::make_unique<acobench::TrialWorkers>(lanes, acobench::worker_command(experiment, plugin_dirs), lane_limits,
+    return std::make_unique<acobench::TrialWorkers>(lanes, acobench::worker_command(experiment, plugin_dirs, max_memory), lane_limits,
                                                     experiment.fingerprint(registry));
   };
 #ifdef ACOBENCH_WITH_MPI
@@ -249,12 +249,16 @@ int worker(const std::vector<std::string>& args) {
     po::options_description options("acobench worker");
     std::vector<std::string> plugin_dirs;
     options.add_options()("experiment", po::value<std::string>()->required(), "experiment file (YAML)")
-        ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins");
+        ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins")
+        ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
     po::positional_options_description positional;
     positional.add("experiment", 1);
     po::variables_map vm;
     po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
     po::notify(vm);
+    std::optional<std::uint64_t> max_memory;
+    if (vm.count("max-memory")) max_memory = aco::parse_memory_size(vm["max-memory"].as<std::string>());
+    const aco::MemoryLimit memory(max_memory);
     std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
     aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));
     const acobench::Experiment experiment = acobench::load_experiment(vm["experiment"].as<std::string>(), registry);

@@ -143,9 +143,9 @@ struct Coordinator::State {
         queue.pop_front();
         if (known[rank].insert(t.config).second) {
           const Configuration& c = runner.config(t.config);
-          work["configs"].push_back({{"id", t.config}, {"name", c.name}, {"keys", c.keys}});
+          work["configs"].push_back(config_json(t.config, c));
         }
-        work["trials"].push_back({t.problem, t.config, t.repetition});
+        work["trials"].push_back(order_json(t));
       }
       send(work, rank, kWork);
       outstanding += count;
@@ -273,15 +273,10 @@ void serve_trials(const Session& session, const Experiment& experiment, aco::Plu
         if (m->tag == kStop) {
           told_to_stop = true;
         } else {
-          for (const json& c : m->message.at("configs")) {
-            Configuration config;
-            config.name = c.at("name");
-            config.keys = c.at("keys").get<aco::Keys>();
-            runner.add_config(c.at("id"), config);
-          }
+          for (const json& c : m->message.at("configs")) add_config_from(c, runner);
           {
             const std::lock_guard lock(mutex);
-            for (const json& t : m->message.at("trials")) queue.push_back({t.at(0), t.at(1), t.at(2)});
+            for (const json& t : m->message.at("trials")) queue.push_back(order_from(t));
           }
           in_hand += m->message.at("trials").size();
           asked = false;

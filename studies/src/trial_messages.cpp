@@ -45,4 +45,17 @@ TrialRecord record_from(const nlohmann::json& j) {
   return t;
 }
 
+nlohmann::json order_json(const TrialOrder& t) { return {t.problem, t.config, t.repetition}; }
+
+TrialOrder order_from(const nlohmann::json& j) { return {j.at(0), j.at(1), j.at(2)}; }
+
+nlohmann::json config_json(int id, const Configuration& c) { return {{"id", id}, {"name", c.name}, {"keys", c.keys}}; }
+
+void add_config_from(const nlohmann::json& j, TrialRunner& runner) {
+  Configuration config;
+  config.name = j.at("name");
+  config.keys = j.at("keys").get<aco::Keys>();
+  runner.add_config(j.at("id"), config);
+}
+
 }  // namespace acobench

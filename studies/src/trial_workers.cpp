@@ -21,11 +21,16 @@ struct TrialWorkers::Lane {
   std::set<int> known;  // configuration ids this worker was told
 };
 
-std::vector<std::string> worker_command(const Experiment& experiment, const std::vector<std::string>& plugin_dirs) {
+std::vector<std::string> worker_command(const Experiment& experiment, const std::vector<std::string>& plugin_dirs,
+                                        std::optional<std::uint64_t> max_memory) {
   std::vector<std::string> command{aco::this_program(), "worker", std::filesystem::absolute(experiment.file).string()};
   for (const auto& dir : plugin_dirs) {
     command.push_back("--plugin-dir");
     command.push_back(std::filesystem::absolute(dir).string());
+  }
+  if (max_memory) {
+    command.push_back("--max-memory");
+    command.push_back(std::to_string(*max_memory));
   }
   return command;
 }
@@ -39,15 +44,12 @@ TrialWorkers::~TrialWorkers() = default;
 
 TrialRecord TrialWorkers::run(int lane_index, const TrialRunner& runner, const TrialOrder& t) {
   Lane& lane = *lanes_.at(static_cast<std::size_t>(lane_index));
-  json request = {{"configs", json::array()}, {"trial", {t.problem, t.config, t.repetition}}};
+  json request = {{"configs", json::array()}, {"trial", order_json(t)}};
   if (lane.process.start()) {
     lane.known.clear();
     request["fingerprint"] = fingerprint_;
   }
-  if (lane.known.insert(t.config).second) {
-    const Configuration& c = runner.config(t.config);
-    request["configs"].push_back({{"id", t.config}, {"name", c.name}, {"keys", c.keys}});
-  }
+  if (lane.known.insert(t.config).second) request["configs"].push_back(config_json(t.config, runner.config(t.config)));
   const std::vector<std::uint8_t> cbor = json::to_cbor(request);
   const aco::WorkerReply reply =
       lane.process.request(std::string(cbor.begin(), cbor.end()), {limits_.timeout_s, limits_.memory_bytes});
@@ -80,14 +82,8 @@ void serve_trials_as_worker(const Experiment& experiment, aco::PluginRegistry& r
                          fingerprint_change(request.at("fingerprint"), fingerprint) +
                          " (was the experiment file, a map or a plugin binary changed during the run?)");
     }
-    for (const json& c : request.at("configs")) {
-      Configuration config;
-      config.name = c.at("name");
-      config.keys = c.at("keys").get<aco::Keys>();
-      runner.add_config(c.at("id"), config);
-    }
-    const json& t = request.at("trial");
-    const std::vector<std::uint8_t> reply = json::to_cbor(record_json(runner.run({t.at(0), t.at(1), t.at(2)})));
+    for (const json& c : request.at("configs")) add_config_from(c, runner);
+    const std::vector<std::uint8_t> reply = json::to_cbor(record_json(runner.run(order_from(request.at("trial")))));
     return std::string(reply.begin(), reply.end());
   });
 }

@@ -19,9 +19,11 @@ struct TrialLimits {
   std::uint64_t memory_bytes = 0;  // 0: none
 };
 
-// How a worker is started: `acobench worker EXPERIMENT [--plugin-dir DIR]...`, from the
-// experiment file and plugin folders of this process.
-std::vector<std::string> worker_command(const Experiment& experiment, const std::vector<std::string>& plugin_dirs);
+// How a worker is started: `acobench worker EXPERIMENT [--plugin-dir DIR]... [--max-memory
+// BYTES]`, from the experiment file, plugin folders and --max-memory of this process (a worker
+// builds the graphs its trials need, so it must refuse and admit the maps this process does).
+std::vector<std::string> worker_command(const Experiment& experiment, const std::vector<std::string>& plugin_dirs,
+                                        std::optional<std::uint64_t> max_memory);
 
 // A worker process per lane.
 class TrialWorkers {

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # What a bare command runs, measured on maps nobody tuned on: acoplan with no pipeline named
 # against the preset it stands for (robust on 2D maps, terrain on height maps; the figures must
-# be equal) and against the classic Ant System setting that was the default before
-# (--preset ant-system). Fresh maps: aco_mapgen --benchmark SEED (random, room and maze maps,
+# be equal), against the classic Ant System setting that was the default before
+# (--preset ant-system), and against its null models (docs/learning.md): the same walks with the
+# pheromone ignored (--null-model no-learning) and as independent restarts (--null-model
+# restarts; slow on mazes and rooms, where a restart walk has no walk limit). Fresh maps: aco_mapgen --benchmark SEED (random, room and maze maps,
 # 32x32 to 512x512; scenarios first, middle and last of each map) and aco_terraingen terrains
 # (20x20 to 128x128, corner to corner). Gap = grid path / A* optimum on the same graph - 1.
-#   tools/default-pipeline-check.sh [SEED] [OUTDIR]      (default seed 7321; a few minutes)
+#   tools/default-pipeline-check.sh [SEED] [OUTDIR]      (default seed 7321; about half an hour, mostly the restart twin)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/build.sh release >/dev/null
@@ -29,6 +31,8 @@ for scen in "$out"/maps/*.map.scen; do
     plan 2d bare --scen "$scen" --scen-index "$index"
     plan 2d preset --scen "$scen" --scen-index "$index" --preset robust
     plan 2d ant-system --scen "$scen" --scen-index "$index" --preset ant-system
+    plan 2d no-learning --scen "$scen" --scen-index "$index" --null-model no-learning
+    plan 2d restarts --scen "$scen" --scen-index "$index" --null-model restarts
   done
 done
 for size in 20 40 64 128; do
@@ -40,19 +44,22 @@ for size in 20 40 64 128; do
     plan terrain bare "${problem[@]}"
     plan terrain preset "${problem[@]}" --preset terrain
     plan terrain ant-system "${problem[@]}" --preset ant-system
+    plan terrain no-learning "${problem[@]}" --null-model no-learning
+    plan terrain restarts "${problem[@]}" --null-model restarts
   done
 done
 python3 - "$runs" "$seed" <<'PY'
 import json, sys
 rows = [json.loads(line) for line in open(sys.argv[1])]
-print(f"Fresh maps of seed {sys.argv[2]}: the bare command, the preset it stands for, and the former default")
+print(f"Fresh maps of seed {sys.argv[2]}: the bare command, the preset it stands for, the former default, and the bare command's null models")
 print("| maps | run | problems | solved | mean gap | worst gap |")
 print("|---|---|---|---|---|---|")
 for kind, preset in (("2d", "robust"), ("terrain", "terrain")):
-    for run in ("bare", "preset", "ant-system"):
+    for run in ("bare", "preset", "ant-system", "no-learning", "restarts"):
         rs = [r for r in rows if r["kind"] == kind and r["run"] == run]
         gaps = [r["gap"] for r in rs if r["solved"]]
-        name = {"bare": "no pipeline named", "preset": "--preset " + preset, "ant-system": "--preset ant-system"}[run]
+        name = {"bare": "no pipeline named", "preset": "--preset " + preset, "ant-system": "--preset ant-system",
+                "no-learning": "no pipeline named, --null-model no-learning", "restarts": "no pipeline named, --null-model restarts"}[run]
         mean = f"{100 * sum(gaps) / len(gaps):.2f} %" if gaps else "-"
         worst = f"{100 * max(gaps):.2f} %" if gaps else "-"
         print(f"| {'2D (random, room, maze)' if kind == '2d' else 'terrain'} | {name} | {len(rs)} | {len(gaps)} | {mean} | {worst} |")

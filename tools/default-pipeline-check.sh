@@ -4,10 +4,10 @@
 # be equal), against the classic Ant System setting that was the default before
 # (--preset ant-system), and against its null models (docs/learning.md): the same walks with the
 # pheromone ignored (--null-model no-learning) and as independent restarts (--null-model
-# restarts; slow on mazes and rooms, where a restart walk has no walk limit). Fresh maps: aco_mapgen --benchmark SEED (random, room and maze maps,
+# restarts; the slowest, since a restart walk has no walk limit). Fresh maps: aco_mapgen --benchmark SEED (random, room and maze maps,
 # 32x32 to 512x512; scenarios first, middle and last of each map) and aco_terraingen terrains
 # (20x20 to 128x128, corner to corner). Gap = grid path / A* optimum on the same graph - 1.
-#   tools/default-pipeline-check.sh [SEED] [OUTDIR]      (default seed 7321; about half an hour, mostly the restart twin)
+#   tools/default-pipeline-check.sh [SEED] [OUTDIR]      (default seed 7321; 2-3 minutes on 2 cores, half of it the restart twin)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/build.sh release >/dev/null

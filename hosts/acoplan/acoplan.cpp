@@ -6,26 +6,18 @@
 #include <memory>
 #include <numeric>
 
-#include "aco/astar.hpp"
 #include "aco/error.hpp"
+#include "aco/irace_parameters.hpp"
 #include "aco/memory_limit.hpp"
+#include "aco/plan_report.hpp"
+#include "aco/plugin_catalog.hpp"
 #include "aco/svg.hpp"
 #include "aco/thread_limit.hpp"
-#include "irace.hpp"
-#include "report.hpp"
 
 namespace acoplan {
 namespace {
 
-// One planning run: the colony (or a reference planner), then the smoother.
-acoplan::Outcome plan_once(const acoplan::Request& r, const aco::Graph& graph, const aco::LoadedProblem& problem,
-                           const aco::RunSpec& run) {
-  acoplan::Outcome o;
-  static_cast<aco::PlanOutcome&>(o) = aco::plan(*r.registry, graph, graph.node(problem.start), graph.node(problem.goal), run);
-  return o;
-}
-
-void write_picture(const acoplan::Request& r, const aco::Graph& graph, const acoplan::Outcome& o) {
+void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco::PlanRun& o) {
   aco::RunPicture picture;
   picture.title = graph.map->name() + ": " + (o.solved() ? "length " + std::to_string(o.length) : "not solved") +
                   ", seed " + std::to_string(o.seed);
@@ -42,9 +34,9 @@ void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco
 
 // --irace: the mean length over the runs, an unsolved run counting as kIraceUnsolvedCost, in
 // the shortest text that reads back as the same double (so it equals --json's length).
-std::string irace_cost(const std::vector<acoplan::Outcome>& runs) {
-  const double total = std::accumulate(runs.begin(), runs.end(), 0.0, [](double sum, const acoplan::Outcome& o) {
-    return sum + (o.solved() ? o.length : acoplan::kIraceUnsolvedCost);
+std::string irace_cost(const std::vector<aco::PlanRun>& runs) {
+  const double total = std::accumulate(runs.begin(), runs.end(), 0.0, [](double sum, const aco::PlanRun& o) {
+    return sum + (o.solved() ? o.length : kIraceUnsolvedCost);
   });
   char text[64];
   const auto end = std::to_chars(text, text + sizeof text, total / static_cast<double>(runs.size())).ptr;
@@ -52,7 +44,7 @@ std::string irace_cost(const std::vector<acoplan::Outcome>& runs) {
 }
 
 void dump_irace_params(acoplan::Request& r, std::ostream& out) {
-  const std::string table = acoplan::irace_parameters(*r.registry, r.irace_slots);
+  const std::string table = aco::irace_parameters(*r.registry, r.irace_slots);
   if (r.irace_params_file == "-") {
     out << table;
     return;
@@ -68,22 +60,17 @@ int plan(const acoplan::Request& r, std::ostream& out) {
   const aco::ThreadLimit threads(r.host.integer("threads"));
 
   // --repeat N: the same problem with seeds seed, seed+1, ..., seed+N-1.
-  aco::RunSpec run = r.run;
-  std::vector<acoplan::Outcome> runs;
-  for (std::int64_t i = 0; i < r.host.integer("repeat"); ++i, ++run.colony.seed) runs.push_back(plan_once(r, graph, problem, run));
-  const auto optimal = aco::astar(graph, graph.node(problem.start), graph.node(problem.goal));
-  for (auto& o : runs)
-    if (optimal) o.optimal_length = optimal->length;
+  const std::vector<aco::PlanRun> runs = aco::plan_runs(*r.registry, graph, graph.node(problem.start),
+                                                        graph.node(problem.goal), r.run, r.host.integer("repeat"));
+  const aco::PlanReport report{r.run, *r.registry, graph, r.pipeline_source};
 
   if (r.irace) {
     // irace reads the last line of stdout; an unsolved run has its cost, so it is no failure.
     out << irace_cost(runs) << "\n";
   } else if (runs.size() == 1) {
-    if (r.json) out << acoplan::to_json(r, graph, runs[0]).dump() << "\n";
-    else out << acoplan::summary(r, graph, runs[0]);
+    out << (r.json ? aco::to_json(report, runs[0]) + "\n" : aco::summary(report, runs[0]));
   } else {
-    if (r.json) out << acoplan::to_json(r, graph, runs).dump() << "\n";
-    else out << acoplan::summary(r, graph, runs);
+    out << (r.json ? aco::to_json(report, runs) + "\n" : aco::summary(report, runs));
   }
   // The picture shows the best run: the shortest solved one, else the first.
   const auto best = std::min_element(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
@@ -99,9 +86,9 @@ int plan(const acoplan::Request& r, std::ostream& out) {
 int run(Request& request, std::ostream& out) {
   switch (request.action) {
     case Request::Action::help: out << request.help; return 0;
-    case Request::Action::list_plugins: out << list_plugins(*request.registry); return 0;
+    case Request::Action::list_plugins: out << aco::list_plugins(*request.registry); return 0;
     case Request::Action::list_presets: out << list_presets(); return 0;
-    case Request::Action::describe: out << describe_plugin(*request.registry, request.describe); return 0;
+    case Request::Action::describe: out << aco::describe_plugin(*request.registry, request.describe); return 0;
     case Request::Action::print_config: out << request.config; return 0;
     case Request::Action::dump_irace_params: dump_irace_params(request, out); return 0;
     case Request::Action::plan: return plan(request, out);

@@ -352,75 +352,10 @@ Request parse_command_line(int argc, const char* const* argv) {
   return r;
 }
 
-// Files this plugin hides, one line each (indented like the plugin's own file line).
-std::string shadow_lines(const aco::PluginFile& plugin) {
-  std::string lines;
-  for (const auto& hidden : plugin.shadowed)
-    lines += "      shadows " + hidden.string() + " (not used: the file above comes first in the search order)\n";
-  return lines;
-}
-
-// From the plugin records alone: listing runs no plugin code.
-std::string list_plugins(aco::PluginRegistry& registry) {
-  std::ostringstream out;
-  out << "plugins (kind/name, version, summary, file):\n";
-  for (const char* kind : aco::kSlots) {
-    for (const auto& name : registry.names(kind)) {
-      const auto& plugin = registry.get(kind, name);
-      out << "  " << kind << "/" << name;
-      if (plugin.unusable.empty())
-        out << "  " << plugin.record.version << "  " << plugin.record.summary;
-      else
-        out << "  UNUSABLE: " << plugin.unusable;
-      out << "\n      " << plugin.file.string() << "\n" << shadow_lines(plugin);
-    }
-  }
-  out << "searched:";
-  for (const auto& dir : registry.search_dirs()) out << " " << dir.string();
-  out << "\n";
-  return out.str();
-}
-
 std::string list_presets() {
   std::ostringstream out;
   out << "presets (--preset NAME; files in " << aco::preset_folder().string() << "):\n";
   for (const auto& preset : aco::list_presets()) out << "  " << preset.name << "  " << preset.summary << "\n";
-  return out.str();
-}
-
-std::string describe_plugin(aco::PluginRegistry& registry, const std::string& name) {
-  std::vector<const aco::PluginFile*> matches;
-  for (const auto& p : registry.available())
-    if (p.name == name || p.kind + "/" + p.name == name) matches.push_back(&p);
-  if (matches.empty()) {
-    std::string message = "--describe: no plugin named '" + name + "'";
-    std::vector<std::string> names;
-    for (const auto& p : registry.available()) names.push_back(name.find('/') == std::string::npos ? p.name : p.kind + "/" + p.name);
-    if (const auto near = aco::nearest(name, names); !near.empty())
-      for (const auto& p : registry.available())
-        if (p.name == near || p.kind + "/" + p.name == near) message += "; did you mean '" + p.kind + "/" + p.name + "'?";
-    throw aco::Error(message);
-  }
-  if (matches.size() > 1) {
-    std::string message = "--describe: '" + name + "' is ambiguous; use one of:";
-    for (const auto* p : matches) message += " " + p->kind + "/" + p->name;
-    throw aco::Error(message);
-  }
-  const auto& d = registry.load(matches[0]->kind, matches[0]->name);
-  std::ostringstream out;
-  out << d.kind << "/" << d.name << " " << d.version << ": " << d.summary << "\n"
-      << "file: " << matches[0]->file.string() << "\n"
-      << shadow_lines(*matches[0]) << "built by: " << matches[0]->record.compiler << ", "
-      << matches[0]->record.stdlib << "\n";
-  if (d.param_count == 0) {
-    out << "no parameters\n";
-    return out.str();
-  }
-  out << "parameters (--" << d.kind << ".NAME VALUE):\n";
-  for (const auto& spec : d.parameters())
-    out << "  " << spec.name << "  " << aco::to_string(spec.type) << "  default " << spec.default_value
-        << (spec.range && *spec.range ? std::string("  range ") + spec.range : std::string()) << "\n      " << spec.help
-        << "\n";
   return out.str();
 }
 

@@ -38,8 +38,6 @@ struct Request {
 // Throws aco::Error with a message naming the offending option (and the nearest valid one).
 Request parse_command_line(int argc, const char* const* argv);
 
-std::string describe_plugin(aco::PluginRegistry& registry, const std::string& name);
-std::string list_plugins(aco::PluginRegistry& registry);
 // The named presets, each with its first comment line.
 std::string list_presets();
 

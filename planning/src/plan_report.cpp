@@ -1,11 +1,16 @@
-#include "report.hpp"
+#include "aco/plan_report.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
-namespace acoplan {
+#include "aco/astar.hpp"
+
+namespace aco {
 namespace {
 
 nlohmann::json point(const Eigen::Vector3d& p, bool three_d) {
@@ -26,8 +31,8 @@ std::string map_line(const aco::Graph& graph) {
          "), " + aco::describe(graph.options) + "\n";
 }
 
-std::string pipeline_lines(const Request& request) {
-  const aco::RunSpec& run = request.run;
+std::string pipeline_lines(const PlanReport& report) {
+  const aco::RunSpec& run = report.run;
   std::ostringstream out;
   if (run.planner != "aco") {
     out << "planner:  " << run.planner << ", smoother=" << run.pipeline.at("smoother").plugin;
@@ -40,7 +45,7 @@ std::string pipeline_lines(const Request& request) {
   }
   out << "colony:   " << run.colony.ants << " ants x " << run.colony.iterations << " iterations, alpha "
       << aco::to_string(run.colony.alpha) << ", beta " << aco::to_string(run.colony.beta) << ", seed " << run.colony.seed << "\n";
-  if (!request.pipeline_source.empty()) out << "preset:   " << request.pipeline_source << "\n";
+  if (!report.pipeline_source.empty()) out << "preset:   " << report.pipeline_source << "\n";
   out << "pipeline:";
   for (const char* slot : aco::kSlots) out << " " << slot << "=" << run.pipeline.at(slot).plugin;
   out << "\n";
@@ -48,7 +53,7 @@ std::string pipeline_lines(const Request& request) {
 }
 
 // The measures of one run.
-nlohmann::json run_json(const aco::Graph& graph, const Outcome& o) {
+nlohmann::json run_json(const aco::Graph& graph, const PlanRun& o) {
   bool three_d = false;
   for (const auto& p : graph.positions) three_d = three_d || p.z() != 0.0;
   nlohmann::json j;
@@ -77,10 +82,11 @@ nlohmann::json run_json(const aco::Graph& graph, const Outcome& o) {
 
 // The configuration shared by all runs (the run's keys, as acobench's database stores them),
 // and the problem as loaded.
-nlohmann::json config_json(const Request& request, const aco::Graph& graph, const Outcome& o) {
+nlohmann::json config_json(const PlanReport& report, const PlanRun& o) {
+  const aco::Graph& graph = report.graph;
   nlohmann::json j;
-  j["config"] = nlohmann::ordered_json::parse(aco::to_json(request.run));
-  j["plugins"] = nlohmann::ordered_json::parse(aco::plugins_json(request.run, *request.registry));
+  j["config"] = nlohmann::ordered_json::parse(aco::to_json(report.run));
+  j["plugins"] = nlohmann::ordered_json::parse(aco::plugins_json(report.run, report.registry));
   j["map"] = graph.map->name();
   j["width"] = graph.width;
   j["height"] = graph.height;
@@ -108,7 +114,7 @@ Stats stats(const std::vector<double>& v) {
 }
 
 // Each measure over the solved runs (time over all runs).
-std::vector<std::pair<std::string, Stats>> measures(const std::vector<Outcome>& runs) {
+std::vector<std::pair<std::string, Stats>> measures(const std::vector<PlanRun>& runs) {
   std::map<std::string, std::vector<double>> v;
   for (const auto& o : runs) {
     v["time_ms"].push_back(o.time_ms);
@@ -128,14 +134,30 @@ std::vector<std::pair<std::string, Stats>> measures(const std::vector<Outcome>& 
 
 }  // namespace
 
-nlohmann::json to_json(const Request& request, const aco::Graph& graph, const Outcome& o) {
-  nlohmann::json j = run_json(graph, o);
-  j.update(config_json(request, graph, o));
-  return j;
+std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal,
+                               const RunSpec& run, std::int64_t count) {
+  RunSpec seeded = run;
+  std::vector<PlanRun> runs;
+  for (std::int64_t i = 0; i < count; ++i, ++seeded.colony.seed) {
+    PlanRun o;
+    static_cast<PlanOutcome&>(o) = plan(registry, graph, start, goal, seeded);
+    runs.push_back(std::move(o));
+  }
+  const auto optimal = astar(graph, start, goal);
+  for (auto& o : runs)
+    if (optimal) o.optimal_length = optimal->length;
+  return runs;
 }
 
-nlohmann::json to_json(const Request& request, const aco::Graph& graph, const std::vector<Outcome>& runs) {
-  nlohmann::json j = config_json(request, graph, runs.front());
+std::string to_json(const PlanReport& report, const PlanRun& o) {
+  nlohmann::json j = run_json(report.graph, o);
+  j.update(config_json(report, o));
+  return j.dump();
+}
+
+std::string to_json(const PlanReport& report, const std::vector<PlanRun>& runs) {
+  const aco::Graph& graph = report.graph;
+  nlohmann::json j = config_json(report, runs.front());
   j["runs"] = nlohmann::json::array();
   int solved = 0;
   for (const auto& o : runs) {
@@ -150,17 +172,18 @@ nlohmann::json to_json(const Request& request, const aco::Graph& graph, const st
     if (st.n == 0) s[name] = nullptr;
     else s[name] = {{"mean", st.mean}, {"sd", st.sd}, {"min", st.min}, {"max", st.max}};
   }
-  return j;
+  return j.dump();
 }
 
-std::string summary(const Request& request, const aco::Graph& graph, const std::vector<Outcome>& runs) {
+std::string summary(const PlanReport& report, const std::vector<PlanRun>& runs) {
+  const aco::Graph& graph = report.graph;
   std::ostringstream out;
-  const Outcome& first = runs.front();
+  const PlanRun& first = runs.front();
   out << map_line(graph);
   out << "problem:  start " << cell_text(graph, first.start) << " -> goal " << cell_text(graph, first.goal);
   if (first.optimal_length) out << ", optimum " << std::fixed << std::setprecision(4) << *first.optimal_length;
   out << "\n";
-  out << pipeline_lines(request);
+  out << pipeline_lines(report);
   int solved = 0;
   for (const auto& o : runs) solved += o.solved();
   out << "runs:     " << runs.size() << " seeds (" << first.seed << ".." << runs.back().seed << "), " << solved << " solved\n";
@@ -178,13 +201,14 @@ std::string summary(const Request& request, const aco::Graph& graph, const std::
   return out.str();
 }
 
-std::string summary(const Request& request, const aco::Graph& graph, const Outcome& o) {
+std::string summary(const PlanReport& report, const PlanRun& o) {
+  const aco::Graph& graph = report.graph;
   std::ostringstream out;
   out << std::fixed << std::setprecision(4);
   out << map_line(graph);
   out << "problem:  start " << cell_text(graph, o.start) << " -> goal " << cell_text(graph, o.goal) << "\n";
-  out << pipeline_lines(request);
-  const std::string planner = request.run.planner;
+  out << pipeline_lines(report);
+  const std::string planner = report.run.planner;
   if (!o.solved()) {
     out << "result:   NOT SOLVED: " << o.reason << "\n";
     return out.str();
@@ -220,4 +244,4 @@ std::string summary(const Request& request, const aco::Graph& graph, const Outco
   return out.str();
 }
 
-}  // namespace acoplan
+}  // namespace aco

@@ -1,4 +1,4 @@
-#include "irace.hpp"
+#include "aco/irace_parameters.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -13,7 +13,7 @@
 #include "aco/error.hpp"
 #include "aco/parameters.hpp"
 
-namespace acoplan {
+namespace aco {
 namespace {
 
 // irace rounds real parameters to 4 decimal places (its default `digits`), so real bounds are
@@ -156,4 +156,4 @@ std::string irace_parameters(aco::PluginRegistry& registry, const std::vector<st
   return file.text();
 }
 
-}  // namespace acoplan
+}  // namespace aco

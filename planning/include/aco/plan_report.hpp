@@ -1,0 +1,42 @@
+#pragma once
+// What acoplan prints of a run, as a library: the runs of one configuration over consecutive
+// seeds, each beside the exact A* optimum, and their readable summary and JSON object (acoplan's
+// --json; the Python package returns the same content).
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "aco/graph.hpp"
+#include "aco/planning.hpp"
+
+namespace aco {
+
+struct PlanRun : PlanOutcome {
+  std::optional<double> optimal_length;  // exact A* reference on the same graph; none if unreachable
+};
+
+// `count` runs of `run` with seeds seed, seed+1, ..., each with the A* optimum.
+std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal,
+                               const RunSpec& run, std::int64_t count);
+
+// What the reports say of the configuration. `pipeline_source` is the readable "preset:" line
+// ("robust (the default for 2D maps ...)"); empty leaves the line out.
+struct PlanReport {
+  const RunSpec& run;
+  PluginRegistry& registry;
+  const Graph& graph;
+  std::string pipeline_source;
+};
+
+// One run: its measures, the resolved configuration and the plugins' provenance, as one JSON
+// object (compact, as acoplan --json prints it).
+std::string to_json(const PlanReport& report, const PlanRun& run);
+std::string summary(const PlanReport& report, const PlanRun& run);
+
+// Several seeds of one configuration: every run, and mean, standard deviation, min and max of
+// each measure over the solved runs.
+std::string to_json(const PlanReport& report, const std::vector<PlanRun>& runs);
+std::string summary(const PlanReport& report, const std::vector<PlanRun>& runs);
+
+}  // namespace aco

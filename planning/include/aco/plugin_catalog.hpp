@@ -1,0 +1,17 @@
+#pragma once
+// The plugins a registry found, as acoplan --list-plugins and --describe print them.
+#include <string>
+
+#include "aco/plugin_registry.hpp"
+
+namespace aco {
+
+// Every plugin found, by slot: version, summary (or why it is unusable), its file and the files
+// it shadows; then the folders searched. Runs no plugin code.
+std::string list_plugins(PluginRegistry& registry);
+
+// One plugin ("max_min" or "update/max_min"): its provenance and its parameter table with types,
+// defaults and ranges. Error for an unknown name (with the nearest) or an ambiguous one.
+std::string describe_plugin(PluginRegistry& registry, const std::string& name);
+
+}  // namespace aco

@@ -520,3 +520,17 @@ TEST_CASE("a problem written as a single value is refused with the problem forma
   REQUIRE_THROWS_WITH(load("name: x\nproblems:\n  - 'scen: map1.txt.scen, name: map1}'\nbaseline: {name: b}\n"),
                       Contains("experiment.yaml:3: a problem is a mapping"));
 }
+
+// Every experiment the project ships must load: each configuration resolved over each problem
+// (for a simulation problem, over the scenario's own keys), as `acobench run` does before a trial.
+TEST_CASE("every bundled experiment file loads and resolves each configuration over each problem", "[acobench]") {
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(test::data_dir() / "experiments")) {
+    if (entry.path().extension() != ".yaml") continue;
+    INFO(entry.path().string());
+    ++files;
+    const auto e = acobench::load_experiment(entry.path(), test::plugins());
+    CHECK(e.configurations.size() >= 1);
+  }
+  CHECK(files >= 10);
+}

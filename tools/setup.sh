@@ -6,9 +6,12 @@ set -euo pipefail
 # plugin, and with libclang-rt-14-dev tools/fuzz.sh (libFuzzer, sanitizers). chromium: the tests
 # that open the HTML report and player. python3: the player test's arithmetic. openmpi-bin and
 # libopenmpi-dev: acobench under mpirun (the release and debug presets build it with MPI).
+# python3-dev, pybind11-dev, python3-numpy: the Python package (python/) and the python bridge
+# plugins; python3-pandas, python3-pytest, python3-matplotlib: its DataFrames, tests and examples.
 packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
           nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev catch2 clang libclang-rt-14-dev
-          chromium python3 openmpi-bin libopenmpi-dev "$@")
+          chromium python3 openmpi-bin libopenmpi-dev python3-dev pybind11-dev python3-numpy python3-pandas
+          python3-pytest python3-matplotlib "$@")
 # r-cran-irace: tools/irace/run.sh and the irace_tuning_run test. Installed without its
 # recommended packages: they pull in hundreds of R packages (GDAL, spatial statistics) irace never loads.
 packages_without_recommends=(r-cran-irace)

@@ -1,0 +1,2 @@
+"""Ant-colony path planning with runtime plugins, from Python."""
+from . import _aco  # noqa: F401

@@ -91,11 +91,8 @@ std::filesystem::path bundled_map() {
 }
 
 // The settings of a --config file as Boost's parse_config_file() gives them, but read by
-// aco::read_config_settings(), whose errors name the file and the line.
-// The file's settings that the command line's slot choices leave, by aco::overlay's rule (as in
-// experiment files: a slot given another plugin drops the file's parameters of that slot; a slot
-// the file leaves unset counts as its default plugin): `--preset robust --heuristic distance` is
-// not refused for robust's heuristic.floor.
+// aco::read_config_settings(), whose errors name the file and the line: those the command line's
+// slot choices leave (aco::over_pipeline_file).
 po::parsed_options config_options(const po::options_description& options, const std::string& file, bool lenient,
                                   const po::variables_map& command_line) {
   po::parsed_options parsed(&options);
@@ -103,11 +100,8 @@ po::parsed_options config_options(const po::options_description& options, const 
   aco::KeyedValues in_file, chosen;
   for (const auto& setting : settings) in_file.keys[setting.key] = setting.value;
   for (const char* slot : aco::kSlots)
-    if (command_line.count(slot)) {
-      in_file.keys.emplace(slot, aco::default_plugin(slot));
-      chosen.keys[slot] = command_line[slot].as<std::string>();
-    }
-  const aco::Keys kept = aco::overlay(in_file, chosen).keys;
+    if (command_line.count(slot)) chosen.keys[slot] = command_line[slot].as<std::string>();
+  const aco::Keys kept = aco::over_pipeline_file(in_file, chosen).keys;
   for (const auto& setting : settings) {
     if (!kept.count(setting.key)) continue;
     po::option option(setting.key, {setting.value});

@@ -6,6 +6,7 @@
 #include "aco/error.hpp"
 #include "aco/install_layout.hpp"
 #include "aco/parameters.hpp"
+#include "aco/pipeline.hpp"
 #include "aco/run_spec.hpp"
 
 namespace aco {
@@ -58,5 +59,12 @@ KeyedValues config_file_keys(const std::filesystem::path& file) {
 }
 
 KeyedValues preset_keys(const std::string& name) { return config_file_keys(preset_file(name)); }
+
+KeyedValues over_pipeline_file(const KeyedValues& file, const KeyedValues& changes) {
+  KeyedValues in_file = file;
+  for (const char* slot : kSlots)
+    if (changes.keys.count(slot)) in_file.keys.emplace(slot, default_plugin(slot));
+  return overlay(in_file, changes);
+}
 
 }  // namespace aco

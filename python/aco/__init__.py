@@ -1,2 +1,48 @@
-"""Ant-colony path planning with runtime plugins, from Python."""
-from . import _aco  # noqa: F401
+"""Ant-colony path planning with runtime plugins, from Python.
+
+    import numpy as np, aco
+    grid = np.zeros((20, 20), dtype=bool); grid[5:15, 10] = True
+    result = aco.plan(grid, (0, 0), (19, 19), update="max_min", update_rho=0.1)
+    result.path, result.length, result.gap_percent
+
+Maps: aco.Map (numpy arrays, map files). Runs: aco.plan(), aco.astar(). Plugins: aco.plugins(),
+aco.describe(), aco.add_plugin_dir(), aco.presets(); a slot may be a Python object (update=MyUpdate()),
+run inside the native colony. Studies: aco.run_experiment(), aco.read_database(); aco.stats has the
+report's statistics. Errors raise aco.Error (a ValueError) with the command line's message.
+"""
+from __future__ import annotations
+
+import os
+from typing import Union
+
+from . import _aco, stats
+from ._planning import Error, Map, Result, astar, plan
+from ._studies import read_database, run_experiment
+
+__all__ = ["Error", "Map", "Result", "plan", "astar", "plugins", "describe", "add_plugin_dir", "presets",
+           "run_experiment", "read_database", "stats"]
+
+_extra_dirs: list = []
+
+
+def plugins() -> list:
+    """Every plugin found: dicts with kind, name, version, summary, file, unusable (why it cannot
+    be loaded, or "") and parameters (name, type, default, range, help)."""
+    return _aco.plugins()
+
+
+def describe(name: str) -> str:
+    """A plugin's description as ``acoplan --describe NAME`` prints it ("max_min" or "update/max_min")."""
+    return _aco.describe(name)
+
+
+def add_plugin_dir(folder: Union[str, os.PathLike]) -> None:
+    """Also searches ``folder`` for plugins (before ACO_PLUGIN_PATH and the default folders), as
+    ``acoplan --plugin-dir`` does."""
+    _extra_dirs.append(os.fspath(folder))
+    _aco.set_plugin_dirs(_extra_dirs)
+
+
+def presets() -> dict:
+    """The named presets (pipelines): name -> the first line of its file."""
+    return dict(_aco.presets())

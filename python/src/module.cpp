@@ -1,8 +1,296 @@
-// The native half of the Python package: aco._aco. The package's Python files (python/aco/) wrap it.
+// The native half of the Python package: aco._aco. The package's Python files (python/aco/) wrap
+// it; everything here calls the libraries the hosts call, so a run from Python is acoplan's run
+// and a study is acobench's.
+#include <pybind11/functional.h>
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include "aco/error.hpp"
+#include "aco/graph.hpp"
+#include "aco/map_io.hpp"
+#include "aco/memory_limit.hpp"
+#include "aco/pipeline.hpp"
+#include "aco/plan_report.hpp"
+#include "aco/plugin_catalog.hpp"
+#include "aco/presets.hpp"
+#include "aco/run_spec.hpp"
+#include "aco/studies/results_db.hpp"
+#include "aco/studies/runner.hpp"
+#include "aco/studies/statistics.hpp"
+#include "aco/terrain.hpp"
+#include "aco/thread_limit.hpp"
 
 namespace py = pybind11;
 
+namespace {
+
+// One registry for the module's life, as a host has one per process; extra folders rebuild it.
+std::vector<std::filesystem::path> extra_plugin_dirs;
+aco::PluginRegistry& registry() {
+  static std::unique_ptr<aco::PluginRegistry> instance;
+  static std::vector<std::filesystem::path> made_with;
+  if (!instance || made_with != extra_plugin_dirs) {
+    instance = std::make_unique<aco::PluginRegistry>(aco::PluginRegistry::default_search_dirs(extra_plugin_dirs));
+    made_with = extra_plugin_dirs;
+  }
+  return *instance;
+}
+
+// A map given as an array (from aco.Map): occupancy (nonzero = blocked) or heights (NaN = no data).
+struct ArrayMap {
+  py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> blocked;
+  py::array_t<double, py::array::c_style | py::array::forcecast> heights;
+  double cell_size = 1.0;
+  std::string name;
+};
+
+std::unique_ptr<aco::Map> make_map(const ArrayMap& source, const aco::TerrainOptions& terrain) {
+  if (source.heights.size() > 0) {
+    const int height = static_cast<int>(source.heights.shape(0)), width = static_cast<int>(source.heights.shape(1));
+    std::vector<double> heights(source.heights.data(), source.heights.data() + source.heights.size());
+    return std::make_unique<aco::TerrainMap>(width, height, source.cell_size, std::move(heights), terrain.max_slope_deg,
+                                             source.name);
+  }
+  const int height = static_cast<int>(source.blocked.shape(0)), width = static_cast<int>(source.blocked.shape(1));
+  auto grid = std::make_unique<aco::OccupancyGrid>(width, height, source.name);
+  const auto cells = source.blocked.unchecked<2>();
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) grid->set_blocked({x, y}, cells(y, x) != 0);
+  return grid;
+}
+
+// A map file as arrays, for aco.Map.load(): ("grid", blocked, 1.0, name) or ("terrain", heights, cell size, name).
+py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain_keys) {
+  aco::Keys keys = terrain_keys;
+  keys["map"] = file.string();
+  keys["start"] = keys["goal"] = "0,0";  // not checked: load_map() reads the file only
+  const aco::RunSpec run = aco::resolve_run(keys, registry(), "--");
+  const auto map = aco::load_map(file, run.problem.terrain);
+  const py::ssize_t w = map->width(), h = map->height();
+  if (const auto* terrain = dynamic_cast<const aco::TerrainMap*>(map.get())) {
+    py::array_t<double> heights({h, w});
+    auto out = heights.mutable_unchecked<2>();
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) out(y, x) = terrain->elevation({x, y});
+    return py::make_tuple("terrain", heights, terrain->cell_size(), map->name());
+  }
+  py::array_t<bool> blocked({h, w});
+  auto out = blocked.mutable_unchecked<2>();
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) out(y, x) = !map->passable({x, y});
+  return py::make_tuple("grid", blocked, 1.0, map->name());
+}
+
+std::string cell_text(const std::pair<int, int>& cell) { return std::to_string(cell.first) + "," + std::to_string(cell.second); }
+
+// One run, as acoplan's: the keys over the pipeline file (a preset, a config file, or the
+// default preset for the map's kind), resolved once, then plan_runs() and its JSON.
+py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pair<int, int> start, std::pair<int, int> goal,
+               const aco::Keys& keys, const std::string& preset, const std::string& config, std::int64_t threads) {
+  aco::KeyedValues changes;
+  changes.keys = keys;
+  changes.keys["start"] = cell_text(start);
+  changes.keys["goal"] = cell_text(goal);
+  const auto* file = std::get_if<std::filesystem::path>(&map);
+  if (file) changes.keys["map"] = file->string();
+  std::string source = preset;
+  if (!config.empty()) source = "none (config " + config + ")";
+  else if (source.empty()) source = file ? aco::default_preset(*file) : std::get<ArrayMap>(map).heights.size() ? "terrain" : "robust";
+  const aco::KeyedValues pipeline = config.empty() ? aco::preset_keys(source) : aco::config_file_keys(config);
+  const aco::RunSpec run = aco::resolve_run(aco::over_pipeline_file(pipeline, changes).keys, registry(), "--");
+
+  std::string json;
+  {
+    py::gil_scoped_release unlocked;  // plugins written in Python take it back (python bridge plugins)
+    const aco::MemoryLimit memory(std::nullopt);
+    std::unique_ptr<aco::Map> owned;
+    aco::Cell from{start.first, start.second}, to{goal.first, goal.second};
+    if (file) {
+      aco::LoadedProblem problem = aco::load_problem(run.problem);
+      owned = std::move(problem.map);
+    } else {
+      owned = make_map(std::get<ArrayMap>(map), run.problem.terrain);
+      aco::check_cell(*owned, from, "start");
+      aco::check_cell(*owned, to, "goal");
+    }
+    const aco::Graph graph = aco::build_graph(*owned, run.graph);
+    const aco::ThreadLimit limit(threads);
+    const auto runs = aco::plan_runs(registry(), graph, graph.node(from), graph.node(to), run, 1);
+    const aco::PlanReport report{run, registry(), graph, source};
+    json = aco::to_json(report, runs.front());
+  }
+  return py::make_tuple(json, source);
+}
+
+py::list plugins() {
+  py::list list;
+  for (const auto& file : registry().available()) {
+    py::dict plugin;
+    plugin["kind"] = file.kind;
+    plugin["name"] = file.name;
+    plugin["version"] = file.record.version;
+    plugin["summary"] = file.record.summary;
+    plugin["file"] = file.file.string();
+    plugin["unusable"] = file.unusable;
+    py::list parameters;
+    if (file.unusable.empty())
+      for (const auto& spec : registry().load(file.kind, file.name).parameters())
+        parameters.append(py::dict(py::arg("name") = spec.name, py::arg("type") = aco::to_string(spec.type),
+                                   py::arg("default") = spec.default_value, py::arg("range") = spec.range ? spec.range : "",
+                                   py::arg("help") = spec.help));
+    plugin["parameters"] = parameters;
+    list.append(plugin);
+  }
+  return list;
+}
+
+py::dict run_experiment(const std::filesystem::path& file, const std::filesystem::path& database, int threads,
+                        const std::function<void(std::size_t, std::size_t)>& progress) {
+  acobench::RunOptions options;
+  options.database = database;
+  options.threads = threads;
+  if (progress)
+    options.progress = [&progress](std::size_t done, std::size_t total) {
+      py::gil_scoped_acquire locked;
+      progress(done, total);
+    };
+  const acobench::Experiment experiment = acobench::load_experiment(file, registry());
+  acobench::RunSummary summary;
+  {
+    py::gil_scoped_release unlocked;
+    summary = acobench::run_experiment(experiment, registry(), options);
+  }
+  return py::dict(py::arg("trials") = summary.trials, py::arg("skipped") = summary.skipped, py::arg("ran") = summary.ran,
+                  py::arg("failures") = summary.failures, py::arg("seconds") = summary.seconds);
+}
+
+// A results database as columns (the runs, each with its problem's and configuration's name,
+// the problem's optimum and the configuration's settings JSON), in the report's order.
+py::dict read_trials(const std::filesystem::path& database) {
+  if (!std::filesystem::exists(database)) throw aco::Error(database.string() + ": no such results database");
+  const acobench::ResultsDb db(database);
+  const auto problems = db.problems();
+  std::map<int, acobench::ConfigRecord> configs;
+  for (const auto& [id, config] : db.configs()) configs[id] = config;
+  py::list problem, configuration, settings, stopped_by, error, outcome;
+  std::vector<double> optimal, length, grid_length, time_s, time_to_goal, clearance;
+  std::vector<std::int64_t> repetition, turns, iterations, best_iteration, ant_steps, collisions, replans, control_steps;
+  std::vector<std::uint64_t> seed;
+  std::vector<bool> solved;
+  const double none = std::nan("");
+  for (const auto& t : db.trials()) {
+    const auto& p = problems.at(static_cast<std::size_t>(t.problem));
+    problem.append(p.name);
+    optimal.push_back(p.optimal_length > 0 ? p.optimal_length : none);
+    configuration.append(configs.at(t.config).name);
+    settings.append(configs.at(t.config).settings_json);
+    repetition.push_back(t.repetition);
+    seed.push_back(t.seed);
+    solved.push_back(t.solved);
+    length.push_back(t.solved ? t.length : none);
+    grid_length.push_back(t.solved ? t.grid_length : none);
+    turns.push_back(t.turns);
+    iterations.push_back(t.iterations);
+    best_iteration.push_back(t.best_iteration);
+    time_s.push_back(t.time_s);
+    ant_steps.push_back(static_cast<std::int64_t>(t.ant_steps));
+    stopped_by.append(t.stopped_by);
+    error.append(t.error);
+    const auto& s = t.simulation;
+    outcome.append(s ? py::object(py::str(s->outcome)) : py::object(py::none()));
+    time_to_goal.push_back(s ? s->time_to_goal : none);
+    clearance.push_back(s ? s->clearance : none);
+    collisions.push_back(s ? s->collisions : -1);
+    replans.push_back(s ? s->replans : -1);
+    control_steps.push_back(s ? s->control_steps : -1);
+  }
+  py::dict columns;
+  columns["problem"] = problem;
+  columns["configuration"] = configuration;
+  columns["repetition"] = py::array(py::cast(repetition));
+  columns["seed"] = py::array(py::cast(seed));
+  columns["solved"] = py::array(py::cast(solved));
+  columns["length"] = py::array(py::cast(length));
+  columns["grid_length"] = py::array(py::cast(grid_length));
+  columns["optimal_length"] = py::array(py::cast(optimal));
+  columns["turns"] = py::array(py::cast(turns));
+  columns["iterations"] = py::array(py::cast(iterations));
+  columns["best_iteration"] = py::array(py::cast(best_iteration));
+  columns["time_s"] = py::array(py::cast(time_s));
+  columns["ant_steps"] = py::array(py::cast(ant_steps));
+  columns["stopped_by"] = stopped_by;
+  columns["error"] = error;
+  columns["outcome"] = outcome;
+  columns["time_to_goal"] = py::array(py::cast(time_to_goal));
+  columns["collisions"] = py::array(py::cast(collisions));
+  columns["replans"] = py::array(py::cast(replans));
+  columns["clearance"] = py::array(py::cast(clearance));
+  columns["control_steps"] = py::array(py::cast(control_steps));
+  columns["settings"] = settings;
+  return columns;
+}
+
+using Sample = std::vector<double>;
+
+}  // namespace
+
 PYBIND11_MODULE(_aco, m) {
   m.doc() = "aco's native module; use the package: import aco";
+  py::register_exception<aco::Error>(m, "Error", PyExc_ValueError);
+
+  py::class_<ArrayMap>(m, "ArrayMap")
+      .def(py::init([](py::object blocked, py::object heights, double cell_size, std::string name) {
+        ArrayMap a;
+        if (!blocked.is_none()) a.blocked = blocked.cast<decltype(a.blocked)>();
+        if (!heights.is_none()) a.heights = heights.cast<decltype(a.heights)>();
+        a.cell_size = cell_size;
+        a.name = std::move(name);
+        return a;
+      }));
+  m.def("map_arrays", &map_arrays, py::arg("file"), py::arg("terrain_keys"));
+  m.def("plan", &plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::arg("keys"), py::arg("preset"),
+        py::arg("config"), py::arg("threads"));
+  m.def("plugins", &plugins);
+  // The prefixes of parameter keys ("update" of "update.rho", "ifwa" of "ifwa.radius").
+  m.def("key_scopes", [] {
+    std::vector<std::string> scopes(aco::kSlots.begin(), aco::kSlots.end());
+    for (const auto& planner : aco::planners_with_parameters()) scopes.push_back(planner);
+    return scopes;
+  });
+  m.def("describe", [](const std::string& name) { return aco::describe_plugin(registry(), name); });
+  m.def("set_plugin_dirs", [](const std::vector<std::filesystem::path>& dirs) { extra_plugin_dirs = dirs; });
+  m.def("search_dirs", [] { return registry().search_dirs(); });
+  m.def("presets", [] {
+    std::vector<std::pair<std::string, std::string>> list;
+    for (const auto& p : aco::list_presets()) list.emplace_back(p.name, p.summary);
+    return list;
+  });
+  m.def("run_experiment", &run_experiment, py::arg("file"), py::arg("database"), py::arg("threads"), py::arg("progress"));
+  m.def("read_trials", &read_trials, py::arg("database"));
+
+  // The report's statistics (aco/studies/statistics.hpp), on plain samples.
+  m.def("summarize", [](const Sample& s) {
+    const auto r = acobench::summarize(s);
+    return py::dict(py::arg("n") = r.n, py::arg("mean") = r.mean, py::arg("sd") = r.stddev, py::arg("median") = r.median,
+                    py::arg("q1") = r.q1, py::arg("q3") = r.q3, py::arg("iqr") = r.iqr, py::arg("ci_low") = r.ci_low,
+                    py::arg("ci_high") = r.ci_high, py::arg("min") = r.min, py::arg("max") = r.max);
+  });
+  m.def("mann_whitney_u", [](const Sample& a, const Sample& b) {
+    const auto r = acobench::mann_whitney_u(a, b);
+    return py::dict(py::arg("u") = r.u, py::arg("p") = r.p, py::arg("exact") = r.exact);
+  });
+  m.def("holm_adjust", [](const Sample& p) { return acobench::holm_adjust(p); });
+  m.def("vargha_delaney_a12", [](const Sample& a, const Sample& b) { return acobench::vargha_delaney_a12(a, b); });
+  m.def("effect_size", [](double a12) { return std::string(acobench::to_string(acobench::effect_size(a12))); });
+  m.def("average_ranks", [](const std::vector<Sample>& scores) { return acobench::average_ranks(scores); });
+  m.def("ecdf", [](Sample hitting_times, const Sample& at) { return acobench::ecdf(hitting_times, at); });
+  m.def("expected_running_time", [](const Sample& hitting_times, const Sample& efforts) {
+    return acobench::expected_running_time(hitting_times, efforts);
+  });
 }

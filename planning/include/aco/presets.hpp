@@ -29,6 +29,12 @@ std::vector<PresetInfo> list_presets();
 KeyedValues config_file_keys(const std::filesystem::path& file);
 KeyedValues preset_keys(const std::string& name);
 
+// A pipeline file's keys (a preset's, a --config file's) under `changes`, by aco::overlay's rule
+// with a slot the file leaves unset counting as its default plugin: where `changes` give a slot
+// another plugin, the file's parameters of that slot are dropped, so `--preset robust
+// --heuristic distance` is not refused for robust's heuristic.floor.
+KeyedValues over_pipeline_file(const KeyedValues& file, const KeyedValues& changes);
+
 // What a command without --config or --preset runs (the recommended pipeline for the map's
 // kind): "terrain" for a height map (.asc, .pgm; a Moving AI .scen file by the map it names),
 // "robust" for any other map, or none given.

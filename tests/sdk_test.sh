@@ -146,4 +146,27 @@ grep -q '"outcome":"reached"' "$work/library_user.log"
 # The same simulation as the installed acosim's.
 [ "$(cat "$work/library_user.log")" = "$("$bin/acosim" "$share/scenarios/paper003_static.yaml" --json)" ]
 
+# The installed Python package (when the build has it), from outside the checkout, with the
+# installed plugins: a run on a numpy grid, and the same run as the installed acoplan's.
+site=$(find "$prefix" -type d -path "*/site-packages/aco" | head -1)
+python=$(sed -n 's/^ACO_PYTHON_EXECUTABLE:INTERNAL=//p' "$build/CMakeCache.txt")
+if [ -n "$site" ]; then
+  (cd "$work" && PYTHONPATH="$(dirname "$site")" "$python" - "$prefix" <<'PY'
+import json, subprocess, sys
+import numpy as np
+import aco
+prefix = sys.argv[1]
+assert aco.__file__.startswith(prefix), aco.__file__
+assert aco.plan(np.zeros((20, 20), bool), (0, 0), (19, 19), seed=2).solved
+mine = aco.plan(prefix + "/share/aco/maps/classic20/map1.txt", (0, 0), (19, 19), seed=2, threads=1).json
+theirs = json.loads(subprocess.run([prefix + "/bin/acoplan", "--seed", "2", "--threads", "1", "--json"],
+                                   capture_output=True, text=True, check=True).stdout)
+for run in (mine, theirs):
+    run.pop("time_ms"), run.pop("convergence_time_s")
+assert mine == theirs
+assert mine["plugins"]["update"]["file"].startswith(prefix)
+PY
+  )
+fi
+
 echo "sdk: ok"

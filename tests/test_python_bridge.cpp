@@ -104,6 +104,11 @@ TEST_CASE("a python hook may return a new array and an object made already is us
   const auto from_class = results(with(problem(1, 1), python("update", "bridge_fixtures:ReturnsCopy", fixtures)));
   CHECK(results(with(problem(1, 1), python("update", "bridge_fixtures:instance", fixtures))) == from_class);
   CHECK(from_class != results(with(problem(1, 1), {"--update", "ant_system"})));
+  // An attribute of a module that is only in sys.modules (the heuristic's class imported the
+  // fixtures, which put it there): no path needed.
+  const auto live = with(problem(1, 1), python("heuristic", "bridge_fixtures:FixedHeuristic", fixtures));
+  const auto fixed = with(live, python("update", "bridge_fixtures:ReturnsCopy", fixtures));
+  CHECK(results(with(live, {"--update", "python", "--update.class", "bridge_live:o17"})) == results(fixed));
 }
 
 TEST_CASE("python plugins name the plugin and what is wrong with the object they are given", "[python][bad-input]") {

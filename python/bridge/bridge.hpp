@@ -40,6 +40,15 @@ class Object {
 std::unique_ptr<Object> make_object(const std::string& slot, const ParameterValues& values,
                                     std::initializer_list<const char*> required);
 
+// What each python plugin is: its slot's interface over the object its parameters name.
+template <class Interface>
+class Adapter : public Interface {
+ protected:
+  Adapter(const std::string& slot, const ParameterValues& values, std::initializer_list<const char*> required)
+      : object_(make_object(slot, values, required)) {}
+  std::unique_ptr<Object> object_;
+};
+
 // The helper's entry point (dlsym name "aco_python_make_object").
 using MakeObject = Object* (*)(const std::string& slot, const std::string& object, const std::string& path,
                                const std::vector<std::string>& required);

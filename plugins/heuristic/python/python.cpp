@@ -4,18 +4,16 @@
 
 namespace {
 
-class PythonHeuristic final : public aco::Heuristic {
+class PythonHeuristic final : public aco::python::Adapter<aco::Heuristic> {
  public:
   explicit PythonHeuristic(const aco::ParameterValues& values)
-      : object_(aco::python::make_object("heuristic", values, {"compute(self, context, eta)"})),
-        varies_(object_->flag("varies_by_iteration")) {}
+      : Adapter("heuristic", values, {"compute(self, context, eta)"}), varies_(object_->flag("varies_by_iteration")) {}
   void compute(const aco::Context& context, std::span<double> eta) override {
     object_->call("compute", context, nullptr, eta);
   }
   bool varies_by_iteration() const override { return varies_; }
 
  private:
-  std::unique_ptr<aco::python::Object> object_;
   bool varies_;
 };
 

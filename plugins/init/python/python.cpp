@@ -4,16 +4,13 @@
 
 namespace {
 
-class PythonInit final : public aco::PheromoneInit {
+class PythonInit final : public aco::python::Adapter<aco::PheromoneInit> {
  public:
   explicit PythonInit(const aco::ParameterValues& values)
-      : object_(aco::python::make_object("init", values, {"initialize(self, context, tau)"})) {}
+      : Adapter("init", values, {"initialize(self, context, tau)"}) {}
   void initialize(const aco::Context& context, std::span<double> tau) override {
     object_->call("initialize", context, nullptr, tau);
   }
-
- private:
-  std::unique_ptr<aco::python::Object> object_;
 };
 
 }  // namespace

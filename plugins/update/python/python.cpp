@@ -4,11 +4,10 @@
 
 namespace {
 
-class PythonUpdate final : public aco::PheromoneUpdate {
+class PythonUpdate final : public aco::python::Adapter<aco::PheromoneUpdate> {
  public:
   explicit PythonUpdate(const aco::ParameterValues& values)
-      : object_(aco::python::make_object("update", values, {"update(self, context, iteration, tau)"})),
-        has_start_(object_->has("start")) {}
+      : Adapter("update", values, {"update(self, context, iteration, tau)"}), has_start_(object_->has("start")) {}
   void update(const aco::Context& context, const aco::Iteration& iteration, std::span<double> tau) override {
     object_->call("update", context, &iteration, tau);
   }
@@ -17,7 +16,6 @@ class PythonUpdate final : public aco::PheromoneUpdate {
   }
 
  private:
-  std::unique_ptr<aco::python::Object> object_;
   bool has_start_;
 };
 

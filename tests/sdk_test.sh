@@ -49,7 +49,8 @@ example="$work/rank_based_as/plugins/aco_update_rank_based_as.so"
 grep -q "^PASS update/rank_based_as \[w=1\] threads" "$work/check-example.log"
 # One process per plugin, as the suite's conformance_* tests run them (under ThreadSanitizer, one
 # process over all plugins once reported TBB's task hand-off unsymbolised, so unsuppressed).
-for plugin in "$prefix"/lib/aco/plugins/*.so; do
+# (aco_*.so: the python plugins' helper library beside them, libaco_python_bridge.so, is none.)
+for plugin in "$prefix"/lib/aco/plugins/aco_*.so; do
   "$bin/aco-plugin-check" "$plugin" >> "$work/check-bundled.log" ||
     { grep -v "^PASS" "$work/check-bundled.log" >&2; exit 1; }
 done
@@ -67,6 +68,15 @@ grep -q '"local":"my_local"' <<< "$out"
 out=$("$acoplan" --plugin-dir "$work/rank_based_as/plugins" --update rank_based_as --update.w 4 --json)
 grep -q '"solved":true' <<< "$out"
 grep -q '"update":"rank_based_as","update.q":1.0,"update.rho":0.1,"update.w":4' <<< "$out"
+# The python plugins, when built: the installed helper library runs a Python class, the example
+# Ant System, which plans as the native plugin does.
+if [ -e "$prefix/lib/aco/plugins/aco_update_python.so" ]; then
+  out=$("$acoplan" --update python --update.class ant_system:AntSystem --update.path "$source/examples/python" --json)
+  grep -q '"update":"python","update.class":"ant_system:AntSystem"' <<< "$out"
+  grep -q "\"file\":\"$prefix/lib/aco/plugins/aco_update_python.so\"" <<< "$out"
+  length() { grep -o '"length":[^,]*' <<< "$1"; }
+  [ "$(length "$out")" = "$(length "$("$acoplan" --update ant_system --json)")" ]
+fi
 
 # The installed host uses the plugins and data installed with it, and nothing of the build tree:
 # every plugin it lists is an installed file, the folders it searches are the installed one and

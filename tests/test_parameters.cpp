@@ -2,6 +2,7 @@
 
 #include "aco/error.hpp"
 #include "aco/parameters.hpp"
+#include "aco/settings_table.hpp"
 
 using Catch::Contains;
 
@@ -77,4 +78,29 @@ TEST_CASE("nearest finds close spellings and rejects unrelated words", "[paramet
   CHECK(aco::nearest("alhpa", keys) == "alpha");
   CHECK(aco::nearest("update.rh", keys) == "update.rho");
   CHECK(aco::nearest("completelydifferent", keys).empty());
+}
+
+TEST_CASE("a text parameter takes any string and its table field reads and writes it", "[parameters]") {
+  const aco::ParamSpec spec{"class", aco::ParamType::text, "", "", "the object"};
+  for (const std::string value : {"", "ant_system:AntSystem", "a b,c:d", "0.5"})
+    CHECK(std::get<std::string>(aco::parse_value(spec, value, "--update.class")) == value);
+  CHECK(std::string(aco::to_string(aco::ParamType::text)) == "text");
+  CHECK(aco::shown_default(spec) == "\"\"");
+  CHECK_FALSE(aco::numeric_range(spec));
+  CHECK(aco::choices(spec).empty());
+
+  struct Settings {
+    std::string object = "m:C";
+  };
+  const aco::SettingsTable<Settings> table({aco::text_field("class", &Settings::object, "the object")});
+  const auto rows = table.parameters();
+  REQUIRE(rows.size() == 1);
+  CHECK(rows[0].type == aco::ParamType::text);
+  CHECK(std::string(rows[0].default_value) == "m:C");
+  CHECK(aco::shown_default(rows[0]) == "m:C");
+  CHECK_NOTHROW(aco::check_table(rows, "plugin t"));
+  const auto values = aco::resolve(rows, {{"class", "pkg.mod:Other"}}, "--update.");
+  CHECK(values.text("class") == "pkg.mod:Other");
+  CHECK(table.read(values).object == "pkg.mod:Other");
+  CHECK(std::get<std::string>(table.write(Settings{}).all().at("class")) == "m:C");
 }

@@ -55,7 +55,8 @@ TEST_CASE("removing one plugin library leaves the others working", "[registry]")
   aco::PluginRegistry registry({dir});
   CHECK(registry.find("update", "max_min") == nullptr);
   REQUIRE_THROWS_WITH(registry.load("update", "max_min"),
-                      Contains("unknown update plugin 'max_min'") && Contains("available: acs, ant_system, elite, gaussian, population, wolf_pack"));
+                      Contains("unknown update plugin 'max_min'") && Contains("available: acs, ant_system, elite, gaussian, population") &&
+                          Contains("wolf_pack; searched:"));  // python between them when built
   const auto& d = registry.load("update", "ant_system");
   auto update = registry.create<aco::PheromoneUpdate>("update", "ant_system", aco::resolve(d.parameters(), {}, ""));
   CHECK(update != nullptr);

@@ -70,8 +70,13 @@ const char* to_string(ParamType type) {
     case ParamType::real: return "real";
     case ParamType::boolean: return "bool";
     case ParamType::categorical: return "categorical";
+    case ParamType::text: return "text";
   }
   return "?";
+}
+
+std::string shown_default(const ParamSpec& spec) {
+  return spec.type == ParamType::text && *spec.default_value == '\0' ? "\"\"" : spec.default_value;
 }
 
 KeyError::~KeyError() = default;
@@ -105,7 +110,7 @@ std::int64_t ParameterValues::integer(const std::string& name) const { return ty
 double ParameterValues::real(const std::string& name) const { return typed<double>(at(name), name, "real"); }
 bool ParameterValues::boolean(const std::string& name) const { return typed<bool>(at(name), name, "bool"); }
 const std::string& ParameterValues::text(const std::string& name) const {
-  return typed<std::string>(at(name), name, "categorical");
+  return typed<std::string>(at(name), name, "categorical or text");
 }
 
 std::optional<NumericRange> numeric_range(const ParamSpec& spec) {
@@ -146,6 +151,7 @@ ParamValue parse_value(const ParamSpec& spec, const std::string& text, const std
       if (no.count(text)) return false;
       throw Error(key + ": " + quoted + " is not a boolean (use true or false)");
     }
+    case ParamType::text: return text;
     case ParamType::categorical: {
       const auto options = choices(spec);
       if (std::find(options.begin(), options.end(), text) != options.end()) return text;

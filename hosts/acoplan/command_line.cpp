@@ -30,12 +30,13 @@ std::string type_hint(const aco::ParamSpec& spec) {
     case aco::ParamType::real: return "X";
     case aco::ParamType::boolean: return "BOOL";
     case aco::ParamType::categorical: return spec.range;
+    case aco::ParamType::text: return "TEXT";
   }
   return "V";
 }
 
 std::string help_text(const aco::ParamSpec& spec) {
-  std::string text = std::string(spec.help) + " [" + aco::to_string(spec.type) + ", default " + spec.default_value;
+  std::string text = std::string(spec.help) + " [" + aco::to_string(spec.type) + ", default " + aco::shown_default(spec);
   if (spec.type != aco::ParamType::boolean && spec.type != aco::ParamType::categorical && spec.range && *spec.range)
     text += ", range " + std::string(spec.range);
   return text + "]";

@@ -80,6 +80,8 @@ Domain domain(const aco::ParamSpec& spec) {
     }
     case aco::ParamType::integer:
     case aco::ParamType::real: return numeric_domain(spec);
+    // irace samples numbers and choices; a text (a Python class, a file) is for the user to fix.
+    case aco::ParamType::text: return {"", "", "free text is not tuned"};
   }
   return {"", "", "unknown parameter type"};
 }
@@ -118,7 +120,17 @@ void add_slot(ParameterFile& file, aco::PluginRegistry& registry, const std::str
   std::vector<std::pair<std::string, const aco::PluginDescriptor*>> plugins;
   for (const auto& name : registry.names(slot)) {
     try {
-      plugins.emplace_back(name, &registry.load(slot, name));
+      const aco::PluginDescriptor& descriptor = registry.load(slot, name);
+      // Such a plugin needs its text set (python needs its class): irace would run it without.
+      const auto params = descriptor.parameters();
+      const auto text = std::find_if(params.begin(), params.end(), [](const auto& p) { return p.type == aco::ParamType::text; });
+      if (text != params.end()) {
+        file.comment("skipped " + slot + "/" + name + ": its text parameter " + text->name +
+                     " is not tuned (to tune the other slots around it, pass --" + slot + " " + name + " and its --" +
+                     slot + "." + text->name + " in the target runner)");
+        continue;
+      }
+      plugins.emplace_back(name, &descriptor);
     } catch (const aco::Error& e) {
       file.comment("skipped " + slot + "/" + name + ": " + e.what());
     }

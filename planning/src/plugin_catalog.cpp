@@ -70,7 +70,7 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
   }
   out << "parameters (--" << d.kind << ".NAME VALUE):\n";
   for (const auto& spec : d.parameters())
-    out << "  " << spec.name << "  " << aco::to_string(spec.type) << "  default " << spec.default_value
+    out << "  " << spec.name << "  " << aco::to_string(spec.type) << "  default " << aco::shown_default(spec)
         << (spec.range && *spec.range ? std::string("  range ") + spec.range : std::string()) << "\n      " << spec.help
         << "\n";
   return out.str();

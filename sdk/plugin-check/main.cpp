@@ -9,10 +9,11 @@
 
 int main(int argc, char** argv) {
   const std::string usage =
-      "usage: aco-plugin-check [--integer-cap N] FILE.so...\n"
+      "usage: aco-plugin-check [--integer-cap N] [--set NAME=VALUE]... FILE.so...\n"
       "Runs every plugin in each file at its defaults and at the ends of its parameter ranges on tiny maps and\n"
       "checks that its values are finite and non-negative, that it is deterministic per seed, and that 1 and 4\n"
-      "threads give the same result. Whole-number range ends above N (default 100) are run at N.\n";
+      "threads give the same result. Whole-number range ends above N (default 100) are run at N. --set gives a\n"
+      "parameter the value every run starts from (a text parameter, such as the python plugins' class).\n";
   aco::conformance::Options options;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
@@ -29,6 +30,15 @@ int main(int argc, char** argv) {
         return 2;
       }
       options.integer_cap = cap;
+      ++i;
+    } else if (arg == "--set") {
+      const std::string setting = i + 1 < argc ? argv[i + 1] : "";
+      const auto equals = setting.find('=');
+      if (equals == std::string::npos || equals == 0) {
+        std::cerr << "aco-plugin-check: --set needs NAME=VALUE\n" << usage;
+        return 2;
+      }
+      options.fixed[setting.substr(0, equals)] = setting.substr(equals + 1);
       ++i;
     } else if (arg.rfind("--", 0) == 0) {
       std::cerr << "aco-plugin-check: unknown option " << arg << "\n" << usage;

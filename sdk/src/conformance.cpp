@@ -131,6 +131,7 @@ std::vector<ParameterSet> parameter_sets(std::span<const ParamSpec> table, std::
       for (const auto& choice : choices(spec)) add(choice);
       continue;
     }
+    if (spec.type == ParamType::text) continue;  // no other value to try
     const auto range = numeric_range(spec);
     if (!range) continue;
     const bool integer = spec.type == ParamType::integer;
@@ -494,7 +495,9 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
     auto result = [&](const std::string& check, const std::string& detail, CheckResult::Status status) {
       report({label, set.label, check, status, detail});
     };
-    const ParameterValues values = resolve(descriptor.parameters(), set.given, plugin.kind + ".");
+    std::map<std::string, std::string> given = set.given;
+    given.insert(options.fixed.begin(), options.fixed.end());  // the set's own value wins
+    const ParameterValues values = resolve(descriptor.parameters(), given, plugin.kind + ".");
     // A fresh instance per pass; the factory refusing a value with aco::Error is its right.
     auto make = [&]() -> std::unique_ptr<Interface> {
       std::unique_ptr<Strategy> strategy(descriptor.create(values));

@@ -14,10 +14,11 @@
 
 namespace aco {
 
-enum class ParamType { integer, real, boolean, categorical };
+// text: any string (a Python class, a file name); no range, and never tuned by irace.
+enum class ParamType { integer, real, boolean, categorical, text };
 
 // Range syntax: "low:high" or "low:step:high" (closed, "inf" allowed; a leading "(" or a
-// trailing ")" makes that end open), or "a,b,c" for categorical values. Booleans need none.
+// trailing ")" makes that end open), or "a,b,c" for categorical values. Booleans and texts need none.
 struct ParamSpec {
   const char* name;
   ParamType type;
@@ -30,6 +31,8 @@ using ParamValue = std::variant<std::int64_t, double, bool, std::string>;
 
 std::string to_string(const ParamValue& value);
 const char* to_string(ParamType type);
+// The default as help texts show it: "" for an empty text, which would otherwise show as nothing.
+std::string shown_default(const ParamSpec& spec);
 
 class BOOST_SYMBOL_VISIBLE ParameterValues {
  public:

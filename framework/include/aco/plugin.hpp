@@ -36,8 +36,10 @@ namespace aco {
 // 7: LocalView::path (the rest of the global path).
 // 8: the plugin record (section ".aco_plugins"); PluginDescriptor::compiler_abi removed (the
 //    record's standard-library marker replaces it).
+// 9: ParamType::text (free-text parameters, the python bridge's class and path): a value a
+//    parameter table, and so the descriptor, may hold that older hosts cannot read.
 // A literal, so the record can spell it; kPluginAbiVersion is the one to use in code.
-#define ACO_FRAMEWORK_PLUGIN_ABI 8
+#define ACO_FRAMEWORK_PLUGIN_ABI 9
 inline constexpr std::uint32_t kPluginAbiVersion = ACO_FRAMEWORK_PLUGIN_ABI;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";

@@ -9,6 +9,9 @@
 //   });
 //   ColonySettings s = table.read(values);
 //
+// field() takes a std::string member as categorical (its range lists the values); text_field()
+// takes one as free text.
+//
 // A plugin declares its parameters the same way (a struct, its table, ACO_PLUGIN(..., kParams));
 // a group of fields shared by several owners (the potential field's gains) joins a table
 // through nested().
@@ -56,6 +59,15 @@ SettingsField<Settings> field(const char* name, Member Settings::*member, const 
     f.get = [member](const Settings& s) { return ParamValue(static_cast<double>(s.*member)); };
     f.set = [member](Settings& s, const ParamValue& v) { s.*member = static_cast<Member>(std::get<double>(v)); };
   }
+  return f;
+}
+
+// Any text: a Python class, a file name. No range to check; irace does not tune it.
+template <class Settings>
+SettingsField<Settings> text_field(const char* name, std::string Settings::*member, const char* help) {
+  SettingsField<Settings> f{name, ParamType::text, "", help, {}, {}};
+  f.get = [member](const Settings& s) { return ParamValue(s.*member); };
+  f.set = [member](Settings& s, const ParamValue& v) { s.*member = std::get<std::string>(v); };
   return f;
 }
 

@@ -80,11 +80,14 @@ struct ParameterSet {
 // The defaults, then each parameter at each end of its range, one at a time (an open end a
 // thousandth of its size, at least of 1, inside it; an infinite end not at all; a whole number
 // above integer_cap at the cap: counts like iterations scale the work), each other choice of a
-// categorical, the other value of a boolean.
+// categorical, the other value of a boolean; a text parameter stays at its default.
 std::vector<ParameterSet> parameter_sets(std::span<const ParamSpec> table, std::int64_t integer_cap);
 
 struct Options {
   std::int64_t integer_cap = 100;
+  // Values every parameter set runs with (aco-plugin-check --set NAME=VALUE): a text parameter's
+  // above all, which the sets never vary (python's class has no value that runs everywhere).
+  std::map<std::string, std::string> fixed;
   ColonySettings colony = [] {
     ColonySettings s;
     s.ants = 8;

@@ -240,6 +240,20 @@ TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range val
   expect_error({"--config", "/nonexistent.ini"}, "/nonexistent.ini: cannot open the config file");
 }
 
+TEST_CASE("a plugin folder that is missing or is a file is refused by every host naming which", "[acoplan][bad-input]") {
+  const std::string plugin = std::string(ACO_TEST_BAD_PLUGIN_DIR) + "/aco_update_wrong_abi.so";
+  expect_error({"--plugin-dir", "/no/such/dir"}, "--plugin-dir /no/such/dir: no such folder");
+  expect_error({"--plugin-dir", plugin, "--list-plugins"},
+               "--plugin-dir " + plugin + ": a file, not a folder; give the folder it is in (--plugin-dir " +
+                   ACO_TEST_BAD_PLUGIN_DIR + ")");
+  const auto bench = test::run({ACO_TEST_ACOBENCH, "run", "no.yaml", "--plugin-dir", "/no/such/dir"});
+  CHECK(bench.exit_code == 1);
+  CHECK_THAT(bench.err, Contains("--plugin-dir /no/such/dir: no such folder"));
+  const auto sim = test::run({ACO_TEST_ACOSIM, "no.yaml", "--plugin-dir", "/no/such/dir"});
+  CHECK(sim.exit_code == 1);
+  CHECK_THAT(sim.err, Contains("--plugin-dir /no/such/dir: no such folder"));
+}
+
 TEST_CASE("acoplan refuses a plugin built for another ABI version", "[acoplan][bad-input][abi]") {
   expect_error({"--plugin-dir", ACO_TEST_BAD_PLUGIN_DIR, "--update", "wrong_abi"},
                "plugin update/wrong_abi (" + std::string(ACO_TEST_BAD_PLUGIN_DIR) +

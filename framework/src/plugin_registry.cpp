@@ -150,6 +150,16 @@ PluginRegistry::PluginRegistry(std::vector<fs::path> search_dirs) : dirs_(std::m
 }
 
 std::vector<fs::path> PluginRegistry::default_search_dirs(const std::vector<fs::path>& extra) {
+  // A folder the user named must be one: a missing folder would otherwise only show later as
+  // "unknown plugin", and a plugin file given as the folder would be silently skipped.
+  for (const auto& dir : extra) {
+    std::error_code error;
+    if (fs::is_directory(dir, error)) continue;
+    if (fs::exists(dir, error))
+      throw Error("--plugin-dir " + dir.string() + ": a file, not a folder; give the folder it is in (--plugin-dir " +
+                  (dir.has_parent_path() ? dir.parent_path().string() : std::string(".")) + ")");
+    throw Error("--plugin-dir " + dir.string() + ": no such folder");
+  }
   std::vector<fs::path> dirs = extra;
   if (const char* env = std::getenv("ACO_PLUGIN_PATH")) {
     std::istringstream parts(env);

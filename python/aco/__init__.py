@@ -39,8 +39,13 @@ def describe(name: str) -> str:
 def add_plugin_dir(folder: Union[str, os.PathLike]) -> None:
     """Also searches ``folder`` for plugins (before ACO_PLUGIN_PATH and the default folders), as
     ``acoplan --plugin-dir`` does."""
+    _aco.set_plugin_dirs(_extra_dirs + [os.fspath(folder)])
+    try:
+        _aco.search_dirs()  # a missing folder, or a file given as one, is refused now, not at the next plan
+    except Error:
+        _aco.set_plugin_dirs(_extra_dirs)
+        raise
     _extra_dirs.append(os.fspath(folder))
-    _aco.set_plugin_dirs(_extra_dirs)
 
 
 def presets() -> dict:

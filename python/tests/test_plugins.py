@@ -35,3 +35,9 @@ def test_presets_are_listed():
     presets = aco.presets()
     assert {"robust", "terrain", "paper001", "ant-system"} <= set(presets)
     assert all(presets.values())
+
+
+def test_a_missing_plugin_folder_is_refused_at_once():
+    with pytest.raises(aco.Error, match="--plugin-dir /no/such/dir: no such folder"):
+        aco.add_plugin_dir("/no/such/dir")
+    assert aco.plugins()  # the folders before it still serve

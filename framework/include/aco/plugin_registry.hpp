@@ -41,7 +41,8 @@ class BOOST_SYMBOL_VISIBLE PluginRegistry {
 
   // `extra` (e.g. --plugin-dir), then every folder of ACO_PLUGIN_PATH, then the bundled plugins:
   // <prefix>/lib/aco/plugins of an installed libaco, or the build tree's plugin folder of one run
-  // from its build tree (aco/install_layout.hpp).
+  // from its build tree (aco/install_layout.hpp). A folder of `extra` that is missing or is a
+  // file is an Error saying which.
   static std::vector<std::filesystem::path> default_search_dirs(const std::vector<std::filesystem::path>& extra = {});
 
   const std::vector<std::filesystem::path>& search_dirs() const { return dirs_; }

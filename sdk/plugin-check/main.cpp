@@ -1,6 +1,9 @@
-// aco-plugin-check FILE.so...: the conformance checks (aco/conformance.hpp) on every plugin in
-// each file, one line per check; exits 1 if any check failed, 2 on a usage error.
+// aco-plugin-check FILE.so|FOLDER...: the conformance checks (aco/conformance.hpp) on every plugin
+// in each file (a folder: each aco_*.so in it), one line per check, then the failures again;
+// exits 1 if any check failed, 2 on a usage error.
+#include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -9,11 +12,12 @@
 
 int main(int argc, char** argv) {
   const std::string usage =
-      "usage: aco-plugin-check [--integer-cap N] [--set NAME=VALUE]... FILE.so...\n"
+      "usage: aco-plugin-check [--integer-cap N] [--set NAME=VALUE]... FILE.so|FOLDER...\n"
       "Runs every plugin in each file at its defaults and at the ends of its parameter ranges on tiny maps and\n"
       "checks that its values are finite and non-negative, that it is deterministic per seed, and that 1 and 4\n"
       "threads give the same result. Whole-number range ends above N (default 100) are run at N. --set gives a\n"
-      "parameter the value every run starts from (a text parameter, such as the python plugins' class).\n";
+      "parameter the value every run starts from (a text parameter, such as the python plugins' class). A FOLDER\n"
+      "checks every plugin library (aco_*.so) in it.\n";
   aco::conformance::Options options;
   std::vector<std::string> files;
   for (int i = 1; i < argc; ++i) {
@@ -43,6 +47,18 @@ int main(int argc, char** argv) {
     } else if (arg.rfind("--", 0) == 0) {
       std::cerr << "aco-plugin-check: unknown option " << arg << "\n" << usage;
       return 2;
+    } else if (std::filesystem::is_directory(arg)) {
+      std::vector<std::string> in_folder;
+      for (const auto& entry : std::filesystem::directory_iterator(arg)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("aco_", 0) == 0 && entry.path().extension() == ".so") in_folder.push_back(entry.path().string());
+      }
+      if (in_folder.empty()) {
+        std::cerr << "aco-plugin-check: " << arg << ": a folder with no plugin library (aco_*.so) in it\n";
+        return 2;
+      }
+      std::sort(in_folder.begin(), in_folder.end());
+      files.insert(files.end(), in_folder.begin(), in_folder.end());
     } else {
       files.push_back(arg);
     }
@@ -52,16 +68,22 @@ int main(int argc, char** argv) {
     return 2;
   }
   int checks = 0, failed = 0;
-  try {
-    for (const auto& file : files)
+  std::vector<std::string> failures;
+  for (const auto& file : files) {
+    try {
       failed += aco::conformance::check_file(file, options, [&](const aco::conformance::CheckResult& result) {
         ++checks;
         std::cout << result.line() << std::endl;
+        if (result.status == aco::conformance::CheckResult::Status::fail) failures.push_back(result.line());
       });
-  } catch (const std::exception& e) {
-    std::cerr << "aco-plugin-check: error: " << e.what() << "\n";
-    return 1;
+    } catch (const std::exception& e) {  // a file that is no plugin, or cannot load: the others are still checked
+      const std::string line = "FAIL " + file + " loads: " + e.what();
+      std::cout << line << std::endl;
+      failures.push_back(line);
+      ++checks, ++failed;
+    }
   }
   std::cout << "aco-plugin-check: " << checks << " checks, " << failed << " failed\n";
+  for (const auto& failure : failures) std::cout << "  " << failure << "\n";
   return failed == 0 ? 0 : 1;
 }

@@ -4,6 +4,7 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -117,18 +118,18 @@ std::vector<IterationCase> standard_iterations(const Problem& problem) {
 // --- Parameter sets ----------------------------------------------------------------------------
 
 std::vector<ParameterSet> parameter_sets(std::span<const ParamSpec> table, std::int64_t integer_cap) {
-  std::vector<ParameterSet> sets{{"defaults", {}}};
+  std::vector<ParameterSet> sets{{"defaults", {}, ""}};
   for (const ParamSpec& spec : table) {
     const std::string name = spec.name, default_value = spec.default_value;
-    auto add = [&](const std::string& value, const std::string& note = "") {
-      if (value != default_value) sets.push_back({name + "=" + value + note, {{name, value}}});
+    auto add = [&](const std::string& value, const std::string& note = "", const std::string& if_refused = "") {
+      if (value != default_value) sets.push_back({name + "=" + value + note, {{name, value}}, if_refused});
     };
     if (spec.type == ParamType::boolean) {
-      add(default_value == "true" ? "false" : "true");
+      add(default_value == "true" ? "false" : "true", "", "a categorical with the one value it takes");
       continue;
     }
     if (spec.type == ParamType::categorical) {
-      for (const auto& choice : choices(spec)) add(choice);
+      for (const auto& choice : choices(spec)) add(choice, "", "no choice '" + choice + "'");
       continue;
     }
     if (spec.type == ParamType::text) continue;  // no other value to try
@@ -147,13 +148,17 @@ std::vector<ParameterSet> parameter_sets(std::span<const ParamSpec> table, std::
         if (std::isfinite(span)) inward = std::min(inward, span / 2);
         value += low_end ? inward : -inward;
       }
+      // An end the plugin refuses should have been declared open.
+      const std::string declared = spec.range;
+      const bool closed = !(low_end ? range->low_open : range->high_open);
+      const std::string open_end = closed ? "the range " + (low_end ? "(" + declared : declared + ")") : "a narrower range";
       if (!integer) {
-        add(number(value));
+        add(number(value), "", open_end);
       } else if (value > static_cast<double>(integer_cap)) {
         add(std::to_string(std::max<std::int64_t>(integer_cap, static_cast<std::int64_t>(std::ceil(range->low)))),
-            " (range end " + number(value) + " capped)");
+            " (range end " + number(value) + " capped)", "a narrower range");
       } else {
-        add(std::to_string(static_cast<std::int64_t>(value)));
+        add(std::to_string(static_cast<std::int64_t>(value)), "", open_end);
       }
     }
   }
@@ -491,7 +496,33 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
   const std::string label = plugin.kind + "/" + plugin.name;
   const std::vector<Problem> problems = standard_problems();
   const bool colony = !std::is_same_v<Interface, Smoother> && !std::is_same_v<Interface, LocalPlanner>;
-  for (const auto& set : parameter_sets(descriptor.parameters(), options.integer_cap)) {
+  const std::vector<ParameterSet> sets = parameter_sets(descriptor.parameters(), options.integer_cap);
+  // Whether a refusal of `set`'s value is of a combination the table cannot express (a < b):
+  // the message names another parameter, or the factory takes the value beside another
+  // parameter's tried value.
+  auto taken_in_some_combination = [&](const ParameterSet& set, const std::string& message) {
+    for (const ParamSpec& spec : descriptor.parameters()) {
+      const std::string name = spec.name;
+      if (name == set.given.begin()->first) continue;
+      for (auto at = message.find(name); at != std::string::npos; at = message.find(name, at + 1)) {
+        const auto word = [&](std::size_t i) { return i < message.size() && (std::isalnum(static_cast<unsigned char>(message[i])) || message[i] == '_'); };
+        if ((at == 0 || !word(at - 1)) && !word(at + name.size())) return true;
+      }
+    }
+    for (const auto& other : sets) {
+      if (other.given.empty() || other.given.begin()->first == set.given.begin()->first) continue;
+      std::map<std::string, std::string> given = set.given;
+      given.insert(other.given.begin(), other.given.end());
+      given.insert(options.fixed.begin(), options.fixed.end());
+      try {
+        std::unique_ptr<Strategy>(descriptor.create(resolve(descriptor.parameters(), given, plugin.kind + ".")));
+        return true;
+      } catch (const Error&) {
+      }
+    }
+    return false;
+  };
+  for (const auto& set : sets) {
     auto result = [&](const std::string& check, const std::string& detail, CheckResult::Status status) {
       report({label, set.label, check, status, detail});
     };
@@ -510,7 +541,16 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
     try {
       first = make();
     } catch (const Error& e) {
-      result("constructs", std::string("refused with an error: ") + e.what(), CheckResult::Status::skip);
+      if (set.if_refused.empty() || taken_in_some_combination(set, e.what())) {
+        result("constructs", std::string("refused with an error: ") + e.what(), CheckResult::Status::skip);
+      } else {
+        const ParamSpec& spec = *std::find_if(descriptor.parameters().begin(), descriptor.parameters().end(),
+                                              [&](const ParamSpec& p) { return set.given.count(p.name); });
+        result("constructs",
+               "refused " + set.label + ", which its declared " + (spec.range && *spec.range ? "range " + std::string(spec.range) : "type") +
+                   " admits (" + e.what() + "); declare " + set.if_refused + " or accept the value",
+               CheckResult::Status::fail);
+      }
       continue;
     } catch (...) {
       result("constructs", "the factory threw " + describe_current_exception(), CheckResult::Status::fail);

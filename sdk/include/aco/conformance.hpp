@@ -75,12 +75,20 @@ std::vector<IterationCase> standard_iterations(const Problem& problem);
 struct ParameterSet {
   std::string label;  // "defaults" or "rho=0.01"
   std::map<std::string, std::string> given;
+  // A set of one value the declared range admits: what to declare if the plugin refuses it
+  // ("the range (0:1]", "no choice 'x'"); empty for the defaults.
+  std::string if_refused;
 };
 
 // The defaults, then each parameter at each end of its range, one at a time (an open end a
 // thousandth of its size, at least of 1, inside it; an infinite end not at all; a whole number
 // above integer_cap at the cap: counts like iterations scale the work), each other choice of a
-// categorical, the other value of a boolean; a text parameter stays at its default.
+// categorical, the other value of a boolean; a text parameter stays at its default. A plugin
+// refusing one of these single values (aco::Error from its factory) fails "constructs": its
+// table declares a value it does not take, unless the refusal is of a combination the table
+// cannot express (a < b): its message names another parameter, or the factory takes the value
+// beside another parameter's tried value. Refusing the defaults is a SKIP (a text parameter
+// such as python's class may need a value; give it with Options::fixed).
 std::vector<ParameterSet> parameter_sets(std::span<const ParamSpec> table, std::int64_t integer_cap);
 
 struct Options {

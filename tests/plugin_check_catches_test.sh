@@ -32,4 +32,5 @@ expect_failures "$dir" \
   '^PASS update/throwing \[at_iteration=0\] deterministic$' \
   '^aco-plugin-check: [0-9]* checks, [0-9]* failed$' \
   '^  FAIL update/nonconforming \[rho=0\] constructs: '
+"$check" --version | grep -q "^aco-plugin-check [0-9.]* (commit "
 echo "plugin-check: catches what it must"

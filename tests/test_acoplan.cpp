@@ -9,6 +9,7 @@
 #include "support.hpp"
 
 using Catch::Contains;
+using Catch::StartsWith;
 using nlohmann::json;
 
 namespace {
@@ -359,4 +360,18 @@ TEST_CASE("acoplan in-process: the command line resolves into one RunSpec, run()
   std::vector<std::string> binary_args(args.begin() + 1, args.end());
   const json binary = run_json({binary_args.begin(), binary_args.end() - 1});
   CHECK(without_times(binary) == without_times(j));
+}
+
+TEST_CASE("every command prints its version and every acobench command its usage", "[acoplan][acobench][acosim]") {
+  for (const std::string program : {ACO_TEST_ACOPLAN, ACO_TEST_ACOBENCH, ACO_TEST_ACOSIM}) {
+    const auto r = test::run({program, "--version"});
+    CHECK(r.exit_code == 0);
+    const std::string name = std::filesystem::path(program).filename().string();
+    CHECK_THAT(r.out, StartsWith(name + " ") && Contains("(commit ") && Contains(" build, "));
+  }
+  for (const std::string command : {"run", "merge", "report"}) {
+    const auto r = test::run({ACO_TEST_ACOBENCH, command, "--help"});
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Contains("acobench " + command + " "));
+  }
 }

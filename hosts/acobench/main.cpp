@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <boost/program_options.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -25,6 +26,7 @@
 #include "aco/studies/runner.hpp"
 #include "aco/studies/shards.hpp"
 #include "aco/studies/trial_workers.hpp"
+#include "aco/version.hpp"
 
 namespace po = boost::program_options;
 
@@ -47,7 +49,9 @@ constexpr const char* kUsage =
     "  acobench merge DATABASE... [--db FILE]\n"
     "      one database of the trials of several of an experiment's (shards, or any runs of it)\n"
     "  acobench report DATABASE [--out DIR]\n"
-    "      statistics, Markdown and HTML report, CSV of all runs\n\n";
+    "      statistics, Markdown and HTML report, CSV of all runs\n"
+    "  acobench --version\n"
+    "      the framework's version, commit, build type and compiler\n\n";
 
 std::string clock_text(double seconds) {
   const long s = std::lround(std::max(0.0, seconds));
@@ -328,7 +332,16 @@ int main(int argc, char** argv) {
       std::cout << kUsage;
       return args.empty() ? 1 : 0;
     }
+    if (args[0] == "--version") {
+      std::cout << aco::version_text("acobench") << "\n";
+      return 0;
+    }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
+    // "acobench run --help": every command's usage is the one text.
+    if (std::find(rest.begin(), rest.end(), "--help") != rest.end() || std::find(rest.begin(), rest.end(), "-h") != rest.end()) {
+      std::cout << kUsage;
+      return 0;
+    }
     if (args[0] == "run") return run(rest);
     if (args[0] == "merge") return merge(rest);
     if (args[0] == "report") return report(rest);

@@ -13,6 +13,7 @@
 #include "aco/plugin_catalog.hpp"
 #include "aco/svg.hpp"
 #include "aco/thread_limit.hpp"
+#include "aco/version.hpp"
 
 namespace acoplan {
 namespace {
@@ -86,6 +87,7 @@ int plan(const acoplan::Request& r, std::ostream& out) {
 int run(Request& request, std::ostream& out) {
   switch (request.action) {
     case Request::Action::help: out << request.help; return 0;
+    case Request::Action::version: out << aco::version_text("acoplan") << "\n"; return 0;
     case Request::Action::list_plugins: out << aco::list_plugins(*request.registry); return 0;
     case Request::Action::list_presets: out << list_presets(); return 0;
     case Request::Action::describe: out << aco::describe_plugin(*request.registry, request.describe); return 0;

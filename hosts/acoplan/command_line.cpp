@@ -201,6 +201,7 @@ Request parse_command_line(int argc, const char* const* argv) {
   po::options_description general("General");
   general.add_options()
       ("help,h", po::bool_switch(), "print this help (with the options of the chosen plugins) and exit")
+      ("version", po::bool_switch(), "print the framework's version, commit, build type and compiler and exit")
       ("map", po::value<std::string>()->value_name("FILE"),
        "map: Moving AI .map, ROS map_server .yaml, ESRI ASCII terrain .asc, PGM height image .pgm, or 0/1 "
        "matrix text (default: bundled classic map1)")
@@ -249,6 +250,10 @@ Request parse_command_line(int argc, const char* const* argv) {
     if (first.count("plugin-dir"))
       for (const auto& d : first["plugin-dir"].as<std::vector<std::string>>()) dirs.emplace_back(d);
     r.registry = std::make_unique<aco::PluginRegistry>(aco::PluginRegistry::default_search_dirs(dirs));
+    if (first["version"].as<bool>()) {
+      r.action = Request::Action::version;
+      return r;
+    }
     if (first["list-plugins"].as<bool>()) {
       r.action = Request::Action::list_plugins;
       return r;

@@ -16,7 +16,7 @@
 namespace acoplan {
 
 struct Request {
-  enum class Action { plan, help, list_plugins, list_presets, describe, print_config, dump_irace_params };
+  enum class Action { plan, help, version, list_plugins, list_presets, describe, print_config, dump_irace_params };
   Action action = Action::plan;
   std::string describe;  // plugin to describe
   std::string help;      // full --help text

@@ -6,6 +6,7 @@
 
 #include "aco/presets.hpp"
 #include "aco/crash_report.hpp"
+#include "aco/version.hpp"
 #include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
@@ -56,6 +57,7 @@ int main(int argc, char** argv) {
                                     "Usage: acosim SCENARIO.yaml [options]\n\nOptions");
     options.add_options()
         ("help,h", "print this help and exit")
+        ("version", "print the framework's version, commit, build type and compiler and exit")
         ("json", po::bool_switch(), "print the summary and the trajectory as one JSON object")
         ("csv", po::value(&csv)->value_name("FILE"), "write the trajectory (t, x, y, heading, v, w) as CSV")
         ("svg", po::value(&svg)->value_name("FILE"), "write a picture: map, unknown cells, plans, trajectory, moving tracks")
@@ -99,6 +101,10 @@ int main(int argc, char** argv) {
                 << "\nAny run key of acoplan (--local track, --local.follow 0.5, --ants 20, --update max_min) goes over\n"
                    "the scenario's run keys (map, start and goal are the scenario's). A scenario naming no pipeline\n"
                    "(config or preset) runs the recommended one, data/presets/robust.ini.\n";
+      return 0;
+    }
+    if (vm.count("version")) {
+      std::cout << aco::version_text("acosim") << "\n";
       return 0;
     }
     if (scenario_file.empty()) throw aco::Error("no scenario file (acosim SCENARIO.yaml; --help for options)");

@@ -9,10 +9,11 @@
 #include <vector>
 
 #include "aco/conformance.hpp"
+#include "aco/version.hpp"
 
 int main(int argc, char** argv) {
   const std::string usage =
-      "usage: aco-plugin-check [--integer-cap N] [--set NAME=VALUE]... FILE.so|FOLDER...\n"
+      "usage: aco-plugin-check [--integer-cap N] [--set NAME=VALUE]... FILE.so|FOLDER...   (or --version)\n"
       "Runs every plugin in each file at its defaults and at the ends of its parameter ranges on tiny maps and\n"
       "checks that its values are finite and non-negative, that it is deterministic per seed, and that 1 and 4\n"
       "threads give the same result. Whole-number range ends above N (default 100) are run at N. --set gives a\n"
@@ -24,6 +25,10 @@ int main(int argc, char** argv) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
       std::cout << usage;
+      return 0;
+    }
+    if (arg == "--version") {
+      std::cout << aco::version_text("aco-plugin-check") << "\n";
       return 0;
     }
     if (arg == "--integer-cap") {

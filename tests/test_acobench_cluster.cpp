@@ -232,8 +232,9 @@ TEST_CASE("under mpirun a worker killed mid-run ends the run with a message, and
   INFO(output);
   CHECK((WIFEXITED(status) && WEXITSTATUS(status) != 0));
   CHECK_THAT(output, Contains("exited on signal 9"));  // mpirun names the rank that died
-  CHECK_THAT(output, Contains("acobench: stopped by a signal; every trial finished before it is stored in " +
-                              killed.string()));
+  // Rank 0's "stopped by a signal" note is not checked here: Open MPI may SIGKILL rank 0 after its
+  // grace period, or drop its last output, when the job aborts (seen on a loaded machine). The
+  // note itself is tested without MPI ("a run stopped with SIGTERM ...").
   const int at_kill = count_runs(killed);
   CHECK(at_kill >= 10);
   CHECK(at_kill < 300);

@@ -104,13 +104,11 @@ std::filesystem::path fresh_dir() {
 }
 }  // namespace
 
-CommandResult run(const std::vector<std::string>& argv, const std::vector<std::string>& env) {
-  const auto dir = fresh_dir();
-  const auto out = dir / "stdout", err = dir / "stderr";
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+namespace {
+
+// Starts argv[0] with argv and the environment plus `env`, its files as `actions` set them; -1 if
+// it cannot be started.
+pid_t spawn(const std::vector<std::string>& argv, const std::vector<std::string>& env, const posix_spawn_file_actions_t& actions) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -121,8 +119,20 @@ CommandResult run(const std::vector<std::string>& argv, const std::vector<std::s
   for (auto& e : environment) envp.push_back(e.data());
   envp.push_back(nullptr);
   pid_t pid = 0;
+  return posix_spawn(&pid, args[0], &actions, nullptr, args.data(), envp.data()) == 0 ? pid : -1;
+}
+
+}  // namespace
+
+CommandResult run(const std::vector<std::string>& argv, const std::vector<std::string>& env) {
+  const auto dir = fresh_dir();
+  const auto out = dir / "stdout", err = dir / "stderr";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   CommandResult result;
-  if (posix_spawn(&pid, args[0], &actions, nullptr, args.data(), envp.data()) == 0) {
+  if (const pid_t pid = spawn(argv, env, actions); pid > 0) {
     int status = 0;
     waitpid(pid, &status, 0);
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -132,6 +142,17 @@ CommandResult run(const std::vector<std::string>& argv, const std::vector<std::s
   result.err = slurp(err);
   std::filesystem::remove_all(dir);
   return result;
+}
+
+pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& log, const std::vector<std::string>& env) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  const pid_t pid = spawn(argv, env, actions);
+  posix_spawn_file_actions_destroy(&actions);
+  REQUIRE(pid > 0);
+  return pid;
 }
 
 void check_same_run(const aco::ColonyResult& a, const aco::ColonyResult& b) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <sys/types.h>
 // Helpers shared by the tests: data locations, tiny hand-made maps, loaded plugins, running acoplan.
 #include <array>
 #include <filesystem>
@@ -110,6 +111,8 @@ struct CommandResult {
 // Runs a program with arguments (no shell), capturing stdout and stderr.
 CommandResult run(const std::vector<std::string>& argv, const std::vector<std::string>& env = {});
 CommandResult acoplan(const std::vector<std::string>& args, const std::vector<std::string>& env = {});
+// Starts a program in the background, its stdout and stderr into `log`; its pid (waitpid it).
+pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& log, const std::vector<std::string>& env = {});
 
 // A file in a fresh temporary folder, with the given content.
 std::filesystem::path temp_file(const std::string& name, const std::string& content);

@@ -171,30 +171,12 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 28);
 }
 
-// Starts `acobench ARGS...` in the background, its stdout and stderr into `log`.
-pid_t start_acobench(const std::vector<std::string>& args, const std::filesystem::path& log) {
-  std::vector<std::string> words{ACO_TEST_ACOBENCH};
-  words.insert(words.end(), args.begin(), args.end());
-  std::vector<char*> argv;
-  for (auto& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  pid_t child = 0;
-  const int failed = posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  REQUIRE(failed == 0);
-  return child;
-}
-
 TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly once", "[acobench][slow]") {
   const auto file = experiment(kill_me_text());
   const auto killed = file.parent_path() / "killed.db", whole = file.parent_path() / "whole.db";
   REQUIRE(run_acobench({"run", file.string(), "--db", whole.string()}).exit_code == 0);
 
-  const pid_t child = start_acobench({"run", file.string(), "--db", killed.string(), "--threads", "1"}, "/dev/null");
+  const pid_t child = test::start({ACO_TEST_ACOBENCH, "run", file.string(), "--db", killed.string(), "--threads", "1"}, "/dev/null");
   // Kill once some trials are committed.
   wait_for_trials(killed, 10);
   kill(child, SIGKILL);
@@ -216,7 +198,7 @@ TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly
 TEST_CASE("a run stopped with SIGTERM says what is stored and the command that goes on", "[acobench][slow]") {
   const auto file = experiment(kill_me_text());
   const auto db = file.parent_path() / "stopped.db", log = file.parent_path() / "stopped.log";
-  const pid_t child = start_acobench({"run", file.string(), "--db", db.string(), "--threads", "1"}, log);
+  const pid_t child = test::start({ACO_TEST_ACOBENCH, "run", file.string(), "--db", db.string(), "--threads", "1"}, log);
   wait_for_trials(db, 10);
   kill(child, SIGTERM);
   int status = 0;

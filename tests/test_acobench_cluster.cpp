@@ -205,22 +205,7 @@ TEST_CASE("under mpirun a worker killed mid-run ends the run with a message, and
   REQUIRE(run_acobench({"run", file.string(), "--db", whole.string()}).exit_code == 0);
 
   const auto log = sibling(file, "mpirun.log");
-  auto argv = mpirun(3, {"run", file.string(), "--db", killed.string(), "--threads", "1"});
-  std::vector<char*> args;
-  for (auto& a : argv) args.push_back(a.data());
-  args.push_back(nullptr);
-  std::vector<std::string> environment(kMpiEnvironment);
-  for (char** e = environ; *e; ++e) environment.emplace_back(*e);
-  std::vector<char*> envp;
-  for (auto& e : environment) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  pid_t launcher = 0;
-  REQUIRE(posix_spawn(&launcher, args[0], &actions, nullptr, args.data(), envp.data()) == 0);
-  posix_spawn_file_actions_destroy(&actions);
+  const pid_t launcher = test::start(mpirun(3, {"run", file.string(), "--db", killed.string(), "--threads", "1"}), log, kMpiEnvironment);
   // Kill rank 2 once some trials are stored.
   wait_for_trials(killed, 10);
   const pid_t worker = rank_pid(2, killed);

@@ -185,17 +185,22 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
         raise Error("preset and config: give one of them")
     given = dict(run_keys)
     given.update(keys or {})
+    given_keys = {_key(k) for k in given}
     for name in ("map", "start", "goal", "scen", "preset", "config"):
-        if _key(name) in {_key(k) for k in given}:
+        if _key(name) in given_keys:
             raise Error(f"'{name}' is an argument of plan(), not a run key")
-    if not isinstance(map, Map):
-        map = Map.load(map) if isinstance(map, (str, os.PathLike)) else Map(map)
-    with _LiveObjects(given) as live:
+    # A file is read once, by the planner (as acoplan reads it); an array is handed over as it is.
+    if isinstance(map, (str, os.PathLike)):
+        source, text_keys = os.fspath(map), {}
+    else:
+        if not isinstance(map, Map):
+            map = Map(map)
         text_keys = dict(map.terrain_keys)
-        for name, value in live.items():
-            text_keys[_key(name)] = _text(value)
         source = map.file if map.file is not None else _aco.ArrayMap(
             map.array if map.kind == "grid" else None, map.array if map.kind == "terrain" else None, map.cell_size, map.name)
+    with _LiveObjects(given) as live:
+        for name, value in live.items():
+            text_keys[_key(name)] = _text(value)
         record, used = _aco.plan(source, _cell(start, "start"), _cell(goal, "goal"), text_keys, preset or "",
                                  os.fspath(config) if config is not None else "", int(threads))
     return Result(json.loads(record), used)

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # aco-plugin-check must fail, naming plugin, parameters and check, on plugins that break its
 # rules: tests/fixtures/nonconforming_update.cpp (not deterministic; NaN at q = 10) and
-# throwing_update.cpp (throws 42 from its factory when asked; throws in iteration 3 by default).
+# throwing_update.cpp (throws 42 from its factory when asked; throws in iteration 3, as Context::iteration, by default).
 #   tests/plugin_check_catches_test.sh ACO_PLUGIN_CHECK FAULTY_PLUGIN_DIR
 set -euo pipefail
 check=$1 dir=$2
@@ -21,6 +21,6 @@ expect_failures "$dir/aco_update_nonconforming.so" \
   '^PASS update/nonconforming \[q=0\] values$'
 expect_failures "$dir/aco_update_throwing.so" \
   '^FAIL update/throwing \[in_factory=true\] constructs: the factory threw an exception of type int' \
-  '^FAIL update/throwing \[defaults\] values: .*failed in update() in iteration 3: an exception of type int' \
-  '^PASS update/throwing \[at_iteration=0\] deterministic$'
+  '^FAIL update/throwing \[defaults\] values: .*failed in update() in iteration 3 (0-based, as Context::iteration): an exception of type int' \
+  '^PASS update/throwing \[at_iteration=-1\] deterministic$'
 echo "plugin-check: catches what it must"

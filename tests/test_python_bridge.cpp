@@ -138,6 +138,13 @@ TEST_CASE("a Python exception ends the run with its type and message and the lin
                     "/bridge_fixtures.py:", " in update: raise ValueError(\"deposit went wrong\"))"});
 }
 
+TEST_CASE("NaN written by a python update stops the run as the engine's check does for a native one", "[python][faults]") {
+  expect_error(with(problem(1, 1), python("update", "bridge_fixtures:WritesNan", fixtures)),
+               {"acoplan: error: plugin update/python (",
+                ") wrote nan to the pheromone of edge (0,0) -> (1,0) in update() in iteration 2 (0-based, as Context::iteration); "
+                "the pheromone must be finite and >= 0\n"});
+}
+
 TEST_CASE("a python hook that returns the wrong array is refused with what was expected", "[python][bad-input]") {
   const std::string expected = "; return None (with the array filled in place) or a float64 array of ";
   expect_error(with(problem(1, 1), python("update", "bridge_fixtures:WrongLength", fixtures)),

@@ -1,12 +1,15 @@
 // Faults named where they happen (issue 29): after every hook that writes what the engine reads,
 // the engine checks it and stops with the slot, the plugin and its file, the hook and the
-// iteration. The plugins are the fixtures tests/fixtures/bad_value_*.cpp.
+// iteration; a smoother's waypoints and a local planner's commands are checked likewise. The
+// plugins are the fixtures tests/fixtures/bad_value_*.cpp, bad_smoother.cpp and bad_local.cpp.
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <sstream>
 
 #include "acobench_support.hpp"
+#include "aco/path.hpp"
 #include "aco/studies/results_db.hpp"
+#include "aco/terrain.hpp"
 #include "support.hpp"
 
 using Catch::Contains;
@@ -121,5 +124,61 @@ TEST_CASE("acobench stores a trial whose plugin writes NaN in its last iteration
                                    "; the pheromone must be finite and >= 0"));
     }
     CHECK(failed == 2);
+  }
+}
+
+TEST_CASE("a smoother's waypoints must be finite, on free cells, from the start to the goal", "[faults][acoplan]") {
+  const std::string bad = plugin("smoother", "bad") + " returned bad waypoints in smooth(): ";
+  const std::string rule = " (waypoints must be finite and on free cells, from the start's position to the goal's)";
+  // map1's first blocked cell is (6,0).
+  expect_error({"--smoother", "bad"}, bad + "waypoint 1 (0-based) of 37, (6, 0, 0), lies on no free cell" + rule);
+  const auto dropped = test::acoplan(map1_run({"--smoother", "bad", "--smoother.fault", "drop_goal"}));
+  CHECK(dropped.exit_code == 1);
+  CHECK_THAT(dropped.err, Contains(bad + "the last waypoint, (") && Contains("is not the goal (19,19) at (19, 19, 0)" + rule));
+  const auto nan = test::acoplan(map1_run({"--smoother", "bad", "--smoother.fault", "nan"}));
+  CHECK(nan.exit_code == 1);
+  CHECK_THAT(nan.err, Contains(bad + "waypoint ") && Contains(", nan, 0), is not finite" + rule));
+}
+
+TEST_CASE("a waypoint is on a free cell when a free cell's closed square holds it", "[faults][path]") {
+  // . # .
+  // . . #
+  const auto map = test::grid({".#.", "..#"});
+  const aco::Graph graph = aco::build_graph(map, {});
+  const auto on = [&](double x, double y) { return aco::on_free_cell(graph, {x, y, 0.0}); };
+  CHECK(on(0, 0));
+  CHECK_FALSE(on(1, 0));
+  CHECK_FALSE(on(1.2, -0.3));
+  CHECK(on(0.5, 0));      // the border of a free and a blocked cell
+  CHECK(on(1.5, 0.5));    // the corner of two blocked and two free cells
+  CHECK_FALSE(on(2, 1));
+  CHECK(on(2, 0.5));      // between the free (2,0) and the blocked (2,1)
+  CHECK_FALSE(on(-0.6, 0));  // outside the map
+  CHECK_FALSE(on(3.5, 1.5));
+  // On terrain, positions are in the cell size's units.
+  const aco::TerrainMap terrain(3, 1, 10.0, {1, 1, 1}, 90, "flat");
+  const aco::Graph ground = aco::build_graph(terrain, {});
+  CHECK(aco::on_free_cell(ground, ground.positions[2]));
+  CHECK(aco::on_free_cell(ground, {25, 5, 1}));
+  CHECK_FALSE(aco::on_free_cell(ground, {25, 5.1, 1}));
+}
+
+TEST_CASE("acosim stops on a local planner's NaN command or one far outside the dynamic window", "[faults][acosim]") {
+  const auto scenario = [](const std::string& fault) {
+    const auto file = test::temp_file("bad_local.yaml", "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: bad, "
+                                                        "local.fault: " + fault + "}\n");
+    std::ofstream open(file.parent_path() / "open.txt");
+    for (int y = 0; y < 5; ++y) open << "0 0 0 0 0 0 0 0 0 0 0 0\n";
+    return file.string();
+  };
+  const std::string window = ", outside the dynamic window v in [0, 0.02], w in [-0.0872665, 0.0872665] "
+                             "(a command must be finite and inside it)\n";
+  for (const auto& [fault, command] : {std::pair{"nan", "v = nan, w = 0"}, std::pair{"outside", "v = 15, w = 0"}}) {
+    INFO(fault);
+    const auto r = test::run({ACO_TEST_ACOSIM, scenario(fault), "--plugin-dir", kFaulty, "--json"});
+    CHECK(r.exit_code == 1);
+    CHECK(r.out.empty());
+    CHECK(r.err == "acosim: error: " + plugin("local", "bad") + " returned the command " + command +
+                       " in command() at control step 3 (0-based, t = 0.3 s)" + window);
   }
 }

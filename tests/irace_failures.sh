@@ -9,10 +9,11 @@ fail() { echo "irace failures: $*" >&2; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 export ACOPLAN="$acoplan" ACOPLAN_TIMEOUT=1
 export ACOPLAN_OPTIONS="--threads 1 --ants 10 --iterations 20 --corner-cutting --plugin-dir $hostile"
-# at_iteration 1 to 20: every crashing or hanging configuration fails within acoplan's 20 iterations.
+# at_iteration 0 to 19 (Context::iteration): every crashing or hanging configuration fails within acoplan's 20
+# iterations.
 cat > "$work/parameters.txt" <<'PARAMETERS'
 update "--update " c (crashing, hanging, acs)
-at "--update.at_iteration " i (1, 20) | update %in% c("crashing", "hanging")
+at "--update.at_iteration " i (0, 19) | update %in% c("crashing", "hanging")
 PARAMETERS
 : > "$work/forbidden.txt"
 Rscript -e 'irace::irace.cmdline()' --scenario "$source/tools/irace/scenario.txt" --exec-dir "$work" \
@@ -22,8 +23,8 @@ Rscript -e 'irace::irace.cmdline()' --scenario "$source/tools/irace/scenario.txt
 grep -q '^# Best configurations as commandlines' "$work/irace.log" || { cat "$work/irace.log"; fail "no elite configurations"; }
 log="$work/target-runner-failures.log"
 [ -f "$log" ] || fail "no failure log in irace's execution directory"
-grep -q ': crashed: SIGSEGV (acoplan: error: crashed: SIGSEGV in plugin update/crashing (.*) in update() in iteration [0-9]*)$' "$log" ||
+grep -q ': crashed: SIGSEGV (acoplan: error: crashed: SIGSEGV in plugin update/crashing (.*) in update() in iteration [0-9]* (0-based, as Context::iteration))$' "$log" ||
   { cat "$log"; fail "no crash logged with its plugin hook"; }
-grep -q ': timed out after 1 s (acoplan: error: stopped: SIGUSR1 in plugin update/hanging (.*) in update() in iteration [0-9]*)$' "$log" ||
+grep -q ': timed out after 1 s (acoplan: error: stopped: SIGUSR1 in plugin update/hanging (.*) in update() in iteration [0-9]* (0-based, as Context::iteration))$' "$log" ||
   { cat "$log"; fail "no time-out logged with its plugin hook"; }
 echo "irace ended with its elites; $(grep -c '^configuration' "$log") failed evaluations logged"

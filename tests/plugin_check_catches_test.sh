@@ -2,7 +2,7 @@
 # aco-plugin-check must fail, naming plugin, parameters and check, on plugins that break its
 # rules: tests/fixtures/nonconforming_update.cpp (not deterministic; NaN at q = 10; refuses
 # rho = 0, which its range admits) and
-# throwing_update.cpp (throws 42 from its factory when asked; throws in iteration 3 by default).
+# throwing_update.cpp (throws 42 from its factory when asked; throws in iteration 3, as Context::iteration, by default).
 #   tests/plugin_check_catches_test.sh ACO_PLUGIN_CHECK FAULTY_PLUGIN_DIR
 set -euo pipefail
 check=$1 dir=$2
@@ -23,13 +23,13 @@ expect_failures "$dir/aco_update_nonconforming.so" \
   '^FAIL update/nonconforming \[rho=0\] constructs: refused rho=0, which its declared range 0:1 admits (evaporation must be positive); declare the range (0:1 or accept the value$'
 expect_failures "$dir/aco_update_throwing.so" \
   '^FAIL update/throwing \[in_factory=true\] constructs: the factory threw an exception of type int' \
-  '^FAIL update/throwing \[defaults\] values: .*failed in update() in iteration 3: an exception of type int' \
-  '^PASS update/throwing \[at_iteration=0\] deterministic$'
+  '^FAIL update/throwing \[defaults\] values: .*failed in update() in iteration 3 (0-based, as Context::iteration): an exception of type int' \
+  '^PASS update/throwing \[at_iteration=-1\] deterministic$'
 # A folder: every plugin library in it, one that cannot load among them, and the failures listed
 # again after the count.
 expect_failures "$dir" \
   '^FAIL .*/aco_update_incomplete.so loads: .*undefined symbol' \
-  '^PASS update/throwing \[at_iteration=0\] deterministic$' \
+  '^PASS update/throwing \[at_iteration=-1\] deterministic$' \
   '^aco-plugin-check: [0-9]* checks, [0-9]* failed$' \
   '^  FAIL update/nonconforming \[rho=0\] constructs: '
 "$check" --version | grep -q "^aco-plugin-check [0-9.]* (commit "

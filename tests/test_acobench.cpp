@@ -410,7 +410,7 @@ TEST_CASE("a trial whose plugin throws is stored as failed, named, and the exper
   CHECK_THAT(r.out, Contains("6 trials, 0 already in"));
   CHECK_THAT(r.err, Contains("3 trials failed") &&
                         Contains("configuration 'thrower', problem 'map1', repetition 0: plugin update/throwing (") &&
-                        Contains("failed in update() in iteration 2: an exception of type int"));
+                        Contains("failed in update() in iteration 2 (0-based, as Context::iteration): an exception of type int"));
   int failed = 0, solved = 0;
   for (const auto& t : acobench::ResultsDb(db).trials()) {
     if (!t.error.empty()) {

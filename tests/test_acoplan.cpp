@@ -270,11 +270,11 @@ TEST_CASE("a plugin that throws anything, from its factory, a hook or a worker t
   expect_error({"--plugin-dir", dir, "--update", "throwing", "--update.in_factory", "true"},
                "plugin update/throwing (" + dir + "/aco_update_throwing.so) failed in its factory: an exception of type int");
   expect_error({"--plugin-dir", dir, "--update", "throwing", "--update.at_iteration", "3"},
-               "plugin update/throwing (" + dir + "/aco_update_throwing.so) failed in update() in iteration 3: an exception of type int");
+               "plugin update/throwing (" + dir + "/aco_update_throwing.so) failed in update() in iteration 3 (0-based, as Context::iteration): an exception of type int");
   for (const char* threads : {"1", "2"}) {
     INFO(threads << " threads");
     expect_error({"--plugin-dir", dir, "--heuristic", "throwing", "--threads", threads},
-                 "plugin heuristic/throwing (" + dir + "/aco_heuristic_throwing.so) failed in step_factors() in iteration 1: "
+                 "plugin heuristic/throwing (" + dir + "/aco_heuristic_throwing.so) failed in step_factors() in iteration 0 (0-based, as Context::iteration): "
                  "an exception of type int");
   }
 }

@@ -288,7 +288,7 @@ TEST_CASE("acosim --batch: a variation whose plugin crashes or hangs costs only 
   CHECK(crashed.exit_code == 0);
   CHECK_THAT(crashed.out, Contains("outcomes:   crashed 3;"));
   CHECK_THAT(crashed.out, Contains("reached:    0 (0 %)"));
-  const std::string where = " in update() in iteration 3";
+  const std::string where = " in update() in iteration 3 (0-based, as Context::iteration)";
   for (const char* k : {"0", "1", "2"}) {
     CHECK_THAT(crashed.out, Contains(std::string("variation ") + k + ": crashed (crashed: SIGSEGV in plugin update/crashing ("));
     CHECK_THAT(crashed.err, Contains(std::string("acosim: variation ") + k + ": crashed: SIGSEGV in plugin update/crashing ("));

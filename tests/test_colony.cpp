@@ -219,7 +219,7 @@ TEST_CASE("bad inputs and bad strategy output are reported, not run", "[colony]"
   PoisonUpdate poison;
   aco::Pipeline p = b.pipeline();
   p.update = &poison;
-  REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, 8, p, s), Contains("pheromone of edge") && Contains("is nan") && Contains("update"));
+  REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, 8, p, s), Contains("the update plugin wrote nan to the pheromone of edge") && Contains("in update() in iteration 0 (0-based"));
   const auto trivial = aco::run_colony(graph, 4, 4, b.pipeline(), s);
   CHECK(trivial.solved);
   CHECK(trivial.length == 0.0);

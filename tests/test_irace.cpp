@@ -351,7 +351,7 @@ TEST_CASE("tools/irace/target-runner gives a crashed or timed-out evaluation the
   check_failure_cost(crashed, 1e10);
   CHECK_THAT(read_log(), Contains("configuration 3, instance 1, seed 42: crashed: SIGSEGV (acoplan: error: crashed: SIGSEGV "
                                   "in plugin update/crashing (") &&
-                             Contains("aco_update_crashing.so) in update() in iteration 3)\n") &&
+                             Contains("aco_update_crashing.so) in update() in iteration 3 (0-based, as Context::iteration))\n") &&
                              Contains(" --seed 42 --irace --threads 1 --iterations 20 --corner-cutting --update crashing "));
 
   // A hang, stopped at ACOPLAN_TIMEOUT: acoplan says where it was.
@@ -361,7 +361,7 @@ TEST_CASE("tools/irace/target-runner gives a crashed or timed-out evaluation the
   check_failure_cost(hung, 5e9);
   CHECK_THAT(read_log(), StartsWith("configuration 4, instance 2, seed 7: timed out after 0.5 s (acoplan: error: stopped: "
                                     "SIGUSR1 in plugin update/hanging (") &&
-                             Contains("aco_update_hanging.so) in update() in iteration 3)\n  timeout -s USR1 -k 2 0.5 "));
+                             Contains("aco_update_hanging.so) in update() in iteration 3 (0-based, as Context::iteration))\n  timeout -s USR1 -k 2 0.5 "));
 
   // By default the log is in the current folder: irace's execution directory.
   const auto dir = log.parent_path() / "exec-dir";

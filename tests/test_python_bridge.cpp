@@ -96,7 +96,7 @@ TEST_CASE("a python heuristic is called every iteration only when it varies by i
   const auto base = problem(1, 1);
   CHECK(test::acoplan(with(base, python("heuristic", "bridge_fixtures:FixedHeuristic", fixtures))).exit_code == 0);
   expect_error(with(base, python("heuristic", "bridge_fixtures:ChangingHeuristic", fixtures)),
-               {"plugin heuristic/python (", "in iteration 3", "RuntimeError: compute() was called in iteration 2"});
+               {"plugin heuristic/python (", "in iteration 2 (0-based, as Context::iteration)", "RuntimeError: compute() was called in iteration 2"});
 }
 
 TEST_CASE("a python hook may return a new array and an object made already is used as it is", "[python][acoplan]") {
@@ -133,15 +133,22 @@ TEST_CASE("python plugins name the plugin and what is wrong with the object they
 
 TEST_CASE("a Python exception ends the run with its type and message and the line that raised it", "[python][boundary]") {
   expect_error(with(problem(1, 1), python("update", "bridge_fixtures:Raises", fixtures)),
-               {"acoplan: error: plugin update/python (", "failed in update() in iteration 1: ",
+               {"acoplan: error: plugin update/python (", "failed in update() in iteration 0 (0-based, as Context::iteration): ",
                 "bridge_fixtures:Raises.update() raised ValueError: deposit went wrong (at " + fixtures +
                     "/bridge_fixtures.py:", " in update: raise ValueError(\"deposit went wrong\"))"});
+}
+
+TEST_CASE("NaN written by a python update stops the run as the engine's check does for a native one", "[python][faults]") {
+  expect_error(with(problem(1, 1), python("update", "bridge_fixtures:WritesNan", fixtures)),
+               {"acoplan: error: plugin update/python (",
+                ") wrote nan to the pheromone of edge (0,0) -> (1,0) in update() in iteration 2 (0-based, as Context::iteration); "
+                "the pheromone must be finite and >= 0\n"});
 }
 
 TEST_CASE("a python hook that returns the wrong array is refused with what was expected", "[python][bad-input]") {
   const std::string expected = "; return None (with the array filled in place) or a float64 array of ";
   expect_error(with(problem(1, 1), python("update", "bridge_fixtures:WrongLength", fixtures)),
-               {"failed in update() in iteration 1", "WrongLength.update() returned an array of shape (3,)" + expected});
+               {"failed in update() in iteration 0", "WrongLength.update() returned an array of shape (3,)" + expected});
   expect_error(with(problem(1, 1), python("update", "bridge_fixtures:WrongDtype", fixtures)),
                {"WrongDtype.update() returned an array of dtype int64" + expected});
   expect_error(with(problem(1, 1), python("update", "bridge_fixtures:ReturnsList", fixtures)),

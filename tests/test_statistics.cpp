@@ -344,7 +344,7 @@ TEST_CASE("convergence charts draw a line and a band per series, a legend and ax
   CHECK(count(svg, "class=\"series\"") == 2);
   CHECK(count(svg, "class=\"band\"") == 2);
   CHECK(count(svg, "class=\"reference\"") == 1);
-  CHECK_THAT(svg, Contains(">ant_system<") && Contains(">max_min<") && Contains(">iteration<") &&
+  CHECK_THAT(svg, Contains(">ant_system<") && Contains(">max_min<") && Contains(">iterations run<") &&
                       Contains(">best length so far<"));
   CHECK_FALSE(has_undefined_number(svg));
   CHECK(svg == acobench::line_chart_svg(chart));

@@ -21,7 +21,9 @@
 #include "aco/error.hpp"
 #include "aco/local_search.hpp"
 #include "aco/parallel.hpp"
+#include "aco/plugin_guard.hpp"
 #include "aco/rng.hpp"
+#include "default_hooks.hpp"
 
 namespace aco {
 namespace {
@@ -48,6 +50,24 @@ inline double power(double x, double p) {
   if (p == 0.0) return 1.0;
   if (p == 2.0) return x * x;
   return std::pow(x, p);
+}
+
+// The index of the first value that is negative, NaN or infinite, or values.size() if none is.
+// The common case, none, is found by counting the bad values in doubles, in eight independent
+// sums: GCC vectorises a double's reduction (not a bool's or an integer's, on baseline x86-64),
+// and eight sums do not wait on each other's additions. The index is only looked for after.
+std::size_t first_invalid(std::span<const double> values) {
+  constexpr double kMax = std::numeric_limits<double>::max();
+  const auto bad = [](double v) { return v >= 0.0 && v <= kMax ? 0.0 : 1.0; };
+  double count[8] = {};
+  std::size_t i = 0;
+  for (; i + 8 <= values.size(); i += 8)
+    for (int k = 0; k < 8; ++k) count[k] += bad(values[i + k]);
+  for (; i < values.size(); ++i) count[0] += bad(values[i]);
+  if (std::accumulate(std::begin(count), std::end(count), 0.0) == 0.0) return values.size();
+  i = 0;
+  while (bad(values[i]) == 0.0) ++i;
+  return i;
 }
 
 // Per-thread construction buffers. `visited` holds a stamp per node: a node is in the current
@@ -111,7 +131,9 @@ class Colony {
       std::fill(tau_.begin(), tau_.end(), 1.0);
     } else {
       p_.init->initialize(context_, tau_);
+      check_pheromone(*p_.init, "init", "initialize()");
       p_.update->start(context_, tau_);
+      check_pheromone(*p_.update, "update", "start()");
     }
     uses_walk_ = p_.heuristic->uses_walk();
     compute_heuristic();
@@ -190,22 +212,41 @@ class Colony {
     }
     if (s_.null_model != NullModel::none) return iteration_best;  // the twins learn nothing
     const Iteration view{ants, iteration_best, best()};
+    ran_default_after_iteration = false;
     p_.deadlock->after_iteration(context_, view, tau_, forbidden_);
+    if (!ran_default_after_iteration) check_pheromone(*p_.deadlock, "deadlock", "after_iteration()");
     forbidden_[context_.start] = forbidden_[context_.goal] = 0;
     p_.update->update(context_, view, tau_);
+    check_pheromone(*p_.update, "update", "update()");
     return iteration_best;
   }
 
  private:
   void compute_heuristic() {
     p_.heuristic->compute_powered(context_, eta_beta_);
-    check_heuristic(0, eta_beta_.size());
+    check_heuristic("compute_powered()", 0, eta_beta_.size());
   }
 
-  void check_heuristic(std::size_t first, std::size_t last) const {
-    for (std::size_t e = first; e < last; ++e)
-      if (!(eta_beta_[e] >= 0.0 && std::isfinite(eta_beta_[e])))
-        fail_value("heuristic^beta", "the heuristic plugin", eta_beta_[e], e);
+  // Every hook that writes the pheromone or the heuristic is followed by a check of what it
+  // wrote: a bad value is named where it was made (plugin, hook, iteration), not where an ant
+  // happens to read it later, and none reaches a result, the last iteration's included. A pass
+  // over every edge per hook, as cheap as the plugin's own evaporation.
+  void check_pheromone(const Strategy& plugin, const char* slot, const char* hook) const {
+    const std::size_t e = first_invalid(tau_);
+    if (e != tau_.size()) reject_value(plugin, slot, hook, "pheromone", tau_[e], e);
+  }
+
+  void check_heuristic(const char* hook, std::size_t first, std::size_t last) const {
+    const std::size_t e = first + first_invalid(std::span(eta_beta_).subspan(first, last - first));
+    if (e != last) reject_value(*p_.heuristic, "heuristic", hook, "heuristic (eta^beta)", eta_beta_[e], e);
+  }
+
+  [[noreturn]] void reject_value(const Strategy& plugin, const char* slot, const char* hook, const std::string& field,
+                                 double value, std::size_t e) const {
+    const NodeId from = g_.source(static_cast<EdgeId>(e));
+    throw Error(describe_plugin(plugin, slot) + " wrote " + to_string(ParamValue(value)) + " to the " + field + " of edge " +
+                to_string(g_.cell(from)) + " -> " + to_string(g_.cell(g_.targets[e])) + " in " +
+                describe_hook(hook, context_.iteration) + "; the " + field + " must be finite and >= 0");
   }
 
   // Brings node n's edges to the current iteration (heuristics that update by node). Ants on
@@ -219,15 +260,8 @@ class Colony {
     if (since == now) return;
     const EdgeId first = g_.offsets[n], last = g_.offsets[n + 1];
     p_.heuristic->update_node(context_, n, since, {eta_beta_.data() + first, static_cast<std::size_t>(last - first)});
-    check_heuristic(first, last);
+    check_heuristic("update_node()", first, last);
     fresh_[n].store(now, std::memory_order_release);
-  }
-
-  [[noreturn]] void fail_value(const char* what, const char* source, double value, std::size_t e) const {
-    const NodeId from = g_.source(static_cast<EdgeId>(e));
-    throw Error(std::string(what) + " of edge " + to_string(g_.cell(from)) + " -> " + to_string(g_.cell(g_.targets[e])) +
-                " is " + std::to_string(value) + " in iteration " + std::to_string(context_.iteration + 1) + " (set by " +
-                source + "; it must be finite and >= 0)");
   }
 
   // Specialised for alpha = 1, the usual case, which needs no pow() in the inner loop.
@@ -248,22 +282,18 @@ class Colony {
       if (by_node_) update_heuristic(current);
       int n = 0;
       double total = 0.0;
-      bool negative = false;
       for (EdgeId e = offsets[current], end = offsets[current + 1]; e < end; ++e) {
         const NodeId j = targets[e];
         if (visited[j] == stamp || forbidden[j]) continue;
         const double t = tau[e];
-        negative |= !(t >= 0.0);
         const double w = (kAlphaOne ? t : power(t, alpha)) * eta_beta[e];
         candidates[n] = e;
         weights[n] = w;
         total += w;
         ++n;
       }
-      // The pheromone is checked here, where it is used, not in a pass over every edge per
-      // iteration, which on large maps would cost more than the ants. NaN and infinity reach
-      // the total; a negative value may not, hence its own flag.
-      if (negative || !(total <= std::numeric_limits<double>::max())) reject_pheromone(candidates, n);
+      // tau and eta^beta were checked when written; their products may still overflow.
+      if (!(total <= std::numeric_limits<double>::max())) overflowed();
       if (n == 0) {
         const int back = std::min<int>(p_.deadlock->on_stuck(context_, ant.nodes), int(ant.nodes.size()) - 1);
         if (back <= 0) return false;
@@ -277,6 +307,8 @@ class Colony {
         p_.heuristic->step_factors(context_, ant, {candidates, std::size_t(n)}, factors);
         total = 0.0;
         for (int i = 0; i < n; ++i) total += weights[i] *= factors[i];
+        if (first_invalid(factors) != factors.size()) reject_factors(factors, candidates);
+        if (!(total <= std::numeric_limits<double>::max())) overflowed();
       }
       const EdgeId e = candidates[choose(rng, n, weights, total)];
       const NodeId next = targets[e];
@@ -288,12 +320,13 @@ class Colony {
     }
   }
 
-  [[noreturn]] void reject_pheromone(const EdgeId* candidates, int n) const {
-    for (int i = 0; i < n; ++i) {
-      const double t = tau_[candidates[i]];
-      if (!(t >= 0.0 && std::isfinite(t))) fail_value("pheromone", "the init, update or deadlock plugin", t, candidates[i]);
-    }
+  [[noreturn]] static void overflowed() {
     throw Error("the transition weights overflowed: pheromone or heuristic values are too large");
+  }
+
+  [[noreturn]] void reject_factors(std::span<const double> factors, const EdgeId* candidates) const {
+    const std::size_t i = first_invalid(factors);
+    reject_value(*p_.heuristic, "heuristic", "step_factors()", "step factor", factors[i], static_cast<std::size_t>(candidates[i]));
   }
 
   // Pseudo-random proportional rule: with probability q0 the best candidate, else the roulette.

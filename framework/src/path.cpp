@@ -1,6 +1,18 @@
 #include "aco/path.hpp"
 
+#include <cmath>
+#include <sstream>
+
 namespace aco {
+namespace {
+
+std::string to_text(const Eigen::Vector3d& p) {
+  std::ostringstream text;
+  text << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return text.str();
+}
+
+}  // namespace
 
 Waypoints to_waypoints(const Graph& graph, std::span<const NodeId> path) {
   Waypoints points;
@@ -32,6 +44,44 @@ int count_turns(std::span<const Eigen::Vector3d> points) {
     heading = step;
   }
   return turns;
+}
+
+bool on_free_cell(const Graph& graph, const Eigen::Vector3d& point) {
+  // Cell (x, y) is centred on origin + (x, y) * unit (Map::position), a square of side unit.
+  const Map& map = *graph.map;
+  const Eigen::Vector3d origin = map.position({0, 0});
+  const double unit_x = map.position({1, 0}).x() - origin.x(), unit_y = map.position({0, 1}).y() - origin.y();
+  const double x = (point.x() - origin.x()) / unit_x, y = (point.y() - origin.y()) / unit_y;
+  if (!(x > -1.0 && y > -1.0 && x < map.width() && y < map.height())) return false;  // beyond every cell's border
+  // The cells whose closed square holds the point: two along an axis on their border. The
+  // tolerance takes in the rounding of a position divided back by a terrain's cell size.
+  constexpr double kTolerance = 1e-9;
+  const auto cells = [](double v) {
+    return std::pair{static_cast<int>(std::ceil(v - 0.5 - kTolerance)), static_cast<int>(std::floor(v + 0.5 + kTolerance))};
+  };
+  const auto [x_low, x_high] = cells(x);
+  const auto [y_low, y_high] = cells(y);
+  for (int cy = y_low; cy <= y_high; ++cy)
+    for (int cx = x_low; cx <= x_high; ++cx)
+      if (map.passable({cx, cy})) return true;
+  return false;
+}
+
+std::string waypoint_problem(const Graph& graph, NodeId start, NodeId goal, std::span<const Eigen::Vector3d> points) {
+  if (points.empty()) return "no waypoints";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::string which = "waypoint " + std::to_string(i) + " (0-based) of " + std::to_string(points.size()) + ", " +
+                              to_text(points[i]) + ", ";
+    if (!points[i].allFinite()) return which + "is not finite";
+    if (!on_free_cell(graph, points[i])) return which + "lies on no free cell";
+  }
+  if (points.front() != graph.positions[start])
+    return "the first waypoint, " + to_text(points.front()) + ", is not the start " + to_string(graph.cell(start)) + " at " +
+           to_text(graph.positions[start]);
+  if (points.back() != graph.positions[goal])
+    return "the last waypoint, " + to_text(points.back()) + ", is not the goal " + to_string(graph.cell(goal)) + " at " +
+           to_text(graph.positions[goal]);
+  return "";
 }
 
 }  // namespace aco

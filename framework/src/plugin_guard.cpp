@@ -10,6 +10,10 @@
 namespace aco {
 namespace {
 
+// How every message numbers an iteration: as Context::iteration does, and saying so, since
+// plugin authors compare it with what their hook saw.
+constexpr const char* kIterationNumbering = " (0-based, as Context::iteration)";
+
 // The innermost guarded call of this thread. Plain pointers and an int: a signal handler reads
 // them without allocating.
 struct PluginCall {
@@ -35,6 +39,13 @@ void append_number(char* out, std::size_t size, std::size_t& length, long value)
   for (int i = 0; i < n; ++i) text[i] = digits[n - 1 - i];
   text[n] = '\0';
   append(out, size, length, text);
+}
+
+// "plugin update/max_min (FILE)"
+std::string describe(const PluginIdentity& who) {
+  std::string plugin = "plugin " + who.slot + "/" + who.name;
+  if (!who.file.empty()) plugin += " (" + who.file + ")";
+  return plugin;
 }
 
 }  // namespace
@@ -64,7 +75,8 @@ std::size_t describe_plugin_call(char* out, std::size_t size) noexcept {
     append(out, size, length, call.hook);
     if (call.iteration >= 0) {
       append(out, size, length, " in iteration ");
-      append_number(out, size, length, call.iteration + 1L);
+      append_number(out, size, length, call.iteration);
+      append(out, size, length, kIterationNumbering);
     }
   }
   out[length] = '\0';
@@ -86,11 +98,15 @@ std::string describe_current_exception() {
   }
 }
 
-void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration) {
-  std::string plugin = "plugin " + who.slot + "/" + who.name;
-  if (!who.file.empty()) plugin += " (" + who.file + ")";
+std::string describe_hook(const char* hook, int iteration) {
   std::string in = hook;
-  if (iteration >= 0) in += " in iteration " + std::to_string(iteration + 1);
+  if (iteration >= 0) in += " in iteration " + std::to_string(iteration) + kIterationNumbering;
+  return in;
+}
+
+void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration) {
+  const std::string plugin = describe(who);
+  const std::string in = describe_hook(hook, iteration);
   try {
     throw;
   } catch (const std::bad_alloc&) {
@@ -102,11 +118,16 @@ void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iterat
 
 namespace {
 
+// Who a guarded plugin is, found from the interface by describe_plugin().
+struct Identified {
+  PluginIdentity who_;
+};
+
 // A decorator of `Interface`: holds the plugin and calls it inside the boundary.
 template <class Interface>
-class Guarded : public Interface {
+class Guarded : public Interface, public Identified {
  public:
-  Guarded(std::unique_ptr<Interface> plugin, PluginIdentity who) : p_(std::move(plugin)), who_(std::move(who)) {}
+  Guarded(std::unique_ptr<Interface> plugin, PluginIdentity who) : Identified{std::move(who)}, p_(std::move(plugin)) {}
 
  protected:
   template <class F>
@@ -120,7 +141,6 @@ class Guarded : public Interface {
   }
 
   std::unique_ptr<Interface> p_;
-  PluginIdentity who_;
 };
 
 // Each decorator forwards every virtual of its interface to the plugin, so the plugin's own
@@ -206,6 +226,11 @@ class GuardedLocal final : public Guarded<LocalPlanner> {
 };
 
 }  // namespace
+
+std::string describe_plugin(const Strategy& plugin, const char* slot) {
+  if (const auto* guarded = dynamic_cast<const Identified*>(&plugin)) return describe(guarded->who_);
+  return std::string("the ") + slot + " plugin";
+}
 
 std::unique_ptr<PheromoneInit> guard(std::unique_ptr<PheromoneInit> p, PluginIdentity who) {
   return std::make_unique<GuardedInit>(std::move(p), std::move(who));

@@ -262,7 +262,7 @@ void draw_convergence(std::ostream& out, const RunPicture& pic, double left, dou
   out << "<text x=\"-4\" y=\"" << py(low) + 4 << "\" text-anchor=\"end\">" << low << "</text>\n";
   out << "<text x=\"0\" y=\"" << kPlotHeight + 16 << "\">1</text>\n";
   out << "<text x=\"" << kPlotWidth << "\" y=\"" << kPlotHeight + 16 << "\" text-anchor=\"end\">" << n << "</text>\n";
-  out << "<text x=\"" << kPlotWidth / 2 << "\" y=\"" << kPlotHeight + 16 << "\" text-anchor=\"middle\">iteration</text>\n";
+  out << "<text x=\"" << kPlotWidth / 2 << "\" y=\"" << kPlotHeight + 16 << "\" text-anchor=\"middle\">iterations run</text>\n";
   const double ly = kPlotHeight + 36;
   out << "<line x1=\"0\" x2=\"20\" y1=\"" << ly << "\" y2=\"" << ly << "\" stroke=\"#1565c0\" stroke-width=\"2\"/><text x=\"24\" y=\""
       << ly + 4 << "\">best so far</text>\n";

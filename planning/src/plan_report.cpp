@@ -221,14 +221,14 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
         << std::setprecision(4);
   }
   if (planner == "aco") {
-    out << "search:   best found at iteration " << o.search.best_iteration << " of " << o.search.iterations << " (stopped by "
+    out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations << " iterations (stopped by "
         << o.text("stopped_by") << "), " << o.count("ant_steps")
         << " ant steps, " << std::setprecision(2) << o.time_ms << " ms";
     if (o.count("ant_steps") > 0)
       out << " (" << std::setprecision(1) << o.time_ms * 1e6 / double(o.count("ant_steps")) << " ns per ant step)";
     out << "\n";
   } else if (o.count("evaluations") > 0) {
-    out << "search:   best found at iteration " << o.search.best_iteration << " of " << o.search.iterations << ", " << o.count("evaluations")
+    out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations << " iterations, " << o.count("evaluations")
         << " evaluations, " << std::setprecision(2) << o.time_ms << " ms\n";
   } else {
     out << "search:   " << std::setprecision(2) << o.time_ms << " ms\n";

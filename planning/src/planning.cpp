@@ -6,6 +6,8 @@
 #include "aco/astar.hpp"
 #include "aco/colony.hpp"
 #include "aco/error.hpp"
+#include "aco/path.hpp"
+#include "aco/plugin_guard.hpp"
 #include "ifwa/fireworks.hpp"
 #include "pso/pso.hpp"
 
@@ -121,9 +123,9 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
     context.seed = run.colony.seed;
     o.search.length = path_length(graph, o.search.path);
     o.path = pipeline.smoother->smooth(context, o.search.path);
-    if (o.path.empty() || o.path.front() != graph.positions[start] || o.path.back() != graph.positions[goal])
-      throw Error("the smoother plugin '" + run.pipeline.at("smoother").plugin +
-                  "' returned a path that does not run from start to goal");
+    if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
+      throw Error(describe_plugin(*pipeline.smoother, "smoother") + " returned bad waypoints in smooth(): " + problem +
+                  " (waypoints must be finite and on free cells, from the start's position to the goal's)");
     o.length = polyline_length(o.path);
     o.turns = count_turns(o.path);
   }

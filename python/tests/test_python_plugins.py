@@ -56,3 +56,14 @@ def test_an_exception_in_python_is_an_aco_error_naming_it():
 
     with pytest.raises(aco.Error, match="my rule is broken"):
         aco.plan(MAP1, (0, 0), (19, 19), update=Broken(), seed=1, **SMALL)
+
+
+def test_nan_written_by_a_python_update_stops_the_run_naming_plugin_hook_and_iteration():
+    class WritesNan:
+        def update(self, context, iteration, tau):
+            if context.iteration == context.max_iterations - 1:  # the last: no ant would read it
+                tau[0] = np.nan
+
+    with pytest.raises(aco.Error, match=r"plugin update/python \(.*\) wrote nan to the pheromone of edge \(0,0\) -> \(1,0\) "
+                                        r"in update\(\) in iteration 19 \(0-based, as Context::iteration\)"):
+        aco.plan(MAP1, (0, 0), (19, 19), update=WritesNan(), seed=1, **SMALL)

@@ -420,10 +420,8 @@ void run_slot(LocalPlanner& planner, const Problem& problem, Trace& trace) {
       trace.begin(problem.name + ", " + drive.name + ", step " + std::to_string(step));
       const VelocityCommand command = planner.command(view);
       const DynamicWindow window = dynamic_window(view.robot, view.limits, view.period);
-      const double tolerance = 1e-9;
       trace.add_checked(std::vector<double>{command.v, command.w}, "command (v, w)", -INFINITY);
-      if (command.v < window.v_low - tolerance || command.v > window.v_high + tolerance ||
-          command.w < window.w_low - tolerance || command.w > window.w_high + tolerance)
+      if (!window.contains(command, kWindowTolerance))
         trace.problem("command (" + number(command.v) + ", " + number(command.w) + ") lies outside the dynamic window");
       view.robot = move(view.robot, window.clamp(command), view.period);
       for (auto& m : moving) m.position += m.velocity * view.period;

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/planning.hpp"
+#include "aco/plugin_guard.hpp"
 
 namespace acosim {
 
@@ -97,6 +99,22 @@ std::vector<Eigen::Vector2d> turning_points(const aco::Waypoints& path) {
   return points;
 }
 
+// A command out of the window by more than rounding (or NaN) is the local planner's bug: clamped,
+// it would hide it, or drive the robot by NaN into every output.
+[[noreturn]] void reject_command(const aco::LocalPlanner& planner, const aco::VelocityCommand& c, const aco::DynamicWindow& window,
+                                 int step, double t) {
+  const auto number = [](double v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
+  };
+  throw aco::Error(aco::describe_plugin(planner, "local") + " returned the command v = " + number(c.v) + ", w = " + number(c.w) +
+                   " in command() at control step " + std::to_string(step) + " (0-based, t = " + number(t) +
+                   " s), outside the dynamic window v in [" + number(window.v_low) + ", " + number(window.v_high) +
+                   "], w in [" + number(window.w_low) + ", " + number(window.w_high) +
+                   "] (a command must be finite and inside it)");
+}
+
 }  // namespace
 
 SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registry) {
@@ -185,7 +203,10 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
     path.assign(1, aco::point_on_path(leg, aco::foot_on_path(leg, robot.position())));
     path.insert(path.end(), goals.begin() + static_cast<std::ptrdiff_t>(next), goals.end());
     aco::LocalView view{robot, limits, sim.period, goals[next], cells, 1.0, seen, path};
-    const aco::VelocityCommand command = aco::dynamic_window(robot, limits, sim.period).clamp(pipeline.local->command(view));
+    const aco::DynamicWindow window = aco::dynamic_window(robot, limits, sim.period);
+    const aco::VelocityCommand wanted = pipeline.local->command(view);
+    if (!window.contains(wanted, aco::kWindowTolerance)) reject_command(*pipeline.local, wanted, window, result.steps, t);
+    const aco::VelocityCommand command = window.clamp(wanted);  // rounding's excess only
     const aco::RobotState moved = aco::move(robot, command, sim.period);
     result.distance += (moved.position() - robot.position()).norm();
     robot = moved;

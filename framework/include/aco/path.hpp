@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "aco/graph.hpp"
@@ -17,5 +18,15 @@ double polyline_length(std::span<const Eigen::Vector3d> points);
 // in the (x, y) plane changes (collinear repeats are not turns; on terrain, neither is a change
 // of slope alone).
 int count_turns(std::span<const Eigen::Vector3d> points);
+
+// Whether a point in planning units lies on a passable cell of the graph's map (its x and y; z is
+// the terrain's height). A point on the border of cells lies on each of them: a waypoint on the
+// corner of an obstacle, where a shortest any-angle path turns, is on a free cell when one cell
+// it touches is free.
+bool on_free_cell(const Graph& graph, const Eigen::Vector3d& point);
+
+// What is wrong with a smoother's waypoints for the path from start to goal, or "" if nothing:
+// each must be finite and on a free cell, the first the start's position and the last the goal's.
+std::string waypoint_problem(const Graph& graph, NodeId start, NodeId goal, std::span<const Eigen::Vector3d> points);
 
 }  // namespace aco

@@ -34,14 +34,22 @@ class PluginCallScope {
   int iteration_;
 };
 
-// Where the calling thread is: "plugin update/crash (FILE) in update() in iteration 3", or ""
-// outside every plugin. Async-signal-safe (a crash handler calls it): writes at most size - 1
+// Where the calling thread is: "plugin update/crash (FILE) in update() in iteration 3 (0-based,
+// as Context::iteration)", or "" outside every plugin. Async-signal-safe (a crash handler calls it): writes at most size - 1
 // characters and a NUL into `out` and returns how many.
 std::size_t describe_plugin_call(char* out, std::size_t size) noexcept;
 
 // What the exception being handled says: what() of a std::exception, else its type ("int").
 // Call inside a catch block only.
 std::string describe_current_exception();
+
+// "update() in iteration 3 (0-based, as Context::iteration)": a hook and the iteration it ran in
+// (iteration < 0: the hook alone), as every message numbers iterations.
+std::string describe_hook(const char* hook, int iteration);
+
+// "plugin update/max_min (FILE)" for a plugin made by the registry (behind the guard); "the
+// update plugin" (the slot given) for an object made otherwise, such as a test's own strategy.
+std::string describe_plugin(const Strategy& plugin, const char* slot);
 
 // Throws the Error for the exception being handled, thrown by `who` in `hook` (iteration < 0:
 // none to name). Call inside a catch block only.

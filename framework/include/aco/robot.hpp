@@ -61,7 +61,15 @@ struct DynamicWindow {
   VelocityCommand clamp(const VelocityCommand& c) const {
     return {std::clamp(c.v, v_low, v_high), std::clamp(c.w, w_low, w_high)};
   }
+  // Whether c lies in the window, give or take `tolerance` (false for NaN).
+  bool contains(const VelocityCommand& c, double tolerance) const {
+    return c.v >= v_low - tolerance && c.v <= v_high + tolerance && c.w >= w_low - tolerance && c.w <= w_high + tolerance;
+  }
 };
+
+// How far a local planner's command may stray out of the dynamic window by rounding: the
+// simulator clamps that much back in, and refuses more (as aco-plugin-check does).
+inline constexpr double kWindowTolerance = 1e-9;
 
 inline DynamicWindow dynamic_window(const RobotState& s, const RobotLimits& limits, double period) {
   return {std::max(limits.min_speed, s.v - limits.max_accel * period), std::min(limits.max_speed, s.v + limits.max_accel * period),

@@ -22,13 +22,15 @@ struct SearchResult {
   std::vector<NodeId> path;  // best path found, start to goal; every consecutive pair an edge
   double length = none;      // path_length(graph, path)
   int iterations = 0;        // iterations run
-  int best_iteration = 0;    // first iteration (1-based) whose best had the final length; 0 if unsolved
+  // A count, as `iterations`: the iterations run when the final length was first found, so the
+  // iteration that found it is Context::iteration = best_iteration - 1; 0 if unsolved.
+  int best_iteration = 0;
   std::vector<double> best_so_far;  // per iteration (none until a path is found)
   // The anytime curves, per iteration like best_so_far, for plotting quality against effort:
   // wall-clock seconds from the start of the search loop to the end of the iteration (steady
   // clock; the per-map setup before the loop, e.g. the colony's per-edge fields, not counted), and
   // the walks built by then, cumulative: candidate paths, one per ant per colony, per decoded spark
-  // or particle (the initial population counting towards iteration 1), one for A*.
+  // or particle (the initial population counting towards the first iteration), one for A*.
   std::vector<double> elapsed_s;
   std::vector<std::uint64_t> walks;
 

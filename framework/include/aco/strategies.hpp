@@ -51,7 +51,8 @@ class BOOST_SYMBOL_VISIBLE Strategy {
 class BOOST_SYMBOL_VISIBLE PheromoneInit : public Strategy {
  public:
   ~PheromoneInit() override;
-  // Values must be positive and finite.
+  // Values must be positive and finite; the engine stops the run, naming the plugin, on any that
+  // is NaN, infinite or negative (docs/writing-plugins.md, "What the engine checks").
   virtual void initialize(const Context& context, std::span<double> tau) = 0;
 };
 
@@ -116,6 +117,8 @@ class BOOST_SYMBOL_VISIBLE DeadlockPolicy : public Strategy {
 class BOOST_SYMBOL_VISIBLE Smoother : public Strategy {
  public:
   ~Smoother() override;
+  // Finite waypoints on free cells (aco::on_free_cell), the first and last the positions of the
+  // path's ends; aco::plan() refuses others, naming the plugin.
   virtual std::vector<Eigen::Vector3d> smooth(const Context& context, std::span<const NodeId> path) const = 0;
 };
 
@@ -144,7 +147,8 @@ struct LocalView {
 // Slot "local": the velocity command for the next control period, which follows the global
 // path's intermediate goals and avoids what the sensor sees (used by acosim; acoplan plans the
 // global path only). The command must lie in dynamic_window(view.robot, view.limits,
-// view.period); the simulator clamps it there.
+// view.period); the simulator clamps rounding's excess (kWindowTolerance) and stops on more, or
+// on NaN, naming the plugin and the control step.
 class BOOST_SYMBOL_VISIBLE LocalPlanner : public Strategy {
  public:
   ~LocalPlanner() override;

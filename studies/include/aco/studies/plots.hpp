@@ -69,7 +69,7 @@ Series ecdf_series(std::string name, const std::vector<double>& hitting_times, d
 
 struct LineChart {
   std::string title;
-  std::string x_label = "iteration";
+  std::string x_label = "iterations run";  // a count: 1 after the first iteration
   std::string y_label;
   std::vector<Series> series;
   std::optional<double> reference;

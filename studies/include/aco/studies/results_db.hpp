@@ -22,7 +22,8 @@
 //                   grid_length / optimal_length - 1 (the relative excess of the grid path over
 //                   exact A* on the same graph, as acoplan reports it), NULL if the optimum is
 //                   unknown. seed holds the 64-bit seed's bits as SQLite's signed integer.
-//   progress        one row per iteration of a trial: runid, time, iteration (1-based),
+//   progress        one row per iteration of a trial: runid, time, iteration (a count: the
+//                   iterations run, 1 after the first, whose Context::iteration is 0),
 //                   best_cost (NULL until an ant arrived), walks. time is OMPL's: seconds since
 //                   the search started, measured at the end of the iteration (steady clock);
 //                   walks is the candidate paths the planner built by then, cumulative (ants'

@@ -81,6 +81,20 @@ TEST_CASE("a bad pheromone or heuristic value is named with the plugin, the hook
   }
 }
 
+TEST_CASE("a bad pheromone value that a repeat of the run does not make again is blamed on a plugin that is not deterministic",
+          "[faults][acoplan]") {
+  // The engine checks the pheromone where the ants read it and at the run's end, and finds the
+  // hook that wrote it by repeating the run with a check after every hook.
+  const auto not_deterministic = [](const std::string& where, int iteration) {
+    return "the pheromone of edge (0,0) -> (1,0) was nan " + where + " in iteration " + std::to_string(iteration) + kIteration +
+           ", but not when the run was repeated with a check after every hook: the init, update or deadlock plugin is not "
+           "deterministic (aco-plugin-check tells which); it must be finite and >= 0";
+  };
+  expect_error({"--update", "bad_value", "--update.once", "true"}, not_deterministic("where an ant read it", 4));
+  expect_error({"--update", "bad_value", "--update.once", "true", "--update.at_iteration", "5"},
+               not_deterministic("at the end of the run", 5));
+}
+
 TEST_CASE("NaN written in the run's last iteration fails the run and reaches no output", "[faults][acoplan]") {
   const auto svg = test::temp_file("last.svg", "").parent_path() / "picture.svg";
   const auto r = test::acoplan(map1_run({"--update", "bad_value", "--update.at_iteration", "5", "--json", "--svg", svg.string(),

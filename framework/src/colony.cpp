@@ -70,6 +70,16 @@ std::size_t first_invalid(std::span<const double> values) {
   return i;
 }
 
+// A bad pheromone value found where the engine reads the field (an ant's step, the run's end), in
+// a run that checks the field there only. run_colony() then repeats the run checking after every
+// hook, which names the plugin, hook and iteration that wrote it (plugins are deterministic).
+struct PheromoneFoundBad {
+  std::size_t edge;
+  double value;
+  int iteration;
+  const char* where;
+};
+
 // Per-thread construction buffers. `visited` holds a stamp per node: a node is in the current
 // ant's tabu list when its stamp equals the ant's, so no clearing between ants. `on_walk` marks
 // the nodes of the current walk only (a backed-off node stays tabu but leaves the walk): the
@@ -101,8 +111,9 @@ using ScratchPool = tbb::enumerable_thread_specific<Scratch>;
 // The plain search runs one; the bidirectional search runs two, the second from goal to start.
 class Colony {
  public:
-  Colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline, const ColonySettings& settings)
-      : g_(graph), p_(pipeline), s_(settings), shortener_(graph, forbidden_, settings.local_search == "loops" ? 0 : settings.local_search_window) {
+  Colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline, const ColonySettings& settings,
+         bool check_every_hook)
+      : g_(graph), p_(pipeline), s_(settings), check_every_hook_(check_every_hook), shortener_(graph, forbidden_, settings.local_search == "loops" ? 0 : settings.local_search_window) {
     context_.graph = &graph;
     context_.start = start;
     context_.goal = goal;
@@ -214,11 +225,18 @@ class Colony {
     const Iteration view{ants, iteration_best, best()};
     ran_default_after_iteration = false;
     p_.deadlock->after_iteration(context_, view, tau_, forbidden_);
-    if (!ran_default_after_iteration) check_pheromone(*p_.deadlock, "deadlock", "after_iteration()");
+    if (check_every_hook_ && !ran_default_after_iteration) check_pheromone(*p_.deadlock, "deadlock", "after_iteration()");
     forbidden_[context_.start] = forbidden_[context_.goal] = 0;
     p_.update->update(context_, view, tau_);
-    check_pheromone(*p_.update, "update", "update()");
+    if (check_every_hook_) check_pheromone(*p_.update, "update", "update()");
     return iteration_best;
+  }
+
+  // The last iteration's writes, which no ant reads: none may reach a result.
+  void check_final_pheromone() const {
+    if (check_every_hook_) return;  // checked after the hooks that wrote it
+    const std::size_t e = first_invalid(tau_);
+    if (e != tau_.size()) throw PheromoneFoundBad{e, tau_[e], context_.iteration, "at the end of the run"};
   }
 
  private:
@@ -227,10 +245,10 @@ class Colony {
     check_heuristic("compute_powered()", 0, eta_beta_.size());
   }
 
-  // Every hook that writes the pheromone or the heuristic is followed by a check of what it
-  // wrote: a bad value is named where it was made (plugin, hook, iteration), not where an ant
-  // happens to read it later, and none reaches a result, the last iteration's included. A pass
-  // over every edge per hook, as cheap as the plugin's own evaporation.
+  // A check of what a hook wrote: a bad value is named where it was made (plugin, hook,
+  // iteration), not where an ant happens to read it later. A pass over every edge, as costly as
+  // the plugin's own evaporation, so after the per-iteration hooks (update, after_iteration) it
+  // runs only in the repeat of a run that found a bad value where it reads the field.
   void check_pheromone(const Strategy& plugin, const char* slot, const char* hook) const {
     const std::size_t e = first_invalid(tau_);
     if (e != tau_.size()) reject_value(plugin, slot, hook, "pheromone", tau_[e], e);
@@ -282,18 +300,22 @@ class Colony {
       if (by_node_) update_heuristic(current);
       int n = 0;
       double total = 0.0;
+      bool negative = false;
       for (EdgeId e = offsets[current], end = offsets[current + 1]; e < end; ++e) {
         const NodeId j = targets[e];
         if (visited[j] == stamp || forbidden[j]) continue;
         const double t = tau[e];
+        negative |= !(t >= 0.0);
         const double w = (kAlphaOne ? t : power(t, alpha)) * eta_beta[e];
         candidates[n] = e;
         weights[n] = w;
         total += w;
         ++n;
       }
-      // tau and eta^beta were checked when written; their products may still overflow.
-      if (!(total <= std::numeric_limits<double>::max())) overflowed();
+      // eta^beta was checked when written. The pheromone is checked here, where it is read: NaN
+      // and infinity reach the total, a negative value may not, hence its own flag. Valid values
+      // whose products overflow are the one other way to a total that is not finite.
+      if (negative || !(total <= std::numeric_limits<double>::max())) reject_pheromone_or_overflow(candidates, n);
       if (n == 0) {
         const int back = std::min<int>(p_.deadlock->on_stuck(context_, ant.nodes), int(ant.nodes.size()) - 1);
         if (back <= 0) return false;
@@ -320,6 +342,15 @@ class Colony {
     }
   }
 
+  [[noreturn]] void reject_pheromone_or_overflow(const EdgeId* candidates, int n) const {
+    for (int i = 0; i < n; ++i) {
+      const double t = tau_[candidates[i]];
+      if (!(t >= 0.0 && t <= std::numeric_limits<double>::max()))
+        throw PheromoneFoundBad{static_cast<std::size_t>(candidates[i]), t, context_.iteration, "where an ant read it"};
+    }
+    overflowed();
+  }
+
   [[noreturn]] static void overflowed() {
     throw Error("the transition weights overflowed: pheromone or heuristic values are too large");
   }
@@ -340,6 +371,7 @@ class Colony {
   const Graph& g_;
   Pipeline p_;
   ColonySettings s_;
+  bool check_every_hook_;
   Context context_;
   std::vector<double> tau_;
   // Mutable for heuristics that update by node: the (const, multi-threaded) construction brings
@@ -474,14 +506,15 @@ ColonyResult iterate(const ColonySettings& s, std::span<Colony* const> colonies,
       break;
     }
   }
+  for (Colony* colony : colonies) colony->check_final_pheromone();
   if (result.solved) result.path = colonies[0]->best()->nodes;
   result.pheromone = colonies[0]->take_pheromone();
   return result;
 }
 
 ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
-                        const ColonySettings& s) {
-  Colony colony(graph, start, goal, pipeline, s);
+                        const ColonySettings& s, bool check_every_hook) {
+  Colony colony(graph, start, goal, pipeline, s, check_every_hook);
   std::vector<std::vector<Ant>> ants(1, std::vector<Ant>(s.ants));
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&colony};
@@ -498,9 +531,9 @@ ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Pip
 }
 
 ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, const Pipeline& forward_pipeline,
-                               const Pipeline& backward_pipeline, const ColonySettings& s) {
-  Colony forward(graph, start, goal, forward_pipeline, s);
-  Colony backward(graph, goal, start, backward_pipeline, s);
+                               const Pipeline& backward_pipeline, const ColonySettings& s, bool check_every_hook) {
+  Colony forward(graph, start, goal, forward_pipeline, s, check_every_hook);
+  Colony backward(graph, goal, start, backward_pipeline, s, check_every_hook);
   std::vector<std::vector<Ant>> ants(2, std::vector<Ant>(s.ants));
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&forward, &backward};
@@ -549,12 +582,33 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pip
     trivial.length = 0.0;
     return trivial;
   }
-  if (!settings.bidirectional) return run_single(graph, start, goal, pipeline, settings);
-  if (backward == nullptr || !backward->init || !backward->heuristic || !backward->update || !backward->deadlock)
-    throw Error("the bidirectional search needs a second, complete set of strategy objects for its backward colony");
-  if (backward->init == pipeline.init || backward->update == pipeline.update)
-    throw Error("the bidirectional search's two colonies must not share strategy objects (they keep per-run state)");
-  return run_bidirectional(graph, start, goal, pipeline, *backward, settings);
+  if (settings.bidirectional) {
+    if (backward == nullptr || !backward->init || !backward->heuristic || !backward->update || !backward->deadlock)
+      throw Error("the bidirectional search needs a second, complete set of strategy objects for its backward colony");
+    if (backward->init == pipeline.init || backward->update == pipeline.update)
+      throw Error("the bidirectional search's two colonies must not share strategy objects (they keep per-run state)");
+  }
+  const auto run = [&](bool check_every_hook) {
+    return settings.bidirectional ? run_bidirectional(graph, start, goal, pipeline, *backward, settings, check_every_hook)
+                                  : run_single(graph, start, goal, pipeline, settings, check_every_hook);
+  };
+  try {
+    return run(false);
+  } catch (const PheromoneFoundBad& found) {
+    // Strategies start every run afresh (strategies.hpp), so the repeat makes the same writes and
+    // its check after every hook throws the Error that names the plugin, the hook and the iteration.
+    try {
+      run(true);
+    } catch (const PheromoneFoundBad&) {
+    }
+    const NodeId from = graph.source(static_cast<EdgeId>(found.edge));
+    throw Error("the pheromone of edge " + to_string(graph.cell(from)) + " -> " +
+                to_string(graph.cell(graph.targets[found.edge])) + " was " + to_string(ParamValue(found.value)) + " " +
+                found.where + " in iteration " + std::to_string(found.iteration) +
+                " (0-based, as Context::iteration), but not when the run was repeated with a check after every hook: "
+                "the init, update or deadlock plugin is not deterministic (aco-plugin-check tells which); it must be "
+                "finite and >= 0");
+  }
 }
 
 }  // namespace aco

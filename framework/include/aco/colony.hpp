@@ -72,9 +72,11 @@ struct ColonyResult : SearchResult {
   std::vector<double> pheromone;       // final tau per edge
 };
 
-// Runs the colony in the calling thread's TBB arena. Throws Error, right after the hook, if a
-// strategy writes a non-finite or negative pheromone or heuristic value, naming the plugin
-// (aco::describe_plugin), the hook, the iteration, the edge and the value. With settings.bidirectional, `backward`
+// Runs the colony in the calling thread's TBB arena. Throws Error if a strategy writes a
+// non-finite or negative pheromone or heuristic value, naming the plugin (aco::describe_plugin),
+// the hook, the iteration, the edge and the value (the pheromone of every iteration is checked
+// where it is read; a bad value there repeats the run with a check after every hook, which names
+// the writer: docs/writing-plugins.md, "What the engine checks"). With settings.bidirectional, `backward`
 // is the backward colony's pipeline: separate objects of the same (or other) plugins, since
 // strategies keep per-run state. Its result is the forward colony's view (its pheromone).
 ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,

@@ -56,8 +56,8 @@ constexpr const char* kUsage =
     "      statistics, Markdown and HTML report, CSV of all runs\n"
     "  acobench --version\n"
     "      the framework's version, commit, build type and compiler\n\n"
-    "Exit codes: 0 done, 1 an error before or between trials (nothing of it stored), 3 trials failed\n"
-    "(stored as failed; acobench run without --allow-failures).\n\n";
+    "Exit codes: 0 done, 1 an error of acobench's own (a bad option or file, a refused database),\n"
+    "3 trials failed (stored as failed; acobench run without --allow-failures).\n\n";
 
 // acobench run's exit code when a trial of the experiment failed (1 is an error of acobench's own).
 constexpr int kTrialsFailed = 3;

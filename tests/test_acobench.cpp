@@ -412,10 +412,10 @@ TEST_CASE("failed trials are stored named and counted by reason and acobench exi
   CHECK(r.exit_code == 3);
   CHECK_THAT(r.out, Contains("9 trials, 0 already in"));
   CHECK_THAT(r.err, Contains("6 of 9 trials failed, by reason and configuration:\n"));
-  CHECK_THAT(r.err, Contains("  a plugin threw: 3\n    'thrower': 3, e.g. configuration 'thrower', problem 'map1', "
+  CHECK_THAT(r.err, Contains("  a plugin threw: 3\n    'thrower': 3, e.g. problem 'map1', "
                              "repetition 0: plugin update/throwing (") &&
                         Contains("failed in update() in iteration 2 (0-based, as Context::iteration): an exception of type int"));
-  CHECK_THAT(r.err, Contains("  a plugin wrote an invalid value: 3\n    'nan': 3, e.g. configuration 'nan', problem "
+  CHECK_THAT(r.err, Contains("  a plugin wrote an invalid value: 3\n    'nan': 3, e.g. problem "
                              "'map1', repetition 0: plugin update/bad_value ("));
   CHECK_THAT(r.err, Contains("acobench: exit 3: trials failed") && Contains("--allow-failures accepts them"));
   int solved = 0;

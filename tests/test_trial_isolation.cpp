@@ -82,7 +82,7 @@ TEST_CASE("a crash an endless loop a memory hog and a throw each cost only their
   CHECK(r.exit_code == 3);  // trials failed
   CHECK_THAT(r.out, Contains("36 trials, 0 already in"));
   CHECK_THAT(r.err, Contains("24 of 36 trials failed, by reason and configuration:") &&
-                        Contains("  crashed (a signal): 6\n    'crash': 6, e.g. configuration 'crash', problem 'across', "
+                        Contains("  crashed (a signal): 6\n    'crash': 6, e.g. problem 'across', "
                                  "repetition 0: crashed: SIGSEGV in plugin update/crashing") &&
                         Contains("  over the trial time limit: 6\n    'hang': 6, e.g.") &&
                         Contains("  out of memory: 6\n    'hog': 6, e.g.") && Contains("  a plugin threw: 6\n    'throw': 6, e.g."));

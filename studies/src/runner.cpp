@@ -239,8 +239,13 @@ std::vector<std::string> describe_failures(const std::vector<TrialFailure>& fail
     std::size_t total = 0;
     for (const auto& [name, counted] : configurations) total += counted.first;
     lines.push_back(describe_failure(kind) + ": " + std::to_string(total));
-    for (const auto& [name, counted] : configurations)
-      lines.push_back("  '" + name + "': " + std::to_string(counted.first) + ", e.g. " + shortened(counted.second));
+    // The line names the configuration: the example starts at the problem.
+    for (const auto& [name, counted] : configurations) {
+      const std::string named = "configuration '" + name + "', ";
+      const std::string& example = counted.second;
+      lines.push_back("  '" + name + "': " + std::to_string(counted.first) + ", e.g. " +
+                      shortened(example.rfind(named, 0) == 0 ? example.substr(named.size()) : example));
+    }
   }
   return lines;
 }

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -144,7 +145,7 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   const std::string before = file_bytes(db);
   const auto refused = run_acobench({"run", other_file.string(), "--db", db.string()});
   CHECK(refused.exit_code == 1);
-  CHECK_THAT(refused.err, Contains("experiment file changed"));
+  CHECK_THAT(refused.err, Contains("ablation: the stored path was chosen on the stored problems and repetitions"));
   CHECK(file_bytes(db) == before);
 
   const auto out = file.parent_path() / "report";
@@ -397,33 +398,49 @@ TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per co
   CHECK_THROWS_WITH(acobench::load_experiment(file.parent_path(), test::plugins()), Contains("is a directory, not an experiment file"));
 }
 
-TEST_CASE("a trial whose plugin throws is stored as failed, named, and the experiment goes on", "[acobench][boundary]") {
+TEST_CASE("failed trials are stored named and counted by reason and acobench exits 3 now and on a rerun",
+          "[acobench][boundary][failures]") {
   const auto file = experiment(
       "name: throws\nseed: 3\nrepetitions: 3\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
       "settings: {ants: 10, iterations: 5}\nbaseline: {name: AS}\n"
-      "configurations:\n  - {name: thrower, update: throwing, update.at_iteration: 2}\n");
+      "configurations:\n  - {name: thrower, update: throwing, update.at_iteration: 2}\n"
+      "  - {name: nan, update: bad_value, update.at_iteration: 4}\n");
   const auto db = file.parent_path() / "throws.db";
   const std::vector<std::string> args{"run", file.string(), "--db", db.string(), "--plugin-dir", ACO_TEST_FAULTY_PLUGIN_DIR};
   const auto r = run_acobench(args);
-  INFO(r.err);
-  REQUIRE(r.exit_code == 0);
-  CHECK_THAT(r.out, Contains("6 trials, 0 already in"));
-  CHECK_THAT(r.err, Contains("3 trials failed") &&
-                        Contains("configuration 'thrower', problem 'map1', repetition 0: plugin update/throwing (") &&
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 3);
+  CHECK_THAT(r.out, Contains("9 trials, 0 already in"));
+  CHECK_THAT(r.err, Contains("6 of 9 trials failed, by reason and configuration:\n"));
+  CHECK_THAT(r.err, Contains("  a plugin threw: 3\n    'thrower': 3, e.g. problem 'map1', "
+                             "repetition 0: plugin update/throwing (") &&
                         Contains("failed in update() in iteration 2 (0-based, as Context::iteration): an exception of type int"));
-  int failed = 0, solved = 0;
+  CHECK_THAT(r.err, Contains("  a plugin wrote an invalid value: 3\n    'nan': 3, e.g. problem "
+                             "'map1', repetition 0: plugin update/bad_value ("));
+  CHECK_THAT(r.err, Contains("acobench: exit 3: trials failed") && Contains("--allow-failures accepts them"));
+  int solved = 0;
+  std::map<std::string, int> failures;
   for (const auto& t : acobench::ResultsDb(db).trials()) {
     if (!t.error.empty()) {
-      ++failed;
+      ++failures[t.failure];
       CHECK_FALSE(t.solved);
       CHECK(t.stopped_by == "error");
     }
     solved += t.solved;
   }
-  CHECK(failed == 3);
+  CHECK(failures == std::map<std::string, int>{{"invalid value", 3}, {"plugin error", 3}});
   CHECK(solved == 3);  // the other configuration's trials all ran
-  // A failed trial is a result: a rerun does not repeat it.
-  CHECK_THAT(run_acobench(args).out, Contains("6 trials, 6 already in"));
+  // A failed trial is a result: a rerun does not repeat it, and gives the same verdict.
+  const auto again = run_acobench(args);
+  CHECK(again.exit_code == 3);
+  CHECK_THAT(again.out, Contains("9 trials, 9 already in") && Contains("0 run"));
+  CHECK_THAT(again.err, Contains("6 of 9 trials failed (6 stored as failed by an earlier run)") &&
+                            Contains("a plugin threw: 3") && Contains("a plugin wrote an invalid value: 3"));
+  auto allowed_args = args;
+  allowed_args.push_back("--allow-failures");
+  const auto allowed = run_acobench(allowed_args);
+  CHECK(allowed.exit_code == 0);
+  CHECK_THAT(allowed.err, Contains("6 of 9 trials failed") && Contains("--allow-failures: exit 0 all the same"));
   const auto out = file.parent_path() / "report";
   REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
   const std::string md = file_bytes(out / "report.md");
@@ -514,7 +531,7 @@ TEST_CASE("a report of a database from before the measured times leaves its runs
   CHECK(count_of(html, "class=\"ecdf\"") == 0);
   CHECK_THAT(html, Contains("class=\"convergence\""));  // the per-iteration view is still there
   // Reading it for the report brought it to the current format.
-  CHECK(acobench::ResultsDb(db).meta("format_version") == "4");
+  CHECK(acobench::ResultsDb(db).meta("format_version") == "5");
 }
 
 TEST_CASE("a problem written as a single value is refused with the problem format, not yaml-cpp's exception",
@@ -535,6 +552,8 @@ TEST_CASE("every bundled experiment file loads and resolves each configuration o
     ++files;
     const auto e = acobench::load_experiment(entry.path(), test::plugins());
     CHECK(e.configurations.size() >= 1);
+    // No configuration of ours compares a run with itself (acobench would warn).
+    CHECK(e.same_runs().empty());
   }
   CHECK(files >= 10);
 }

@@ -120,7 +120,7 @@ TEST_CASE("merge refuses another experiment's database and a shard given twice, 
   const auto refused = run_acobench({"merge", one.string(), other.string(), "--db", merged.string()});
   CHECK(refused.exit_code == 1);
   CHECK_THAT(refused.err, Contains("cannot merge " + other.string()));
-  CHECK_THAT(refused.err, Contains("seed: stored 7, now 8"));
+  CHECK_THAT(refused.err, Contains("\n  seed 7 -> 8 (every trial's seed derives from it)"));
   CHECK_FALSE(std::filesystem::exists(merged));
 
   const auto twice = run_acobench({"merge", one.string(), one.string(), "--db", merged.string()});

@@ -125,8 +125,8 @@ TEST_CASE("acobench stores a trial whose plugin writes NaN in its last iteration
     if (in_process) args.push_back("--in-process");
     const auto r = run_acobench(args);
     INFO(r.err);
-    REQUIRE(r.exit_code == 0);
-    CHECK_THAT(r.err, Contains("2 trials failed"));
+    REQUIRE(r.exit_code == 3);
+    CHECK_THAT(r.err, Contains("2 of 4 trials failed") && Contains("a plugin wrote an invalid value: 2"));
     int failed = 0;
     for (const auto& t : acobench::ResultsDb(db).trials()) {
       if (t.error.empty()) continue;

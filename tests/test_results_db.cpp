@@ -14,6 +14,8 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <thread>
@@ -167,7 +169,7 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
   CHECK(configs[1].second.settings_json == config("max_min", 0.02).settings_json);
   CHECK(db.meta("experiment_name") == kName);
   CHECK(db.meta("fingerprint") == kFingerprint);
-  CHECK(db.meta("format_version") == "4");
+  CHECK(db.meta("format_version") == "5");
   REQUIRE_THROWS_WITH(db.meta("colour"), Contains("no 'colour'"));
 
   const auto read = db.trials();
@@ -203,7 +205,7 @@ TEST_CASE("a configuration name keeps one set of settings", "[resultsdb]") {
   const int id = db.add_config({"mmas", R"({"rho":0.02,"p_best":0.05})"});
   CHECK(db.add_config({"mmas", R"({ "p_best": 0.05, "rho": 0.02 })"}) == id);  // the same JSON value
   REQUIRE_THROWS_WITH(db.add_config({"mmas", R"({"rho":0.1,"p_best":0.05})"}),
-                      Contains(file.string()) && Contains("'mmas' with other settings"));
+                      Contains(file.string()) && Contains("configuration 'mmas': {\"rho\":0.02,\"p_best\":0.05} -> "));
   REQUIRE_THROWS_WITH(db.add_config({"broken", "{rho: 1"}), Contains("'broken'") && Contains("not valid JSON"));
   CHECK(db.configs().size() == 1);
 }
@@ -255,11 +257,11 @@ TEST_CASE("a database of another experiment is refused and left as it was", "[re
     REQUIRE_THROWS_WITH(acobench::ResultsDb(file, "other", kFingerprint, kProblems),
                         Contains("holds the results of experiment 'ablation', not of 'other'"));
   }
-  SECTION("the same fingerprint with other problems") {
+  SECTION("the same fingerprint with a problem set up otherwise") {
     auto problems = kProblems;
     problems[1].setup_json = R"({"map":"arena.map","start":[1,2],"goal":[40,40],"neighbourhood":8})";
     REQUIRE_THROWS_WITH(acobench::ResultsDb(file, kName, kFingerprint, problems),
-                        Contains("problem 1 is stored as 'arena'"));
+                        Contains("that the experiment file now runs otherwise:\n  problem 'arena': goal [40,41] -> [40,40]\n"));
   }
   CHECK(bytes(file) == before);
   CHECK_FALSE(fs::exists(file.string() + "-wal"));
@@ -271,7 +273,7 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   const fs::path file = fresh_db();
   open(file);  // creates it
   sql_value(file, "UPDATE acobench_meta SET value = '0' WHERE key = 'format_version' RETURNING value");
-  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 4"));
+  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 5"));
 
   const fs::path missing = fresh_db();
   auto problems = kProblems;
@@ -287,17 +289,17 @@ TEST_CASE("simulation and failed trials store their measures, and a format-1 dat
   const int id = with_one_trial(file);
   // What acobench before simulations wrote: no simulation columns, format 1.
   const auto make_format_1 = [&] {
-    for (const char* column : {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps", "error"})
+    for (const char* column : {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps", "error", "failure"})
       sql_exec(file, std::string("ALTER TABLE runs DROP COLUMN ") + column);
     sql_exec(file, "ALTER TABLE progress DROP COLUMN walks");
     sql_exec(file, "UPDATE acobench_meta SET value = '1' WHERE key = 'format_version'");
   };
   make_format_1();
-  CHECK(acobench::ResultsDb(file).meta("format_version") == "4");  // a report upgrades it too
+  CHECK(acobench::ResultsDb(file).meta("format_version") == "5");  // a report upgrades it too
   make_format_1();
 
   auto db = open(file);
-  CHECK(db.meta("format_version") == "4");
+  CHECK(db.meta("format_version") == "5");
   auto reached = trial(0, id, 1, true, 0);
   reached.simulation = acobench::SimulationRecord{"reached", 87.5, 0, 1, 0.047, 875};
   auto hit = trial(1, id, 0, false, 0);
@@ -326,6 +328,47 @@ TEST_CASE("simulation and failed trials store their measures, and a format-1 dat
   CHECK(sql_value(file, "SELECT time_to_goal FROM runs WHERE outcome = 'collision'") == "NULL");
 }
 
+TEST_CASE("a format-4 database gains runs.failure from how its failed trials stopped", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  const int id = with_one_trial(file);
+  {
+    auto db = open(file);
+    for (const auto& [repetition, stopped_by] : {std::pair{1, "crashed"}, std::pair{2, "error"}}) {
+      auto failed = trial(1, id, repetition, false, 0);
+      failed.stopped_by = stopped_by;
+      failed.error = std::string(stopped_by) + ": what happened";
+      db.store(failed);
+    }
+  }
+  sql_exec(file, "ALTER TABLE runs DROP COLUMN failure");
+  sql_exec(file, "UPDATE acobench_meta SET value = '4' WHERE key = 'format_version'");
+  auto db = open(file);
+  CHECK(db.meta("format_version") == "5");
+  std::map<int, std::string> failures;
+  for (const auto& t : db.trials()) failures[t.repetition * 10 + t.problem] = t.failure;
+  // Which of a plugin or the engine's checks threw was not recorded: "error".
+  CHECK(failures == std::map<int, std::string>{{0, ""}, {11, "crashed"}, {21, "error"}});
+}
+
+TEST_CASE("a database grows by the problems an experiment adds, and leaves out those it no longer names", "[resultsdb]") {
+  const fs::path file = fresh_db();
+  with_one_trial(file);  // problem map1
+  const acobench::ProblemRecord extra{"extra", R"({"map":"extra.map","start":[0,0],"goal":[5,5]})", 7.0};
+  {
+    auto grown = acobench::ResultsDb(file, kName, kFingerprint, {kProblems[1], extra, kProblems[0]});
+    CHECK(grown.problems().size() == 3);
+    const auto trials = grown.trials();
+    REQUIRE(trials.size() == 1);
+    CHECK(trials[0].problem == 2);  // map1, third of the problems given
+    CHECK(grown.finished() == std::set<std::tuple<int, int, int>>{{2, trials[0].config, 0}});
+  }
+  CHECK(sql_value(file, "SELECT group_concat(name) FROM experiments") == "map1,arena,extra");
+  auto without_map1 = acobench::ResultsDb(file, kName, kFingerprint, {extra});
+  CHECK(without_map1.trials().empty());
+  CHECK(without_map1.finished().empty());
+  CHECK(acobench::ResultsDb(file).trials().size() == 1);  // a report reads every stored problem
+}
+
 TEST_CASE("a format-3 database gains progress.walks: its runs read back without anytime curves, and resume",
           "[resultsdb]") {
   const fs::path file = fresh_db();
@@ -336,7 +379,7 @@ TEST_CASE("a format-3 database gains progress.walks: its runs read back without 
   sql_exec(file, "UPDATE acobench_meta SET value = '3' WHERE key = 'format_version'");
 
   auto db = open(file);
-  CHECK(db.meta("format_version") == "4");
+  CHECK(db.meta("format_version") == "5");
   db.store(trial(0, id, 1));
   const auto read = db.trials();
   REQUIRE(read.size() == 2);

@@ -54,7 +54,7 @@ std::map<std::string, int> check_failures(const std::filesystem::path& db) {
       {4, {"timed out", "timed out after 3 s in plugin update/hanging (" + hostile + "/aco_update_hanging.so) in update() in iteration 3"}},
       {5, {"out of memory", "out of memory (over 128 MiB) in plugin update/hogging (" + hostile +
                                 "/aco_update_hogging.so) in update() in iteration 3"}},
-      {6, {"error", "plugin update/throwing ("}}};
+      {6, {"plugin error", "plugin update/throwing ("}}};
   std::map<std::string, int> kinds;
   for (const auto& t : acobench::ResultsDb(db).trials()) {
     INFO("config " << t.config << ": " << t.error);
@@ -63,10 +63,10 @@ std::map<std::string, int> check_failures(const std::filesystem::path& db) {
       continue;
     }
     const auto& [kind, message] = expected.at(t.config);
-    CHECK(t.stopped_by == kind);
+    CHECK(t.stopped_by == (kind == "plugin error" ? "error" : kind));
     CHECK_FALSE(t.solved);
     CHECK_THAT(t.error, Contains(message));
-    ++kinds[t.stopped_by];
+    ++kinds[t.failure];
   }
   return kinds;
 }
@@ -79,18 +79,25 @@ TEST_CASE("a crash an endless loop a memory hog and a throw each cost only their
   const auto db = file.parent_path() / "hostile.db", healthy_db = file.parent_path() / "healthy.db";
   const auto r = run_acobench(with({"run", file.string()}, hostile_options(db)));
   INFO(r.out << r.err);
-  REQUIRE(r.exit_code == 0);
+  CHECK(r.exit_code == 3);  // trials failed
   CHECK_THAT(r.out, Contains("36 trials, 0 already in"));
-  CHECK_THAT(r.err, Contains("24 trials failed"));
+  CHECK_THAT(r.err, Contains("24 of 36 trials failed, by reason and configuration:") &&
+                        Contains("  crashed (a signal): 6\n    'crash': 6, e.g. problem 'across', "
+                                 "repetition 0: crashed: SIGSEGV in plugin update/crashing") &&
+                        Contains("  over the trial time limit: 6\n    'hang': 6, e.g.") &&
+                        Contains("  out of memory: 6\n    'hog': 6, e.g.") && Contains("  a plugin threw: 6\n    'throw': 6, e.g."));
   CHECK(count_runs(db) == 36);
-  CHECK(check_failures(db) == std::map<std::string, int>{{"crashed", 6}, {"error", 6}, {"out of memory", 6}, {"timed out", 6}});
+  CHECK(check_failures(db) == std::map<std::string, int>{{"crashed", 6}, {"plugin error", 6}, {"out of memory", 6}, {"timed out", 6}});
   // The healthy configurations' trials are those of an experiment without the hostile ones.
   const auto healthy = experiment(kHealthy);
   REQUIRE(run_acobench({"run", healthy.string(), "--db", healthy_db.string()}).exit_code == 0);
   CHECK(healthy_rows(db) == healthy_rows(healthy_db));
   CHECK(healthy_rows(db).size() == 12);
-  // Failed trials are results: a rerun has nothing to do.
-  CHECK_THAT(run_acobench(with({"run", file.string()}, hostile_options(db))).out, Contains("36 already in"));
+  // Failed trials are results: a rerun has nothing to do, and gives the same verdict.
+  const auto rerun = run_acobench(with({"run", file.string()}, hostile_options(db)));
+  CHECK_THAT(rerun.out, Contains("36 already in"));
+  CHECK(rerun.exit_code == 3);
+  CHECK_THAT(rerun.err, Contains("24 of 36 trials failed (24 stored as failed by an earlier run)"));
   // The report counts them per configuration and kind.
   const auto out = file.parent_path() / "report";
   REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
@@ -104,10 +111,11 @@ TEST_CASE("under mpirun -n 3 the hostile trials are contained the same way and t
           "[acobench][isolation][mpi][slow]") {
   const auto file = experiment(kHostile);
   const auto single = file.parent_path() / "single.db", ranks = file.parent_path() / "ranks.db";
-  REQUIRE(run_acobench(with({"run", file.string()}, hostile_options(single))).exit_code == 0);
+  REQUIRE(run_acobench(with({"run", file.string()}, hostile_options(single))).exit_code == 3);
   const auto r = test::run(mpirun(3, with({"run", file.string(), "--threads", "1"}, hostile_options(ranks))), kMpiEnvironment);
   INFO(r.out << r.err);
-  REQUIRE(r.exit_code == 0);
+  CHECK(r.exit_code == 3);  // rank 0's verdict: trials failed
+  CHECK_THAT(r.err, Contains("24 of 36 trials failed") && Contains("crashed (a signal): 6"));
   CHECK_THAT(r.out, Contains("36 trials, 0 already in") && Contains("2 worker ranks"));
   CHECK(check_failures(ranks).size() == 4);
   CHECK(database_rows(ranks) == database_rows(single));
@@ -139,7 +147,7 @@ TEST_CASE("trial limits come from experiment keys or the command line which wins
       "settings: {ants: 5, iterations: 5}\nbaseline: {name: hang, update: hanging, update.at_iteration: 2}\n");
   const auto db = file.parent_path() / "hang.db", db2 = file.parent_path() / "hang2.db";
   const auto r = run_acobench({"run", file.string(), "--db", db.string(), "--plugin-dir", ACO_TEST_HOSTILE_PLUGIN_DIR});
-  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.exit_code == 3);
   CHECK_THAT(r.err, Contains("timed out after 1 s in plugin update/hanging"));
   const auto r2 = run_acobench({"run", file.string(), "--db", db2.string(), "--plugin-dir", ACO_TEST_HOSTILE_PLUGIN_DIR,
                                 "--trial-timeout", "0.5"});

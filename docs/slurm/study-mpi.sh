@@ -10,5 +10,7 @@
 #SBATCH --time=12:00:00
 set -euo pipefail
 cd "$SLURM_SUBMIT_DIR"
-srun --mpi=pmix acobench run study.yaml --db study.db --threads "$SLURM_CPUS_PER_TASK"
+verdict=0  # 3 when trials failed (stored and reported): the report is written all the same
+srun --mpi=pmix acobench run study.yaml --db study.db --threads "$SLURM_CPUS_PER_TASK" || verdict=$?
 acobench report study.db --out study-report
+exit "$verdict"

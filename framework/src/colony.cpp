@@ -19,6 +19,7 @@
 
 #include "aco/dead_ends.hpp"
 #include "aco/error.hpp"
+#include "aco/plugin_error.hpp"
 #include "aco/local_search.hpp"
 #include "aco/parallel.hpp"
 #include "aco/plugin_guard.hpp"
@@ -262,7 +263,7 @@ class Colony {
   [[noreturn]] void reject_value(const Strategy& plugin, const char* slot, const char* hook, const std::string& field,
                                  double value, std::size_t e) const {
     const NodeId from = g_.source(static_cast<EdgeId>(e));
-    throw Error(describe_plugin(plugin, slot) + " wrote " + to_string(ParamValue(value)) + " to the " + field + " of edge " +
+    throw InvalidValueError(describe_plugin(plugin, slot) + " wrote " + to_string(ParamValue(value)) + " to the " + field + " of edge " +
                 to_string(g_.cell(from)) + " -> " + to_string(g_.cell(g_.targets[e])) + " in " +
                 describe_hook(hook, context_.iteration) + "; the " + field + " must be finite and >= 0");
   }

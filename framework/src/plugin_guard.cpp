@@ -1,4 +1,5 @@
 #include "aco/plugin_guard.hpp"
+#include "aco/plugin_error.hpp"
 
 #include <cxxabi.h>
 
@@ -104,6 +105,9 @@ std::string describe_hook(const char* hook, int iteration) {
   return in;
 }
 
+PluginError::~PluginError() = default;
+InvalidValueError::~InvalidValueError() = default;
+
 void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration) {
   const std::string plugin = describe(who);
   const std::string in = describe_hook(hook, iteration);
@@ -112,7 +116,7 @@ void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iterat
   } catch (const std::bad_alloc&) {
     throw OutOfMemoryError("out of memory in " + plugin + " in " + in + " (std::bad_alloc)");
   } catch (...) {
-    throw Error(plugin + " failed in " + in + ": " + describe_current_exception());
+    throw PluginError(plugin + " failed in " + in + ": " + describe_current_exception());
   }
 }
 

@@ -1,5 +1,5 @@
 // acobench: ablation studies of plugin combinations, with a results database and reports.
-//   acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--shard K/N]   (also under mpirun)
+//   acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--shard K/N] [--allow-failures]   (also under mpirun)
 //   acobench merge SHARD.db... [--db FILE]
 //   acobench report DATABASE [--out DIR]
 #include <signal.h>
@@ -36,8 +36,10 @@ constexpr const char* kUsage =
     "acobench: fair, reproducible comparisons of ant-colony plugin combinations.\n\n"
     "Usage:\n"
     "  acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--shard K/N] [--plugin-dir DIR] [--max-memory SIZE]\n"
-    "               [--trial-timeout SECONDS] [--trial-memory SIZE] [--in-process]\n"
-    "      run every trial the database does not hold yet (rerun the same command to continue);\n"
+    "               [--trial-timeout SECONDS] [--trial-memory SIZE] [--in-process] [--allow-failures]\n"
+    "      run every trial the database does not hold yet (rerun the same command to continue; an\n"
+    "      experiment file that gained configurations, problems or repetitions runs only the new\n"
+    "      trials into its database; one whose stored trials would now run otherwise is refused);\n"
     "      each trial runs in a worker process (one per thread): a trial whose plugin crashes, runs\n"
     "      over --trial-timeout or grows over --trial-memory (default: each thread's share of 3/4 of\n"
     "      the memory available) is stored as failed and the rest go on;\n"
@@ -45,13 +47,20 @@ constexpr const char* kUsage =
     "      --shard K/N: only shard K of N of the trials, into its own database (merge them after);\n"
     "      --max-memory: refuse maps whose planning would need more (512M, 4G; default: 3/4 of the\n"
     "      memory available at start). Under mpirun -n N (or srun), rank 0 writes the database and\n"
-    "      the other ranks run the trials, each on --threads threads\n"
+    "      the other ranks run the trials, each on --threads threads;\n"
+    "      exit 3 when a trial of the experiment failed, now or stored as failed by an earlier run\n"
+    "      (the failures are counted by reason at the end); --allow-failures: exit 0 all the same\n"
     "  acobench merge DATABASE... [--db FILE]\n"
     "      one database of the trials of several of an experiment's (shards, or any runs of it)\n"
     "  acobench report DATABASE [--out DIR]\n"
     "      statistics, Markdown and HTML report, CSV of all runs\n"
     "  acobench --version\n"
-    "      the framework's version, commit, build type and compiler\n\n";
+    "      the framework's version, commit, build type and compiler\n\n"
+    "Exit codes: 0 done, 1 an error of acobench's own (a bad option or file, a refused database),\n"
+    "3 trials failed (stored as failed; acobench run without --allow-failures).\n\n";
+
+// acobench run's exit code when a trial of the experiment failed (1 is an error of acobench's own).
+constexpr int kTrialsFailed = 3;
 
 std::string clock_text(double seconds) {
   const long s = std::lround(std::max(0.0, seconds));
@@ -120,19 +129,60 @@ std::string command_line(const std::vector<std::string>& args) {
   return text;
 }
 
-void print_summary(const acobench::RunSummary& s, const acobench::Experiment& experiment, const acobench::RunOptions& run) {
+// Two configurations that are one run compare it with itself: told before any trial runs.
+void warn_same_runs(const acobench::Experiment& experiment) {
+  for (const auto& [first, second] : experiment.same_runs())
+    std::cerr << "acobench: warning: configurations '" << first << "' and '" << second
+              << "' resolve to the same run (the same plugins and parameters), so comparing them compares a run with "
+                 "itself: did '"
+              << second << "' forget a key (its plugin, say)?\n";
+}
+
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string text;
+  for (const auto& n : names) text += (text.empty() ? "'" : ", '") + n + "'";
+  return text;
+}
+
+// The run's verdict: 0, or kTrialsFailed when a trial failed and failures are not allowed.
+int print_summary(const acobench::RunSummary& s, const acobench::Experiment& experiment, const acobench::RunOptions& run,
+                  bool allow_failures) {
+  const auto& g = s.growth;
+  if (g.grew()) {
+    std::string added;
+    const auto add = [&](const std::string& part) { added += (added.empty() ? "" : "; ") + part; };
+    if (!g.added_configurations.empty()) add("configurations " + quoted_list(g.added_configurations));
+    if (!g.added_problems.empty()) add("problems " + quoted_list(g.added_problems));
+    if (g.repetitions_now > g.repetitions_before)
+      add("repetitions " + std::to_string(g.repetitions_before) + " -> " + std::to_string(g.repetitions_now));
+    std::cout << "acobench: the experiment grew (" << added << "): only the new trials run, the stored ones are kept\n";
+  }
+  if (!g.dropped_configurations.empty() || !g.dropped_problems.empty())
+    std::cout << "acobench: " << run.database.string() << " also holds "
+              << quoted_list(g.dropped_configurations.empty() ? g.dropped_problems : g.dropped_configurations)
+              << (g.dropped_configurations.empty() || g.dropped_problems.empty() ? "" : " and " + quoted_list(g.dropped_problems))
+              << ", which the experiment file no longer names: their trials are kept (and reported), not run\n";
   std::cout << "acobench: " << experiment.name << (run.shard ? " shard " + acobench::to_string(*run.shard) : "") << ": "
             << s.trials << " trials, " << s.skipped << " already in " << run.database.string() << ", " << s.ran
             << " run in " << s.seconds << " s (" << (s.seconds > 0 ? s.ran / s.seconds : 0.0) << " trials/s)\n";
   if (s.ablation_left)
     std::cout << "acobench: the experiment's ablation path is not run by shards: merge the shards (acobench merge), "
                  "then `acobench run` of the merged database runs it\n";
-  if (!s.failures.empty()) {
-    // The experiment went on; the failed trials are stored as such (runs.error) and reported.
-    std::cerr << "acobench: " << s.failures.size() << " trials failed:\n";
-    for (std::size_t i = 0; i < s.failures.size() && i < 10; ++i) std::cerr << "  " << s.failures[i] << "\n";
-    if (s.failures.size() > 10) std::cerr << "  ... (all in the report)\n";
+  if (s.failures.empty()) return 0;
+  // The experiment went on; the failed trials are stored as such (runs.error, runs.failure) and
+  // reported. Those of earlier runs count too: the same command gives the same verdict.
+  const auto earlier = std::count_if(s.failures.begin(), s.failures.end(), [](const auto& f) { return f.earlier; });
+  std::cerr << "acobench: " << s.failures.size() << " of " << s.trials << " trials failed";
+  if (earlier) std::cerr << " (" << earlier << " stored as failed by an earlier run)";
+  std::cerr << ", by reason and configuration:\n";
+  for (const auto& line : acobench::describe_failures(s.failures)) std::cerr << "  " << line << "\n";
+  if (allow_failures) {
+    std::cerr << "acobench: --allow-failures: exit 0 all the same\n";
+    return 0;
   }
+  std::cerr << "acobench: exit " << kTrialsFailed << ": trials failed (all in the report: acobench report "
+            << run.database.string() << "); --allow-failures accepts them\n";
+  return kTrialsFailed;
 }
 
 #ifdef ACOBENCH_WITH_MPI
@@ -140,6 +190,7 @@ void print_summary(const acobench::RunSummary& s, const acobench::Experiment& ex
 // job (the others would wait for it forever); mpirun reports which.
 int run_with_ranks(const acobench::mpi::Session& session, const acobench::Experiment& experiment,
                    aco::PluginRegistry& registry, acobench::RunOptions run, const std::vector<std::string>& args,
+                   bool allow_failures,
                    const std::function<std::unique_ptr<acobench::TrialWorkers>(int lanes)>& make_workers) {
   try {
     if (session.rank() > 0) {
@@ -147,20 +198,21 @@ int run_with_ranks(const acobench::mpi::Session& session, const acobench::Experi
       acobench::mpi::serve_trials(session, experiment, registry, run.threads, workers.get());
       return 0;
     }
+    warn_same_runs(experiment);
     acobench::mpi::Coordinator coordinator(session, experiment.fingerprint(registry));
     run.executor = &coordinator;
     run.progress = Progress();
     on_stop_tell(run.database.string(), command_line(args));
     const auto s = acobench::run_experiment(experiment, registry, run);
     coordinator.finish();
-    print_summary(s, experiment, run);
+    const int verdict = print_summary(s, experiment, run, allow_failures);
     const auto per_trial = [&](double seconds) { return s.ran ? 1e6 * seconds / static_cast<double>(s.ran) : 0.0; };
     std::cout << "acobench: " << session.size() - 1 << " worker ranks; the coordinator (rank 0) handled messages for "
               << coordinator.busy_seconds() << " s, " << per_trial(coordinator.busy_seconds())
               << " us per trial, of which storing in the database " << per_trial(coordinator.storing_seconds())
               << " us and handing out and receiving "
               << per_trial(coordinator.busy_seconds() - coordinator.storing_seconds()) << " us\n";
-    return 0;
+    return verdict;
   } catch (...) {
     std::cerr << "acobench: rank " << session.rank() << ": error: " << aco::describe_current_exception() << "\n";
     session.abort(1);
@@ -181,7 +233,8 @@ int run(const std::vector<std::string>& args) {
       ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp)
       ("trial-timeout", po::value<std::string>()->value_name("SECONDS"), "a trial running longer is stopped and stored as timed out")
       ("trial-memory", po::value<std::string>()->value_name("SIZE"), "a trial growing its worker's memory by more is stopped and stored as out of memory (default: each thread's share of 3/4 of the memory available at start)")
-      ("in-process", "run the trials on this process's threads, not in worker processes (for a debugger)");
+      ("in-process", "run the trials on this process's threads, not in worker processes (for a debugger)")
+      ("allow-failures", "exit 0 even when trials failed (else 3)");
   po::positional_options_description positional;
   positional.add("experiment", 1);
   po::variables_map vm;
@@ -218,6 +271,7 @@ int run(const std::vector<std::string>& args) {
   if (vm.count("trial-timeout")) limits.timeout_s = aco::parse_seconds(vm["trial-timeout"].as<std::string>(), "--trial-timeout");
   if (vm.count("trial-memory")) limits.memory_bytes = aco::parse_memory_size(vm["trial-memory"].as<std::string>(), "--trial-memory");
   const bool in_process = vm.count("in-process") > 0;
+  const bool allow_failures = vm.count("allow-failures") > 0;
   if (in_process && (limits.timeout_s > 0 || limits.memory_bytes > 0))
     std::cerr << "acobench: warning: --in-process: the trial time and memory limits are not enforced (they need "
                  "worker processes)\n";
@@ -234,16 +288,17 @@ int run(const std::vector<std::string>& args) {
 #ifdef ACOBENCH_WITH_MPI
   std::optional<acobench::mpi::Session> session;
   if (acobench::mpi::started_by_launcher()) session.emplace();
-  if (session && session->size() > 1) return run_with_ranks(*session, experiment, registry, run, args, make_workers);
+  if (session && session->size() > 1)
+    return run_with_ranks(*session, experiment, registry, run, args, allow_failures, make_workers);
   if (session) acobench::mpi::warn_if_bound(*session, threads);
 #endif
   const auto workers = make_workers(aco::lane_count(threads));
   std::optional<acobench::WorkerExecutor> executor;
   if (workers) run.executor = &executor.emplace(*workers);
+  warn_same_runs(experiment);
   run.progress = Progress();
   on_stop_tell(run.database.string(), command_line(args));
-  print_summary(acobench::run_experiment(experiment, registry, run), experiment, run);
-  return 0;
+  return print_summary(acobench::run_experiment(experiment, registry, run), experiment, run, allow_failures);
 }
 
 // `acobench worker EXPERIMENT [--plugin-dir DIR]...`: a worker process of `acobench run` (not

@@ -5,6 +5,7 @@
 
 #include "aco/astar.hpp"
 #include "aco/colony.hpp"
+#include "aco/plugin_error.hpp"
 #include "aco/error.hpp"
 #include "aco/path.hpp"
 #include "aco/plugin_guard.hpp"
@@ -124,7 +125,7 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
     o.search.length = path_length(graph, o.search.path);
     o.path = pipeline.smoother->smooth(context, o.search.path);
     if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
-      throw Error(describe_plugin(*pipeline.smoother, "smoother") + " returned bad waypoints in smooth(): " + problem +
+      throw InvalidValueError(describe_plugin(*pipeline.smoother, "smoother") + " returned bad waypoints in smooth(): " + problem +
                   " (waypoints must be finite and on free cells, from the start's position to the goal's)");
     o.length = polyline_length(o.path);
     o.turns = count_turns(o.path);

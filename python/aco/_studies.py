@@ -32,8 +32,14 @@ def run_experiment(file: Union[str, os.PathLike], database: Union[str, os.PathLi
     progress  True: a progress bar on stderr; False: none; a function f(done, total): called
               after every stored trial.
 
-    Returns a dict: trials, skipped (already stored), ran, failures (messages of trials that
-    failed, stored as failed), seconds. A bad experiment file raises aco.Error.
+    Returns a dict: trials, skipped (already stored), ran, seconds; failures: every failed
+    trial of the experiment, of this call or stored as failed by an earlier one, each a dict
+    (configuration, reason, message, earlier); failures_by_reason: {reason: count}, the reasons
+    those of ``acobench run``'s summary ("crashed", "timed out", "out of memory", "plugin error",
+    "invalid value", "error"); same_runs: pairs of configuration names that resolve to the same
+    run. Failed trials do not raise (they are results: check ``failures``, as ``acobench run``
+    exits 3 on them); a bad experiment file, or a database whose stored trials the file would
+    now run otherwise, raises aco.Error.
     """
     callback = _bar if progress is True else (progress or None)
     return _aco.run_experiment(os.fspath(file), os.fspath(database), int(threads), callback)

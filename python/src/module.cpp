@@ -166,8 +166,16 @@ py::dict run_experiment(const std::filesystem::path& file, const std::filesystem
     py::gil_scoped_release unlocked;
     summary = acobench::run_experiment(experiment, registry(), options);
   }
+  py::list failures;
+  py::dict by_reason;
+  for (const auto& f : summary.failures) {
+    failures.append(py::dict(py::arg("configuration") = f.configuration, py::arg("reason") = f.kind,
+                             py::arg("message") = f.message, py::arg("earlier") = f.earlier));
+    by_reason[py::str(f.kind)] = by_reason.attr("get")(f.kind, 0).cast<int>() + 1;
+  }
   return py::dict(py::arg("trials") = summary.trials, py::arg("skipped") = summary.skipped, py::arg("ran") = summary.ran,
-                  py::arg("failures") = summary.failures, py::arg("seconds") = summary.seconds);
+                  py::arg("failures") = failures, py::arg("failures_by_reason") = by_reason,
+                  py::arg("same_runs") = experiment.same_runs(), py::arg("seconds") = summary.seconds);
 }
 
 // A results database as columns (the runs, each with its problem's and configuration's name,

@@ -30,6 +30,7 @@ def database(tmp_path_factory):
     summary = aco.run_experiment(folder / "python.yaml", folder / "python.db", threads=2,
                                  progress=lambda done, total: seen.append((done, total)))
     assert summary["trials"] == summary["ran"] == 24 and not summary["failures"]
+    assert summary["failures_by_reason"] == {} and summary["same_runs"] == []
     assert seen[-1] == (24, 24) and {done for done, _ in seen} >= set(range(1, 25))  # after every stored trial
     return folder / "python.db"
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/plugin_error.hpp"
 #include "aco/graph.hpp"
 #include "aco/planning.hpp"
 #include "aco/plugin_guard.hpp"
@@ -108,7 +109,7 @@ std::vector<Eigen::Vector2d> turning_points(const aco::Waypoints& path) {
     text << v;
     return text.str();
   };
-  throw aco::Error(aco::describe_plugin(planner, "local") + " returned the command v = " + number(c.v) + ", w = " + number(c.w) +
+  throw aco::InvalidValueError(aco::describe_plugin(planner, "local") + " returned the command v = " + number(c.v) + ", w = " + number(c.w) +
                    " in command() at control step " + std::to_string(step) + " (0-based, t = " + number(t) +
                    " s), outside the dynamic window v in [" + number(window.v_low) + ", " + number(window.v_high) +
                    "], w in [" + number(window.w_low) + ", " + number(window.w_high) +

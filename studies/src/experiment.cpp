@@ -313,7 +313,13 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
     }
     j["problems"].push_back(problem);
   }
-  for (const auto& c : configurations) j["configurations"].push_back({{"name", c.name}, {"keys", c.keys}});
+  // Each configuration's resolved run too: a database keeps a configuration's trials as long as
+  // its run is the same, whatever keys wrote it (growth.hpp).
+  for (const auto& c : configurations) {
+    nlohmann::json entry = {{"name", c.name}, {"keys", c.keys}};
+    if (c.run) entry["run"] = nlohmann::json::parse(aco::to_json(*c.run));
+    j["configurations"].push_back(entry);
+  }
   if (ablation_target) j["ablation_target"] = ablation_target->name;
   // The binaries that run the trials (an ablation's flips mix the baseline's and the target's
   // plugins, a scenario's keys fill what a configuration leaves): rebuilt code is another
@@ -330,6 +336,17 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
       j["plugins"][p.kind + "/" + p.name] = {{"version", p.version}, {"sha256", p.sha256}};
     }
   return j.dump();
+}
+
+std::vector<std::pair<std::string, std::string>> Experiment::same_runs() const {
+  std::vector<std::pair<std::string, std::string>> pairs;
+  std::map<std::string, std::string> first_with;  // resolved run (JSON) -> the first configuration
+  for (const auto& c : configurations) {
+    if (!c.run) continue;
+    const auto [first, fresh] = first_with.emplace(aco::to_json(*c.run), c.name);
+    if (!fresh) pairs.emplace_back(first->second, c.name);
+  }
+  return pairs;
 }
 
 std::uint64_t trial_seed(std::uint64_t master_seed, const std::string& problem, int repetition) {

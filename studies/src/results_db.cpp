@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "aco/error.hpp"
+#include "aco/studies/growth.hpp"
 
 namespace acobench {
 namespace {
@@ -22,12 +23,13 @@ namespace {
 using aco::Error;
 
 // Bumped whenever the tables change in a way older readers would misread.
-// 2: the simulation columns of runs; 3: runs.error; 4: progress.walks, progress.time measured.
-const std::string kFormatVersion = "4";
+// 2: the simulation columns of runs; 3: runs.error; 4: progress.walks, progress.time measured;
+// 5: runs.failure.
+const std::string kFormatVersion = "5";
 
 // This version, or an earlier one upgrade() brings to it.
 bool upgradable(const std::string& version) {
-  return version == kFormatVersion || version == "1" || version == "2" || version == "3";
+  return version == kFormatVersion || version == "1" || version == "2" || version == "3" || version == "4";
 }
 
 // OMPL's tables (as ompl_benchmark_statistics.py creates them) with our run and progress
@@ -42,7 +44,7 @@ CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, p
   repetition INTEGER, seed INTEGER, solved BOOLEAN, length REAL, grid_length REAL, gap REAL,
   turns INTEGER, iterations INTEGER, best_iteration INTEGER, time REAL, ant_steps INTEGER,
   stopped_by TEXT, path TEXT, outcome TEXT, time_to_goal REAL, collisions INTEGER, replans INTEGER,
-  clearance REAL, control_steps INTEGER, error TEXT,
+  clearance REAL, control_steps INTEGER, error TEXT, failure TEXT,
   FOREIGN KEY (experimentid) REFERENCES experiments(id) ON DELETE CASCADE,
   FOREIGN KEY (plannerid) REFERENCES plannerConfigs(id) ON DELETE CASCADE,
   UNIQUE (experimentid, plannerid, repetition));
@@ -228,7 +230,10 @@ struct ResultsDb::Impl {
   std::optional<Statement> find_run, insert_run, insert_progress, add_time;
 
   std::string file() const { return db.file(); }
-  void load();  // the problems, configurations and statements of an opened database
+  // The problems (`given`, in their order, or all stored ones), configurations and statements of
+  // an opened database.
+  void load(const std::vector<ProblemRecord>* given);
+  Growth growth;  // what the experiment added to the database when it was opened
 
   std::set<std::string> tables() {
     std::set<std::string> names;
@@ -254,9 +259,11 @@ struct ResultsDb::Impl {
     return stored;
   }
 
-  // Formats 1 to 3 lack columns (1: the simulation measures of runs, 2: runs.error, 3:
-  // progress.walks): they are added, NULL for the stored rows, so results of earlier runs are
-  // resumed and reported. Their progress times stay the estimates they were; a NULL walks marks them.
+  // Formats 1 to 4 lack columns (1: the simulation measures of runs, 2: runs.error, 3:
+  // progress.walks, 4: runs.failure): they are added, NULL for the stored rows, so results of
+  // earlier runs are resumed and reported. Their progress times stay the estimates they were; a
+  // NULL walks marks them. A failed trial's failure is its stopped_by, or "error" for one that
+  // threw: which of the plugin or the engine's checks threw was not recorded.
   void upgrade() {
     if (meta().at("format_version") == kFormatVersion) return;
     const auto columns_of = [&](const std::string& table) {
@@ -272,16 +279,20 @@ struct ResultsDb::Impl {
     for (const auto& [table, column] : std::initializer_list<std::pair<std::string, std::string>>{
              {"runs", "outcome TEXT"}, {"runs", "time_to_goal REAL"}, {"runs", "collisions INTEGER"},
              {"runs", "replans INTEGER"}, {"runs", "clearance REAL"}, {"runs", "control_steps INTEGER"},
-             {"runs", "error TEXT"}, {"progress", "walks INTEGER"}})
+             {"runs", "error TEXT"}, {"runs", "failure TEXT"}, {"progress", "walks INTEGER"}})
       if (!present.at(table).contains(column.substr(0, column.find(' '))))
         db.exec("ALTER TABLE " + table + " ADD COLUMN " + column);
+    db.exec("UPDATE runs SET failure = CASE WHEN stopped_by IN ('crashed', 'timed out', 'out of memory') THEN stopped_by "
+            "ELSE 'error' END WHERE error IS NOT NULL AND failure IS NULL");
     Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
     set.run(kFormatVersion).finish();
     transaction.commit();
   }
 
-  // Only reads: a file that is not ours stays as it was.
-  void check_is_ours(const std::string& experiment_name, const std::string& fingerprint) {
+  // Only reads: a file that is not ours, or whose trials the experiment would run otherwise, stays
+  // as it was.
+  void check_is_ours(const std::string& experiment_name, const std::string& fingerprint,
+                     const std::vector<ProblemRecord>& given) {
     if (!tables().contains("acobench_meta"))
       throw Error(file() + " is an SQLite database but not an acobench results database (it has no acobench_meta "
                            "table); nothing in it was changed: give another results file");
@@ -294,26 +305,33 @@ struct ResultsDb::Impl {
     if (value("experiment_name") != experiment_name)
       throw Error(file() + " holds the results of experiment " + in_quotes(value("experiment_name")) + ", not of " +
                   in_quotes(experiment_name) + reuse);
-    if (value("fingerprint") != fingerprint)
-      throw Error(file() + " holds the results of experiment " + in_quotes(experiment_name) + " with other trials: " +
-                  fingerprint_change(value("fingerprint"), fingerprint) + reuse);
+    auto conflicts = fingerprint_conflicts(value("fingerprint"), fingerprint);
+    for (auto& line : problem_conflicts(stored_problems(), given)) conflicts.push_back(std::move(line));
+    if (!conflicts.empty()) throw Error(conflicts_message(file(), experiment_name, conflicts));
   }
 
-  void check_same_problems(const std::vector<ProblemRecord>& given) {
-    const auto stored = stored_problems();
-    if (stored.size() != given.size())
-      throw Error(file() + " holds " + std::to_string(stored.size()) + " problems, the experiment has " +
-                  std::to_string(given.size()) + " although its fingerprint is the same");
-    for (std::size_t i = 0; i < given.size(); ++i) {
-      const bool same = stored[i].name == given[i].name &&
-                        parse_json(stored[i].setup_json, "stored setup of problem " + in_quotes(stored[i].name)) ==
-                            parse_json(given[i].setup_json, "setup of problem " + in_quotes(given[i].name)) &&
-                        stored[i].optimal_length == (given[i].optimal_length < 0 ? -1.0 : given[i].optimal_length);
-      if (!same)
-        throw Error(file() + ": problem " + std::to_string(i) + " is stored as " + in_quotes(stored[i].name) + " " +
-                    stored[i].setup_json + ", the experiment gives " + in_quotes(given[i].name) + " " +
-                    given[i].setup_json + " although its fingerprint is the same");
-    }
+  // The experiment grown by what `fingerprint` adds: its new problems' rows, the fingerprint of
+  // both. Stored rows are left as they were.
+  void grow(const std::string& fingerprint, const std::vector<ProblemRecord>& given) {
+    Transaction transaction(db);
+    const std::string stored = meta().at("fingerprint");
+    growth = acobench::growth(stored, fingerprint);
+    std::set<std::string> names;
+    for (const auto& p : stored_problems()) names.insert(p.name);
+    for (const auto& p : given)
+      if (!names.contains(p.name)) add_problem(p);
+    Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'fingerprint'");
+    set.run(merged_fingerprint(stored, fingerprint)).finish();
+    transaction.commit();
+  }
+
+  void add_problem(const ProblemRecord& p) {
+    Statement add(db,
+                  "INSERT INTO experiments (name, totaltime, version, hostname, cpuinfo, date, setup, optimal_length) "
+                  "VALUES (?1, 0, ?2, ?3, ?4, datetime('now'), ?5, ?6)");
+    add.run(p.name, std::string("aco ") + ACOBENCH_VERSION, hostname(), cpuinfo(), p.setup_json,
+            p.optimal_length >= 0 ? p.optimal_length : kNull)
+        .finish();
   }
 
   // Creates the tables and rows of a new database; false if another process did it first.
@@ -326,13 +344,7 @@ struct ResultsDb::Impl {
     set.run(std::string("format_version"), kFormatVersion).finish();
     set.run(std::string("experiment_name"), experiment_name).finish();
     set.run(std::string("fingerprint"), fingerprint).finish();
-    Statement add(db,
-                  "INSERT INTO experiments (name, totaltime, version, hostname, cpuinfo, date, setup, optimal_length) "
-                  "VALUES (?1, 0, ?2, ?3, ?4, datetime('now'), ?5, ?6)");
-    const std::string version = std::string("aco ") + ACOBENCH_VERSION, host = hostname(), cpu = cpuinfo();
-    for (const auto& p : given) {
-      add.run(p.name, version, host, cpu, p.setup_json, p.optimal_length >= 0 ? p.optimal_length : kNull).finish();
-    }
+    for (const auto& p : given) add_problem(p);
     transaction.commit();
     return true;
   }
@@ -384,9 +396,9 @@ ResultsDb::ResultsDb(const std::filesystem::path& file, const std::string& exper
     created = d.create(experiment_name, fingerprint, problems);
   }
   if (!created) {
-    d.check_is_ours(experiment_name, fingerprint);
-    d.check_same_problems(problems);
+    d.check_is_ours(experiment_name, fingerprint, problems);
     d.upgrade();
+    d.grow(fingerprint, problems);
   }
   Statement wal(d.db, "PRAGMA journal_mode = WAL");
   wal.run();
@@ -396,7 +408,7 @@ ResultsDb::ResultsDb(const std::filesystem::path& file, const std::string& exper
   wal.finish();
   d.db.exec("PRAGMA synchronous = NORMAL");
   d.db.exec("PRAGMA foreign_keys = ON");
-  d.load();
+  d.load(&problems);
 }
 
 ResultsDb::ResultsDb(const std::filesystem::path& file) : impl_(std::make_unique<Impl>(existing(file))) {
@@ -412,16 +424,18 @@ ResultsDb::ResultsDb(const std::filesystem::path& file) : impl_(std::make_unique
   if (!stored.contains("format_version") || !upgradable(stored.at("format_version")))
     throw Error(file.string() + " is an acobench results database of another format version");
   d.upgrade();
-  d.load();
+  d.load(nullptr);
 }
 
-void ResultsDb::Impl::load() {
-  problems = stored_problems();
-  Statement ids(db, "SELECT id FROM experiments ORDER BY id");
+void ResultsDb::Impl::load(const std::vector<ProblemRecord>* given) {
+  problems = given ? *given : stored_problems();
+  std::map<std::string, std::int64_t> id_of;
+  Statement ids(db, "SELECT id, name FROM experiments ORDER BY id");
   ids.run();
-  while (ids.next()) {
-    problem_of[ids.integer(0)] = static_cast<int>(experiment_ids.size());
-    experiment_ids.push_back(ids.integer(0));
+  while (ids.next()) id_of.emplace(ids.text(1), ids.integer(0));
+  for (const auto& p : problems) {
+    problem_of[id_of.at(p.name)] = static_cast<int>(experiment_ids.size());
+    experiment_ids.push_back(id_of.at(p.name));
   }
   Statement names(db, "SELECT id, name FROM plannerConfigs");
   names.run();
@@ -431,8 +445,8 @@ void ResultsDb::Impl::load() {
   insert_run.emplace(db,
                        "INSERT INTO runs (experimentid, plannerid, repetition, seed, solved, length, grid_length, gap, "
                        "turns, iterations, best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, "
-                       "collisions, replans, clearance, control_steps, error) "
-                       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22)");
+                       "collisions, replans, clearance, control_steps, error, failure) "
+                       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23)");
   insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost, walks) VALUES (?1, ?2, ?3, ?4, ?5)");
   add_time.emplace(db, "UPDATE experiments SET totaltime = totaltime + ?2 WHERE id = ?1");
 }
@@ -447,9 +461,9 @@ int ResultsDb::add_config(const ConfigRecord& config) {
   Statement find(d.db, "SELECT id, settings FROM plannerConfigs WHERE name = ?1");
   find.run(config.name);
   if (find.next()) {
-    if (parse_json(find.text(1), "the stored settings of configuration " + in_quotes(config.name)) != settings)
-      throw Error(d.file() + " already holds a configuration " + in_quotes(config.name) + " with other settings: " +
-                  find.text(1) + ", now " + config.settings_json);
+    parse_json(find.text(1), "the stored settings of configuration " + in_quotes(config.name));
+    if (const auto conflicts = config_conflicts(config.name, find.text(1), config.settings_json); !conflicts.empty())
+      throw Error(conflicts_message(d.file(), d.meta().at("experiment_name"), conflicts));
     return static_cast<int>(find.integer(0));
   }
   Statement add(d.db, "INSERT INTO plannerConfigs (name, settings) VALUES (?1, ?2)");
@@ -467,9 +481,25 @@ std::set<std::tuple<int, int, int>> ResultsDb::finished() const {
   Statement read(d.db, "SELECT experimentid, plannerid, repetition FROM runs");
   read.run();
   while (read.next())
-    done.emplace(d.problem_of.at(read.integer(0)), static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2)));
+    if (const auto problem = d.problem_of.find(read.integer(0)); problem != d.problem_of.end())
+      done.emplace(problem->second, static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2)));
   return done;
 }
+
+std::map<std::tuple<int, int, int>, std::pair<std::string, std::string>> ResultsDb::failed() const {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  std::map<std::tuple<int, int, int>, std::pair<std::string, std::string>> failures;
+  Statement read(d.db, "SELECT experimentid, plannerid, repetition, failure, error FROM runs WHERE error IS NOT NULL");
+  read.run();
+  while (read.next())
+    if (const auto problem = d.problem_of.find(read.integer(0)); problem != d.problem_of.end())
+      failures[{problem->second, static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2))}] = {read.text(3),
+                                                                                                         read.text(4)};
+  return failures;
+}
+
+Growth ResultsDb::growth() const { return impl_->growth; }
 
 void ResultsDb::store(const TrialRecord& t) {
   auto& d = *impl_;
@@ -488,7 +518,8 @@ void ResultsDb::store(const TrialRecord& t) {
             t.stopped_by, t.path_json, sim_field(t, &SimulationRecord::outcome), sim_field(t, &SimulationRecord::time_to_goal),
             sim_field(t, &SimulationRecord::collisions), sim_field(t, &SimulationRecord::replans),
             sim_field(t, &SimulationRecord::clearance), sim_field(t, &SimulationRecord::control_steps),
-            t.error.empty() ? std::nullopt : std::optional<std::string>(t.error))
+            t.error.empty() ? std::nullopt : std::optional<std::string>(t.error),
+            t.failure.empty() ? std::nullopt : std::optional<std::string>(t.failure))
       .finish();
   const std::int64_t run = sqlite3_last_insert_rowid(d.db.handle());
   const bool measured = !t.elapsed_s.empty();
@@ -526,13 +557,15 @@ std::vector<TrialRecord> ResultsDb::trials() const {
   Statement runs(d.db,
                  "SELECT id, experimentid, plannerid, repetition, seed, solved, length, grid_length, turns, iterations, "
                  "best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, collisions, replans, clearance, "
-                 "control_steps, error FROM runs "
+                 "control_steps, error, failure FROM runs "
                  "ORDER BY experimentid, plannerid, repetition");
   Statement progress(d.db, "SELECT best_cost, time, walks FROM progress WHERE runid = ?1 ORDER BY iteration");
   runs.run();
   while (runs.next()) {
+    const auto problem = d.problem_of.find(runs.integer(1));
+    if (problem == d.problem_of.end()) continue;  // a problem the experiment no longer names
     TrialRecord t;
-    t.problem = d.problem_of.at(runs.integer(1));
+    t.problem = problem->second;
     t.config = static_cast<int>(runs.integer(2));
     t.repetition = static_cast<int>(runs.integer(3));
     t.seed = from_sql(runs.integer(4));
@@ -547,6 +580,7 @@ std::vector<TrialRecord> ResultsDb::trials() const {
     t.stopped_by = runs.text(13);
     t.path_json = runs.text(14);
     t.error = runs.text(21);
+    t.failure = runs.text(22);
     if (!runs.null(15))
       t.simulation = SimulationRecord{runs.text(15),
                                       runs.null(16) ? std::nan("") : runs.real(16),

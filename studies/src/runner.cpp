@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
 #include <cmath>
 #include <memory>
 #include <mutex>
@@ -57,6 +58,7 @@ class Runner {
     }
     db_ = std::make_unique<ResultsDb>(options.database, e.name, e.fingerprint(registry), records);
     finished_ = db_->finished();
+    failed_before_ = db_->failed();
     check_shard();
     for (const auto& r : records) optimal_.push_back(r.optimal_length);
     // The ablation's choices need the results of trials an earlier, interrupted run stored.
@@ -69,6 +71,7 @@ class Runner {
   RunSummary run() {
     const auto began = std::chrono::steady_clock::now();
     RunSummary summary;
+    summary.growth = db_->growth();
     std::vector<int> fixed;
     for (const auto& c : e_.configurations) fixed.push_back(add(c));
     std::vector<std::vector<std::string>> components;
@@ -171,6 +174,8 @@ class Runner {
           if (finished_.count({p, c, r})) {
             ++summary.skipped;
             ++done_;
+            if (const auto failed = failed_before_.find({p, c, r}); failed != failed_before_.end())
+              summary.failures.push_back({trials_.config(c).name, failed->second.first, failed->second.second, true});
             continue;
           }
           trials.push_back({p, c, r});
@@ -182,7 +187,8 @@ class Runner {
       if (e_.ablation_target) add_score(record);
       ++done_;
       ++summary.ran;
-      if (!record.error.empty()) summary.failures.push_back(record.error);
+      if (!record.error.empty())
+        summary.failures.push_back({trials_.config(record.config).name, record.failure, record.error, false});
       if (options_.progress) options_.progress(done_, total_);
     });
   }
@@ -209,6 +215,7 @@ class Runner {
   std::unique_ptr<ResultsDb> db_;
   std::vector<int> order_;  // configuration ids in the order they were added
   std::set<std::tuple<int, int, int>> finished_;
+  std::map<std::tuple<int, int, int>, std::pair<std::string, std::string>> failed_before_;
   std::vector<double> optimal_;  // per problem; < 0 unknown
   // Per configuration id: (solved, length / optimum) of each (problem, repetition).
   std::map<int, std::map<std::pair<int, int>, std::pair<bool, double>>> scores_;
@@ -217,6 +224,31 @@ class Runner {
 };
 
 }  // namespace
+
+std::vector<std::string> describe_failures(const std::vector<TrialFailure>& failures) {
+  // kind -> configuration -> (count, the first message)
+  std::map<std::string, std::map<std::string, std::pair<std::size_t, std::string>>> by_kind;
+  for (const auto& f : failures) {
+    // The smallest message, not the first to arrive: the same lines whatever the trials' order.
+    auto& [count, example] = by_kind[f.kind][f.configuration];
+    if (count++ == 0 || f.message < example) example = f.message;
+  }
+  const auto shortened = [](const std::string& text) { return text.size() > 500 ? text.substr(0, 497) + "..." : text; };
+  std::vector<std::string> lines;
+  for (const auto& [kind, configurations] : by_kind) {
+    std::size_t total = 0;
+    for (const auto& [name, counted] : configurations) total += counted.first;
+    lines.push_back(describe_failure(kind) + ": " + std::to_string(total));
+    // The line names the configuration: the example starts at the problem.
+    for (const auto& [name, counted] : configurations) {
+      const std::string named = "configuration '" + name + "', ";
+      const std::string& example = counted.second;
+      lines.push_back("  '" + name + "': " + std::to_string(counted.first) + ", e.g. " +
+                      shortened(example.rfind(named, 0) == 0 ? example.substr(named.size()) : example));
+    }
+  }
+  return lines;
+}
 
 RunSummary run_experiment(const Experiment& experiment, aco::PluginRegistry& registry, const RunOptions& options) {
   return Runner(experiment, registry, options).run();

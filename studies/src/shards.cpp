@@ -1,5 +1,6 @@
 #include "aco/studies/shards.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -8,6 +9,7 @@
 #include <tuple>
 
 #include "aco/error.hpp"
+#include "aco/studies/growth.hpp"
 #include "aco/studies/results_db.hpp"
 
 namespace acobench {
@@ -37,28 +39,29 @@ std::string results_text(const TrialRecord& t) {
   return text.str();
 }
 
-// A trial by what names it in every database of the experiment: problem, configuration name,
-// repetition (configuration ids differ between databases).
-using TrialKey = std::tuple<int, std::string, int>;
+// A trial by what names it in every database of the experiment: problem name, configuration
+// name, repetition (ids and problem positions differ between databases of a grown experiment).
+using TrialKey = std::tuple<std::string, std::string, int>;
 
 struct Input {
   std::filesystem::path file;
   std::string name, fingerprint;
   std::optional<Shard> shard;
   std::map<int, ConfigRecord> configs;  // by the input's id
+  std::vector<ProblemRecord> problems;  // in the input's order
 };
 
 Input read_input(const std::filesystem::path& file) {
   const ResultsDb db(file);
-  Input input{file, db.meta("experiment_name"), db.meta("fingerprint"), std::nullopt, {}};
+  Input input{file, db.meta("experiment_name"), db.meta("fingerprint"), std::nullopt, {}, db.problems()};
   if (const auto shard = db.find_meta("shard")) input.shard = parse_shard(*shard);
   for (auto& [id, config] : db.configs()) input.configs.emplace(id, std::move(config));
   return input;
 }
 
-std::string label(const TrialKey& key, const std::vector<ProblemRecord>& problems) {
-  return "trial (problem '" + problems.at(static_cast<std::size_t>(std::get<0>(key))).name + "', configuration '" +
-         std::get<1>(key) + "', repetition " + std::to_string(std::get<2>(key)) + ")";
+std::string label(const TrialKey& key) {
+  return "trial (problem '" + std::get<0>(key) + "', configuration '" + std::get<1>(key) + "', repetition " +
+         std::to_string(std::get<2>(key)) + ")";
 }
 
 }  // namespace
@@ -95,14 +98,33 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
   const Input& first = read.front();
   std::optional<int> shard_count;
   std::map<std::string, std::string> shard_files;  // "K/N" -> file
+  // Databases of one experiment at different sizes merge (a grown experiment's): what they hold
+  // of each other's must be the same runs.
+  std::string fingerprint = first.fingerprint;
+  std::vector<ProblemRecord> problems = first.problems;
+  std::map<std::string, std::string> settings;  // configuration name -> the first input's settings
   for (const Input& input : read) {
     if (input.name != first.name)
       throw Error("cannot merge " + input.file.string() + " (experiment '" + input.name + "') with " + first.file.string() +
                   " (experiment '" + first.name + "'): they hold different experiments");
-    if (input.fingerprint != first.fingerprint)
+    auto conflicts = fingerprint_conflicts(fingerprint, input.fingerprint);
+    for (auto& line : problem_conflicts(problems, input.problems)) conflicts.push_back(std::move(line));
+    for (const auto& [id, config] : input.configs) {
+      const auto [held, fresh] = settings.emplace(config.name, config.settings_json);
+      if (!fresh)
+        for (auto& line : config_conflicts(config.name, held->second, config.settings_json)) conflicts.push_back(std::move(line));
+    }
+    if (!conflicts.empty()) {
+      std::string lines;
+      for (const auto& line : conflicts) lines += "\n  " + line;
       throw Error("cannot merge " + input.file.string() + " with " + first.file.string() + ": experiment '" + first.name +
-                  "' was run with different trials, from another experiment file or other plugin binaries (taking " +
-                  first.file.string() + " as stored: " + fingerprint_change(first.fingerprint, input.fingerprint) + ")");
+                  "' was run with other trials, from another experiment file or other plugin binaries (taking the "
+                  "databases before it as stored):" + lines);
+    }
+    fingerprint = merged_fingerprint(fingerprint, input.fingerprint);
+    for (const auto& p : input.problems)
+      if (std::none_of(problems.begin(), problems.end(), [&](const ProblemRecord& q) { return q.name == p.name; }))
+        problems.push_back(p);
     if (!input.shard) continue;
     if (shard_count && *shard_count != input.shard->count)
       throw Error("cannot merge " + input.file.string() + " (shard " + to_string(*input.shard) + ") with shards of " +
@@ -114,33 +136,35 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
   }
 
   // Before anything is written: every trial found, and two copies of one checked to agree.
-  const std::vector<ProblemRecord> problems = ResultsDb(first.file).problems();
   std::map<TrialKey, std::pair<std::size_t, std::string>> results;  // -> (input, its results_text)
   MergeSummary summary;
   const auto check = [&](const TrialKey& key, std::size_t input, const std::string& text, const std::string& where) {
     const auto [held, fresh] = results.emplace(key, std::make_pair(input, text));
     if (fresh) return;
     if (held->second.second != text)
-      throw Error("cannot merge: " + label(key, problems) + " is in " + where + " and in " +
+      throw Error("cannot merge: " + label(key) + " is in " + where + " and in " +
                   read[held->second.first].file.string() +
                   " with different results; the same binaries gave two answers (another machine's libraries?), so "
                   "neither is kept; nothing was written");
     ++summary.duplicates;
   };
+  const auto key_of = [](const TrialRecord& t, const std::vector<ProblemRecord>& ps, const std::string& config) {
+    return TrialKey{ps.at(static_cast<std::size_t>(t.problem)).name, config, t.repetition};
+  };
   for (std::size_t i = 0; i < read.size(); ++i)
     for (const auto& t : ResultsDb(read[i].file).trials())
-      check({t.problem, read[i].configs.at(t.config).name, t.repetition}, i, results_text(t), read[i].file.string());
+      check(key_of(t, read[i].problems, read[i].configs.at(t.config).name), i, results_text(t), read[i].file.string());
 
-  ResultsDb out(output, first.name, first.fingerprint, problems);
+  ResultsDb out(output, first.name, fingerprint, problems);
   std::map<int, std::string> out_names;  // by the output's id
   for (const auto& [id, config] : out.configs()) out_names.emplace(id, config.name);
   std::set<TrialKey> present;
   for (const auto& t : out.trials()) {
-    const TrialKey key{t.problem, out_names.at(t.config), t.repetition};
+    const TrialKey key = key_of(t, problems, out_names.at(t.config));
     present.insert(key);
     const auto held = results.find(key);
     if (held != results.end() && held->second.second != results_text(t))
-      throw Error("cannot merge: " + label(key, problems) + " is in " + output.string() + " and in " +
+      throw Error("cannot merge: " + label(key) + " is in " + output.string() + " and in " +
                   read[held->second.first].file.string() + " with different results; nothing was written");
     if (held != results.end()) ++summary.duplicates;
   }
@@ -153,9 +177,13 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
       out_names.emplace(out_id, config.name);
     }
     for (auto t : ResultsDb(read[i].file).trials()) {
-      const TrialKey key{t.problem, read[i].configs.at(t.config).name, t.repetition};
+      const TrialKey key = key_of(t, read[i].problems, read[i].configs.at(t.config).name);
       if (results.at(key).first != i || present.contains(key)) continue;
       t.config = to_out.at(t.config);
+      const std::string& problem = std::get<0>(key);
+      t.problem = static_cast<int>(std::find_if(problems.begin(), problems.end(),
+                                                [&](const ProblemRecord& p) { return p.name == problem; }) -
+                                   problems.begin());
       out.store(t);
       ++summary.copied;
     }
@@ -165,13 +193,13 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
     if (const auto value = first_db.find_meta(key)) out.set_meta(key, *value);
 
   // Which of the configurations' trials no input holds, by the shard that should have.
-  const auto fingerprint = nlohmann::json::parse(first.fingerprint);
-  const auto repetitions = fingerprint.at("repetitions").get<std::size_t>();
-  const auto& configurations = fingerprint.at("configurations");
-  summary.ablation_left = fingerprint.contains("ablation_target") && !first_db.find_meta("ablation_path");
+  const auto experiment = nlohmann::json::parse(fingerprint);
+  const auto repetitions = experiment.at("repetitions").get<std::size_t>();
+  const auto& configurations = experiment.at("configurations");
+  summary.ablation_left = experiment.contains("ablation_target") && !first_db.find_meta("ablation_path");
   std::map<int, std::pair<std::size_t, std::size_t>> by_shard;  // shard index (0: no shards) -> (missing, of)
   std::set<TrialKey> stored;
-  for (const auto& t : out.trials()) stored.insert({t.problem, out_names.at(t.config), t.repetition});
+  for (const auto& t : out.trials()) stored.insert(key_of(t, problems, out_names.at(t.config)));
   for (std::size_t c = 0; c < configurations.size(); ++c)
     for (std::size_t p = 0; p < problems.size(); ++p)
       for (std::size_t r = 0; r < repetitions; ++r) {
@@ -180,7 +208,7 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
         auto& [missing, of] = by_shard[shard];
         ++of;
         ++summary.expected;
-        if (stored.contains({static_cast<int>(p), configurations[c].at("name").get<std::string>(), static_cast<int>(r)}))
+        if (stored.contains({problems[p].name, configurations[c].at("name").get<std::string>(), static_cast<int>(r)}))
           continue;
         ++missing;
         ++summary.missing;

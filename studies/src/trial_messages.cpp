@@ -10,7 +10,8 @@ nlohmann::json record_json(const TrialRecord& t) {
             {"grid_length", t.grid_length}, {"turns", t.turns},     {"iterations", t.iterations},
             {"best_iteration", t.best_iteration}, {"time", t.time_s}, {"ant_steps", t.ant_steps},
             {"stopped_by", t.stopped_by}, {"path", t.path_json},    {"best_so_far", t.best_so_far},
-            {"elapsed_s", t.elapsed_s}, {"walks", t.walks},         {"error", t.error}};
+            {"elapsed_s", t.elapsed_s}, {"walks", t.walks},         {"error", t.error},
+            {"failure", t.failure}};
   if (const auto& s = t.simulation)
     j["simulation"] = {{"outcome", s->outcome},   {"time_to_goal", s->time_to_goal}, {"collisions", s->collisions},
                        {"replans", s->replans},   {"clearance", s->clearance},       {"control_steps", s->control_steps}};
@@ -37,6 +38,7 @@ TrialRecord record_from(const nlohmann::json& j) {
   t.elapsed_s = j.at("elapsed_s").get<std::vector<double>>();
   t.walks = j.at("walks").get<std::vector<std::uint64_t>>();
   t.error = j.at("error");
+  t.failure = j.at("failure");
   if (j.contains("simulation")) {
     const json& s = j.at("simulation");
     t.simulation = SimulationRecord{s.at("outcome"), s.at("time_to_goal"), s.at("collisions"),

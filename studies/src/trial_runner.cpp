@@ -8,6 +8,7 @@
 #include <shared_mutex>
 
 #include "aco/error.hpp"
+#include "aco/plugin_error.hpp"
 #include "aco/map_io.hpp"
 #include "aco/plugin_guard.hpp"
 #include "aco/simulation/batch.hpp"
@@ -130,6 +131,10 @@ TrialRecord TrialRunner::run(const TrialOrder& t) {
     return failed(t, "out of memory", e.what());
   } catch (const std::bad_alloc&) {
     return failed(t, "out of memory", "out of memory (std::bad_alloc)");
+  } catch (const aco::InvalidValueError& e) {
+    return failed(t, "invalid value", e.what());
+  } catch (const aco::PluginError& e) {
+    return failed(t, "plugin error", e.what());
   } catch (...) {
     return failed(t, "error", aco::describe_current_exception());
   }
@@ -141,7 +146,10 @@ TrialRecord TrialRunner::failed(const TrialOrder& t, const std::string& kind, co
   r.config = t.config;
   r.repetition = t.repetition;
   r.seed = trial_seed(experiment_.seed, experiment_.problems[t.problem].name, t.repetition);
-  r.stopped_by = kind;
+  // stopped_by keeps the four values the report's table of failures counts.
+  const bool threw = kind == "plugin error" || kind == "invalid value" || kind == "error";
+  r.stopped_by = threw ? "error" : kind;
+  r.failure = kind;
   r.path_json = "[]";
   r.error = "configuration '" + config(t.config).name + "', problem '" + experiment_.problems[t.problem].name +
             "', repetition " + std::to_string(t.repetition) + ": " + reason;
@@ -215,6 +223,15 @@ TrialRecord TrialRunner::simulate(const TrialOrder& t) {
   r.simulation = SimulationRecord{sim.outcome, sim.reached ? sim.time : std::nan(""), sim.collisions, sim.replans,
                                   std::isfinite(sim.min_clearance) ? sim.min_clearance : std::nan(""), sim.steps};
   return r;
+}
+
+std::string describe_failure(const std::string& kind) {
+  if (kind == "crashed") return "crashed (a signal)";
+  if (kind == "timed out") return "over the trial time limit";
+  if (kind == "out of memory") return "out of memory";
+  if (kind == "plugin error") return "a plugin threw";
+  if (kind == "invalid value") return "a plugin wrote an invalid value";
+  return "other error";
 }
 
 std::string settings_json(const Configuration& config, const aco::RunSpec& run, const aco::PluginRegistry& registry) {

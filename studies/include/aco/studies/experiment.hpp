@@ -71,6 +71,11 @@ struct Experiment {
   // (name, version, SHA-256 of every plugin the configurations use): a results database made
   // with another fingerprint belongs to another experiment.
   std::string fingerprint(const aco::PluginRegistry& registry) const;
+
+  // Pairs of configurations (the earlier first) that resolve to the same run: the same plugins
+  // and parameters, such as one that forgot its plugin key and so is the baseline. Their
+  // comparison would be of a run with itself.
+  std::vector<std::pair<std::string, std::string>> same_runs() const;
 };
 
 // Loads and checks an experiment file. Errors name the file, the line and the key.

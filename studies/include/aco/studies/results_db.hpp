@@ -16,7 +16,8 @@
 //                   ant_steps, stopped_by, path (JSON waypoints), and for simulation trials
 //                   (NULL otherwise) outcome, time_to_goal (NULL unless reached), collisions,
 //                   replans, clearance, control_steps; error (why a trial failed: what the
-//                   plugin or the host threw; NULL otherwise); UNIQUE(experimentid, plannerid,
+//                   plugin or the host threw; NULL otherwise), failure (why, one of
+//                   kFailureKinds; NULL otherwise); UNIQUE(experimentid, plannerid,
 //                   repetition). A simulation trial's length is the distance driven, its path the
 //                   trajectory, its stopped_by the outcome. length, grid_length and gap are NULL when unsolved; gap is
 //                   grid_length / optimal_length - 1 (the relative excess of the grid path over
@@ -33,7 +34,8 @@
 //                   its time and walk charts. The key is (runid, iteration), not OMPL's (runid,
 //                   time): the times of two iterations of a very fast run may coincide.
 //   acobench_meta   key/value: format_version, experiment_name and fingerprint (a canonical text
-//                   from the caller naming everything that defines the trials).
+//                   from the caller naming everything that defines the trials; of a grown
+//                   experiment, of every configuration and problem it held: growth.hpp).
 //
 // Resuming: each trial is one transaction (its runs row with all its progress rows) in WAL mode,
 // so a process killed at any moment (SIGKILL included) leaves every committed trial whole and no
@@ -41,6 +43,7 @@
 // killed process; only a power cut may lose the last few.
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -49,6 +52,7 @@
 #include <utility>
 #include <vector>
 
+#include "aco/studies/growth.hpp"
 #include "aco/studies/provenance.hpp"
 #include "aco/studies/trial_record.hpp"
 
@@ -56,10 +60,13 @@ namespace acobench {
 
 class ResultsDb {
  public:
-  // Creates the database, or reopens one made with the same fingerprint (and problems). A
-  // database holding another experiment (other name or fingerprint), a file that is not an
-  // acobench database, or one of another format version is an aco::Error naming the file and
-  // what differs, and nothing in the file is touched.
+  // Creates the database, or reopens one of the same experiment. The experiment may have grown
+  // (growth.hpp): its new problems get their rows (problems are matched by name), and stored
+  // problems it no longer names are left out of finished(), failed() and trials(). A database
+  // holding another experiment (another name, or trials the experiment now runs otherwise: the
+  // refusal lists each conflict on a line), a file that is not an acobench database, or one of
+  // another format version is an aco::Error naming the file and what differs, and nothing in the
+  // file is touched.
   ResultsDb(const std::filesystem::path& file, const std::string& experiment_name, const std::string& fingerprint,
             const std::vector<ProblemRecord>& problems);
   // Opens an existing results database for reading (reports); Error if it is not one.
@@ -69,11 +76,17 @@ class ResultsDb {
   ResultsDb& operator=(const ResultsDb&) = delete;
 
   // The id of the configuration: the existing one if its name is stored with the same settings
-  // (compared as JSON values); an Error if the name is stored with other settings.
+  // (compared as JSON values; of acobench's settings, the resolved run and plugin binaries, not
+  // the keys that wrote them); an Error listing the differences if the name is stored with other
+  // settings.
   int add_config(const ConfigRecord& config);
 
   // (problem, config id, repetition) of every stored trial.
   std::set<std::tuple<int, int, int>> finished() const;
+  // (problem, config id, repetition) -> (failure, error) of every stored trial that failed.
+  std::map<std::tuple<int, int, int>, std::pair<std::string, std::string>> failed() const;
+  // What the experiment given to the constructor added to the database (empty if it made it).
+  Growth growth() const;
 
   // Stores one trial and its progress rows in one transaction. Thread-safe. A trial already
   // stored, an unknown problem or config, or a curve whose length is not `iterations` is an

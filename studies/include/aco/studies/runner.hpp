@@ -10,6 +10,7 @@
 
 #include "aco/plugin_registry.hpp"
 #include "aco/studies/experiment.hpp"
+#include "aco/studies/growth.hpp"
 #include "aco/studies/shards.hpp"
 #include "aco/studies/trial_runner.hpp"
 
@@ -48,14 +49,29 @@ struct RunOptions {
   TrialExecutor* executor = nullptr;
 };
 
+// A trial of the experiment that failed, in this run or (earlier) stored as failed by another.
+struct TrialFailure {
+  std::string configuration;
+  std::string kind;     // one of kFailureKinds
+  std::string message;  // the trial's error, naming it
+  bool earlier = false;
+};
+
 struct RunSummary {
   std::size_t trials = 0;   // trials of the experiment (of the shard)
   std::size_t skipped = 0;  // already in the database
   std::size_t ran = 0;
-  std::vector<std::string> failures;  // the messages of the trials run now that threw (stored as failed)
+  // Every failed trial of the experiment (of the shard): those run now and those stored as failed
+  // before, so that running the same command again gives the same verdict.
+  std::vector<TrialFailure> failures;
   double seconds = 0.0;
   bool ablation_left = false;  // a shard: the experiment's ablation path was not run
+  Growth growth;               // what the experiment added to an existing database
 };
+
+// The failures counted by kind, then by configuration, with one example message each: the lines
+// acobench prints at the end of a run (empty without failures).
+std::vector<std::string> describe_failures(const std::vector<TrialFailure>& failures);
 
 RunSummary run_experiment(const Experiment& experiment, aco::PluginRegistry& registry, const RunOptions& options);
 

@@ -48,7 +48,19 @@ struct TrialRecord {
   std::vector<double> elapsed_s;
   std::vector<std::uint64_t> walks;
   std::optional<SimulationRecord> simulation;  // simulation trials only (NULL columns otherwise)
-  std::string error;  // a trial that threw: the message (solved false, stopped_by "error"); else ""
+  // A trial that failed: the message (solved false; stopped_by "error", "crashed", "timed out" or
+  // "out of memory") and why (one of kFailureKinds); both "" otherwise.
+  std::string error;
+  std::string failure;
 };
+
+// Why trials fail, as runs.failure stores it: a crash (a signal), the trial time limit, the trial
+// memory limit, a plugin that threw, a value a plugin wrote that the engine refused (aco::
+// InvalidValueError), anything else (the host's own errors, and every failure stored by an
+// acobench of format 4 or earlier that threw).
+inline constexpr const char* kFailureKinds[] = {"crashed", "timed out", "out of memory", "plugin error", "invalid value", "error"};
+
+// What a failure kind means, for the summary at the end of a run.
+std::string describe_failure(const std::string& kind);
 
 }  // namespace acobench

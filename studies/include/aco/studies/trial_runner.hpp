@@ -42,8 +42,8 @@ class TrialRunner {
   // Runs one trial of a prepared configuration. Whatever the trial throws (a plugin's failure,
   // or the host's) comes back as a failed record with the message naming the trial.
   TrialRecord run(const TrialOrder& trial);
-  // The record of a trial that failed: `kind` is its stopped_by ("error", "crashed", "timed out",
-  // "out of memory"), `reason` its error after the trial's name.
+  // The record of a trial that failed: `kind` is its failure (one of kFailureKinds), `reason` its
+  // error after the trial's name.
   TrialRecord failed(const TrialOrder& trial, const std::string& kind, const std::string& reason) const;
 
  private:

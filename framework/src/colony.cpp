@@ -19,9 +19,9 @@
 
 #include "aco/dead_ends.hpp"
 #include "aco/error.hpp"
-#include "aco/plugin_error.hpp"
 #include "aco/local_search.hpp"
 #include "aco/parallel.hpp"
+#include "aco/plugin_error.hpp"
 #include "aco/plugin_guard.hpp"
 #include "aco/rng.hpp"
 #include "default_hooks.hpp"
@@ -603,7 +603,7 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pip
     } catch (const PheromoneFoundBad&) {
     }
     const NodeId from = graph.source(static_cast<EdgeId>(found.edge));
-    throw Error("the pheromone of edge " + to_string(graph.cell(from)) + " -> " +
+    throw InvalidValueError("the pheromone of edge " + to_string(graph.cell(from)) + " -> " +
                 to_string(graph.cell(graph.targets[found.edge])) + " was " + to_string(ParamValue(found.value)) + " " +
                 found.where + " in iteration " + std::to_string(found.iteration) +
                 " (0-based, as Context::iteration), but not when the run was repeated with a check after every hook: "

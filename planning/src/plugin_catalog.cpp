@@ -56,11 +56,11 @@ std::string list_plugins(aco::PluginRegistry& registry) {
 }
 
 std::string describe_plugin(aco::PluginRegistry& registry, const std::string& name) {
-  // A built-in map format, unless a map plugin of that name hides it (map_format_of() takes the built-in).
+  // A built-in map format: "map/NAME", or NAME alone when no plugin is called so.
+  const auto& files = registry.available();
+  const bool plugin_named = std::any_of(files.begin(), files.end(), [&](const aco::PluginFile& p) { return p.name == name; });
   for (const auto& format : aco::builtin_map_formats())
-    if (name == "map/" + format.name || (name == format.name && registry.available().end() ==
-                                                                   std::find_if(registry.available().begin(), registry.available().end(),
-                                                                                [&](const aco::PluginFile& p) { return p.name == name; })))
+    if (name == "map/" + format.name || (name == format.name && !plugin_named))
       return "map/" + format.name + " built-in: " + format.summary + "\n" + extensions_line(format.extensions) +
              "no parameters (terrain formats read max-slope, height-scale and cell-size)\n";
   std::vector<const aco::PluginFile*> matches;

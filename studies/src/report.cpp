@@ -675,7 +675,8 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
       aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
       const std::string format = setup.at("map-format").get<std::string>();
       aco::Keys keys;
-      for (const auto& [name, value] : setup.value("map-parameters", nlohmann::json::object()).items())
+      const nlohmann::json parameters = setup.value("map-parameters", nlohmann::json::object());
+      for (const auto& [name, value] : parameters.items())
         keys[name] = value.get<std::string>();
       const auto reader = aco::resolve_map_format(file, format, keys, registry);
       map = aco::load_map(file, {}, registry, reader.first, reader.second);

@@ -51,8 +51,11 @@ cmake -S "$source/examples/shapes_map" -B "$work/shapes_map" -DCMAKE_PREFIX_PATH
 cmake --build "$work/shapes_map" -j 2 >/dev/null
 ctest --test-dir "$work/shapes_map" --output-on-failure >/dev/null
 shapes="$work/shapes_map/plugins"
-"$bin/aco-plugin-check" "$shapes/aco_map_shapes.so" | grep -q "^PASS map/shapes \[defaults\] values"
-"$bin/acoplan" --plugin-dir "$shapes" --list-plugins | grep -q "^  map/shapes  0.1"
+# (Outputs kept in variables: grep -q stopping early would break the pipe of a program still writing.)
+checked=$("$bin/aco-plugin-check" "$shapes/aco_map_shapes.so")
+grep -q "^PASS map/shapes \[defaults\] values" <<< "$checked"
+listed=$("$bin/acoplan" --plugin-dir "$shapes" --list-plugins)
+grep -q "^  map/shapes  0.1" <<< "$listed"
 out=$("$bin/acoplan" --plugin-dir "$shapes" --map "$source/examples/shapes_map/room.shapes" --start 0,0 --goal 19,15 --json)
 grep -q '"solved":true' <<< "$out"
 grep -q '"map-format":"shapes","map.resolution":0.5' <<< "$out"
@@ -62,7 +65,8 @@ cp "$source"/examples/shapes_map/room* "$work/"
 # The report draws the maps again with the plugin (found on ACO_PLUGIN_PATH).
 ACO_PLUGIN_PATH="$shapes" "$bin/acobench" report "$work/room.db" --out "$work/room-report" >/dev/null
 if grep -q "map not drawn" "$work/room-report/report.html"; then echo "sdk: the report did not draw the shapes map" >&2; exit 1; fi
-"$bin/acosim" "$work/room_scenario.yaml" --plugin-dir "$shapes" --json | grep -q '"outcome":"reached"'
+out=$("$bin/acosim" "$work/room_scenario.yaml" --plugin-dir "$shapes" --json)
+grep -q '"outcome":"reached"' <<< "$out"
 
 # The conformance checks on the example and on every installed bundled plugin.
 "$bin/aco-plugin-check" "$example" > "$work/check-example.log"

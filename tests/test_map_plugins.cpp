@@ -77,7 +77,7 @@ TEST_CASE("a file no format claims is read as a 0/1 matrix and otherwise mention
   CHECK_THROWS_WITH(aco::load_map(room, {}, map_plugins(), "nothing"), Contains("unknown map format 'nothing'"));
 }
 
-TEST_CASE("--list-plugins and --describe show map readers as map/NAME", "[map_plugins]") {
+TEST_CASE("listing and describing plugins shows map readers as map/NAME", "[map_plugins]") {
   const std::string listed = aco::list_plugins(map_plugins());
   CHECK_THAT(listed, Contains("map/movingai  built-in") && Contains("claims .yaml .yml") && Contains("map/shapes  0.1"));
   CHECK_THAT(aco::describe_plugin(map_plugins(), "map/shapes"), Contains("claims .shapes") && Contains("resolution"));

@@ -29,20 +29,44 @@ done
 # One scaffold of every kind, built together, each with its generated unit test.
 mkdir -p "$work/plugins"
 printf 'cmake_minimum_required(VERSION 3.25)\nproject(my_plugins LANGUAGES CXX)\nenable_testing()\n' > "$work/plugins/CMakeLists.txt"
-for kind in init heuristic update deadlock smoother local; do
+for kind in init heuristic update deadlock smoother local map; do
   "$bin/aco-new-plugin" "$kind" "my_$kind" "$work/plugins/$kind" >/dev/null
   echo "add_subdirectory($kind)" >> "$work/plugins/CMakeLists.txt"
 done
 cmake -S "$work/plugins" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
 cmake --build "$work/build" -j 2 >/dev/null
 ctest --test-dir "$work/build" --output-on-failure > "$work/scaffold-tests.log" || { cat "$work/scaffold-tests.log" >&2; exit 1; }
-grep -q "100% tests passed, 0 tests failed out of 6" "$work/scaffold-tests.log"
+grep -q "100% tests passed, 0 tests failed out of 7" "$work/scaffold-tests.log"
 
 # The example plugin, against the installed package, with its own unit test.
 cmake -S "$source/examples/rank_based_as" -B "$work/rank_based_as" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
 cmake --build "$work/rank_based_as" -j 2 >/dev/null
 ctest --test-dir "$work/rank_based_as" --output-on-failure >/dev/null
 example="$work/rank_based_as/plugins/aco_update_rank_based_as.so"
+
+# The example map plugin, map/shapes, against the installed package with its unit test; then its
+# format in the three hosts: acoplan, an acobench experiment (problem keys map-format and
+# map.resolution) and an acosim scenario. Each run solves.
+cmake -S "$source/examples/shapes_map" -B "$work/shapes_map" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
+cmake --build "$work/shapes_map" -j 2 >/dev/null
+ctest --test-dir "$work/shapes_map" --output-on-failure >/dev/null
+shapes="$work/shapes_map/plugins"
+# (Outputs kept in variables: grep -q stopping early would break the pipe of a program still writing.)
+checked=$("$bin/aco-plugin-check" "$shapes/aco_map_shapes.so")
+grep -q "^PASS map/shapes \[defaults\] values" <<< "$checked"
+listed=$("$bin/acoplan" --plugin-dir "$shapes" --list-plugins)
+grep -q "^  map/shapes  0.1" <<< "$listed"
+out=$("$bin/acoplan" --plugin-dir "$shapes" --map "$source/examples/shapes_map/room.shapes" --start 0,0 --goal 19,15 --json)
+grep -q '"solved":true' <<< "$out"
+grep -q '"map-format":"shapes","map.resolution":0.5' <<< "$out"
+cp "$source"/examples/shapes_map/room* "$work/"
+"$bin/acobench" run "$work/room_experiment.yaml" --plugin-dir "$shapes" --db "$work/room.db" > "$work/room.log"
+[ "$(sqlite3 "$work/room.db" "SELECT COUNT(*) || ' ' || SUM(solved) FROM runs")" = "8 8" ]
+# The report draws the maps again with the plugin (found on ACO_PLUGIN_PATH).
+ACO_PLUGIN_PATH="$shapes" "$bin/acobench" report "$work/room.db" --out "$work/room-report" >/dev/null
+if grep -q "map not drawn" "$work/room-report/report.html"; then echo "sdk: the report did not draw the shapes map" >&2; exit 1; fi
+out=$("$bin/acosim" "$work/room_scenario.yaml" --plugin-dir "$shapes" --json)
+grep -q '"outcome":"reached"' <<< "$out"
 
 # The conformance checks on the example and on every installed bundled plugin.
 "$bin/aco-plugin-check" "$example" > "$work/check-example.log"

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # Scaffolds an out-of-tree plugin project that builds against an installed aco SDK; installed as
 # <prefix>/bin/aco-new-plugin:
-#   aco-new-plugin KIND NAME DIR      (KIND: init, heuristic, update, deadlock, smoother, local)
+#   aco-new-plugin KIND NAME DIR      (KIND: init, heuristic, update, deadlock, smoother, local, map)
 # then: cmake -S DIR -B DIR/build -DCMAKE_PREFIX_PATH=<aco prefix> && cmake --build DIR/build
 #       ctest --test-dir DIR/build                  (the generated unit test: Catch2, aco/testing.hpp)
-#       acoplan --plugin-dir DIR/build/plugins --KIND NAME
+#       acoplan --plugin-dir DIR/build/plugins --KIND NAME     (a map plugin: --map FILE.NAME)
 # The generated class and its test compile and pass as they are; replace its one method with
 # your idea and the test's example with what your idea must do.
 set -euo pipefail
@@ -80,7 +80,38 @@ case "$kind" in
   CHECK(command.w >= window.w_low);
   CHECK(command.w <= window.w_high);
   CHECK(command.v > 0.0);  // it sets off' ;;
-  *) echo "$me: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother, local)" >&2; exit 2 ;;
+  map) interface=MapReader; method='  // Files ending in .'"${name}"': rows of . (free) and # (blocked), all of one length.
+  std::vector<std::string> extensions() const override { return {".'"${name}"'"}; }
+  std::string sample() const override { return "..#\n...\n"; }  // what aco-plugin-check reads
+  std::unique_ptr<aco::Map> read(const std::filesystem::path& file, const aco::TerrainOptions&) const override {
+    std::ifstream in(file);
+    if (!in) throw aco::Error(file.string() + ": cannot open the map file");
+    std::vector<std::string> rows;
+    for (std::string row; std::getline(in, row);)
+      if (!row.empty()) rows.push_back(row);
+    if (rows.empty()) throw aco::Error(file.string() + ": no rows of . and #");
+    auto grid = std::make_unique<aco::OccupancyGrid>(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), file.string());
+    for (int y = 0; y < grid->height(); ++y) {
+      if (rows[y].size() != rows.front().size()) throw aco::Error(file.string() + ": row " + std::to_string(y + 1) + " differs in length");
+      for (int x = 0; x < grid->width(); ++x) grid->set_blocked({x, y}, rows[y][x] == '"'#'"');
+    }
+    return grid;
+  }'
+  example="reads a map written in its format"
+  test='  // The open map written as rows of . and #, and read back.
+  const auto file = std::filesystem::temp_directory_path() / "test_'"${name}.${name}"'";
+  {
+    std::ofstream out(file);
+    for (int y = 0; y < problem.map->height(); ++y) {
+      for (int x = 0; x < problem.map->width(); ++x) out << (problem.map->passable({x, y}) ? '"'.'"' : '"'#'"');
+      out << '"'\\n'"';
+    }
+  }
+  const auto map = aco::testing::create<aco::MapReader>(PLUGIN_FILE)->read(file, {});
+  CHECK(map->width() == problem.map->width());
+  CHECK(map->height() == problem.map->height());
+  CHECK(map->passable({0, 0}));' ;;
+  *) echo "$me: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother, local, map)" >&2; exit 2 ;;
 esac
 # Never over an existing project: the author's code would be lost.
 if [ -e "$dir/CMakeLists.txt" ] || [ -e "$dir/${name}.cpp" ]; then
@@ -116,6 +147,9 @@ add_test(NAME ${name} COMMAND test_${name})
 CMAKE
 cat > "$dir/${name}.cpp" <<CPP
 // ${kind}/${name}: describe the idea and cite its source here.
+#include <fstream>
+
+#include "aco/error.hpp"
 #include "aco/path.hpp"
 #include "aco/pheromone.hpp"
 #include "aco/plugin.hpp"
@@ -147,6 +181,8 @@ CPP
 cat > "$dir/test_${name}.cpp" <<CPP
 // The unit test of ${kind}/${name}: it loads the plugin from the library the build made.
 #define CATCH_CONFIG_MAIN
+#include <fstream>
+
 #include "aco/path.hpp"
 #include "aco/testing.hpp"
 

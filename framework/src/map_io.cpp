@@ -176,6 +176,16 @@ OccupancyGrid read_matrix_map(std::istream& in, const std::string& name) {
   return grid;
 }
 
+OccupancyGrid load_movingai_map(const std::filesystem::path& file) {
+  std::ifstream in = open(file);
+  return read_movingai_map(in, file.string());
+}
+
+OccupancyGrid load_matrix_map(const std::filesystem::path& file) {
+  std::ifstream in = open(file);
+  return read_matrix_map(in, file.string());
+}
+
 GreyImage load_pgm(const std::filesystem::path& file) {
   std::ifstream in = open(file);
   return read_pgm(in, file.string());
@@ -377,16 +387,6 @@ TerrainMap read_height_pgm(std::istream& in, const std::string& name, const Terr
 TerrainMap load_height_pgm(const std::filesystem::path& file, const TerrainOptions& options) {
   std::ifstream in = open(file);
   return read_height_pgm(in, file.string(), options);
-}
-
-std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain) {
-  const auto ext = file.extension();
-  if (ext == ".yaml" || ext == ".yml") return std::make_unique<OccupancyGrid>(load_ros_map(file));
-  if (ext == ".asc") return std::make_unique<TerrainMap>(load_esri_ascii(file, terrain));
-  if (ext == ".pgm") return std::make_unique<TerrainMap>(load_height_pgm(file, terrain));
-  std::ifstream in = open(file);
-  if (ext == ".map") return std::make_unique<OccupancyGrid>(read_movingai_map(in, file.string()));
-  return std::make_unique<OccupancyGrid>(read_matrix_map(in, file.string()));
 }
 
 std::vector<Scenario> read_scenarios(std::istream& in, const std::string& name) {

@@ -7,13 +7,9 @@
 namespace aco {
 
 const char* default_plugin(const std::string& slot) {
-  if (slot == "init") return "uniform";
-  if (slot == "heuristic") return "distance";
-  if (slot == "update") return "ant_system";
-  if (slot == "deadlock") return "discard";
-  if (slot == "smoother") return "none";
-  if (slot == "local") return "track";
-  throw Error("unknown slot '" + slot + "'");
+  const SlotInfo* info = find_slot(slot);
+  if (!info || !info->pipeline) throw Error("unknown slot '" + slot + "'");
+  return info->default_plugin;
 }
 
 LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec) {
@@ -24,12 +20,9 @@ LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec) {
     if (it == spec.end()) throw Error(std::string("the pipeline has no plugin for the slot '") + slot + "'");
     target = registry.create<Interface>(slot, it->second.plugin, it->second.parameters);
   };
-  make("init", loaded.init);
-  make("heuristic", loaded.heuristic);
-  make("update", loaded.update);
-  make("deadlock", loaded.deadlock);
-  make("smoother", loaded.smoother);
-  make("local", loaded.local);
+#define ACO_MAKE_SLOT_(NAME, INTERFACE) make(#NAME, loaded.NAME);
+  ACO_PIPELINE_SLOTS(ACO_MAKE_SLOT_)
+#undef ACO_MAKE_SLOT_
   return loaded;
 }
 

@@ -229,6 +229,20 @@ class GuardedLocal final : public Guarded<LocalPlanner> {
 
 };
 
+class GuardedMapReader final : public Guarded<MapReader> {
+ public:
+  using Guarded::Guarded;
+  std::unique_ptr<Map> read(const std::filesystem::path& file, const TerrainOptions& terrain) const override {
+    return call("read()", -1, [&] { return p_->read(file, terrain); });
+  }
+  std::vector<std::string> extensions() const override {
+    return call("extensions()", -1, [&] { return p_->extensions(); });
+  }
+  std::string sample() const override {
+    return call("sample()", -1, [&] { return p_->sample(); });
+  }
+};
+
 }  // namespace
 
 std::string describe_plugin(const Strategy& plugin, const char* slot) {
@@ -253,6 +267,9 @@ std::unique_ptr<Smoother> guard(std::unique_ptr<Smoother> p, PluginIdentity who)
 }
 std::unique_ptr<LocalPlanner> guard(std::unique_ptr<LocalPlanner> p, PluginIdentity who) {
   return std::make_unique<GuardedLocal>(std::move(p), std::move(who));
+}
+std::unique_ptr<MapReader> guard(std::unique_ptr<MapReader> p, PluginIdentity who) {
+  return std::make_unique<GuardedMapReader>(std::move(p), std::move(who));
 }
 
 }  // namespace aco

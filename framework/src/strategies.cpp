@@ -1,5 +1,7 @@
 #include "aco/strategies.hpp"
 
+#include "aco/map_reader.hpp"
+
 #include <tbb/blocked_range.h>
 
 #include <cmath>
@@ -19,6 +21,7 @@ PheromoneUpdate::~PheromoneUpdate() = default;
 DeadlockPolicy::~DeadlockPolicy() = default;
 Smoother::~Smoother() = default;
 LocalPlanner::~LocalPlanner() = default;
+MapReader::~MapReader() = default;
 
 void Heuristic::compute_powered(const Context& context, std::span<double> eta_beta) {
   compute(context, eta_beta);

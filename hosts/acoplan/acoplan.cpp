@@ -56,7 +56,7 @@ void dump_irace_params(acoplan::Request& r, std::ostream& out) {
 
 int plan(const acoplan::Request& r, std::ostream& out) {
   const aco::MemoryLimit memory(r.max_memory);
-  const aco::LoadedProblem problem = aco::load_problem(r.run.problem);
+  const aco::LoadedProblem problem = aco::load_problem(r.run.problem, r.registry.get());
   const aco::Graph graph = aco::build_graph(*problem.map, r.run.graph);
   const aco::ThreadLimit threads(r.host.integer("threads"));
 

@@ -7,6 +7,7 @@
 
 #include "aco/error.hpp"
 #include "aco/install_layout.hpp"
+#include "aco/map_formats.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/planning.hpp"
 #include "aco/presets.hpp"
@@ -203,8 +204,11 @@ Request parse_command_line(int argc, const char* const* argv) {
       ("help,h", po::bool_switch(), "print this help (with the options of the chosen plugins) and exit")
       ("version", po::bool_switch(), "print the framework's version, commit, build type and compiler and exit")
       ("map", po::value<std::string>()->value_name("FILE"),
-       "map: Moving AI .map, ROS map_server .yaml, ESRI ASCII terrain .asc, PGM height image .pgm, or 0/1 "
-       "matrix text (default: bundled classic map1)")
+       "map: Moving AI .map, ROS map_server .yaml, ESRI ASCII terrain .asc, PGM height image .pgm, a format a map "
+       "plugin claims, or 0/1 matrix text (default: bundled classic map1)")
+      ("map-format", po::value<std::string>()->value_name("NAME"),
+       "read --map with this format, built in (movingai, ros, esri_ascii, height_pgm, matrix) or a map plugin's "
+       "(--list-plugins: map/NAME), whatever its ending")
       ("start", po::value<std::string>()->value_name("X,Y"), "start cell (column, row from the top, 0-based)")
       ("goal", po::value<std::string>()->value_name("X,Y"), "goal cell")
       ("scen", po::value<std::string>()->value_name("FILE"),
@@ -275,6 +279,12 @@ Request parse_command_line(int argc, const char* const* argv) {
     }
     aco::Keys plugins;  // slot -> plugin
     for (const char* slot : aco::kSlots) plugins[slot] = text(first, slot).value_or(aco::default_plugin(slot));
+    // The map plugin reading the map, if one does: its parameters are options too (--map.NAME).
+    std::string map_plugin;
+    if (const auto file = text(first, "map")) {
+      const std::string format = aco::map_format_of(*file, text(first, "map-format").value_or(""), *r.registry);
+      if (!format.empty() && !aco::find_builtin_map_format(format)) map_plugin = format;
+    }
 
     // Pass 2: every option known; anything left over is a mistake.
     po::options_description all;
@@ -285,6 +295,11 @@ Request parse_command_line(int argc, const char* const* argv) {
       const aco::PluginDescriptor& d = r.registry->load(slot, name);
       groups.push_back(std::make_unique<po::options_description>(std::string(slot) + " plugin '" + name + "'"));
       add_table(*groups.back(), d.parameters(), std::string(slot) + ".");
+      all.add(*groups.back());
+    }
+    if (!map_plugin.empty()) {
+      groups.push_back(std::make_unique<po::options_description>("map plugin '" + map_plugin + "'"));
+      add_table(*groups.back(), r.registry->load("map", map_plugin).parameters(), "map.");
       all.add(*groups.back());
     }
     po::variables_map vm;
@@ -307,7 +322,7 @@ Request parse_command_line(int argc, const char* const* argv) {
       return r;
     }
     aco::Keys keys;
-    for (const char* key : {"map", "scen", "start", "goal"})
+    for (const char* key : {"map", "map-format", "scen", "start", "goal"})
       if (auto v = text(vm, key)) keys[key] = *v;
     collect(vm, std::span(&aco::planner_parameter(), 1), "", keys);
     collect(vm, aco::problem_parameters(), "", keys);
@@ -318,6 +333,7 @@ Request parse_command_line(int argc, const char* const* argv) {
       if (vm.count(slot)) keys[slot] = plugins[slot];
       collect(vm, r.registry->load(slot, plugins[slot]).parameters(), std::string(slot) + ".", keys);
     }
+    if (!map_plugin.empty()) collect(vm, r.registry->load("map", map_plugin).parameters(), "map.", keys);
     if (vm.count("irace-slots")) throw aco::Error("--irace-slots needs --dump-irace-params");
     if (!keys.count("map") && !keys.count("scen")) {
       // The demo problem: the bundled classic map, corner to corner.

@@ -1,8 +1,11 @@
 #include "aco/plugin_catalog.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/map_formats.hpp"
+#include "aco/map_reader.hpp"
 #include "aco/parameters.hpp"
 #include "aco/pipeline.hpp"
 
@@ -17,13 +20,25 @@ std::string shadow_lines(const aco::PluginFile& plugin) {
   return lines;
 }
 
+// "claims .yaml .yml" or what a format claiming nothing is read for, and a newline.
+std::string extensions_line(const std::vector<std::string>& extensions) {
+  if (extensions.empty()) return "claims no file ending (--map-format NAME)\n";
+  std::string line = "claims";
+  for (const auto& e : extensions) line += " " + e;
+  return line + "\n";
+}
+
 }  // namespace
 
 // From the plugin records alone: listing runs no plugin code.
 std::string list_plugins(aco::PluginRegistry& registry) {
   std::ostringstream out;
   out << "plugins (kind/name, version, summary, file):\n";
-  for (const char* kind : aco::kSlots) {
+  for (const aco::SlotInfo& slot : aco::kSlotTable) {
+    const std::string kind = slot.name;
+    if (kind == "map")
+      for (const auto& format : aco::builtin_map_formats())
+        out << "  map/" << format.name << "  built-in  " << format.summary << "\n      " << extensions_line(format.extensions);
     for (const auto& name : registry.names(kind)) {
       const auto& plugin = registry.get(kind, name);
       out << "  " << kind << "/" << name;
@@ -41,6 +56,13 @@ std::string list_plugins(aco::PluginRegistry& registry) {
 }
 
 std::string describe_plugin(aco::PluginRegistry& registry, const std::string& name) {
+  // A built-in map format: "map/NAME", or NAME alone when no plugin is called so.
+  const auto& files = registry.available();
+  const bool plugin_named = std::any_of(files.begin(), files.end(), [&](const aco::PluginFile& p) { return p.name == name; });
+  for (const auto& format : aco::builtin_map_formats())
+    if (name == "map/" + format.name || (name == format.name && !plugin_named))
+      return "map/" + format.name + " built-in: " + format.summary + "\n" + extensions_line(format.extensions) +
+             "no parameters (terrain formats read max-slope, height-scale and cell-size)\n";
   std::vector<const aco::PluginFile*> matches;
   for (const auto& p : registry.available())
     if (p.name == name || p.kind + "/" + p.name == name) matches.push_back(&p);
@@ -64,6 +86,10 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
       << "file: " << matches[0]->file.string() << "\n"
       << shadow_lines(*matches[0]) << "built by: " << matches[0]->record.compiler << ", "
       << matches[0]->record.stdlib << "\n";
+  if (d.kind == std::string("map")) {
+    const auto values = aco::resolve(d.parameters(), {}, "map.");
+    out << extensions_line(registry.create<aco::MapReader>("map", d.name, values)->extensions());
+  }
   if (d.param_count == 0) {
     out << "no parameters\n";
     return out.str();

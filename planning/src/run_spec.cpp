@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "aco/input_file.hpp"
+#include "aco/map_formats.hpp"
 #include "aco/map_io.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/planning.hpp"
@@ -15,7 +16,9 @@ namespace aco {
 namespace {
 
 // Problem keys whose values are text, not a table's parameter: files and cells.
-const std::vector<std::string> kProblemTexts = {"map", "scen", "start", "goal"};
+const std::vector<std::string> kProblemTexts = {"map", "map-format", "scen", "start", "goal"};
+// The owner of a map plugin's parameter keys (map.resolution): the slot's own name.
+constexpr const char* kMapSlot = "map";
 
 constexpr ParamSpec kScenIndex = {"scen-index", ParamType::integer, "0", "0:1000000000",
                                   "which problem of --scen to plan (0-based)"};
@@ -64,6 +67,7 @@ std::vector<std::string> known_keys(const RunSpec& spec, PluginRegistry& registr
   }
   for (const auto& planner : planners_with_parameters())
     for (const auto& p : planner_parameters(planner)) keys.push_back(planner + "." + p.name);
+  for (const auto& [name, value] : spec.problem.map_parameters.all()) keys.push_back(std::string(kMapSlot) + "." + name);
   return keys;
 }
 
@@ -73,6 +77,7 @@ std::vector<std::pair<std::string, ParamValue>> run_values(const RunSpec& spec) 
   std::vector<std::pair<std::string, ParamValue>> keys;
   const ProblemSpec& p = spec.problem;
   if (!p.map.empty()) keys.emplace_back("map", p.map.string());
+  if (!p.map_format.empty()) keys.emplace_back("map-format", p.map_format);
   if (!p.scen.empty()) {
     keys.emplace_back("scen", p.scen.string());
     keys.emplace_back("scen-index", std::int64_t{p.scen_index});
@@ -83,6 +88,7 @@ std::vector<std::pair<std::string, ParamValue>> run_values(const RunSpec& spec) 
   auto add = [&keys](const std::string& prefix, const ParameterValues& values) {
     for (const auto& [name, value] : values.all()) keys.emplace_back(prefix + name, value);
   };
+  add(std::string(kMapSlot) + ".", p.map_parameters);
   add("", terrain_table().write(p.terrain));
   add("", graph_table().write(spec.graph));
   keys.emplace_back("planner", spec.planner);
@@ -143,7 +149,36 @@ void check_cell(const Map& map, Cell c, const std::string& what) {
   if (!map.passable(c)) throw Error(what + " " + to_string(c) + " is blocked: " + map.blocked_reason(c) + " (" + map.name() + ")");
 }
 
-LoadedProblem load_problem(const ProblemSpec& spec) {
+std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem::path& file, const std::string& format,
+                                                           const Keys& keys, PluginRegistry& registry,
+                                                           const std::string& key_prefix) {
+  const std::string option = key_prefix + "map-format";
+  std::string chosen;
+  try {
+    chosen = map_format_of(file, format, registry);
+  } catch (const Error& e) {
+    throw KeyError(format.empty() ? key_prefix + "map" : option, format.empty() ? e.what() : option + ": " + e.what());
+  }
+  if (chosen.empty() || find_builtin_map_format(chosen)) {
+    if (!keys.empty())
+      throw KeyError(key_prefix + kMapSlot + "." + keys.begin()->first,
+                     key_prefix + kMapSlot + "." + keys.begin()->first + ": the built-in map format '" +
+                         (chosen.empty() ? "matrix" : chosen) + "' of " + file.string() +
+                         " takes no parameters (map.NAME keys are a map plugin's)");
+    return {format, {}};
+  }
+  const auto table = registry.load(kMapSlot, chosen).parameters();
+  return {chosen, resolve(table, keys, key_prefix + kMapSlot + ".")};
+}
+
+LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry) {
+  const auto read = [&](const std::filesystem::path& file) {
+    if (registry) return load_map(file, spec.terrain, *registry, spec.map_format, spec.map_parameters);
+    if (!spec.map_format.empty() && !find_builtin_map_format(spec.map_format))
+      throw Error(file.string() + ": map format '" + spec.map_format + "' is a map plugin, and no plugin registry was given");
+    if (const auto* builtin = find_builtin_map_format(spec.map_format)) return builtin->read(file, spec.terrain);
+    return load_map(file, spec.terrain);
+  };
   LoadedProblem p;
   if (!spec.scen.empty()) {
     const auto scenarios = load_scenarios(spec.scen);
@@ -151,7 +186,7 @@ LoadedProblem load_problem(const ProblemSpec& spec) {
       throw Error("scen-index " + std::to_string(spec.scen_index) + " is out of range: " + spec.scen.string() + " has " +
                   std::to_string(scenarios.size()) + " scenarios");
     const Scenario& s = scenarios[spec.scen_index];
-    p.map = load_map(spec.map.empty() ? scenario_map_file(spec.scen) : spec.map, spec.terrain);
+    p.map = read(spec.map.empty() ? scenario_map_file(spec.scen) : spec.map);
     if (p.map->width() != s.width || p.map->height() != s.height)
       throw Error(spec.scen.string() + ": scenario " + std::to_string(spec.scen_index) + " is for a " +
                   std::to_string(s.width) + "x" + std::to_string(s.height) + " map, but " + p.map->name() + " is " +
@@ -160,7 +195,7 @@ LoadedProblem load_problem(const ProblemSpec& spec) {
     p.goal = s.goal;
   } else {
     if (spec.map.empty() || !spec.start || !spec.goal) throw Error("a problem needs a map with start and goal, or a scenario");
-    p.map = load_map(spec.map, spec.terrain);
+    p.map = read(spec.map);
     p.start = *spec.start;
     p.goal = *spec.goal;
   }
@@ -172,7 +207,7 @@ LoadedProblem load_problem(const ProblemSpec& spec) {
 RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix) {
   RunSpec spec;
   // Sorted by owner: the plugins first, since their tables decide which dotted keys exist.
-  Keys problem, graph, colony, planner;
+  Keys problem, graph, colony, planner, map_keys;
   std::map<std::string, Keys> slots;
   if (const auto it = keys.find("planner"); it != keys.end())
     spec.planner = std::get<std::string>(parse_value(planner_parameter(), it->second, key_prefix + "planner"));
@@ -197,6 +232,8 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
       const std::string owner = key.substr(0, dot), name = key.substr(dot + 1);
       if (is_slot(owner)) {
         slots[owner][name] = value;
+      } else if (owner == kMapSlot) {
+        map_keys[name] = value;
       } else if (const auto with = planners_with_parameters(); std::find(with.begin(), with.end(), owner) != with.end()) {
         if (owner != spec.planner)
           throw KeyError(key_prefix + key, key_prefix + key + " is a parameter of the planner '" + owner +
@@ -227,6 +264,16 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
                                             "goal, not both");
   if (problem.count("scen-index") && p.scen.empty())
     throw KeyError(key_prefix + "scen-index", key_prefix + "scen-index needs " + key_prefix + "scen");
+  // The map file: --map, or the scenario's (a scenario file misnamed is load_problem()'s to say).
+  const std::filesystem::path map_file =
+      !p.map.empty() ? p.map : p.scen.extension() == ".scen" ? scenario_map_file(p.scen) : std::filesystem::path();
+  if (!map_file.empty()) {
+    const std::string format = problem.count("map-format") ? problem.at("map-format") : "";
+    std::tie(p.map_format, p.map_parameters) = resolve_map_format(map_file, format, map_keys, registry, key_prefix);
+  } else if (problem.count("map-format") || !map_keys.empty()) {
+    const std::string key = problem.count("map-format") ? "map-format" : kMapSlot + ("." + map_keys.begin()->first);
+    throw KeyError(key_prefix + key, key_prefix + key + " needs a map (" + key_prefix + "map or " + key_prefix + "scen)");
+  }
   Keys numbers;
   for (const auto& [key, value] : problem)
     if (in_table(problem_parameters(), key)) numbers[key] = value;

@@ -13,6 +13,7 @@
 
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
+#include "aco/map_formats.hpp"
 #include "aco/map_io.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/pipeline.hpp"
@@ -71,7 +72,7 @@ py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain
   keys["map"] = file.string();
   keys["start"] = keys["goal"] = "0,0";  // not checked: load_map() reads the file only
   const aco::RunSpec run = aco::resolve_run(keys, registry(), "--");
-  const auto map = aco::load_map(file, run.problem.terrain);
+  const auto map = aco::load_map(file, run.problem.terrain, registry(), run.problem.map_format, run.problem.map_parameters);
   const py::ssize_t w = map->width(), h = map->height();
   if (const auto* terrain = dynamic_cast<const aco::TerrainMap*>(map.get())) {
     py::array_t<double> heights({h, w});
@@ -112,7 +113,7 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
     std::unique_ptr<aco::Map> owned;
     aco::Cell from{start.first, start.second}, to{goal.first, goal.second};
     if (file) {
-      aco::LoadedProblem problem = aco::load_problem(run.problem);
+      aco::LoadedProblem problem = aco::load_problem(run.problem, &registry());
       owned = std::move(problem.map);
     } else {
       owned = make_map(std::get<ArrayMap>(map), run.problem.terrain);

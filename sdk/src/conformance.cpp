@@ -9,7 +9,10 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <fstream>
 #include <mutex>
+
+#include <unistd.h>
 
 #include "aco/astar.hpp"
 #include "aco/path.hpp"
@@ -429,6 +432,54 @@ void run_slot(LocalPlanner& planner, const Problem& problem, Trace& trace) {
   }
 }
 
+// A map reader: it claims an ending or is chosen by name (a name it has: its plugin's); a missing
+// file is an Error naming it; its sample, if it gives one, reads into a map of positive size with
+// finite positions on its free cells, the same every time (the trace holds the map).
+void run_slot(MapReader& reader, const Problem& problem, Trace& trace) {
+  if (problem.name != "open") return;  // the first standard problem; nothing depends on it: once per pass
+  const std::vector<std::string> extensions = reader.extensions();
+  for (const auto& e : extensions)
+    if (e.size() < 2 || e.front() != '.') trace.problem("extensions(): '" + e + "' is not a file ending such as '.shapes'");
+  const std::string ending = extensions.empty() ? ".sample" : extensions.front();
+  // Removed however the reads end.
+  const struct Folder {
+    fs::path path;
+    ~Folder() {
+      std::error_code ignored;
+      fs::remove_all(path, ignored);
+    }
+  } scratch{fs::temp_directory_path() / ("aco-plugin-check-" + std::to_string(::getpid()))};
+  const fs::path& folder = scratch.path;
+  fs::create_directories(folder);
+  const fs::path missing = folder / ("no such map" + ending);
+  try {
+    reader.read(missing, {});
+    trace.problem("read() of a missing file returned a map instead of an aco::Error naming " + missing.string());
+  } catch (const std::exception& e) {
+    if (std::string(e.what()).find(missing.string()) == std::string::npos)
+      trace.problem("read() of a missing file threw '" + std::string(e.what()) + "', which does not name " + missing.string());
+  }
+  const std::string sample = reader.sample();
+  if (sample.empty()) return;
+  const fs::path file = folder / ("sample" + ending);
+  std::ofstream(file, std::ios::binary) << sample;
+  const std::unique_ptr<Map> map = reader.read(file, {});
+  if (!map) return trace.problem("read() of its sample returned no map");
+  trace.add(map->width());
+  trace.add(map->height());
+  if (map->width() <= 0 || map->height() <= 0)
+    return trace.problem("its sample reads into a " + std::to_string(map->width()) + "x" + std::to_string(map->height()) + " map");
+  std::vector<double> free_positions;
+  for (int y = 0; y < map->height(); ++y)
+    for (int x = 0; x < map->width(); ++x) {
+      trace.add(map->passable({x, y}) ? 1.0 : 0.0);
+      if (!map->passable({x, y})) continue;
+      const Eigen::Vector3d p = map->position({x, y});
+      free_positions.insert(free_positions.end(), {p.x(), p.y(), p.z()});
+    }
+  trace.add_checked(free_positions, "positions of the sample's free cells", -INFINITY);
+}
+
 // The colony with the plugin in its slot and the default plugins in the others.
 template <class Interface>
 void run_colony_with(Interface& plugin, const Problem& problem, const ColonySettings& settings, Trace& trace) {
@@ -467,7 +518,8 @@ struct Pass {
       try {
         into.begin(problem.name);
         run_slot(plugin, problem, into);
-        if constexpr (!std::is_same_v<Interface, Smoother> && !std::is_same_v<Interface, LocalPlanner>)
+        if constexpr (!std::is_same_v<Interface, Smoother> && !std::is_same_v<Interface, LocalPlanner> &&
+                      !std::is_same_v<Interface, MapReader>)
           if (colony) run_colony_with(plugin, problem, options.colony, into);
       } catch (const std::exception& e) {
         into.problem(e.what());
@@ -493,7 +545,8 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
   const PluginIdentity who{plugin.kind, plugin.name, plugin.file.string()};
   const std::string label = plugin.kind + "/" + plugin.name;
   const std::vector<Problem> problems = standard_problems();
-  const bool colony = !std::is_same_v<Interface, Smoother> && !std::is_same_v<Interface, LocalPlanner>;
+  const bool colony = !std::is_same_v<Interface, Smoother> && !std::is_same_v<Interface, LocalPlanner> &&
+                      !std::is_same_v<Interface, MapReader>;
   const std::vector<ParameterSet> sets = parameter_sets(descriptor.parameters(), options.integer_cap);
   // Whether a refusal of `set`'s value is of a combination the table cannot express (a < b):
   // the message names another parameter, or the factory takes the value beside another
@@ -586,12 +639,10 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
 
 void check_plugin(const PluginFile& plugin, const Options& options, const Report& report) {
   PluginRegistry& registry = *plugins_of(plugin.file).first;
-  if (plugin.kind == "init") return check_typed<PheromoneInit>(registry, plugin, options, report);
-  if (plugin.kind == "heuristic") return check_typed<Heuristic>(registry, plugin, options, report);
-  if (plugin.kind == "update") return check_typed<PheromoneUpdate>(registry, plugin, options, report);
-  if (plugin.kind == "deadlock") return check_typed<DeadlockPolicy>(registry, plugin, options, report);
-  if (plugin.kind == "smoother") return check_typed<Smoother>(registry, plugin, options, report);
-  if (plugin.kind == "local") return check_typed<LocalPlanner>(registry, plugin, options, report);
+#define ACO_CHECK_SLOT_(NAME, INTERFACE) \
+  if (plugin.kind == #NAME) return check_typed<INTERFACE>(registry, plugin, options, report);
+  ACO_SLOTS(ACO_CHECK_SLOT_)
+#undef ACO_CHECK_SLOT_
   throw Error("plugin " + plugin.kind + "/" + plugin.name + ": unknown slot '" + plugin.kind + "'");
 }
 

@@ -159,7 +159,7 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
   s.simulation = read_settings(file, doc["simulation"], simulation_table(), "simulation");
   if (const std::string error = period_error(s); !error.empty()) fail(file, doc["simulation"] ? doc["simulation"] : doc, error);
 
-  const aco::LoadedProblem problem = aco::load_problem(s.run.problem);
+  const aco::LoadedProblem problem = aco::load_problem(s.run.problem, &registry);
   const auto* grid = dynamic_cast<const aco::OccupancyGrid*>(problem.map.get());
   if (!grid) throw aco::Error(problem.map->name() + ": acosim needs a 2D occupancy grid map, not a terrain");
   s.map = std::make_shared<const aco::OccupancyGrid>(*grid);

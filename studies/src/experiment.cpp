@@ -11,6 +11,7 @@
 #include "aco/colony.hpp"
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
+#include "aco/run_spec.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/presets.hpp"
@@ -111,11 +112,25 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
         problems.push_back(std::move(p));
       }
     } else {
-      only_keys(file, entry, {"map", "start", "goal", "name"}, "a problem");
+      // map-format and a map plugin's map.NAME keys choose and set up the map's reader.
+      std::vector<std::string> allowed = {"map", "map-format", "start", "goal", "name"};
+      aco::Keys reader_keys;
+      for (const auto& key : entry)
+        if (const std::string name = key.first.Scalar(); name.rfind("map.", 0) == 0) {
+          allowed.push_back(name);
+          reader_keys[name.substr(4)] = scalar(file, key.second, name);
+        }
+      only_keys(file, entry, allowed, "a problem");
       if (!entry["map"] || !entry["start"] || !entry["goal"]) fail(file, entry, "a problem needs map, start and goal (or scen)");
       const std::string map = scalar(file, entry["map"], "map");
       Problem p;
       p.map = dir / map;
+      try {
+        std::tie(p.map_format, p.map_parameters) = aco::resolve_map_format(
+            p.map, entry["map-format"] ? scalar(file, entry["map-format"], "map-format") : "", reader_keys, registry);
+      } catch (const aco::Error& e) {
+        fail(file, entry, e.what());
+      }
       p.start = cell(file, entry["start"], "start");
       p.goal = cell(file, entry["goal"], "goal");
       p.name = entry["name"] ? scalar(file, entry["name"], "name") : std::filesystem::path(map).stem().string();
@@ -306,6 +321,8 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
   for (const auto& p : problems) {
     nlohmann::json problem = {{"name", p.name}, {"map", relative_to_file(p.map)},
                               {"start", {p.start.x, p.start.y}}, {"goal", {p.goal.x, p.goal.y}}};
+    if (!p.map_format.empty()) problem["map-format"] = p.map_format;
+    for (const auto& [name, value] : p.map_parameters.all()) problem["map." + name] = aco::to_string(value);
     // A scenario's world is its file's: the file named, not its contents (as a map is).
     if (p.simulation) {
       problem["simulation"] = relative_to_file(p.simulation->file);

@@ -12,7 +12,9 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/map_formats.hpp"
 #include "aco/map_io.hpp"
+#include "aco/run_spec.hpp"
 #include "aco/svg.hpp"
 #include "aco/studies/plots.hpp"
 #include "aco/studies/results_db.hpp"
@@ -667,7 +669,20 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
   const auto setup = nlohmann::json::parse(a.problems[p].setup_json);
   std::unique_ptr<aco::Map> map;
   try {
-    map = aco::load_map(a.experiment_dir / setup.at("map").get<std::string>());
+    const std::filesystem::path file = a.experiment_dir / setup.at("map").get<std::string>();
+    if (setup.contains("map-format")) {
+      // A map plugin's format: found where ACO_PLUGIN_PATH and the bundled plugins are.
+      aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
+      const std::string format = setup.at("map-format").get<std::string>();
+      aco::Keys keys;
+      const nlohmann::json parameters = setup.value("map-parameters", nlohmann::json::object());
+      for (const auto& [name, value] : parameters.items())
+        keys[name] = value.get<std::string>();
+      const auto reader = aco::resolve_map_format(file, format, keys, registry);
+      map = aco::load_map(file, {}, registry, reader.first, reader.second);
+    } else {
+      map = aco::load_map(file);
+    }
   } catch (const std::exception& e) {
     return "<p>map not drawn: " + aco::xml_escape(e.what()) + "</p>";
   }

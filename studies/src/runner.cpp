@@ -50,6 +50,9 @@ class Runner {
                               {"goal", {p.goal.x, p.goal.y}},
                               {"reference", aco::describe(base.graph)}};
       if (p.bucket >= 0) setup["bucket"] = p.bucket;
+      // The map's reader, when not the built-in one its ending names: the report reads it again.
+      if (!p.map_format.empty()) setup["map-format"] = p.map_format;
+      for (const auto& [name, value] : p.map_parameters.all()) setup["map-parameters"][name] = aco::to_string(value);
       if (p.simulation) {
         setup["simulation"] = e.relative_to_file(p.simulation->file);
         setup["variations"] = p.variations;

@@ -33,6 +33,7 @@ struct PreparedProblem {
   using GraphKey = std::tuple<TerrainKey, int, bool>;
   std::string name;
   aco::ProblemSpec spec;
+  aco::PluginRegistry* registry = nullptr;  // the map plugins
   std::map<TerrainKey, aco::LoadedProblem> maps;
   std::map<GraphKey, aco::Graph> graphs;
 
@@ -45,7 +46,7 @@ struct PreparedProblem {
     if (it == maps.end()) {
       aco::ProblemSpec with = spec;
       with.terrain = terrain;
-      it = maps.emplace(terrain_key(terrain), aco::load_problem(with)).first;
+      it = maps.emplace(terrain_key(terrain), aco::load_problem(with, registry)).first;
     }
     return *it->second.map;
   }
@@ -82,6 +83,9 @@ TrialRunner::TrialRunner(const Experiment& experiment, aco::PluginRegistry& regi
     PreparedProblem prepared;
     prepared.name = p.name;
     prepared.spec.map = p.map;
+    prepared.spec.map_format = p.map_format;
+    prepared.spec.map_parameters = p.map_parameters;
+    prepared.registry = &registry;
     prepared.spec.start = p.start;
     prepared.spec.goal = p.goal;
     problems_->list.push_back(std::move(prepared));

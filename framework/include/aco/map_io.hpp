@@ -16,6 +16,9 @@ namespace aco {
 OccupancyGrid read_movingai_map(std::istream& in, const std::string& name);
 // 0/1 matrix, one row per line, whitespace separated, row 0 at the top (classic20 maps).
 OccupancyGrid read_matrix_map(std::istream& in, const std::string& name);
+// The two from a file (named in messages as given).
+OccupancyGrid load_movingai_map(const std::filesystem::path& file);
+OccupancyGrid load_matrix_map(const std::filesystem::path& file);
 // ROS map_server: YAML (image, resolution, origin, negate, occupied_thresh, free_thresh, mode)
 // plus its PGM image. Unknown cells count as blocked.
 OccupancyGrid load_ros_map(const std::filesystem::path& yaml_file);
@@ -43,6 +46,8 @@ TerrainMap read_height_pgm(std::istream& in, const std::string& name, const Terr
 
 // By extension: .map (Moving AI), .yaml/.yml (ROS), .asc (ESRI ASCII terrain), .pgm (height
 // image terrain), anything else the 0/1 matrix. `terrain` applies to the two terrain formats only.
+// The built-in formats only; hosts read maps with aco/map_formats.hpp's load_map(), which also
+// asks the map plugins.
 std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain = {});
 
 struct Scenario {

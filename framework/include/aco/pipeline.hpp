@@ -1,18 +1,17 @@
 #pragma once
 // A pipeline is one plugin per slot plus its parameters: what a user composes on the command
 // line (--update max_min --update.rho 0.02) or in an experiment file, resolved by resolve_run().
-#include <array>
 #include <map>
 #include <memory>
 #include <string>
 
 #include "aco/colony.hpp"
 #include "aco/plugin_registry.hpp"
+#include "aco/slots.hpp"
 
 namespace aco {
 
-inline constexpr std::array<const char*, 6> kSlots = {"init", "heuristic", "update", "deadlock", "smoother", "local"};
-// uniform, distance, ant_system, discard, none, track
+// kSlotTable's default_plugin of a pipeline slot (kSlots, aco/slots.hpp); an Error for another.
 const char* default_plugin(const std::string& slot);
 
 // A slot's plugin and its resolved parameters (every one, defaults included).
@@ -22,13 +21,11 @@ struct SlotSpec {
 };
 using PipelineSpec = std::map<std::string, SlotSpec>;  // slot -> plugin, for every slot of kSlots
 
+// One member per pipeline slot, named as the slot (local drives acosim's robot along the path).
 struct LoadedPipeline {
-  std::unique_ptr<PheromoneInit> init;
-  std::unique_ptr<Heuristic> heuristic;
-  std::unique_ptr<PheromoneUpdate> update;
-  std::unique_ptr<DeadlockPolicy> deadlock;
-  std::unique_ptr<Smoother> smoother;
-  std::unique_ptr<LocalPlanner> local;  // drives the robot along the path (acosim)
+#define ACO_PIPELINE_MEMBER_(NAME, INTERFACE) std::unique_ptr<INTERFACE> NAME;
+  ACO_PIPELINE_SLOTS(ACO_PIPELINE_MEMBER_)
+#undef ACO_PIPELINE_MEMBER_
 
   Pipeline colony() const { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
 };

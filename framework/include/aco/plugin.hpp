@@ -20,9 +20,11 @@
 #include <span>
 #include <type_traits>
 
+#include "aco/map_reader.hpp"
 #include "aco/parameters.hpp"
 #include "aco/plugin_record.hpp"
 #include "aco/settings_table.hpp"
+#include "aco/slots.hpp"
 #include "aco/strategies.hpp"
 
 namespace aco {
@@ -38,8 +40,10 @@ namespace aco {
 //    record's standard-library marker replaces it).
 // 9: ParamType::text (free-text parameters, the python bridge's class and path): a value a
 //    parameter table, and so the descriptor, may hold that older hosts cannot read.
+// 10: the seventh slot, map (MapReader): a descriptor's kind may be "map", whose factory makes a
+//     MapReader, and Map objects made by a plugin's code reach the host.
 // A literal, so the record can spell it; kPluginAbiVersion is the one to use in code.
-#define ACO_FRAMEWORK_PLUGIN_ABI 9
+#define ACO_FRAMEWORK_PLUGIN_ABI 10
 inline constexpr std::uint32_t kPluginAbiVersion = ACO_FRAMEWORK_PLUGIN_ABI;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
@@ -68,14 +72,11 @@ std::span<const ParamSpec> parameter_rows(const SettingsTable<Settings>& table) 
   return table.parameters();
 }
 
-// The slots, by the identifier used in ACO_PLUGIN.
+// The slots, by the identifier used in ACO_PLUGIN (aco/slots.hpp).
 namespace slot {
-struct init { using interface = PheromoneInit; };
-struct heuristic { using interface = Heuristic; };
-struct update { using interface = PheromoneUpdate; };
-struct deadlock { using interface = DeadlockPolicy; };
-struct smoother { using interface = Smoother; };
-struct local { using interface = LocalPlanner; };
+#define ACO_SLOT_TYPE_(NAME, INTERFACE) struct NAME { using interface = INTERFACE; };
+ACO_SLOTS(ACO_SLOT_TYPE_)
+#undef ACO_SLOT_TYPE_
 }  // namespace slot
 
 }  // namespace aco

@@ -8,6 +8,8 @@
 #include <string>
 
 #include "aco/error.hpp"
+#include "aco/map_reader.hpp"
+#include "aco/slots.hpp"
 #include "aco/strategies.hpp"
 
 namespace aco {
@@ -55,12 +57,10 @@ std::string describe_plugin(const Strategy& plugin, const char* slot);
 // none to name). Call inside a catch block only.
 [[noreturn]] void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration = -1);
 
-// `plugin` behind a decorator of its interface that calls it inside the boundary.
-std::unique_ptr<PheromoneInit> guard(std::unique_ptr<PheromoneInit> plugin, PluginIdentity who);
-std::unique_ptr<Heuristic> guard(std::unique_ptr<Heuristic> plugin, PluginIdentity who);
-std::unique_ptr<PheromoneUpdate> guard(std::unique_ptr<PheromoneUpdate> plugin, PluginIdentity who);
-std::unique_ptr<DeadlockPolicy> guard(std::unique_ptr<DeadlockPolicy> plugin, PluginIdentity who);
-std::unique_ptr<Smoother> guard(std::unique_ptr<Smoother> plugin, PluginIdentity who);
-std::unique_ptr<LocalPlanner> guard(std::unique_ptr<LocalPlanner> plugin, PluginIdentity who);
+// `plugin` behind a decorator of its interface that calls it inside the boundary: one per slot.
+// (A map reader's Map is not behind it: its methods run in the graph's hot loops.)
+#define ACO_DECLARE_GUARD_(NAME, INTERFACE) std::unique_ptr<INTERFACE> guard(std::unique_ptr<INTERFACE> plugin, PluginIdentity who);
+ACO_SLOTS(ACO_DECLARE_GUARD_)
+#undef ACO_DECLARE_GUARD_
 
 }  // namespace aco

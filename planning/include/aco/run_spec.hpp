@@ -33,6 +33,11 @@ struct ProblemSpec {
   std::optional<Cell> start;
   std::optional<Cell> goal;
   TerrainOptions terrain;
+  // The map's reader (aco/map_formats.hpp): map-format as given, or the map plugin claiming the
+  // file's ending; "" for a built-in format chosen by the ending (so that runs on bundled maps
+  // keep the keys they had). A map plugin's parameters (map.NAME keys), every one; else empty.
+  std::string map_format;
+  ParameterValues map_parameters;
 };
 
 struct RunSpec {
@@ -56,7 +61,8 @@ struct KeyedValues {
 // `changes` over `base`; another plugin for a slot drops the base's parameters of that slot.
 KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes);
 
-// The problem keys: map, scen, scen-index, start, goal (text), max-slope, height-scale, cell-size.
+// The problem keys: map, map-format, scen, scen-index, start, goal (text), max-slope, height-scale,
+// cell-size, and a map plugin's map.NAME.
 std::span<const ParamSpec> problem_parameters();
 // The graph keys: neighbourhood, corner-cutting.
 std::span<const ParamSpec> graph_parameters();
@@ -105,10 +111,19 @@ struct LoadedProblem {
   Cell start;
   Cell goal;
 };
-// Loads the map with the terrain options, takes start and goal from the scenario (whose map it
-// is unless `map` is set) or the cells, and checks both cells: an Error says which cell is
-// outside or blocked, and why.
-LoadedProblem load_problem(const ProblemSpec& problem);
+// The map file's reader and its parameters: `format` if given, else the file's ending's
+// (aco::map_format_of(); "" for a built-in format so chosen); `keys` the map.NAME values without
+// "map.", checked against the map plugin's table (a built-in format takes none). Errors are
+// KeyErrors naming the key with `key_prefix`.
+std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem::path& file, const std::string& format,
+                                                           const Keys& keys, PluginRegistry& registry,
+                                                           const std::string& key_prefix = "");
+
+// Loads the map with the terrain options and its reader (map plugins from `registry`; without
+// one, built-in formats only), takes start and goal from the scenario (whose map it is unless
+// `map` is set) or the cells, and checks both cells: an Error says which cell is outside or
+// blocked, and why.
+LoadedProblem load_problem(const ProblemSpec& problem, PluginRegistry* registry = nullptr);
 // Throws an Error if `cell` ("start", "goal") is outside the map or blocked, naming the reason.
 void check_cell(const Map& map, Cell cell, const std::string& what);
 

@@ -28,6 +28,8 @@
 #include "aco/colony.hpp"
 #include "aco/graph.hpp"
 #include "aco/map.hpp"
+#include "aco/map_reader.hpp"
+#include "aco/slots.hpp"
 #include "aco/plugin_registry.hpp"
 
 namespace aco::conformance {
@@ -134,18 +136,15 @@ int check_file(const std::filesystem::path& file, const Options& options, const 
 std::string bad_value(std::span<const double> values, const std::string& what, double minimum = 0.0,
                       bool strict = false);
 
-// The slot whose interface is Interface: "init" for PheromoneInit, ...
+// The slot whose interface is Interface: "init" for PheromoneInit, ... (aco/slots.hpp)
 template <class Interface>
 constexpr const char* slot_of() {
-  if constexpr (std::is_same_v<Interface, PheromoneInit>) return "init";
-  else if constexpr (std::is_same_v<Interface, Heuristic>) return "heuristic";
-  else if constexpr (std::is_same_v<Interface, PheromoneUpdate>) return "update";
-  else if constexpr (std::is_same_v<Interface, DeadlockPolicy>) return "deadlock";
-  else if constexpr (std::is_same_v<Interface, Smoother>) return "smoother";
-  else {
-    static_assert(std::is_same_v<Interface, LocalPlanner>, "not a slot interface");
-    return "local";
+#define ACO_SLOT_OF_(NAME, INTERFACE) if constexpr (std::is_same_v<Interface, INTERFACE>) return #NAME; else
+  ACO_SLOTS(ACO_SLOT_OF_) {
+    static_assert(!std::is_same_v<Interface, Interface>, "not a slot interface");
+    return "";
   }
+#undef ACO_SLOT_OF_
 }
 
 // The registry over a file's folder (one per folder, kept for the process) and the file's plugin

@@ -22,6 +22,10 @@ namespace acobench {
 struct Problem {
   std::string name;             // unique within the experiment
   std::filesystem::path map;    // resolved against the experiment file's folder
+  // Its reader, as aco::ProblemSpec has it: map-format (or the map plugin claiming the file's
+  // ending; "" for a built-in format by its ending) and a map plugin's map.NAME parameters.
+  std::string map_format;
+  aco::ParameterValues map_parameters;
   aco::Cell start;
   aco::Cell goal;
   int bucket = -1;  // Moving AI difficulty bucket (scenario column 1) for scenario problems, else -1

@@ -9,7 +9,15 @@
 # your idea and the test's example with what your idea must do.
 set -euo pipefail
 me=$(basename "$0")
-if [ $# -ne 3 ]; then echo "usage: $me KIND NAME DIR" >&2; exit 2; fi
+usage="usage: $me KIND NAME DIR
+Writes an out-of-tree plugin project into DIR: NAME.cpp (a working KIND plugin to replace with your
+idea), test_NAME.cpp (its Catch2 unit test, with aco-plugin-check's checks), CMakeLists.txt and
+README.md. KIND: init, heuristic, update, deadlock, smoother, local; NAME: lower_case_with_underscores.
+Then: cmake -S DIR -B DIR/build -DCMAKE_PREFIX_PATH=<aco prefix> && cmake --build DIR/build
+      ctest --test-dir DIR/build && acoplan --plugin-dir DIR/build/plugins --KIND NAME
+Exit status: 0 written, 2 a wrong command line (nothing written)."
+if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then echo "$usage"; exit 0; fi
+if [ $# -ne 3 ]; then echo "$usage" >&2; exit 2; fi
 kind=$1 name=$2 dir=$3
 [[ "$name" =~ ^[a-z][a-z0-9_]*$ ]] || { echo "$me: NAME must be lower_case_with_underscores" >&2; exit 2; }
 case "$kind" in

@@ -24,6 +24,7 @@ for variable in CMAKE_CXX_FLAGS CMAKE_EXE_LINKER_FLAGS CMAKE_SHARED_LINKER_FLAGS
 done
 for tool in acoplan aco-new-plugin aco-plugin-check aco-irace; do
   [ -x "$bin/$tool" ] || { echo "sdk: $tool is not installed in bin/" >&2; exit 1; }
+  [ -n "$("$bin/$tool" --help)" ] || { echo "sdk: $tool --help printed nothing" >&2; exit 1; }
 done
 
 # One scaffold of every kind, built together, each with its generated unit test.
@@ -36,7 +37,10 @@ done
 cmake -S "$work/plugins" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
 cmake --build "$work/build" -j 2 >/dev/null
 ctest --test-dir "$work/build" --output-on-failure > "$work/scaffold-tests.log" || { cat "$work/scaffold-tests.log" >&2; exit 1; }
-grep -q "100% tests passed, 0 tests failed out of 6" "$work/scaffold-tests.log"
+grep -q "100% tests passed, 0 tests failed out of 12" "$work/scaffold-tests.log"
+# Each Catch2 case is a ctest test labelled with its tags: the conformance case of each kind.
+[ "$(ctest --test-dir "$work/build" -N -L conformance | grep -c "Test *#")" = 6 ]
+[ "$(ctest --test-dir "$work/build" -N -L update | grep -c "Test *#")" = 2 ]
 
 # The example plugin, against the installed package, with its own unit test.
 cmake -S "$source/examples/rank_based_as" -B "$work/rank_based_as" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null

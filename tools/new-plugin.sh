@@ -113,14 +113,15 @@ endif()
 find_package(aco REQUIRED)
 aco_add_plugin(${kind} ${name} ${name}.cpp)
 
-# The unit test (ctest): the plugin's own example and every check of aco-plugin-check.
+# The unit test: the plugin's own example and every check of aco-plugin-check, one ctest test per
+# Catch2 case, labelled with its tags (ctest -L conformance).
 enable_testing()
 find_package(Catch2 REQUIRED)
 add_executable(test_${name} test_${name}.cpp)
 target_link_libraries(test_${name} PRIVATE aco::conformance Catch2::Catch2)
 target_compile_definitions(test_${name} PRIVATE PLUGIN_FILE="\$<TARGET_FILE:aco_${kind}_${name}>")
 add_dependencies(test_${name} aco_${kind}_${name})
-add_test(NAME ${name} COMMAND test_${name})
+aco_discover_tests(test_${name})
 CMAKE
 cat > "$dir/${name}.cpp" <<CPP
 // ${kind}/${name}: describe the idea and cite its source here.
@@ -158,13 +159,13 @@ cat > "$dir/test_${name}.cpp" <<CPP
 #include "aco/path.hpp"
 #include "aco/testing.hpp"
 
-TEST_CASE("${kind}/${name} passes the conformance checks", "[${name}]") {
+TEST_CASE("${kind}/${name} passes the conformance checks", "[${kind}][${name}][conformance]") {
   // Defaults and parameter range ends, on tiny maps and edge-case iterations: finite values,
   // same output for the same seed, same output on 1 and 4 threads (as aco-plugin-check).
   aco::testing::check_conformance(PLUGIN_FILE);
 }
 
-TEST_CASE("${kind}/${name} ${example}", "[${name}]") {
+TEST_CASE("${kind}/${name} ${example}", "[${kind}][${name}]") {
   const aco::testing::Problem problem = aco::testing::standard_problems().front();  // open 8x6, (0,0) to (7,5)
 ${test}
 }

@@ -22,8 +22,9 @@ for variable in CMAKE_CXX_FLAGS CMAKE_EXE_LINKER_FLAGS CMAKE_SHARED_LINKER_FLAGS
   value=$(sed -n "s/^$variable:[A-Z]*=//p" "$build/CMakeCache.txt")
   if [ -n "$value" ]; then flags+=("-D$variable=$value"); fi
 done
-for tool in acoplan aco-new-plugin aco-plugin-check; do
+for tool in acoplan aco-new-plugin aco-plugin-check aco-irace; do
   [ -x "$bin/$tool" ] || { echo "sdk: $tool is not installed in bin/" >&2; exit 1; }
+  [ -n "$("$bin/$tool" --help)" ] || { echo "sdk: $tool --help printed nothing" >&2; exit 1; }
 done
 
 # One scaffold of every kind, built together, each with its generated unit test.
@@ -36,7 +37,10 @@ done
 cmake -S "$work/plugins" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
 cmake --build "$work/build" -j 2 >/dev/null
 ctest --test-dir "$work/build" --output-on-failure > "$work/scaffold-tests.log" || { cat "$work/scaffold-tests.log" >&2; exit 1; }
-grep -q "100% tests passed, 0 tests failed out of 7" "$work/scaffold-tests.log"
+grep -q "100% tests passed, 0 tests failed out of 14" "$work/scaffold-tests.log"
+# Each Catch2 case is a ctest test labelled with its tags: the conformance case of each kind.
+[ "$(ctest --test-dir "$work/build" -N -L conformance | grep -c "Test *#")" = 7 ]
+[ "$(ctest --test-dir "$work/build" -N -L update | grep -c "Test *#")" = 2 ]
 
 # The example plugin, against the installed package, with its own unit test.
 cmake -S "$source/examples/rank_based_as" -B "$work/rank_based_as" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
@@ -119,6 +123,22 @@ presets=$("$acoplan" --list-presets)
 grep -q "files in $prefix/share/aco/presets" <<< "$presets"
 grep -q "^  paper001  " <<< "$presets"
 (cd "$work" && "$acoplan" --preset paper001 --print-config) | grep -q "^heuristic = direction"
+
+# irace tunes an out-of-tree plugin's parameter with the installed SDK alone: bin/aco-irace, its
+# --plugin-dir given in ACOPLAN_OPTIONS as the target runner passes it (it must reach the
+# parameter dump too: my_update is found only there). Small budget: one race, a few seconds.
+export ACOPLAN_OPTIONS="--threads 1 --ants 10 --iterations 10 --plugin-dir $work/build/plugins"
+(unset ACOPLAN; cd "$work" && PATH="$bin:/usr/bin:/bin" aco-irace --plugin update/my_update "$work/tuning" \
+   --max-experiments 40 --iterations 1 --parallel 2 --seed 1 > "$work/irace.log" 2>&1) ||
+  { cat "$work/irace.log" >&2; echo "sdk: aco-irace failed" >&2; exit 1; }
+grep -qx 'update "--update " c (my_update)' "$work/tuning/parameters.txt"
+grep -q '^update_value "--update.value " r (0.0001, 100)$' "$work/tuning/parameters.txt"
+! grep -q '^ants \|^heuristic ' "$work/tuning/parameters.txt"
+tuned=$(cat "$work/tuning/best-options.txt")
+[[ "$tuned" == "--update my_update --update.value "* ]] || { echo "sdk: irace's best configuration: $tuned" >&2; exit 1; }
+# shellcheck disable=SC2086  # the options are words
+"$bin/acoplan" $ACOPLAN_OPTIONS $tuned --json | grep -q '"update":"my_update","update.value":'
+unset ACOPLAN_OPTIONS
 
 # The scaffold refuses to write over a project, warns on a bundled plugin's name (installed and
 # in the checkout), and builds optimised when no build type is given.

@@ -4,6 +4,8 @@
 #include <sstream>
 #include <nlohmann/json.hpp>
 
+#include "aco/host_options.hpp"
+#include "aco/output_file.hpp"
 #include "aco/plugin.hpp"
 #include "acoplan/acoplan.hpp"
 #include "support.hpp"
@@ -351,7 +353,7 @@ TEST_CASE("acoplan in-process: the command line resolves into one RunSpec, run()
   CHECK(request.host.integer("threads") == 1);
   std::ostringstream out;
   const int status = acoplan::run(request, out);
-  CHECK((status == 0 || status == acoplan::kExitUnsolved));
+  CHECK((status == 0 || status == aco::kExitNoPath));
   const json j = json::parse(out.str());
   CHECK(j["config"]["update.rho"] == 0.05);
   CHECK(j["seed"] == 5);
@@ -374,4 +376,31 @@ TEST_CASE("every command prints its version and every acobench command its usage
     CHECK(r.exit_code == 0);
     CHECK_THAT(r.out, Contains("acobench " + command + " "));
   }
+}
+
+TEST_CASE("output files are written whole into folders made for them and errors name the file", "[acoplan][output]") {
+  const auto folder = test::temp_file("placeholder", "").parent_path() / "new/sub";
+  const auto svg = folder / "run.svg";
+  const auto r = test::acoplan({"--iterations", "3", "--svg", svg.string()});
+  CHECK(r.exit_code == 0);
+  std::ifstream in(svg);
+  const std::string picture((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK_THAT(picture, Contains("<svg") && Contains("</svg>\n"));
+  // Replaced whole, and nothing left beside it.
+  aco::write_output_file(svg, "second");
+  std::ifstream again(svg);
+  CHECK(std::string((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>()) == "second");
+  CHECK(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator()) == 1);
+  // A device is written in place, never replaced.
+  CHECK_NOTHROW(aco::write_output_file("/dev/null", "text"));
+  CHECK(std::filesystem::is_character_file("/dev/null"));
+
+  CHECK_THROWS_WITH(aco::write_output_file(folder, "x", "SVG"), folder.string() + ": cannot write the SVG file: it is a folder");
+  const auto under_file = svg / "x.csv";
+  CHECK_THROWS_WITH(aco::write_output_file(under_file, "x", "trajectory CSV"),
+                    Catch::StartsWith(under_file.string() + ": cannot write the trajectory CSV file: cannot make its folder " +
+                                      svg.string() + ": "));
+  const auto refused = test::acoplan({"--iterations", "3", "--svg", folder.string()});
+  CHECK(refused.exit_code == 1);
+  CHECK_THAT(refused.err, Contains(folder.string() + ": cannot write the SVG file: it is a folder"));
 }

@@ -158,7 +158,7 @@ TEST_CASE("acosim: '%' placeholders in its options are shown as typed", "[acosim
   CHECK_THAT(error({scenario, "--%canonical_option%"}), Contains("acosim: error: --%canonical_option%: unknown key '%canonical_option%'"));
 }
 
-TEST_CASE("acosim: every bundled scenario reaches the goal without a collision", "[acosim]") {
+TEST_CASE("acosim: every bundled scenario reaches the goal without a collision", "[acosim][slow]") {
   for (const char* name : {"paper003_static", "paper003_moving", "paper003_replan", "generated_room32", "generated_random32",
                            "generated_maze32"}) {
     INFO(name);
@@ -175,7 +175,7 @@ TEST_CASE("acosim: every bundled scenario reaches the goal without a collision",
         "stuck");
 }
 
-TEST_CASE("acosim batch: variations depend on the seed only, results not on the thread count", "[acosim]") {
+TEST_CASE("acosim batch: variations depend on the seed only, results not on the thread count", "[acosim][slow]") {
   const auto file = scenario("run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa, local.predict: true}\n");
   const acosim::Scenario base = acosim::load_scenario(file, test::plugins());
   const auto a = acosim::variations(base, 6, 5, test::plugins());

@@ -91,7 +91,7 @@ TEST_CASE("A* matches the classic20 table of optimal lengths", "[astar]") {
   }
 }
 
-TEST_CASE("A* matches Moving AI optimal lengths (8-neighbourhood, no corner cutting)", "[astar]") {
+TEST_CASE("A* matches Moving AI optimal lengths (8-neighbourhood, no corner cutting)", "[astar][slow]") {
   const fs::path root = test::shared_data_dir() / "movingai";
   // The Moving AI subset lives beside the project (../shared/data), not in it: a clone without
   // that folder cannot run this check, and says so instead of failing.

@@ -190,7 +190,7 @@ TEST_CASE("acoplan --planner ifwa on the paper004 map", "[fireworks][acoplan]") 
   CHECK_THAT(out_of_range.err, Catch::Contains("--ifwa.b"));
 }
 
-TEST_CASE("fireworks on a large map: block weights and the walk limit, still deterministic", "[fireworks][large]") {
+TEST_CASE("fireworks on a large map: block weights and the walk limit, still deterministic", "[fireworks][large][slow]") {
   // The classic map with max_weights 16: cells share weights in 4 x 4 blocks of 5 x 5 cells.
   const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});

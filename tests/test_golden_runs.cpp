@@ -65,7 +65,7 @@ json outcome(const GoldenRun& run) {
 
 }  // namespace
 
-TEST_CASE("golden runs: acoplan's results equal those recorded before the refactor", "[golden][acoplan]") {
+TEST_CASE("golden runs: acoplan's results equal those recorded before the refactor", "[golden][acoplan][slow]") {
   const auto runs = golden_runs();
   REQUIRE(runs.size() >= 30);
   if (std::getenv("ACO_RECORD_GOLDEN") != nullptr) {

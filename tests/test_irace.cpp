@@ -301,10 +301,45 @@ TEST_CASE("acoplan --irace-slots limits the tuned slots and --dump-irace-params 
   CHECK_THAT(bad.out, Contains("# skipped update/wrong_abi: ") && Contains("ABI 999"));
   CHECK_THAT(bad.out, Contains("update \"--update \" c (acs, ant_system,"));
 
+  // A folder under a file cannot be made, whoever runs the test.
+  const std::string unwritable = (test::data_dir() / "maps/classic20/map1.txt/p.txt").string();
   for (const auto& [args, expected] : std::vector<std::pair<std::vector<std::string>, std::string>>{
            {{"--dump-irace-params", "-", "--irace-slots", "update,smooth"}, "--irace-slots: 'smooth' is not a slot"},
            {{"--irace-slots", "update"}, "--irace-slots needs --dump-irace-params"},
-           {{"--dump-irace-params", "/nonexistent/dir/p.txt"}, "--dump-irace-params: cannot write '/nonexistent/dir/p.txt'"}}) {
+           {{"--dump-irace-params", unwritable}, unwritable + ": cannot write the irace parameter file: "}}) {
+    const auto r = test::acoplan(args);
+    CHECK(r.exit_code == 1);
+    CHECK_THAT(r.err, Contains(expected));
+  }
+}
+
+TEST_CASE("acoplan --irace-plugin dumps one plugin's parameters with its slot fixed to it", "[acoplan][irace][bad-input]") {
+  const auto one = test::acoplan({"--dump-irace-params", "-", "--irace-plugin", "update/max_min"});
+  REQUIRE(one.exit_code == 0);
+  const auto parameters = parse_irace_parameters(one.out);
+  REQUIRE(parameters.size() == 6);
+  // A choice of one: irace passes --update max_min itself, and nothing is conditional on it.
+  CHECK(parameters[0].name == "update");
+  CHECK(parameters[0].values() == std::vector<std::string>{"max_min"});
+  for (const auto& p : parameters) {
+    CHECK(p.condition.empty());
+    CHECK_THAT(p.flag, StartsWith("--update"));
+  }
+  CHECK(parameters[3].name == "update_p_best");
+  // A plugin of --plugin-dir's is found, as the target runner's acoplan finds it.
+  const auto faulty = test::acoplan({"--dump-irace-params", "-", "--irace-plugin", "update/throwing", "--plugin-dir",
+                                     ACO_TEST_FAULTY_PLUGIN_DIR});
+  CHECK(faulty.exit_code == 0);
+  CHECK_THAT(faulty.out, Contains("update \"--update \" c (throwing)\n"));
+
+  for (const auto& [args, expected] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--irace-plugin", "update/acs"}, "--irace-plugin needs --dump-irace-params"},
+           {{"--dump-irace-params", "-", "--irace-plugin", "acs"}, "--irace-plugin: 'acs' is not SLOT/NAME (e.g. update/acs)"},
+           {{"--dump-irace-params", "-", "--irace-plugin", "updat/acs"}, "--irace-plugin updat/acs: 'updat' is not a slot"},
+           {{"--dump-irace-params", "-", "--irace-plugin", "update/nope"}, "unknown update plugin 'nope'"},
+           {{"--dump-irace-params", "-", "--irace-plugin", "update/acs", "--irace-slots", "update"},
+            "--irace-plugin and --irace-slots: give one of them"},
+           {{"--dump-irace-params", "-", "--irace-plugin", "smoother/none"}, "--irace-plugin smoother/none: no parameter irace can tune"}}) {
     const auto r = test::acoplan(args);
     CHECK(r.exit_code == 1);
     CHECK_THAT(r.err, Contains(expected));

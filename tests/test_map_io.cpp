@@ -531,7 +531,7 @@ TEST_CASE("Malformed ROS maps and PGM images are rejected with a precise message
 // ---------------------------------------------------------------------------------------------
 // load_map dispatch
 
-TEST_CASE("load_map picks the format by extension", "[map_io]") {
+TEST_CASE("load_map picks the format by extension", "[map_io][slow]") {
   SECTION(".map is Moving AI") {
     const auto map = aco::load_map(test::data_dir() / "maps/movingai/arena.map");
     REQUIRE(map);

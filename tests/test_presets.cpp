@@ -107,7 +107,7 @@ TEST_CASE("acobench configurations naming no pipeline run the recommended preset
 }
 
 TEST_CASE("acosim runs the recommended pipeline under a scenario naming none and takes run keys on its command line",
-          "[presets][acosim]") {
+          "[presets][acosim][slow]") {
   const auto scenario = test::temp_file("bare.yaml", "run:\n  map: " + map1() + "\n  start: [0, 0]\n  goal: [19, 19]\n  local: dwa\n");
   const auto json_of = [&](const std::vector<std::string>& args) {
     std::vector<std::string> argv{ACO_TEST_ACOSIM, scenario.string(), "--json"};

@@ -25,4 +25,5 @@ mkdir "$work/home"
 grep -q "100% tests passed" "$work/log"
 grep -q "^aco-plugin-check: [0-9]* checks, 0 failed" "$work/log"
 [ -s "$work/home/my_study-report/report.html" ]
+grep -q "^--update my_rule --update.value " "$work/home/my_rule-tuning/best-options.txt"
 echo "walkthrough: ok"

@@ -9,7 +9,15 @@
 # your idea and the test's example with what your idea must do.
 set -euo pipefail
 me=$(basename "$0")
-if [ $# -ne 3 ]; then echo "usage: $me KIND NAME DIR" >&2; exit 2; fi
+usage="usage: $me KIND NAME DIR
+Writes an out-of-tree plugin project into DIR: NAME.cpp (a working KIND plugin to replace with your
+idea), test_NAME.cpp (its Catch2 unit test, with aco-plugin-check's checks), CMakeLists.txt and
+README.md. KIND: init, heuristic, update, deadlock, smoother, local; NAME: lower_case_with_underscores.
+Then: cmake -S DIR -B DIR/build -DCMAKE_PREFIX_PATH=<aco prefix> && cmake --build DIR/build
+      ctest --test-dir DIR/build && acoplan --plugin-dir DIR/build/plugins --KIND NAME
+Exit status: 0 written, 2 a wrong command line (nothing written)."
+if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then echo "$usage"; exit 0; fi
+if [ $# -ne 3 ]; then echo "$usage" >&2; exit 2; fi
 kind=$1 name=$2 dir=$3
 [[ "$name" =~ ^[a-z][a-z0-9_]*$ ]] || { echo "$me: NAME must be lower_case_with_underscores" >&2; exit 2; }
 case "$kind" in
@@ -136,14 +144,15 @@ endif()
 find_package(aco REQUIRED)
 aco_add_plugin(${kind} ${name} ${name}.cpp)
 
-# The unit test (ctest): the plugin's own example and every check of aco-plugin-check.
+# The unit test: the plugin's own example and every check of aco-plugin-check, one ctest test per
+# Catch2 case, labelled with its tags (ctest -L conformance).
 enable_testing()
 find_package(Catch2 REQUIRED)
 add_executable(test_${name} test_${name}.cpp)
 target_link_libraries(test_${name} PRIVATE aco::conformance Catch2::Catch2)
 target_compile_definitions(test_${name} PRIVATE PLUGIN_FILE="\$<TARGET_FILE:aco_${kind}_${name}>")
 add_dependencies(test_${name} aco_${kind}_${name})
-add_test(NAME ${name} COMMAND test_${name})
+aco_discover_tests(test_${name})
 CMAKE
 cat > "$dir/${name}.cpp" <<CPP
 // ${kind}/${name}: describe the idea and cite its source here.
@@ -186,13 +195,13 @@ cat > "$dir/test_${name}.cpp" <<CPP
 #include "aco/path.hpp"
 #include "aco/testing.hpp"
 
-TEST_CASE("${kind}/${name} passes the conformance checks", "[${name}]") {
+TEST_CASE("${kind}/${name} passes the conformance checks", "[${kind}][${name}][conformance]") {
   // Defaults and parameter range ends, on tiny maps and edge-case iterations: finite values,
   // same output for the same seed, same output on 1 and 4 threads (as aco-plugin-check).
   aco::testing::check_conformance(PLUGIN_FILE);
 }
 
-TEST_CASE("${kind}/${name} ${example}", "[${name}]") {
+TEST_CASE("${kind}/${name} ${example}", "[${kind}][${name}]") {
   const aco::testing::Problem problem = aco::testing::standard_problems().front();  // open 8x6, (0,0) to (7,5)
 ${test}
 }

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iterator>
 #include <optional>
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/output_file.hpp"
 #include "aco/terrain.hpp"
 
 namespace aco {
@@ -298,10 +298,7 @@ std::string render_svg(const Graph& graph, const RunPicture& pic) {
 }
 
 void write_svg(const std::filesystem::path& file, const Graph& graph, const RunPicture& picture) {
-  std::ofstream out(file);
-  if (!out) throw Error(file.string() + ": cannot write SVG file");
-  out << render_svg(graph, picture);
-  if (!out) throw Error(file.string() + ": error while writing SVG file");
+  write_output_file(file, render_svg(graph, picture), "SVG");
 }
 
 std::string xml_escape(const std::string& text) {

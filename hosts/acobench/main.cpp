@@ -14,11 +14,10 @@
 #include <optional>
 #include <iostream>
 
-#include "aco/crash_report.hpp"
 #include "aco/error.hpp"
+#include "aco/host_options.hpp"
 #include "aco/plugin_guard.hpp"
 #include "aco/memory_limit.hpp"
-#include "aco/program_options_error.hpp"
 #include "aco/studies/experiment.hpp"
 #include "aco/studies/mpi.hpp"
 #include "aco/studies/report.hpp"
@@ -223,26 +222,20 @@ int run_with_ranks(const acobench::mpi::Session& session, const acobench::Experi
 int run(const std::vector<std::string>& args) {
   po::options_description options("acobench run");
   std::string db, shard;
-  int threads = 0;
-  std::vector<std::string> plugin_dirs;
+  aco::HostOptions host;
   options.add_options()("experiment", po::value<std::string>()->required(), "experiment file (YAML)")
       ("db", po::value(&db), "results database (default: the experiment file's name with .db, in the current folder)")
-      ("threads", po::value(&threads), "worker threads, 0 = all cores; results do not depend on it")
-      ("shard", po::value(&shard)->value_name("K/N"), "only shard K of N of the trials, into its own database")
-      ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins")
-      ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp)
+      ("shard", po::value(&shard)->value_name("K/N"), "only shard K of N of the trials, into its own database");
+  host.add_threads(options);
+  host.add_plugin_dir_and_max_memory(options);
+  options.add_options()
       ("trial-timeout", po::value<std::string>()->value_name("SECONDS"), "a trial running longer is stopped and stored as timed out")
       ("trial-memory", po::value<std::string>()->value_name("SIZE"), "a trial growing its worker's memory by more is stopped and stored as out of memory (default: each thread's share of 3/4 of the memory available at start)")
       ("in-process", "run the trials on this process's threads, not in worker processes (for a debugger)")
       ("allow-failures", "exit 0 even when trials failed (else 3)");
-  po::positional_options_description positional;
-  positional.add("experiment", 1);
-  po::variables_map vm;
-  po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
-  po::notify(vm);
-  if (threads < 0) throw aco::Error("--threads must be >= 0");
-  std::optional<std::uint64_t> max_memory;
-  if (vm.count("max-memory")) max_memory = aco::parse_memory_size(vm["max-memory"].as<std::string>());
+  const po::variables_map vm = aco::parse_arguments(args, options, "experiment", 1);
+  const int threads = host.threads;
+  const std::optional<std::uint64_t> max_memory = host.max_memory_bytes();
   const aco::MemoryLimit memory(max_memory);
   const std::filesystem::path file = vm["experiment"].as<std::string>();
   acobench::RunOptions run;
@@ -253,8 +246,7 @@ int run(const std::vector<std::string>& args) {
                                                      std::to_string(run.shard->count) + ".db")
                              : std::filesystem::path(stem + ".db");
   run.threads = threads;
-  std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
-  aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));
+  aco::PluginRegistry registry(host.plugin_search_dirs());
 #ifndef ACOBENCH_WITH_MPI
   if (acobench::mpi::launched_ranks() > 1)
     throw aco::Error("this acobench was built without MPI but was started as one of " +
@@ -282,7 +274,7 @@ int run(const std::vector<std::string>& args) {
     if (in_process) return nullptr;
     acobench::TrialLimits lane_limits = limits;
     if (!lane_limits.memory_bytes) lane_limits.memory_bytes = aco::default_memory_limit() / static_cast<std::uint64_t>(lanes);
-    return std::make_unique<acobench::TrialWorkers>(lanes, acobench::worker_command(experiment, plugin_dirs, max_memory), lane_limits,
+    return std::make_unique<acobench::TrialWorkers>(lanes, acobench::worker_command(experiment, host.plugin_dirs, max_memory), lane_limits,
                                                     experiment.fingerprint(registry));
   };
 #ifdef ACOBENCH_WITH_MPI
@@ -306,20 +298,12 @@ int run(const std::vector<std::string>& args) {
 int worker(const std::vector<std::string>& args) {
   try {
     po::options_description options("acobench worker");
-    std::vector<std::string> plugin_dirs;
-    options.add_options()("experiment", po::value<std::string>()->required(), "experiment file (YAML)")
-        ("plugin-dir", po::value(&plugin_dirs)->composing(), "also search DIR for plugins")
-        ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
-    po::positional_options_description positional;
-    positional.add("experiment", 1);
-    po::variables_map vm;
-    po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
-    po::notify(vm);
-    std::optional<std::uint64_t> max_memory;
-    if (vm.count("max-memory")) max_memory = aco::parse_memory_size(vm["max-memory"].as<std::string>());
-    const aco::MemoryLimit memory(max_memory);
-    std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
-    aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));
+    aco::HostOptions host;
+    options.add_options()("experiment", po::value<std::string>()->required(), "experiment file (YAML)");
+    host.add_plugin_dir_and_max_memory(options);
+    const po::variables_map vm = aco::parse_arguments(args, options, "experiment", 1);
+    const aco::MemoryLimit memory(host.max_memory_bytes());
+    aco::PluginRegistry registry(host.plugin_search_dirs());
     const acobench::Experiment experiment = acobench::load_experiment(vm["experiment"].as<std::string>(), registry);
     acobench::serve_trials_as_worker(experiment, registry);
     return 0;
@@ -335,11 +319,7 @@ int merge(const std::vector<std::string>& args) {
   options.add_options()("databases", po::value<std::vector<std::string>>()->required(), "results databases to merge")
       ("db", po::value(&db), "the merged database, created or added to (default: the experiment file's name with "
                              ".db, in the current folder)");
-  po::positional_options_description positional;
-  positional.add("databases", -1);
-  po::variables_map vm;
-  po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
-  po::notify(vm);
+  const po::variables_map vm = aco::parse_arguments(args, options, "databases", -1);
   const auto names = vm["databases"].as<std::vector<std::string>>();
   const std::vector<std::filesystem::path> inputs(names.begin(), names.end());
   std::string experiment_file = "EXPERIMENT.yaml";
@@ -367,11 +347,7 @@ int report(const std::vector<std::string>& args) {
   std::string out = ".";
   options.add_options()("database", po::value<std::string>()->required(), "results database")
       ("out", po::value(&out), "folder for report.md, report.html and runs.csv (default: current folder)");
-  po::positional_options_description positional;
-  positional.add("database", 1);
-  po::variables_map vm;
-  po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
-  po::notify(vm);
+  const po::variables_map vm = aco::parse_arguments(args, options, "database", 1);
   const auto files = acobench::write_report(vm["database"].as<std::string>(), out);
   for (const auto& f : files) std::cout << f.string() << "\n";
   return 0;
@@ -380,32 +356,26 @@ int report(const std::vector<std::string>& args) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  aco::report_crashes("acobench");
-  try {
+  return aco::run_command("acobench", [&] {
     const std::vector<std::string> args(argv + 1, argv + argc);
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
       std::cout << kUsage;
-      return args.empty() ? 1 : 0;
+      return args.empty() ? aco::kExitError : aco::kExitOk;
     }
     if (args[0] == "--version") {
       std::cout << aco::version_text("acobench") << "\n";
-      return 0;
+      return aco::kExitOk;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     // "acobench run --help": every command's usage is the one text.
     if (std::find(rest.begin(), rest.end(), "--help") != rest.end() || std::find(rest.begin(), rest.end(), "-h") != rest.end()) {
       std::cout << kUsage;
-      return 0;
+      return aco::kExitOk;
     }
     if (args[0] == "run") return run(rest);
     if (args[0] == "merge") return merge(rest);
     if (args[0] == "report") return report(rest);
     if (args[0] == "worker") return worker(rest);
     throw aco::Error("unknown command '" + args[0] + "' (use run, merge or report)");
-  } catch (po::error& e) {
-    std::cerr << "acobench: error: " << aco::program_options_message(e) << "\n";
-  } catch (...) {  // anything, a std::exception or not, is reported and exits 1
-    std::cerr << "acobench: error: " << aco::describe_current_exception() << "\n";
-  }
-  return 1;
+  });
 }

@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
 #include <memory>
 #include <numeric>
 
 #include "aco/error.hpp"
+#include "aco/host_options.hpp"
 #include "aco/irace_parameters.hpp"
 #include "aco/memory_limit.hpp"
+#include "aco/output_file.hpp"
 #include "aco/plan_report.hpp"
 #include "aco/plugin_catalog.hpp"
 #include "aco/svg.hpp"
@@ -45,13 +46,13 @@ std::string irace_cost(const std::vector<aco::PlanRun>& runs) {
 }
 
 void dump_irace_params(acoplan::Request& r, std::ostream& out) {
-  const std::string table = aco::irace_parameters(*r.registry, r.irace_slots);
+  const std::string table = r.irace_plugin.empty() ? aco::irace_parameters(*r.registry, r.irace_slots)
+                                                    : aco::irace_plugin_parameters(*r.registry, r.irace_plugin);
   if (r.irace_params_file == "-") {
     out << table;
     return;
   }
-  std::ofstream file(r.irace_params_file);
-  if (!(file << table) || !file.flush()) throw aco::Error("--dump-irace-params: cannot write '" + r.irace_params_file + "'");
+  aco::write_output_file(r.irace_params_file, table, "irace parameter");
 }
 
 int plan(const acoplan::Request& r, std::ostream& out) {
@@ -79,23 +80,23 @@ int plan(const acoplan::Request& r, std::ostream& out) {
   });
   if (r.svg) write_picture(r, graph, *best);
   const bool all_solved = std::all_of(runs.begin(), runs.end(), [](const auto& o) { return o.solved(); });
-  return all_solved || r.irace ? 0 : kExitUnsolved;
+  return all_solved || r.irace ? aco::kExitOk : aco::kExitNoPath;
 }
 
 }  // namespace
 
 int run(Request& request, std::ostream& out) {
   switch (request.action) {
-    case Request::Action::help: out << request.help; return 0;
-    case Request::Action::version: out << aco::version_text("acoplan") << "\n"; return 0;
-    case Request::Action::list_plugins: out << aco::list_plugins(*request.registry); return 0;
-    case Request::Action::list_presets: out << list_presets(); return 0;
-    case Request::Action::describe: out << aco::describe_plugin(*request.registry, request.describe); return 0;
-    case Request::Action::print_config: out << request.config; return 0;
-    case Request::Action::dump_irace_params: dump_irace_params(request, out); return 0;
+    case Request::Action::help: out << request.help; break;
+    case Request::Action::version: out << aco::version_text("acoplan") << "\n"; break;
+    case Request::Action::list_plugins: out << aco::list_plugins(*request.registry); break;
+    case Request::Action::list_presets: out << list_presets(); break;
+    case Request::Action::describe: out << aco::describe_plugin(*request.registry, request.describe); break;
+    case Request::Action::print_config: out << request.config; break;
+    case Request::Action::dump_irace_params: dump_irace_params(request, out); break;
     case Request::Action::plan: return plan(request, out);
   }
-  return kExitError;
+  return aco::kExitOk;
 }
 
 }  // namespace acoplan

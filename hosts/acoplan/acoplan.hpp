@@ -9,16 +9,13 @@
 
 namespace acoplan {
 
-inline constexpr int kExitError = 1;
-inline constexpr int kExitUnsolved = 3;  // no path found (goal unreachable or no ant arrived)
-
 // The cost of an unsolved run under --irace: irace needs a number, and this one is longer than
 // any path on a map acoplan can load, so irace ranks a configuration that fails below every one
 // that succeeds.
 inline constexpr double kIraceUnsolvedCost = 1e9;
 
 // Carries out the request (plan, help, list, describe, print the config, dump irace's table) and
-// returns the exit status. Errors are thrown (aco::Error), as parse_command_line() does.
+// returns the exit status (aco::kExitOk, or aco::kExitNoPath when a run found no path). Errors are thrown (aco::Error), as parse_command_line() does.
 int run(Request& request, std::ostream& out);
 
 }  // namespace acoplan

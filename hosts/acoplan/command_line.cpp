@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/host_options.hpp"
 #include "aco/install_layout.hpp"
 #include "aco/map_formats.hpp"
 #include "aco/memory_limit.hpp"
@@ -19,7 +20,7 @@ namespace {
 
 // acoplan's own settings; everything else is a run key (aco/run_spec.hpp).
 constexpr aco::ParamSpec kHostParameters[] = {
-    {"threads", aco::ParamType::integer, "0", "0:1024", "worker threads, 0 = all cores; results do not depend on it"},
+    {"threads", aco::ParamType::integer, "0", "0:1024", aco::kThreadsHelp},
     {"svg-pheromone", aco::ParamType::boolean, "false", "", "also draw the final pheromone field in the --svg picture"},
     {"repeat", aco::ParamType::integer, "1", "1:1000000",
      "plan N times with seeds seed, seed+1, ...; print mean and standard deviation (--svg shows the best run)"},
@@ -199,6 +200,7 @@ std::string config_file(const Request& r) {
 
 Request parse_command_line(int argc, const char* const* argv) {
   Request r;
+  aco::HostOptions host_options;
   po::options_description general("General");
   general.add_options()
       ("help,h", po::bool_switch(), "print this help (with the options of the chosen plugins) and exit")
@@ -221,16 +223,16 @@ Request parse_command_line(int argc, const char* const* argv) {
        "write irace's parameter file (colony and plugin parameters) to FILE (- = stdout) and exit")
       ("irace-slots", po::value<std::string>()->value_name("SLOTS"),
        "with --dump-irace-params: the slots whose plugin irace chooses, comma separated (default: all but local, which acoplan does not use)")
+      ("irace-plugin", po::value<std::string>()->value_name("SLOT/NAME"),
+       "with --dump-irace-params: only this plugin's parameters, its slot fixed to it (e.g. update/mine)")
       ("svg", po::value<std::string>()->value_name("FILE"), "write a picture of the map, the path and the convergence curve")
       ("config", po::value<std::string>()->value_name("FILE"), "read options from an INI file (command line wins)")
       ("preset", po::value<std::string>()->value_name("NAME"), "read options from the named preset's INI file (see --list-presets; command line wins); default: robust on 2D maps, terrain on height maps, unless --config is given")
       ("list-presets", po::bool_switch(), "list the named presets and exit")
       ("print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")
       ("list-plugins", po::bool_switch(), "list the plugins found and exit")
-      ("describe", po::value<std::string>()->value_name("NAME"), "print a plugin's parameter table and exit")
-      ("plugin-dir", po::value<std::vector<std::string>>()->composing()->value_name("DIR"),
-       "also search DIR for plugins (before ACO_PLUGIN_PATH and the default folders)")
-      ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
+      ("describe", po::value<std::string>()->value_name("NAME"), "print a plugin's parameter table and exit");
+  host_options.add_plugin_dir_and_max_memory(general);
   add_table(general, kHostParameters, "");
   po::options_description problem("Problem and graph");
   add_table(problem, std::span(&aco::planner_parameter(), 1), "");
@@ -250,10 +252,7 @@ Request parse_command_line(int argc, const char* const* argv) {
   try {
     // Pass 1: which plugins, and where to find them; their options are not known yet.
     const po::variables_map first = parse(base, argc, argv, true);
-    std::vector<std::filesystem::path> dirs;
-    if (first.count("plugin-dir"))
-      for (const auto& d : first["plugin-dir"].as<std::vector<std::string>>()) dirs.emplace_back(d);
-    r.registry = std::make_unique<aco::PluginRegistry>(aco::PluginRegistry::default_search_dirs(dirs));
+    r.registry = std::make_unique<aco::PluginRegistry>(host_options.plugin_search_dirs());
     if (first["version"].as<bool>()) {
       r.action = Request::Action::version;
       return r;
@@ -270,6 +269,9 @@ Request parse_command_line(int argc, const char* const* argv) {
       r.action = Request::Action::dump_irace_params;
       r.irace_params_file = first["dump-irace-params"].as<std::string>();
       r.irace_slots = irace_slots(text(first, "irace-slots"));
+      r.irace_plugin = text(first, "irace-plugin").value_or("");
+      if (!r.irace_plugin.empty() && first.count("irace-slots"))
+        throw aco::Error("--irace-plugin and --irace-slots: give one of them (the plugin's slot is fixed to it)");
       return r;
     }
     if (first.count("describe")) {
@@ -315,7 +317,8 @@ Request parse_command_line(int argc, const char* const* argv) {
          << "listed below: robust on 2D maps, terrain on height maps; --print-config shows what a command runs,\n"
          << "--list-presets the others (each paper's pipeline: --preset paper000 ... paper004).\n\n"
          << all
-         << "\nExit status: 0 solved, 1 error, 3 no path found (goal unreachable or no ant arrived; 0 with --irace).\n";
+         << "\nExit status: " << aco::kExitOk << " solved, " << aco::kExitError << " error, " << aco::kExitNoPath
+         << " no path found (goal unreachable or no ant arrived; " << aco::kExitOk << " with --irace).\n";
     r.help = help.str();
     if (vm["help"].as<bool>()) {
       r.action = Request::Action::help;
@@ -334,7 +337,8 @@ Request parse_command_line(int argc, const char* const* argv) {
       collect(vm, r.registry->load(slot, plugins[slot]).parameters(), std::string(slot) + ".", keys);
     }
     if (!map_plugin.empty()) collect(vm, r.registry->load("map", map_plugin).parameters(), "map.", keys);
-    if (vm.count("irace-slots")) throw aco::Error("--irace-slots needs --dump-irace-params");
+    for (const char* option : {"irace-slots", "irace-plugin"})
+      if (vm.count(option)) throw aco::Error(std::string("--") + option + " needs --dump-irace-params");
     if (!keys.count("map") && !keys.count("scen")) {
       // The demo problem: the bundled classic map, corner to corner.
       keys["map"] = bundled_map().string();
@@ -348,7 +352,7 @@ Request parse_command_line(int argc, const char* const* argv) {
     collect(vm, kHostParameters, "", host);
     r.host = aco::resolve(kHostParameters, host, "--");
     if (auto v = text(vm, "svg")) r.svg = *v;
-    if (auto v = text(vm, "max-memory")) r.max_memory = aco::parse_memory_size(*v);
+    r.max_memory = host_options.max_memory_bytes();
     if (vm.count("preset")) r.pipeline_source = vm["preset"].as<std::string>();
     else if (vm.count("config")) r.pipeline_source = "none (--config " + vm["config"].as<std::string>() + ")";
     else {

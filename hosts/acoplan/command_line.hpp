@@ -24,6 +24,7 @@ struct Request {
   std::string pipeline_source;  // "preset robust (the default for 2D maps ...)", "preset paper001", "config FILE"    // the resolved configuration as a config file (--print-config)
   std::string irace_params_file;         // --dump-irace-params: where to write the table ("-" = stdout)
   std::vector<std::string> irace_slots;  // the slots whose plugins irace chooses (--irace-slots)
+  std::string irace_plugin;              // --irace-plugin SLOT/NAME: only its parameters ("" = the slots')
 
   std::optional<std::filesystem::path> svg;
   bool json = false;

@@ -1,16 +1,14 @@
 // acosim: a robot follows the colony's path with a local planner among obstacles the map did not
 // show (paper 003). See README.md.
 #include <boost/program_options.hpp>
-#include <fstream>
 #include <iostream>
 
 #include "aco/presets.hpp"
-#include "aco/crash_report.hpp"
 #include "aco/version.hpp"
-#include "aco/plugin_guard.hpp"
 #include "aco/error.hpp"
+#include "aco/host_options.hpp"
 #include "aco/memory_limit.hpp"
-#include "aco/program_options_error.hpp"
+#include "aco/output_file.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/worker_process.hpp"
 #include "aco/simulation/batch.hpp"
@@ -19,20 +17,6 @@
 namespace po = boost::program_options;
 
 namespace {
-
-constexpr int kExitError = 1;
-constexpr int kExitNotReached = 3;  // as acoplan's unsolved: the run ended without the goal
-
-void write(const std::string& file, const std::string& text) {
-  std::ofstream out(file);
-  if (!out || !(out << text)) throw aco::Error("cannot write " + file);
-}
-
-// An error: on stderr, or from a worker process of --batch to the acosim that started it.
-void report_error(const std::string& message) {
-  if (aco::is_worker_process()) aco::fail_worker(message);
-  std::cerr << "acosim: error: " << message << "\n";
-}
 
 // A run key given as an option: "--key value", "--key=value", or "--flag" alone for true. The
 // scenario's own keys (map, start, goal) are refused by acosim::with_run_keys.
@@ -49,10 +33,10 @@ void add_run_key(const std::string& token, const char* next, aco::KeyedValues& k
 }  // namespace
 
 int main(int argc, char** argv) {
-  aco::report_crashes("acosim");
-  try {
+  // An error goes to stderr, or from a worker process of --batch to the acosim that started it.
+  return aco::run_command("acosim", [&] {
     std::string scenario_file, csv, svg, html;
-    std::vector<std::string> plugin_dirs;
+    aco::HostOptions host;
     po::options_description options("acosim: drive a robot along the colony's path with a local planner.\n\n"
                                     "Usage: acosim SCENARIO.yaml [options]\n\nOptions");
     options.add_options()
@@ -65,22 +49,18 @@ int main(int argc, char** argv) {
         ("batch", po::value<int>()->value_name("N"), "run N generated variations of the scenario and print their summary")
         ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch or --variation: the variations' seed")
         ("variation", po::value<int>()->value_name("K"), "run variation K (0-based) of --batch's, with every output")
-        ("threads", po::value<int>()->default_value(0), "with --batch: worker threads, 0 = all cores; results do not depend on it")
         ("variation-timeout", po::value<std::string>()->value_name("SECONDS"), "with --batch: a variation running longer is stopped and counted as timed out")
         ("variation-memory", po::value<std::string>()->value_name("SIZE"), "with --batch: a variation growing its worker's memory by more is stopped and counted as out of memory")
         ("in-process", "with --batch: run the variations on this process's threads, not in worker processes (for a debugger; a crash ends the batch, no limits)")
         ("preset", po::value<std::string>()->value_name("NAME"), "run the named preset's pipeline (acoplan --list-presets) over the scenario's")
-        ("config", po::value<std::string>()->value_name("FILE"), "run a config file's pipeline (as acoplan --config) over the scenario's")
-        ("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"), "also search DIR for plugins")
-        ("max-memory", po::value<std::string>()->value_name("SIZE"), aco::kMaxMemoryHelp);
+        ("config", po::value<std::string>()->value_name("FILE"), "run a config file's pipeline (as acoplan --config) over the scenario's");
+    host.add_threads(options, "with --batch: ");
+    host.add_plugin_dir_and_max_memory(options);
     po::options_description hidden;
     hidden.add_options()("scenario", po::value(&scenario_file))
         ("variation-worker", "serve --batch's variations to the acosim that started this one");
     po::options_description all;
     all.add(options).add(hidden);
-    po::positional_options_description positional;
-    positional.add("scenario", 1);
-    po::variables_map vm;
     // Any other --key [value] is a run key, as on acoplan's command line, over the scenario's.
     std::vector<std::string> own_options;
     aco::KeyedValues command_line_keys;
@@ -94,26 +74,21 @@ int main(int argc, char** argv) {
       const bool valued = token.find('=') == std::string::npos && i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0;
       add_run_key(token, valued ? argv[++i] : nullptr, command_line_keys);
     }
-    po::store(po::command_line_parser(own_options).options(all).positional(positional).run(), vm);
-    po::notify(vm);
+    const po::variables_map vm = aco::parse_arguments(own_options, all, "scenario", 1);
     if (vm.count("help")) {
       std::cout << options
                 << "\nAny run key of acoplan (--local track, --local.follow 0.5, --ants 20, --update max_min) goes over\n"
                    "the scenario's run keys (map, start and goal are the scenario's). A scenario naming no pipeline\n"
                    "(config or preset) runs the recommended one, data/presets/robust.ini.\n";
-      return 0;
+      return aco::kExitOk;
     }
     if (vm.count("version")) {
       std::cout << aco::version_text("acosim") << "\n";
-      return 0;
+      return aco::kExitOk;
     }
     if (scenario_file.empty()) throw aco::Error("no scenario file (acosim SCENARIO.yaml; --help for options)");
-    std::optional<std::uint64_t> max_memory;
-    if (vm.count("max-memory")) max_memory = aco::parse_memory_size(vm["max-memory"].as<std::string>());
-    const aco::MemoryLimit memory(max_memory);
-
-    std::vector<std::filesystem::path> dirs(plugin_dirs.begin(), plugin_dirs.end());
-    aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs(dirs));
+    const aco::MemoryLimit memory(host.max_memory_bytes());
+    aco::PluginRegistry registry(host.plugin_search_dirs());
     acosim::Scenario scenario = acosim::load_scenario(scenario_file, registry);
     {
       aco::KeyedValues changes;
@@ -124,13 +99,12 @@ int main(int argc, char** argv) {
       if (!changes.keys.empty()) scenario = acosim::with_run_keys(scenario, changes, registry);
     }
     if (vm.count("batch")) {
-      const int n = vm["batch"].as<int>(), threads = vm["threads"].as<int>();
+      const int n = vm["batch"].as<int>(), threads = host.threads;
       if (n < 1) throw aco::Error("--batch: N must be at least 1");
-      if (threads < 0) throw aco::Error("--threads: must be 0 (all cores) or more");
       const std::uint64_t seed = vm["seed"].as<std::uint64_t>();
       if (vm.count("variation-worker")) {
         acosim::serve_variations(scenario, n, seed, registry);
-        return 0;
+        return aco::kExitOk;
       }
       aco::WorkerLimits limits;
       if (vm.count("variation-timeout"))
@@ -164,7 +138,7 @@ int main(int argc, char** argv) {
       for (std::size_t k = 0; k < b.results.size(); ++k)  // to replay with --variation K
         if (!b.results[k].reached)
           std::cout << "variation " << k << ": " << b.results[k].outcome << " (" << b.results[k].reason << ")\n";
-      return 0;
+      return aco::kExitOk;
     }
     if (vm.count("variation")) {
       const int k = vm["variation"].as<int>();
@@ -172,9 +146,9 @@ int main(int argc, char** argv) {
       scenario = acosim::variations(scenario, k + 1, vm["seed"].as<std::uint64_t>(), registry)[k];
     }
     const acosim::SimulationResult result = acosim::simulate(scenario, registry);
-    if (!csv.empty()) write(csv, acosim::trajectory_csv(result));
-    if (!svg.empty()) write(svg, acosim::render_svg(scenario, result));
-    if (!html.empty()) write(html, acosim::render_html(scenario, result));
+    if (!csv.empty()) aco::write_output_file(csv, acosim::trajectory_csv(result), "trajectory CSV");
+    if (!svg.empty()) aco::write_output_file(svg, acosim::render_svg(scenario, result), "SVG");
+    if (!html.empty()) aco::write_output_file(html, acosim::render_html(scenario, result), "HTML player");
     if (vm["json"].as<bool>()) {
       std::cout << acosim::summary_json(scenario, result, registry) << "\n";
     } else {
@@ -185,11 +159,6 @@ int main(int argc, char** argv) {
                 << "clearance: " << result.min_clearance << " (smallest)\n"
                 << "collisions " << result.collisions << ", replans " << result.replans << "\n";
     }
-    return result.reached ? 0 : kExitNotReached;
-  } catch (po::error& e) {
-    report_error(aco::program_options_message(e));
-  } catch (...) {  // anything, a std::exception or not, is reported and exits 1
-    report_error(aco::describe_current_exception());
-  }
-  return kExitError;
+    return result.reached ? aco::kExitOk : aco::kExitNoPath;
+  });
 }

@@ -12,6 +12,7 @@
 #include "aco/colony.hpp"
 #include "aco/error.hpp"
 #include "aco/parameters.hpp"
+#include "aco/pipeline.hpp"
 
 namespace aco {
 namespace {
@@ -94,12 +95,17 @@ class ParameterFile {
 
   // `option` without its dashes, e.g. "update.rho". acoplan's booleans only take a value after
   // "=", so their switch ends with "=" (irace joins switch and value without a space).
-  void add(const std::string& name, const std::string& option, const aco::ParamSpec& spec,
+  // Returns whether the parameter is tuned (false: written as skipped, with the reason).
+  bool add(const std::string& name, const std::string& option, const aco::ParamSpec& spec,
            const std::string& condition = "") {
     const Domain d = domain(spec);
-    if (!d.skipped.empty()) return comment("skipped --" + option + ": " + d.skipped);
+    if (!d.skipped.empty()) {
+      comment("skipped --" + option + ": " + d.skipped);
+      return false;
+    }
     const std::string flag = "--" + option + (spec.type == aco::ParamType::boolean ? "=" : " ");
     line(name, flag, d.type + " " + d.values, condition);
+    return true;
   }
 
   void line(const std::string& name, const std::string& flag, const std::string& domain, const std::string& condition) {
@@ -152,6 +158,27 @@ void add_slot(ParameterFile& file, aco::PluginRegistry& registry, const std::str
 }
 
 }  // namespace
+
+std::string irace_plugin_parameters(aco::PluginRegistry& registry, const std::string& plugin) {
+  const auto slash = plugin.find('/');
+  const std::string slot = plugin.substr(0, slash), name = slash == std::string::npos ? "" : plugin.substr(slash + 1);
+  if (name.empty()) throw aco::Error("--irace-plugin: '" + plugin + "' is not SLOT/NAME (e.g. update/acs)");
+  if (std::find(aco::kSlots.begin(), aco::kSlots.end(), slot) == aco::kSlots.end()) {
+    std::string message = "--irace-plugin " + plugin + ": '" + slot + "' is not a slot (slots:";
+    for (const char* known : aco::kSlots) message += std::string(" ") + known;
+    throw aco::Error(message + ")");
+  }
+  const aco::PluginDescriptor& descriptor = registry.load(slot, name);
+  ParameterFile file;
+  file.comment(plugin + " only: its slot fixed to it; the colony and the other slots as the target runner's options set them");
+  file.line(slot, "--" + slot + " ", "c (" + name + ")", "");
+  std::size_t tuned = 0;
+  for (const auto& spec : descriptor.parameters()) tuned += file.add(irace_name(slot + "_" + spec.name), slot + "." + spec.name, spec);
+  if (tuned == 0)
+    throw aco::Error("--irace-plugin " + plugin + ": no parameter irace can tune (a plugin needs a numeric, boolean or "
+                     "categorical parameter; --describe " + plugin + " lists them)");
+  return file.text();
+}
 
 std::string irace_parameters(aco::PluginRegistry& registry, const std::vector<std::string>& slots) {
   ParameterFile file;

@@ -1,6 +1,6 @@
 // aco-plugin-check FILE.so|FOLDER...: the conformance checks (aco/conformance.hpp) on every plugin
 // in each file (a folder: each aco_*.so in it), one line per check, then the failures again;
-// exits 1 if any check failed, 2 on a usage error.
+// exits 1 (aco::kExitError) if any check failed, 2 (aco::kExitUsage) on a usage error.
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -9,86 +9,89 @@
 #include <vector>
 
 #include "aco/conformance.hpp"
+#include "aco/host_options.hpp"
 #include "aco/version.hpp"
 
 int main(int argc, char** argv) {
-  const std::string usage =
-      "usage: aco-plugin-check [--integer-cap N] [--set NAME=VALUE]... FILE.so|FOLDER...   (or --version)\n"
-      "Runs every plugin in each file at its defaults and at the ends of its parameter ranges on tiny maps and\n"
-      "checks that its values are finite and non-negative, that it is deterministic per seed, and that 1 and 4\n"
-      "threads give the same result. Whole-number range ends above N (default 100) are run at N. --set gives a\n"
-      "parameter the value every run starts from (a text parameter, such as the python plugins' class). A FOLDER\n"
-      "checks every plugin library (aco_*.so) in it.\n";
-  aco::conformance::Options options;
-  std::vector<std::string> files;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::cout << usage;
-      return 0;
-    }
-    if (arg == "--version") {
-      std::cout << aco::version_text("aco-plugin-check") << "\n";
-      return 0;
-    }
-    if (arg == "--integer-cap") {
-      char* end = nullptr;
-      const long long cap = i + 1 < argc ? std::strtoll(argv[i + 1], &end, 10) : 0;
-      if (i + 1 >= argc || *end != '\0' || cap < 1) {
-        std::cerr << "aco-plugin-check: --integer-cap needs a whole number >= 1\n" << usage;
-        return 2;
+  return aco::run_command("aco-plugin-check", [&] {
+    const std::string usage =
+        "usage: aco-plugin-check [--integer-cap N] [--set NAME=VALUE]... FILE.so|FOLDER...   (or --version)\n"
+        "Runs every plugin in each file at its defaults and at the ends of its parameter ranges on tiny maps and\n"
+        "checks that its values are finite and non-negative, that it is deterministic per seed, and that 1 and 4\n"
+        "threads give the same result. Whole-number range ends above N (default 100) are run at N. --set gives a\n"
+        "parameter the value every run starts from (a text parameter, such as the python plugins' class). A FOLDER\n"
+        "checks every plugin library (aco_*.so) in it.\n";
+    aco::conformance::Options options;
+    std::vector<std::string> files;
+    for (int i = 1; i < argc; ++i) {
+      const std::string arg = argv[i];
+      if (arg == "--help" || arg == "-h") {
+        std::cout << usage;
+        return aco::kExitOk;
       }
-      options.integer_cap = cap;
-      ++i;
-    } else if (arg == "--set") {
-      const std::string setting = i + 1 < argc ? argv[i + 1] : "";
-      const auto equals = setting.find('=');
-      if (equals == std::string::npos || equals == 0) {
-        std::cerr << "aco-plugin-check: --set needs NAME=VALUE\n" << usage;
-        return 2;
+      if (arg == "--version") {
+        std::cout << aco::version_text("aco-plugin-check") << "\n";
+        return aco::kExitOk;
       }
-      options.fixed[setting.substr(0, equals)] = setting.substr(equals + 1);
-      ++i;
-    } else if (arg.rfind("--", 0) == 0) {
-      std::cerr << "aco-plugin-check: unknown option " << arg << "\n" << usage;
-      return 2;
-    } else if (std::filesystem::is_directory(arg)) {
-      std::vector<std::string> in_folder;
-      for (const auto& entry : std::filesystem::directory_iterator(arg)) {
-        const std::string name = entry.path().filename().string();
-        if (name.rfind("aco_", 0) == 0 && entry.path().extension() == ".so") in_folder.push_back(entry.path().string());
+      if (arg == "--integer-cap") {
+        char* end = nullptr;
+        const long long cap = i + 1 < argc ? std::strtoll(argv[i + 1], &end, 10) : 0;
+        if (i + 1 >= argc || *end != '\0' || cap < 1) {
+          std::cerr << "aco-plugin-check: --integer-cap needs a whole number >= 1\n" << usage;
+          return aco::kExitUsage;
+        }
+        options.integer_cap = cap;
+        ++i;
+      } else if (arg == "--set") {
+        const std::string setting = i + 1 < argc ? argv[i + 1] : "";
+        const auto equals = setting.find('=');
+        if (equals == std::string::npos || equals == 0) {
+          std::cerr << "aco-plugin-check: --set needs NAME=VALUE\n" << usage;
+          return aco::kExitUsage;
+        }
+        options.fixed[setting.substr(0, equals)] = setting.substr(equals + 1);
+        ++i;
+      } else if (arg.rfind("--", 0) == 0) {
+        std::cerr << "aco-plugin-check: unknown option " << arg << "\n" << usage;
+        return aco::kExitUsage;
+      } else if (std::filesystem::is_directory(arg)) {
+        std::vector<std::string> in_folder;
+        for (const auto& entry : std::filesystem::directory_iterator(arg)) {
+          const std::string name = entry.path().filename().string();
+          if (name.rfind("aco_", 0) == 0 && entry.path().extension() == ".so") in_folder.push_back(entry.path().string());
+        }
+        if (in_folder.empty()) {
+          std::cerr << "aco-plugin-check: " << arg << ": a folder with no plugin library (aco_*.so) in it\n";
+          return aco::kExitUsage;
+        }
+        std::sort(in_folder.begin(), in_folder.end());
+        files.insert(files.end(), in_folder.begin(), in_folder.end());
+      } else {
+        files.push_back(arg);
       }
-      if (in_folder.empty()) {
-        std::cerr << "aco-plugin-check: " << arg << ": a folder with no plugin library (aco_*.so) in it\n";
-        return 2;
-      }
-      std::sort(in_folder.begin(), in_folder.end());
-      files.insert(files.end(), in_folder.begin(), in_folder.end());
-    } else {
-      files.push_back(arg);
     }
-  }
-  if (files.empty()) {
-    std::cerr << usage;
-    return 2;
-  }
-  int checks = 0, failed = 0;
-  std::vector<std::string> failures;
-  for (const auto& file : files) {
-    try {
-      failed += aco::conformance::check_file(file, options, [&](const aco::conformance::CheckResult& result) {
-        ++checks;
-        std::cout << result.line() << std::endl;
-        if (result.status == aco::conformance::CheckResult::Status::fail) failures.push_back(result.line());
-      });
-    } catch (const std::exception& e) {  // a file that is no plugin, or cannot load: the others are still checked
-      const std::string line = "FAIL " + file + " loads: " + e.what();
-      std::cout << line << std::endl;
-      failures.push_back(line);
-      ++checks, ++failed;
+    if (files.empty()) {
+      std::cerr << usage;
+      return aco::kExitUsage;
     }
-  }
-  std::cout << "aco-plugin-check: " << checks << " checks, " << failed << " failed\n";
-  for (const auto& failure : failures) std::cout << "  " << failure << "\n";
-  return failed == 0 ? 0 : 1;
+    int checks = 0, failed = 0;
+    std::vector<std::string> failures;
+    for (const auto& file : files) {
+      try {
+        failed += aco::conformance::check_file(file, options, [&](const aco::conformance::CheckResult& result) {
+          ++checks;
+          std::cout << result.line() << std::endl;
+          if (result.status == aco::conformance::CheckResult::Status::fail) failures.push_back(result.line());
+        });
+      } catch (const std::exception& e) {  // a file that is no plugin, or cannot load: the others are still checked
+        const std::string line = "FAIL " + file + " loads: " + e.what();
+        std::cout << line << std::endl;
+        failures.push_back(line);
+        ++checks, ++failed;
+      }
+    }
+    std::cout << "aco-plugin-check: " << checks << " checks, " << failed << " failed\n";
+    for (const auto& failure : failures) std::cout << "  " << failure << "\n";
+    return failed == 0 ? aco::kExitOk : aco::kExitError;
+  });
 }

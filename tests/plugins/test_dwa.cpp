@@ -119,7 +119,7 @@ TEST_CASE("dwa drives to a goal in the open straight, speeding up as fast as its
   CHECK(d.final.heading == 0.0);
 }
 
-TEST_CASE("dwa never takes a velocity that hits a cell, and stops rather than collides when boxed in", "[dwa]") {
+TEST_CASE("dwa never takes a velocity that hits a cell, and stops rather than collides when boxed in", "[dwa][slow]") {
   auto dwa = test::make<aco::LocalPlanner>("local", "dwa");
   auto track = test::make<aco::LocalPlanner>("local", "track");
   SECTION("a box with no way out") {

@@ -1,27 +1,37 @@
 #!/usr/bin/env bash
 # Tunes acoplan with irace: prepares TUNING_DIR and runs irace on tools/irace/scenario.txt there.
-#   tools/irace/run.sh [--slots SLOTS] TUNING_DIR [IRACE_OPTIONS...]
+#   tools/irace/run.sh [--slots SLOTS | --plugin SLOT/NAME] TUNING_DIR [IRACE_OPTIONS...]
+# (installed with the SDK: aco-irace, the same arguments).
 # --slots: the slots whose plugin irace chooses (acoplan --irace-slots; default all but local).
+# --plugin: only that plugin's parameters, its slot fixed to it (acoplan --irace-plugin).
 # IRACE_OPTIONS go to irace as they are, e.g. --max-experiments 200 --parallel 2 --seed 1.
-# ACOPLAN, ACOPLAN_OPTIONS: as for target-runner. An option set in ACOPLAN_OPTIONS is fixed, so
-# its line is taken out of the parameter file (acoplan refuses an option given twice).
+# ACOPLAN, ACOPLAN_OPTIONS: as for target-runner; the parameter file is written by that acoplan
+# with those options too, so a --plugin-dir there finds the same plugins. An option set in
+# ACOPLAN_OPTIONS is fixed, so its line is taken out of the parameter file (acoplan refuses an
+# option given twice).
 # Leaves in TUNING_DIR: parameters.txt, forbidden.txt, irace.log (irace's output), irace.Rdata,
 # and best-options.txt: the acoplan options of the best configuration, one line (when irace raced).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-slots=()
-if [ "${1:-}" = "--slots" ]; then
-  [ $# -ge 2 ] || { echo "run.sh: --slots needs a value" >&2; exit 1; }
-  slots=(--irace-slots "$2")
-  shift 2
-fi
+usage="usage: $(basename "$0") [--slots SLOTS | --plugin SLOT/NAME] TUNING_DIR [IRACE_OPTIONS...]"
+choice=()
+case "${1:-}" in
+  --help | -h) echo "$usage"; echo "(tools/irace/README.md, installed as share/aco/irace/README.md, says more)"; exit 0 ;;
+  --slots | --plugin)
+    [ $# -ge 2 ] || { echo "run.sh: $1 needs a value" >&2; exit 2; }
+    [ "$1" = --slots ] && choice=(--irace-slots "$2") || choice=(--irace-plugin "$2")
+    shift 2 ;;
+esac
 if [ $# -lt 1 ] || [[ "$1" == -* ]]; then
-  echo "usage: $0 [--slots SLOTS] TUNING_DIR [IRACE_OPTIONS...]" >&2
-  exit 1
+  echo "$usage" >&2
+  exit 2
 fi
 dir="$1"
 shift
-acoplan="${ACOPLAN:-$here/../../build/release/hosts/acoplan/acoplan}"
+# The target runner (irace's child) runs the same acoplan.
+export ACOPLAN="${ACOPLAN:-$here/../../build/release/hosts/acoplan/acoplan}"
+acoplan="$ACOPLAN"
+[ -x "$acoplan" ] || { echo "run.sh: no acoplan at $acoplan: set ACOPLAN, or build the tree (tools/build.sh release)" >&2; exit 1; }
 if ! Rscript -e 'library(irace)' >/dev/null 2>&1; then
   echo "run.sh: irace is not installed (tools/setup.sh installs the Debian package r-cran-irace)" >&2
   exit 1
@@ -29,7 +39,8 @@ fi
 mkdir -p "$dir"
 dir="$(cd "$dir" && pwd)"
 
-"$acoplan" --dump-irace-params "$dir/parameters.txt" "${slots[@]}"
+# shellcheck disable=SC2086  # the options are words, as target-runner passes them
+"$acoplan" --dump-irace-params "$dir/parameters.txt" "${choice[@]}" ${ACOPLAN_OPTIONS-}
 # shellcheck disable=SC2086  # the options are words, as target-runner passes them
 for word in ${ACOPLAN_OPTIONS-}; do
   [[ "$word" == --* ]] || continue

@@ -14,4 +14,10 @@ namespace aco {
 // made finite and closed by the rule stated in the file's header.
 std::string irace_parameters(PluginRegistry& registry, const std::vector<std::string>& slots);
 
+// The parameter file of one plugin (`plugin`: "update/mine"): its slot fixed to it (a choice of
+// one, so irace passes --update mine itself) and the plugin's parameters; the colony and the
+// other slots stay as the target runner's acoplan options set them. An Error names a `plugin`
+// that is not SLOT/NAME of a plugin found, or one whose parameters irace cannot tune.
+std::string irace_plugin_parameters(PluginRegistry& registry, const std::string& plugin);
+
 }  // namespace aco

@@ -317,8 +317,10 @@ int report(const std::vector<std::string>& args) {
   po::variables_map vm;
   po::store(po::command_line_parser(args).options(options).positional(positional).run(), vm);
   po::notify(vm);
-  const auto files = acobench::write_report(vm["database"].as<std::string>(), out);
+  std::vector<std::string> warnings;
+  const auto files = acobench::write_report(vm["database"].as<std::string>(), out, &warnings);
   for (const auto& f : files) std::cout << f.string() << "\n";
+  for (const auto& warning : warnings) std::cerr << "acobench: warning: " << warning << "\n";
   return 0;
 }
 

@@ -22,12 +22,13 @@ namespace {
 using aco::Error;
 
 // Bumped whenever the tables change in a way older readers would misread.
-// 2: the simulation columns of runs; 3: runs.error; 4: progress.walks, progress.time measured.
-const std::string kFormatVersion = "4";
+// 2: the simulation columns of runs; 3: runs.error; 4: progress.walks, progress.time measured;
+// 5: the properties table, plannerConfigs.plugins.
+const std::string kFormatVersion = "5";
 
 // This version, or an earlier one upgrade() brings to it.
 bool upgradable(const std::string& version) {
-  return version == kFormatVersion || version == "1" || version == "2" || version == "3";
+  return version == kFormatVersion || version == "1" || version == "2" || version == "3" || version == "4";
 }
 
 // OMPL's tables (as ompl_benchmark_statistics.py creates them) with our run and progress
@@ -36,7 +37,8 @@ const char* const kSchema = R"(
 CREATE TABLE experiments (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512), totaltime REAL,
   timelimit REAL, memorylimit REAL, runcount INTEGER, version VARCHAR(128), hostname VARCHAR(1024),
   cpuinfo TEXT, date DATETIME, seed VARCHAR(24), setup TEXT, optimal_length REAL);
-CREATE TABLE plannerConfigs (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512) NOT NULL, settings TEXT);
+CREATE TABLE plannerConfigs (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512) NOT NULL, settings TEXT,
+  plugins TEXT);
 CREATE TABLE enums (name VARCHAR(512), value INTEGER, description TEXT, PRIMARY KEY (name, value));
 CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, plannerid INTEGER,
   repetition INTEGER, seed INTEGER, solved BOOLEAN, length REAL, grid_length REAL, gap REAL,
@@ -49,6 +51,14 @@ CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, p
 CREATE TABLE progress (runid INTEGER, time REAL, iteration INTEGER, best_cost REAL, walks INTEGER,
   PRIMARY KEY (runid, iteration), FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
 CREATE TABLE acobench_meta (key TEXT PRIMARY KEY, value TEXT);
+)";
+
+// A generic name/value table per run, as OMPL's run properties but as rows, not columns: the
+// planners' properties and the figures plugins record vary with the configuration. SQLite keeps
+// each value's type (integer, real or text).
+const char* const kPropertiesTable = R"(
+CREATE TABLE properties (runid INTEGER, name TEXT NOT NULL, value, PRIMARY KEY (runid, name),
+  FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
 )";
 
 // One connection; every failure becomes an Error naming the file and SQLite's reason.
@@ -118,6 +128,14 @@ class Statement {
   }
 
   bool null(int column) const { return sqlite3_column_type(stmt_, column) == SQLITE_NULL; }
+  // A value of a column without a declared type, as SQLite stored it.
+  aco::ParamValue value(int column) const {
+    switch (sqlite3_column_type(stmt_, column)) {
+      case SQLITE_INTEGER: return integer(column);
+      case SQLITE_FLOAT: return real(column);
+      default: return text(column);
+    }
+  }
   std::int64_t integer(int column) const { return sqlite3_column_int64(stmt_, column); }
   double real(int column) const { return sqlite3_column_double(stmt_, column); }
   std::string text(int column) const {
@@ -128,6 +146,7 @@ class Statement {
  private:
   void bind(int i, std::int64_t v) { db_.check(sqlite3_bind_int64(stmt_, i, v), sql_); }
   void bind(int i, int v) { bind(i, static_cast<std::int64_t>(v)); }
+  void bind(int i, bool v) { bind(i, static_cast<std::int64_t>(v)); }
   void bind(int i, double v) {
     db_.check(std::isnan(v) ? sqlite3_bind_null(stmt_, i) : sqlite3_bind_double(stmt_, i, v), sql_);
   }
@@ -225,7 +244,7 @@ struct ResultsDb::Impl {
   std::map<std::int64_t, int> problem_of;    // by experiment id
   std::vector<ProblemRecord> problems;
   std::map<int, std::string> config_names;  // by id
-  std::optional<Statement> find_run, insert_run, insert_progress, add_time;
+  std::optional<Statement> find_run, insert_run, insert_progress, insert_property, add_time;
 
   std::string file() const { return db.file(); }
   void load();  // the problems, configurations and statements of an opened database
@@ -254,9 +273,11 @@ struct ResultsDb::Impl {
     return stored;
   }
 
-  // Formats 1 to 3 lack columns (1: the simulation measures of runs, 2: runs.error, 3:
-  // progress.walks): they are added, NULL for the stored rows, so results of earlier runs are
-  // resumed and reported. Their progress times stay the estimates they were; a NULL walks marks them.
+  // Formats 1 to 4 lack columns (1: the simulation measures of runs, 2: runs.error, 3:
+  // progress.walks, 4: plannerConfigs.plugins) or the properties table: they are added, NULL or
+  // empty for the stored rows, so results of earlier runs are resumed and reported. Their progress
+  // times stay the estimates they were; a NULL walks marks them. Their runs have no properties
+  // but ant_steps and stopped_by, which the runs table holds.
   void upgrade() {
     if (meta().at("format_version") == kFormatVersion) return;
     const auto columns_of = [&](const std::string& table) {
@@ -267,14 +288,17 @@ struct ResultsDb::Impl {
       return present;
     };
     const std::map<std::string, std::set<std::string>> present{{"runs", columns_of("runs")},
-                                                               {"progress", columns_of("progress")}};
+                                                               {"progress", columns_of("progress")},
+                                                               {"plannerConfigs", columns_of("plannerConfigs")}};
+    const bool has_properties = tables().contains("properties");
     Transaction transaction(db);
     for (const auto& [table, column] : std::initializer_list<std::pair<std::string, std::string>>{
              {"runs", "outcome TEXT"}, {"runs", "time_to_goal REAL"}, {"runs", "collisions INTEGER"},
              {"runs", "replans INTEGER"}, {"runs", "clearance REAL"}, {"runs", "control_steps INTEGER"},
-             {"runs", "error TEXT"}, {"progress", "walks INTEGER"}})
+             {"runs", "error TEXT"}, {"progress", "walks INTEGER"}, {"plannerConfigs", "plugins TEXT"}})
       if (!present.at(table).contains(column.substr(0, column.find(' '))))
         db.exec("ALTER TABLE " + table + " ADD COLUMN " + column);
+    if (!has_properties) db.exec(kPropertiesTable);
     Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
     set.run(kFormatVersion).finish();
     transaction.commit();
@@ -322,6 +346,7 @@ struct ResultsDb::Impl {
     Transaction transaction(db);
     if (!tables().empty()) return false;
     db.exec(kSchema);
+    db.exec(kPropertiesTable);
     Statement set(db, "INSERT INTO acobench_meta (key, value) VALUES (?1, ?2)");
     set.run(std::string("format_version"), kFormatVersion).finish();
     set.run(std::string("experiment_name"), experiment_name).finish();
@@ -434,6 +459,7 @@ void ResultsDb::Impl::load() {
                        "collisions, replans, clearance, control_steps, error) "
                        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22)");
   insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost, walks) VALUES (?1, ?2, ?3, ?4, ?5)");
+  insert_property.emplace(db, "INSERT INTO properties (runid, name, value) VALUES (?1, ?2, ?3)");
   add_time.emplace(db, "UPDATE experiments SET totaltime = totaltime + ?2 WHERE id = ?1");
 }
 
@@ -446,14 +472,22 @@ int ResultsDb::add_config(const ConfigRecord& config) {
   Transaction transaction(d.db);
   Statement find(d.db, "SELECT id, settings FROM plannerConfigs WHERE name = ?1");
   find.run(config.name);
+  // The plugin files as this run found them: a rerun from another build folder updates them.
+  const auto plugins = config.plugins_json.empty() ? std::nullopt : std::optional(config.plugins_json);
   if (find.next()) {
     if (parse_json(find.text(1), "the stored settings of configuration " + in_quotes(config.name)) != settings)
       throw Error(d.file() + " already holds a configuration " + in_quotes(config.name) + " with other settings: " +
                   find.text(1) + ", now " + config.settings_json);
-    return static_cast<int>(find.integer(0));
+    const auto id = static_cast<int>(find.integer(0));
+    if (plugins) {
+      Statement update(d.db, "UPDATE plannerConfigs SET plugins = ?2 WHERE id = ?1");
+      update.run(id, *plugins).finish();
+      transaction.commit();
+    }
+    return id;
   }
-  Statement add(d.db, "INSERT INTO plannerConfigs (name, settings) VALUES (?1, ?2)");
-  add.run(config.name, config.settings_json).finish();
+  Statement add(d.db, "INSERT INTO plannerConfigs (name, settings, plugins) VALUES (?1, ?2, ?3)");
+  add.run(config.name, config.settings_json, plugins).finish();
   const auto id = static_cast<int>(sqlite3_last_insert_rowid(d.db.handle()));
   transaction.commit();
   d.config_names[id] = config.name;
@@ -500,6 +534,8 @@ void ResultsDb::store(const TrialRecord& t) {
               measured ? std::optional(to_sql(t.walks[at])) : std::nullopt)
         .finish();
   }
+  for (const auto& [name, value] : t.properties)
+    std::visit([&](const auto& v) { d.insert_property->run(run, name, v).finish(); }, value);
   d.add_time->run(experiment, t.time_s).finish();
   transaction.commit();
 }
@@ -513,9 +549,9 @@ std::vector<std::pair<int, ConfigRecord>> ResultsDb::configs() const {
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
   std::vector<std::pair<int, ConfigRecord>> all;
-  Statement read(d.db, "SELECT id, name, settings FROM plannerConfigs ORDER BY id");
+  Statement read(d.db, "SELECT id, name, settings, plugins FROM plannerConfigs ORDER BY id");
   read.run();
-  while (read.next()) all.push_back({static_cast<int>(read.integer(0)), {read.text(1), read.text(2)}});
+  while (read.next()) all.push_back({static_cast<int>(read.integer(0)), {read.text(1), read.text(2), read.text(3)}});
   return all;
 }
 
@@ -529,6 +565,7 @@ std::vector<TrialRecord> ResultsDb::trials() const {
                  "control_steps, error FROM runs "
                  "ORDER BY experimentid, plannerid, repetition");
   Statement progress(d.db, "SELECT best_cost, time, walks FROM progress WHERE runid = ?1 ORDER BY iteration");
+  Statement properties(d.db, "SELECT name, value FROM properties WHERE runid = ?1");
   runs.run();
   while (runs.next()) {
     TrialRecord t;
@@ -566,6 +603,8 @@ std::vector<TrialRecord> ResultsDb::trials() const {
       t.elapsed_s.clear();
       t.walks.clear();
     }
+    properties.run(runs.integer(0));
+    while (properties.next()) t.properties[properties.text(0)] = properties.value(1);
     all.push_back(std::move(t));
   }
   return all;

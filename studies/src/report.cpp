@@ -773,7 +773,7 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
   const double scale = std::max(2.0, std::min(24.0, 480.0 / std::max(w, h)));
   const double cell = w > 1 ? map->position({1, 0}).x() - map->position({0, 0}).x() : 1.0;
   std::ostringstream svg;
-  svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w * scale + 200 << "\" height=\"" << h * scale
+  svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w * scale + 240 << "\" height=\"" << h * scale
       << "\"><rect width=\"" << w * scale << "\" height=\"" << h * scale << "\" fill=\"#fff\" stroke=\"#999\"/>";
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)

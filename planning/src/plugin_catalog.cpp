@@ -63,7 +63,7 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
   out << d.kind << "/" << d.name << " " << d.version << ": " << d.summary << "\n"
       << "file: " << matches[0]->file.string() << "\n"
       << shadow_lines(*matches[0]) << "built by: " << matches[0]->record.compiler << ", "
-      << matches[0]->record.stdlib << "\n";
+      << matches[0]->record.stdlib << ", " << matches[0]->record.build << "\n";
   if (d.param_count == 0) {
     out << "no parameters\n";
     return out.str();

@@ -427,9 +427,14 @@ std::vector<std::string> build_warnings(const Analysis& a) {
     warnings.push_back("the trials were run by an unoptimised build of acobench (" + a.host_version +
                        "): their times mean little; run them again with a Release build (cmake --preset release)");
   std::map<std::string, std::vector<std::string>> debug_plugins;  // "slot/name (file)" -> configurations
-  for (const auto& [id, config] : a.configs)
+  for (const auto& [id, config] : a.configs) {
+    // Another planner than the colony runs only the smoother of its pipeline (and acosim the local planner).
+    const auto run = nlohmann::json::parse(config.settings_json).value("run", nlohmann::json::object());
+    const bool colony = run.value("planner", "aco") == "aco";
     for (const PluginUse& use : plugin_uses(config))
-      if (aco::unoptimised(use.build)) debug_plugins[use.slot + "/" + use.name + " (" + use.file + ")"].push_back(config.name);
+      if (aco::unoptimised(use.build) && (colony || use.slot == "smoother" || use.slot == "local"))
+        debug_plugins[use.slot + "/" + use.name + " (" + use.file + ")"].push_back(config.name);
+  }
   for (const auto& [plugin, configs] : debug_plugins) {
     std::string names;
     for (const auto& name : configs) names += (names.empty() ? "'" : ", '") + name + "'";

@@ -71,7 +71,8 @@ grep -q '"update":"rank_based_as","update.q":1.0,"update.rho":0.1,"update.w":4' 
 # The example's own figure (Context::add()) in --json, the summary, and an acobench study's
 # database, runs.csv and report, beside IFWA's evaluations.
 grep -q '"update/rank_based_as.ranked_deposits":[1-9]' <<< "$out"
-"$acoplan" --plugin-dir "$work/rank_based_as/plugins" --update rank_based_as | grep -q "^figures:  update/rank_based_as.ranked_deposits [1-9]"
+summary=$("$acoplan" --plugin-dir "$work/rank_based_as/plugins" --update rank_based_as)
+grep -q "^figures:  .*update/rank_based_as.ranked_deposits [1-9]" <<< "$summary"
 cat > "$work/figures.yaml" <<YAML
 name: figures
 seed: 1

@@ -138,6 +138,8 @@ std::vector<std::string> database_rows(const std::filesystem::path& db) {
         "JOIN plannerConfigs c ON c.id = r.plannerid",
         "SELECT 'progress', " + trial + ", p.iteration, p.best_cost, p.walks FROM progress p JOIN runs r ON r.id = p.runid "
         "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
+        "SELECT 'property', " + trial + ", p.name, p.value, typeof(p.value) FROM properties p JOIN runs r ON r.id = p.runid "
+        "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
         "SELECT 'meta', key, value FROM acobench_meta WHERE key NOT IN ('experiment_file', 'shard')"}) {
     const auto rows = query_rows(handle, sql);
     all.insert(all.end(), rows.begin(), rows.end());

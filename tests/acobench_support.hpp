@@ -33,8 +33,9 @@ std::string file_bytes(const std::filesystem::path& file);
 // Every trial's identity and results, ordered, without the times.
 std::vector<std::string> trial_rows(const std::filesystem::path& db);
 
-// The whole database as text rows, read with SQLite alone, without what may differ between two
-// runs of one experiment: row ids, times, the creation date and host. Two databases of the same
+// The whole database as text rows (the runs' properties and plugin figures included), read with
+// SQLite alone, without what may differ between two runs of one experiment: row ids, times, the
+// creation date and host. Two databases of the same
 // trials give the same rows whatever order the trials were stored in.
 std::vector<std::string> database_rows(const std::filesystem::path& db);
 

@@ -96,6 +96,31 @@ grep -q '"local":"my_local"' <<< "$out"
 out=$("$acoplan" --plugin-dir "$work/rank_based_as/plugins" --update rank_based_as --update.w 4 --json)
 grep -q '"solved":true' <<< "$out"
 grep -q '"update":"rank_based_as","update.q":1.0,"update.rho":0.1,"update.w":4' <<< "$out"
+# The example's own figure (Context::add()) in --json, the summary, and an acobench study's
+# database, runs.csv and report, beside IFWA's evaluations.
+grep -q '"update/rank_based_as.ranked_deposits":[1-9]' <<< "$out"
+summary=$("$acoplan" --plugin-dir "$work/rank_based_as/plugins" --update rank_based_as)
+grep -q "^figures:  .*update/rank_based_as.ranked_deposits [1-9]" <<< "$summary"
+cat > "$work/figures.yaml" <<YAML
+name: figures
+seed: 1
+repetitions: 2
+problems:
+  - {map: $prefix/share/aco/maps/classic20/map1.txt, start: [0, 0], goal: [19, 19]}
+settings: {ants: 10, iterations: 5}
+baseline: {name: ranked, update: rank_based_as}
+configurations:
+  - {name: fireworks, planner: ifwa, ifwa.iterations: 5}
+YAML
+"$bin/acobench" run "$work/figures.yaml" --db "$work/figures.db" --plugin-dir "$work/rank_based_as/plugins" >/dev/null
+"$bin/acobench" report "$work/figures.db" --out "$work/figures-report" >/dev/null
+query() { /usr/bin/python3 -c 'import sqlite3, sys; print(sqlite3.connect(sys.argv[1]).execute(sys.argv[2]).fetchone()[0])' "$work/figures.db" "$1"; }
+[ "$(query "SELECT count(*) FROM properties WHERE name = 'update/rank_based_as.ranked_deposits' AND value > 0")" = 2 ]
+[ "$(query "SELECT count(*) FROM properties WHERE name = 'evaluations' AND value > 0")" = 2 ]
+head -1 "$work/figures-report/runs.csv" | grep -q ",evaluations,update/rank_based_as.ranked_deposits$"
+grep -q "^| ranked | update/rank_based_as.ranked_deposits | 2 |" "$work/figures-report/report.md"
+grep -q "^| ranked | update | rank_based_as | 1.0 | optimised | [0-9a-f]\{64\} | $work/rank_based_as/plugins/aco_update_rank_based_as.so |$" \
+  "$work/figures-report/report.md"
 # The python plugins, when built: the installed helper library runs a Python class, the example
 # Ant System, which plans as the native plugin does.
 if [ -e "$prefix/lib/aco/plugins/aco_update_python.so" ]; then

@@ -531,7 +531,7 @@ TEST_CASE("a report of a database from before the measured times leaves its runs
   CHECK(count_of(html, "class=\"ecdf\"") == 0);
   CHECK_THAT(html, Contains("class=\"convergence\""));  // the per-iteration view is still there
   // Reading it for the report brought it to the current format.
-  CHECK(acobench::ResultsDb(db).meta("format_version") == "5");
+  CHECK(acobench::ResultsDb(db).meta("format_version") == "6");
 }
 
 TEST_CASE("a problem written as a single value is refused with the problem format, not yaml-cpp's exception",

@@ -70,6 +70,10 @@ acobench::TrialRecord trial(int problem, int config_id, int repetition, bool sol
     t.elapsed_s.push_back(0.015625 * i * (repetition + 1));
     t.walks.push_back(static_cast<std::uint64_t>(10 * i));
   }
+  t.properties = {{"ant_steps", std::int64_t{1000 + repetition}},
+                  {"stopped_by", t.stopped_by},
+                  {"update/max_min.restarts", std::int64_t{repetition}},
+                  {"heuristic/mine.share", 0.25 * repetition}};
   return t;
 }
 
@@ -91,6 +95,7 @@ void check_equal(const acobench::TrialRecord& a, const acobench::TrialRecord& b)
   CHECK(a.best_so_far == b.best_so_far);  // infinities compare equal
   CHECK(a.elapsed_s == b.elapsed_s);
   CHECK(a.walks == b.walks);
+  CHECK(a.properties == b.properties);
 }
 
 // Creates the database with one Ant System trial; returns its configuration's id.
@@ -169,7 +174,7 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
   CHECK(configs[1].second.settings_json == config("max_min", 0.02).settings_json);
   CHECK(db.meta("experiment_name") == kName);
   CHECK(db.meta("fingerprint") == kFingerprint);
-  CHECK(db.meta("format_version") == "5");
+  CHECK(db.meta("format_version") == "6");
   REQUIRE_THROWS_WITH(db.meta("colour"), Contains("no 'colour'"));
 
   const auto read = db.trials();
@@ -292,14 +297,16 @@ TEST_CASE("simulation and failed trials store their measures, and a format-1 dat
     for (const char* column : {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps", "error", "failure"})
       sql_exec(file, std::string("ALTER TABLE runs DROP COLUMN ") + column);
     sql_exec(file, "ALTER TABLE progress DROP COLUMN walks");
+    sql_exec(file, "DROP TABLE properties");
+    sql_exec(file, "ALTER TABLE plannerConfigs DROP COLUMN plugins");
     sql_exec(file, "UPDATE acobench_meta SET value = '1' WHERE key = 'format_version'");
   };
   make_format_1();
-  CHECK(acobench::ResultsDb(file).meta("format_version") == "5");  // a report upgrades it too
+  CHECK(acobench::ResultsDb(file).meta("format_version") == "6");  // a report upgrades it too
   make_format_1();
 
   auto db = open(file);
-  CHECK(db.meta("format_version") == "5");
+  CHECK(db.meta("format_version") == "6");
   auto reached = trial(0, id, 1, true, 0);
   reached.simulation = acobench::SimulationRecord{"reached", 87.5, 0, 1, 0.047, 875};
   auto hit = trial(1, id, 0, false, 0);
@@ -343,7 +350,7 @@ TEST_CASE("a format-4 database gains runs.failure from how its failed trials sto
   sql_exec(file, "ALTER TABLE runs DROP COLUMN failure");
   sql_exec(file, "UPDATE acobench_meta SET value = '4' WHERE key = 'format_version'");
   auto db = open(file);
-  CHECK(db.meta("format_version") == "5");
+  CHECK(db.meta("format_version") == "6");
   std::map<int, std::string> failures;
   for (const auto& t : db.trials()) failures[t.repetition * 10 + t.problem] = t.failure;
   // Which of a plugin or the engine's checks threw was not recorded: "error".
@@ -379,7 +386,7 @@ TEST_CASE("a format-3 database gains progress.walks: its runs read back without 
   sql_exec(file, "UPDATE acobench_meta SET value = '3' WHERE key = 'format_version'");
 
   auto db = open(file);
-  CHECK(db.meta("format_version") == "5");
+  CHECK(db.meta("format_version") == "6");
   db.store(trial(0, id, 1));
   const auto read = db.trials();
   REQUIRE(read.size() == 2);
@@ -486,4 +493,30 @@ TEST_CASE("a process killed while storing leaves whole trials, and a rerun conti
     if (!done.contains({repetition % 2, id, repetition})) db.store(trial(repetition % 2, id, repetition, true, 10));
   CHECK(db.finished().size() == static_cast<std::size_t>(wanted));
   CHECK(sql_value(file, "SELECT max(repetition) FROM runs") == std::to_string(wanted - 1));
+}
+
+TEST_CASE("a trial's properties are rows of their own with their types, and a format-4 database gains the table and resumes",
+          "[resultsdb][figures]") {
+  const fs::path file = fresh_db();
+  const int id = with_one_trial(file);
+  CHECK(sql_value(file, "SELECT value FROM properties WHERE name = 'update/max_min.restarts'") == "0");
+  CHECK(sql_value(file, "SELECT typeof(value) FROM properties WHERE name = 'update/max_min.restarts'") == "integer");
+  CHECK(sql_value(file, "SELECT typeof(value) FROM properties WHERE name = 'heuristic/mine.share'") == "real");
+  CHECK(sql_value(file, "SELECT value FROM properties WHERE name = 'stopped_by'") == "stagnation");
+  // What acobench before the properties wrote: no properties table, no plugins of a configuration.
+  sql_exec(file, "DROP TABLE properties");
+  sql_exec(file, "ALTER TABLE plannerConfigs DROP COLUMN plugins");
+  sql_exec(file, "UPDATE acobench_meta SET value = '4' WHERE key = 'format_version'");
+
+  auto db = open(file);
+  CHECK(db.meta("format_version") == "6");
+  acobench::ConfigRecord same = config("ant_system", 0.1);
+  same.plugins_json = R"({"update":{"name":"ant_system","build":"optimised"}})";
+  CHECK(db.add_config(same) == id);  // the same configuration, now with its plugins
+  CHECK(db.configs().front().second.plugins_json == same.plugins_json);
+  db.store(trial(0, id, 1));
+  const auto read = db.trials();
+  REQUIRE(read.size() == 2);
+  CHECK(read[0].properties.empty());  // stored before properties were
+  check_equal(read[1], trial(0, id, 1));
 }

@@ -24,12 +24,18 @@ class RankBasedUpdate final : public aco::PheromoneUpdate {
  public:
   explicit RankBasedUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
-  void update(const aco::Context&, const aco::Iteration& it, std::span<double> tau) override {
+  // Every run's figures hold the count, the runs with no ranked deposit too.
+  void start(const aco::Context& c, std::span<double>) override { c.add("ranked_deposits", 0); }
+
+  void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
     aco::evaporate(tau, p_.rho);
     // Shortest first, ties in ant order: the ranking, and so the run, is deterministic.
     const std::vector<const aco::Ant*> ranked = aco::arrived_by_length(it.ants);
-    for (std::size_t r = 1; r <= ranked.size() && r < static_cast<std::size_t>(p_.w); ++r)
+    std::size_t r = 1;
+    for (; r <= ranked.size() && r < static_cast<std::size_t>(p_.w); ++r)
       deposit(tau, *ranked[r - 1], (p_.w - static_cast<double>(r)) * p_.q);
+    // Deposits by rank over the run: below (w - 1) per iteration, too few ants arrived to rank.
+    c.add("ranked_deposits", static_cast<std::int64_t>(r - 1));
     if (it.best_so_far) deposit(tau, *it.best_so_far, p_.w * p_.q);
   }
 

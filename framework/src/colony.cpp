@@ -19,6 +19,7 @@
 
 #include "aco/dead_ends.hpp"
 #include "aco/error.hpp"
+#include "aco/figures.hpp"
 #include "aco/local_search.hpp"
 #include "aco/parallel.hpp"
 #include "aco/plugin_error.hpp"
@@ -123,6 +124,7 @@ class Colony {
     context_.alpha = settings.alpha;
     context_.beta = settings.beta;
     context_.seed = settings.seed;
+    context_.figures = pipeline.figures;
     const auto edges = static_cast<std::size_t>(graph.num_edges());
     for (std::vector<double>* field : {&tau_, &eta_beta_}) {
       field->reserve(edges);
@@ -164,6 +166,11 @@ class Colony {
     if (s_.walk_limit > 0.0 && has_best_)
       max_moves_ = static_cast<std::uint64_t>(std::ceil(s_.walk_limit * static_cast<double>(best_.edges.size())));
     if (iteration > 0 && p_.heuristic->varies_by_iteration() && !by_node_) compute_heuristic();
+  }
+
+  // Brackets the ants' construction, whose hooks run on several threads (see FigureSink).
+  void set_parallel(bool parallel) {
+    if (context_.figures) context_.figures->set_parallel(parallel);
   }
 
   Scratch& local_scratch() { return scratch_->local(); }
@@ -479,8 +486,9 @@ ColonyResult iterate(const ColonySettings& s, std::span<Colony* const> colonies,
   for (Colony* colony : colonies) colony->begin();
   int last_improvement = 0;
   for (int it = 0; it < s.iterations; ++it) {
-    for (Colony* colony : colonies) colony->prepare(it);
+    for (Colony* colony : colonies) colony->prepare(it), colony->set_parallel(true);
     result.ant_steps += construct(it);
+    for (Colony* colony : colonies) colony->set_parallel(false);
 
     int arrived = 0;
     for (const Ant& ant : ants[0]) arrived += ant.arrived ? 1 : 0;

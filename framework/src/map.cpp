@@ -6,6 +6,7 @@ namespace aco {
 
 Error::~Error() = default;
 OutOfMemoryError::~OutOfMemoryError() = default;
+PluginFault::~PluginFault() = default;
 Map::~Map() = default;
 
 std::string to_string(Cell c) {

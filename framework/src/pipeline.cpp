@@ -27,11 +27,15 @@ LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec) {
 }
 
 ColonyResult run_colony(PluginRegistry& registry, const PipelineSpec& spec, const LoadedPipeline& pipeline,
-                        const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings) {
-  if (!settings.bidirectional) return run_colony(graph, start, goal, pipeline.colony(), settings);
+                        const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings,
+                        FigureSink* figures) {
+  Pipeline forward = pipeline.colony();
+  forward.figures = figures;
+  if (!settings.bidirectional) return run_colony(graph, start, goal, forward, settings);
   const LoadedPipeline backward = instantiate(registry, spec);
-  const Pipeline backward_colony = backward.colony();
-  return run_colony(graph, start, goal, pipeline.colony(), settings, &backward_colony);
+  Pipeline backward_colony = backward.colony();
+  backward_colony.figures = figures;
+  return run_colony(graph, start, goal, forward, settings, &backward_colony);
 }
 
 }  // namespace aco

@@ -17,11 +17,6 @@ constexpr const char* kIterationNumbering = " (0-based, as Context::iteration)";
 
 // The innermost guarded call of this thread. Plain pointers and an int: a signal handler reads
 // them without allocating.
-struct PluginCall {
-  const PluginIdentity* who = nullptr;
-  const char* hook = nullptr;
-  int iteration = -1;
-};
 thread_local PluginCall current_call;
 
 // Appends `text` to out[0, size - 1) at `length`; signal-safe (no library call).
@@ -57,6 +52,8 @@ PluginCallScope::PluginCallScope(const PluginIdentity& who, const char* hook, in
 }
 
 PluginCallScope::~PluginCallScope() { current_call = {who_, hook_, iteration_}; }
+
+PluginCall current_plugin_call() noexcept { return current_call; }
 
 std::size_t describe_plugin_call(char* out, std::size_t size) noexcept {
   if (size == 0) return 0;
@@ -112,6 +109,8 @@ void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iterat
   const std::string plugin = describe(who);
   const std::string in = describe_hook(hook, iteration);
   try {
+    throw;
+  } catch (const PluginFault&) {
     throw;
   } catch (const std::bad_alloc&) {
     throw OutOfMemoryError("out of memory in " + plugin + " in " + in + " (std::bad_alloc)");

@@ -263,7 +263,7 @@ PluginProvenance PluginRegistry::provenance(const std::string& kind, const std::
   std::lock_guard lock(state.mutex);
   auto hash = state.sha256.find(file);
   if (hash == state.sha256.end()) hash = state.sha256.emplace(file, sha256_of(plugin.file)).first;
-  return {kind, name, plugin.record.version, file, hash->second};
+  return {kind, name, plugin.record.version, file, hash->second, plugin.record.build};
 }
 
 PluginIdentity PluginRegistry::identity(const std::string& kind, const std::string& name) const {

@@ -348,8 +348,10 @@ int report(const std::vector<std::string>& args) {
   options.add_options()("database", po::value<std::string>()->required(), "results database")
       ("out", po::value(&out), "folder for report.md, report.html and runs.csv (default: current folder)");
   const po::variables_map vm = aco::parse_arguments(args, options, "database", 1);
-  const auto files = acobench::write_report(vm["database"].as<std::string>(), out);
+  std::vector<std::string> warnings;
+  const auto files = acobench::write_report(vm["database"].as<std::string>(), out, &warnings);
   for (const auto& f : files) std::cout << f.string() << "\n";
+  for (const auto& warning : warnings) std::cerr << "acobench: warning: " << warning << "\n";
   return 0;
 }
 

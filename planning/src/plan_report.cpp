@@ -113,10 +113,26 @@ Stats stats(const std::vector<double>& v) {
   return s;
 }
 
-// Each measure over the solved runs (time over all runs).
+// A plugin's figure (Context::record(), add()): "<slot>/<plugin>.<name>", or "plugin.<name>".
+bool plugin_figure(const std::string& property) {
+  return property.find('/') != std::string::npos || property.rfind("plugin.", 0) == 0;
+}
+
+// The run's numeric properties: the planner's counts and the plugins' figures.
+std::map<std::string, double> numeric_properties(const PlanOutcome& o) {
+  std::map<std::string, double> numbers;
+  for (const auto& [name, value] : o.properties) {
+    if (const auto* count = std::get_if<std::int64_t>(&value)) numbers[name] = static_cast<double>(*count);
+    else if (const auto* real = std::get_if<double>(&value)) numbers[name] = *real;
+  }
+  return numbers;
+}
+
+// Each measure over the solved runs (time and the runs' numeric properties over all runs).
 std::vector<std::pair<std::string, Stats>> measures(const std::vector<PlanRun>& runs) {
-  std::map<std::string, std::vector<double>> v;
+  std::map<std::string, std::vector<double>> v, properties;
   for (const auto& o : runs) {
+    for (const auto& [name, value] : numeric_properties(o)) properties[name].push_back(value);
     v["time_ms"].push_back(o.time_ms);
     if (!o.solved()) continue;
     v["length"].push_back(o.length);
@@ -129,6 +145,7 @@ std::vector<std::pair<std::string, Stats>> measures(const std::vector<PlanRun>& 
   std::vector<std::pair<std::string, Stats>> result;
   for (const char* name : {"length", "grid_length", "cells", "turns", "best_iteration", "iterations", "time_ms"})
     result.emplace_back(name, stats(v[name]));
+  for (const auto& [name, values] : properties) result.emplace_back(name, stats(values));
   return result;
 }
 
@@ -189,7 +206,7 @@ std::string summary(const PlanReport& report, const std::vector<PlanRun>& runs) 
   out << "runs:     " << runs.size() << " seeds (" << first.seed << ".." << runs.back().seed << "), " << solved << " solved\n";
   out << std::fixed;
   for (const auto& [name, st] : measures(runs)) {
-    out << "  " << std::left << std::setw(15) << name << std::right;
+    out << "  " << std::left << std::setw(15) << name << std::right << (name.size() >= 15 ? " " : "");
     if (st.n == 0) {
       out << "-\n";
       continue;
@@ -233,6 +250,10 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
   } else {
     out << "search:   " << std::setprecision(2) << o.time_ms << " ms\n";
   }
+  std::string figures;
+  for (const auto& [name, value] : o.properties)
+    if (plugin_figure(name)) figures += (figures.empty() ? " " : ", ") + name + " " + aco::to_string(value);
+  if (!figures.empty()) out << "figures: " << figures << "\n";
   out << "path:    ";
   for (aco::NodeId n : o.search.path) out << " " << cell_text(graph, n);
   out << "\n";

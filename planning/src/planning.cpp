@@ -18,7 +18,7 @@ namespace {
 std::span<const ParamSpec> no_parameters() { return {}; }
 
 void run_aco(const PlanContext& c, PlanOutcome& o) {
-  ColonyResult colony = run_colony(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony);
+  ColonyResult colony = run_colony(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony, &c.figures);
   o.properties["ant_steps"] = static_cast<std::int64_t>(colony.ant_steps);
   o.properties["stopped_by"] = colony.stopped_by;
   o.iteration_best = std::move(colony.iteration_best);
@@ -105,6 +105,7 @@ std::span<const ParamSpec> planner_parameters(const std::string& planner) { retu
 PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const RunSpec& run) {
   const Planner& planner = find_planner(run.planner);
   const LoadedPipeline pipeline = instantiate(registry, run.pipeline);
+  FigureSink figures;
   PlanOutcome o;
   o.seed = run.colony.seed;
   o.start = start;
@@ -114,7 +115,7 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
     o.reason = "goal " + to_string(graph.cell(goal)) + " is not reachable from start " + to_string(graph.cell(start)) +
                " (" + describe(graph.options) + ")";
   } else {
-    planner.run({registry, graph, start, goal, run, pipeline}, o);
+    planner.run({registry, graph, start, goal, run, pipeline, figures}, o);
   }
   if (o.search.solved) {
     Context context;
@@ -122,6 +123,7 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
     context.start = start;
     context.goal = goal;
     context.seed = run.colony.seed;
+    context.figures = &figures;
     o.search.length = path_length(graph, o.search.path);
     o.path = pipeline.smoother->smooth(context, o.search.path);
     if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
@@ -131,6 +133,7 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
     o.turns = count_turns(o.path);
   }
   o.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
+  o.properties.merge(figures.figures());
   return o;
 }
 

@@ -85,7 +85,7 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
   out << d.kind << "/" << d.name << " " << d.version << ": " << d.summary << "\n"
       << "file: " << matches[0]->file.string() << "\n"
       << shadow_lines(*matches[0]) << "built by: " << matches[0]->record.compiler << ", "
-      << matches[0]->record.stdlib << "\n";
+      << matches[0]->record.stdlib << ", " << matches[0]->record.build << "\n";
   if (d.kind == std::string("map")) {
     const auto values = aco::resolve(d.parameters(), {}, "map.");
     out << extensions_line(registry.create<aco::MapReader>("map", d.name, values)->extensions());

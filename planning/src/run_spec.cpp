@@ -315,7 +315,7 @@ std::string plugins_json(const RunSpec& spec, const PluginRegistry& registry) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   for (const char* slot : kSlots) {
     const auto p = registry.provenance(slot, spec.pipeline.at(slot).plugin);
-    j[slot] = {{"name", p.name}, {"version", p.version}, {"file", p.file}, {"sha256", p.sha256}};
+    j[slot] = {{"name", p.name}, {"version", p.version}, {"file", p.file}, {"sha256", p.sha256}, {"build", p.build}};
   }
   return j.dump();
 }

@@ -83,6 +83,9 @@ class Result:
     config          the resolved run keys (what ``--print-config`` shows); plugins: which binary
                     filled each slot (name, version, file, sha256)
     preset          the pipeline the keys were laid over
+    figures         what the run's plugins recorded (Context::record(), add()), by
+                    "<slot>/<plugin>.<name>": {"update/max_min.restarts": 0, ...}; the planner's own
+                    properties (ant_steps, stopped_by; evaluations of ifwa and pso) are in ``json``
     """
 
     def __init__(self, record: dict, preset: str):
@@ -102,6 +105,9 @@ class Result:
         self.seed: int = record["seed"]
         self.config: dict = record["config"]
         self.plugins: dict = record["plugins"]
+        # acoplan's --json writes every property of the run at its top level, the plugins' figures
+        # by their "<slot>/<plugin>.<name>" keys (or "plugin.<name>" of a strategy outside the registry).
+        self.figures: dict = {key: value for key, value in record.items() if "/" in key or key.startswith("plugin.")}
         self.gap_percent = (100.0 * (self.grid_length / self.optimal_length - 1.0)
                             if self.solved and self.optimal_length else None)
 

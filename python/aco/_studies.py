@@ -50,7 +50,9 @@ def read_database(database: Union[str, os.PathLike], *, config_columns: bool = T
     order of the report's runs.csv, with the same columns first:
 
     problem, configuration, repetition, seed, solved, length, grid_length, gap_percent, turns,
-    iterations, best_iteration, time_s, ant_steps, stopped_by; then error, optimal_length, the
+    iterations, best_iteration, time_s, ant_steps, stopped_by, one column per further property of
+    the runs (the planners' and the plugins' figures, "update/max_min.restarts": NaN where a run
+    has none), as runs.csv has them; then error, optimal_length, the
     simulation measures (outcome, time_to_goal, collisions, replans, clearance, control_steps:
     NaN, None or -1 for planning trials), settings (the configuration as stored, JSON) and, with
     ``config_columns``, one column ``config.<key>`` per resolved run key of the configuration
@@ -62,10 +64,14 @@ def read_database(database: Union[str, os.PathLike], *, config_columns: bool = T
     import pandas as pd
 
     columns = _aco.read_trials(os.fspath(database))
+    properties = columns.pop("properties")
     frame = pd.DataFrame(columns)
     frame.insert(7, "gap_percent", 100.0 * (frame["grid_length"] / frame["optimal_length"] - 1.0))
     order = ["problem", "configuration", "repetition", "seed", "solved", "length", "grid_length", "gap_percent", "turns",
              "iterations", "best_iteration", "time_s", "ant_steps", "stopped_by"]
+    for name in sorted(properties):
+        frame[name] = properties[name]
+    order += sorted(properties)
     frame = frame[order + [c for c in frame.columns if c not in order]]
     if config_columns and len(frame):
         runs = {settings: json.loads(settings).get("run", {}) for settings in frame["settings"].unique()}

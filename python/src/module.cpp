@@ -193,7 +193,22 @@ py::dict read_trials(const std::filesystem::path& database) {
   std::vector<std::uint64_t> seed;
   std::vector<bool> solved;
   const double none = std::nan("");
-  for (const auto& t : db.trials()) {
+  const auto trials = db.trials();
+  // runs.csv's property columns: every property beyond ant_steps and stopped_by, NaN where a run has none.
+  std::map<std::string, py::list> properties;
+  for (const auto& t : trials)
+    for (const auto& [name, value] : t.properties)
+      if (name != "ant_steps" && name != "stopped_by") properties[name];
+  for (const auto& t : trials) {
+    for (auto& [name, column] : properties) {
+      const auto it = t.properties.find(name);
+      if (it == t.properties.end()) column.append(none);
+      else if (const auto* text = std::get_if<std::string>(&it->second)) column.append(*text);
+      else column.append(std::visit([](const auto& v) -> double {
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>) return 0.0;
+        else return static_cast<double>(v);
+      }, it->second));
+    }
     const auto& p = problems.at(static_cast<std::size_t>(t.problem));
     problem.append(p.name);
     optimal.push_back(p.optimal_length > 0 ? p.optimal_length : none);
@@ -242,6 +257,9 @@ py::dict read_trials(const std::filesystem::path& database) {
   columns["clearance"] = py::array(py::cast(clearance));
   columns["control_steps"] = py::array(py::cast(control_steps));
   columns["settings"] = settings;
+  py::dict property_columns;
+  for (const auto& [name, column] : properties) property_columns[py::str(name)] = column;
+  columns["properties"] = property_columns;
   return columns;
 }
 

@@ -15,6 +15,8 @@ def test_a_run_from_python_is_acoplans_run_on_the_same_keys():
     assert without_times(result.json) == without_times(cli)
     assert result.preset == "robust"
     assert result.config["update.rho"] == 0.05
+    assert result.figures["update/max_min.restarts"] == 0  # MAX-MIN's own figure: no restart asked for
+    assert result.json["ant_steps"] > 0
 
 
 def test_keywords_and_the_keys_dict_are_the_same_keys():

@@ -27,6 +27,8 @@ constexpr double kCharWidth = 6.5;        // rough width of a 12 px sans-serif c
 constexpr double kMinLineFrameWidth = 300.0;  // a line chart's plotting area, however wide its legend
 constexpr std::array kPalette{"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
                               "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+constexpr std::array kDashes{"", "7,3", "2,2", "8,3,2,3"};
+static_assert(kPalette.size() * kDashes.size() == kDistinctStyles);
 
 
 // At most `decimals` decimals, trailing zeros dropped; std::to_chars ignores the locale.
@@ -286,7 +288,16 @@ XAxis log_x_axis(double low, double high) {
 
 }  // namespace
 
-const char* colour(std::size_t k) { return kPalette[k % kPalette.size()]; }
+SeriesStyle series_style(std::size_t k) {
+  return {kPalette[k % kPalette.size()], kDashes[k / kPalette.size() % kDashes.size()]};
+}
+
+std::string stroke_attributes(std::size_t k) {
+  const SeriesStyle style = series_style(k);
+  std::string attributes = std::string("stroke=\"") + style.colour + "\"";
+  if (*style.dash) attributes += std::string(" stroke-dasharray=\"") + style.dash + "\"";
+  return attributes;
+}
 
 std::string box_plot_svg(const BoxPlot& plot) {
   std::vector<Summary> summaries;
@@ -320,7 +331,7 @@ std::string box_plot_svg(const BoxPlot& plot) {
 }
 
 Series mean_series(std::string name, const std::vector<StepCurve>& runs, std::vector<double> at, bool same_runs) {
-  Series series{std::move(name), {}, {}, {}, {}};
+  Series series{std::move(name), {}, {}, {}, {}, {}};
   const auto finite = [](double v) { return std::isfinite(v); };
   const auto counted = static_cast<std::size_t>(std::count_if(runs.begin(), runs.end(), [&](const StepCurve& run) {
     return std::any_of(run.value.begin(), run.value.end(), finite);
@@ -373,7 +384,7 @@ Series ecdf_series(std::string name, const std::vector<double>& hitting_times, d
     if (t > low && t < high) at.push_back(t);
   std::sort(at.begin(), at.end());
   at.push_back(high);
-  return {std::move(name), ecdf(hitting_times, at), {}, {}, at};
+  return {std::move(name), ecdf(hitting_times, at), {}, {}, at, {}};
 }
 
 std::string line_chart_svg(const LineChart& chart) {
@@ -419,7 +430,8 @@ std::string line_chart_svg(const LineChart& chart) {
 
   for (std::size_t k = 0; k < chart.series.size(); ++k) {
     const Series& s = chart.series[k];
-    const char* stroke = colour(k);
+    const std::size_t style = s.style.value_or(k);
+    const char* stroke = series_style(style).colour;
     auto banded = [&](std::size_t i) { return std::isfinite(s.band_low[i]) && std::isfinite(s.band_high[i]) && on_axis(x_of(s, i)); };
     const Stretches band_pieces = s.band_low.empty() ? Stretches{} : stretches(s.value.size(), banded);
     if (!band_pieces.empty()) {
@@ -432,7 +444,7 @@ std::string line_chart_svg(const LineChart& chart) {
       }
       out << "\"/>\n";
     }
-    out << "<path class=\"series\" fill=\"none\" stroke=\"" << stroke << "\" stroke-width=\"2\" d=\"";
+    out << "<path class=\"series\" fill=\"none\" " << stroke_attributes(style) << " stroke-width=\"2\" d=\"";
     for (const auto& [begin, end] : stretches(s.value.size(), [&](std::size_t i) { return std::isfinite(s.value[i]) && on_axis(x_of(s, i)); }))
       for (std::size_t i = begin; i < end; ++i) {
         if (i == begin) out << 'M' << number(px(x_of(s, i))) << ',' << number(frame.py(s.value[i]));
@@ -452,7 +464,7 @@ std::string line_chart_svg(const LineChart& chart) {
         << "</text>\n";
   };
   for (std::size_t k = 0; k < chart.series.size(); ++k)
-    entry(k, std::string("stroke=\"") + colour(k) + "\" stroke-width=\"2\"", aco::xml_escape(chart.series[k].name));
+    entry(k, stroke_attributes(chart.series[k].style.value_or(k)) + " stroke-width=\"2\"", aco::xml_escape(chart.series[k].name));
   if (chart.reference) entry(chart.series.size(), kReferenceStyle, reference_text(*chart.reference, chart.reference_label));
   out << "</g>\n</svg>\n";
   return out.str();

@@ -9,11 +9,15 @@
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
 #include <sstream>
+#include <variant>
 
 #include "aco/error.hpp"
 #include "aco/map_formats.hpp"
 #include "aco/map_io.hpp"
+#include "aco/plugin_record.hpp"
 #include "aco/run_spec.hpp"
 #include "aco/svg.hpp"
 #include "aco/studies/plots.hpp"
@@ -62,6 +66,7 @@ struct Analysis {
   std::filesystem::path experiment_dir;  // the maps are relative to it
   std::vector<int> buckets;              // per problem: Moving AI bucket, or -1
   std::size_t unmeasured = 0;            // runs stored without anytime curves (by an older acobench)
+  std::string host_version, host_build;  // of the acobench that ran the trials ("" if not recorded)
 };
 
 // The excess of a solved trial over the problem's optimum, %. The optimum is exact A* on the
@@ -91,6 +96,8 @@ Analysis analyse(const ResultsDb& db) {
   a.configs = db.configs();
   a.trials = db.trials();
   a.experiment_dir = std::filesystem::path(db.meta("experiment_file")).parent_path();
+  a.host_version = db.find_meta("host_version").value_or("");
+  a.host_build = db.find_meta("host_build").value_or("");
   std::map<int, int> index;  // config id -> position
   for (std::size_t c = 0; c < a.configs.size(); ++c) index[a.configs[c].first] = static_cast<int>(c);
   a.results.assign(a.problems.size(), std::vector<Result>(a.configs.size()));
@@ -348,8 +355,100 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
   return {t};
 }
 
+// A property's value as a number, if it is one (a count, a real or a flag).
+std::optional<double> numeric(const aco::ParamValue& value) {
+  return std::visit([](const auto& v) -> std::optional<double> {
+    if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>) return std::nullopt;
+    else return static_cast<double>(v);
+  }, value);
+}
+
+// Per configuration, each numeric property of its runs over all problems: the planners' own
+// (ant_steps, evaluations) and the figures its plugins recorded.
+std::vector<Table> property_tables(const Analysis& a) {
+  Table t{"Run properties and plugin figures",
+          "Per configuration, over its runs of every problem that have it: each numeric property of a run, the "
+          "planner's own (ant_steps of the colony, evaluations of ifwa and pso) and the figures its plugins "
+          "recorded (\"<slot>/<plugin>.<name>\", Context::record() and add()). runs.csv holds every run's values.",
+          {"configuration", "property", "runs", "median", "min", "max", "mean"},
+          {}};
+  for (std::size_t c = 0; c < a.configs.size(); ++c) {
+    std::map<std::string, std::vector<double>> values;
+    for (std::size_t p = 0; p < a.problems.size(); ++p)
+      for (const auto* trial : a.results[p][c].runs)
+        for (const auto& [name, value] : trial->properties)
+          if (const auto number = numeric(value)) values[name].push_back(*number);
+    for (const auto& [name, v] : values) {
+      const Summary s = summarize(v);
+      t.rows.push_back({a.configs[c].second.name, name, std::to_string(s.n), number(s.median, 6), number(s.min, 6),
+                        number(s.max, 6), number(s.mean, 6)});
+    }
+  }
+  if (t.rows.empty()) return {};
+  return {t};
+}
+
+// One slot's plugin binary as a configuration last ran it.
+struct PluginUse {
+  std::string slot, name, version, build, sha256, file;
+};
+
+// The binaries of a configuration's slots: as its last run recorded them, or for a database
+// stored before that (format 4 or earlier) the name, version and hash its settings keep.
+std::vector<PluginUse> plugin_uses(const ConfigRecord& config) {
+  const bool recorded = !config.plugins_json.empty();
+  const auto plugins = recorded ? nlohmann::json::parse(config.plugins_json)
+                                : nlohmann::json::parse(config.settings_json).value("plugins", nlohmann::json::object());
+  std::vector<PluginUse> uses;
+  for (const auto& [slot, p] : plugins.items())
+    uses.push_back({slot, p.value("name", "?"), p.value("version", "?"), p.value("build", "not recorded"),
+                    p.value("sha256", "?"), p.value("file", "not recorded")});
+  return uses;
+}
+
+std::vector<Table> provenance_tables(const Analysis& a) {
+  Table t{"Plugins",
+          "The plugin binary of each slot of each configuration, as its last run found it: file, version, build "
+          "(unoptimised: a Debug build, whose times mean little) and SHA-256 of the file. Trials were run by " +
+              (a.host_version.empty() ? std::string("an acobench that did not record its version") : a.host_version) +
+              (a.host_build.empty() ? "" : ", " + a.host_build) + ".",
+          {"configuration", "slot", "plugin", "version", "build", "SHA-256", "file"},
+          {}};
+  for (const auto& [id, config] : a.configs)
+    for (const PluginUse& use : plugin_uses(config))
+      t.rows.push_back({config.name, use.slot, use.name, use.version, use.build, use.sha256, use.file});
+  if (t.rows.empty()) return {};
+  return {t};
+}
+
+// Unoptimised (Debug) builds the trials ran: the host, and each plugin binary with the
+// configurations that ran it.
+std::vector<std::string> build_warnings(const Analysis& a) {
+  std::vector<std::string> warnings;
+  if (aco::unoptimised(a.host_build))
+    warnings.push_back("the trials were run by an unoptimised build of acobench (" + a.host_version +
+                       "): their times mean little; run them again with a Release build (cmake --preset release)");
+  std::map<std::string, std::vector<std::string>> debug_plugins;  // "slot/name (file)" -> configurations
+  for (const auto& [id, config] : a.configs) {
+    // Another planner than the colony runs only the smoother of its pipeline (and acosim the local planner).
+    const auto run = nlohmann::json::parse(config.settings_json).value("run", nlohmann::json::object());
+    const bool colony = run.value("planner", "aco") == "aco";
+    for (const PluginUse& use : plugin_uses(config))
+      if (aco::unoptimised(use.build) && (colony || use.slot == "smoother" || use.slot == "local"))
+        debug_plugins[use.slot + "/" + use.name + " (" + use.file + ")"].push_back(config.name);
+  }
+  for (const auto& [plugin, configs] : debug_plugins) {
+    std::string names;
+    for (const auto& name : configs) names += (names.empty() ? "'" : ", '") + name + "'";
+    warnings.push_back("plugin " + plugin + " is an unoptimised build (configurations " + names +
+                       "): their times mean little; build it with CMAKE_BUILD_TYPE=Release and run them again");
+  }
+  return warnings;
+}
+
 std::vector<Table> summary_tables(const Analysis& a) {
   std::vector<Table> tables = failure_tables(a);
+  for (Table& t : property_tables(a)) tables.push_back(std::move(t));
   for (Table& t : simulation_tables(a)) tables.push_back(std::move(t));
   for (Table& t : pheromone_tables(a)) tables.push_back(std::move(t));
   std::vector<std::string> sets;
@@ -526,6 +625,7 @@ std::string ecdf_charts(const Analysis& a) {
       std::vector<double> hits;
       for (const Reach& r : all[c]) hits.push_back(r.seconds[k]);
       chart.series.push_back(ecdf_series(a.configs[c].second.name, hits, low, high));
+      chart.series.back().style = c;
     }
     svg += line_chart_svg(chart) + "\n";
   }
@@ -550,7 +650,7 @@ std::string anytime_charts(const Analysis& a, std::size_t p) {
   };
   std::string svg;
   for (const Effort& effort : efforts) {
-    std::vector<std::pair<std::string, std::vector<StepCurve>>> by_config;
+    std::vector<std::pair<int, std::vector<StepCurve>>> by_config;
     double low = INFINITY, high = 0.0;
     for (const Result& r : a.results[p]) {
       std::vector<StepCurve> curves;
@@ -560,7 +660,7 @@ std::string anytime_charts(const Analysis& a, std::size_t p) {
         low = std::min(low, curves.back().x.front());
         high = std::max(high, curves.back().x.back());
       }
-      if (!curves.empty()) by_config.emplace_back(a.configs[r.config].second.name, std::move(curves));
+      if (!curves.empty()) by_config.emplace_back(r.config, std::move(curves));
     }
     if (by_config.empty() || !(low > 0)) continue;
     LineChart chart;
@@ -569,8 +669,9 @@ std::string anytime_charts(const Analysis& a, std::size_t p) {
     chart.y_label = "gap to the optimum %";
     chart.css_class = "anytime";
     chart.log_x = true;
-    for (const auto& [name, curves] : by_config) {
-      chart.series.push_back(mean_series(name, curves, log_spaced(low, high, 100), true));
+    for (const auto& [config, curves] : by_config) {
+      chart.series.push_back(mean_series(a.configs[config].second.name, curves, log_spaced(low, high, 100), true));
+      chart.series.back().style = static_cast<std::size_t>(config);
       // No confidence band: early on, while only one or two runs have a path, it spans hundreds of %.
       chart.series.back().band_low.clear();
       chart.series.back().band_high.clear();
@@ -618,6 +719,7 @@ std::string markdown(const Analysis& a, const std::filesystem::path& database) {
         "against the baseline (`"
      << (a.configs.empty() ? "" : a.configs[0].second.name)
      << "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline.\n\n";
+  for (const std::string& warning : build_warnings(a)) md << "> **Warning:** " << warning << "\n\n";
   for (const Table& t : summary_tables(a)) md << markdown(t);
   for (const Table& t : anytime_tables(a)) {
     md << markdown(t);
@@ -661,6 +763,7 @@ std::string markdown(const Analysis& a, const std::filesystem::path& database) {
     }
     md << "\n";
   }
+  for (const Table& t : provenance_tables(a)) md << markdown(t);
   return md.str();
 }
 
@@ -690,7 +793,7 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
   const double scale = std::max(2.0, std::min(24.0, 480.0 / std::max(w, h)));
   const double cell = w > 1 ? map->position({1, 0}).x() - map->position({0, 0}).x() : 1.0;
   std::ostringstream svg;
-  svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w * scale + 200 << "\" height=\"" << h * scale
+  svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w * scale + 240 << "\" height=\"" << h * scale
       << "\"><rect width=\"" << w * scale << "\" height=\"" << h * scale << "\" fill=\"#fff\" stroke=\"#999\"/>";
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
@@ -700,13 +803,16 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
   int shown = 0;
   for (const auto& r : a.results[p]) {
     if (!r.best) continue;
-    const char* colour = acobench::colour(static_cast<std::size_t>(r.config));
-    svg << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"" << std::max(1.0, scale / 5)
+    const char* colour = series_style(static_cast<std::size_t>(r.config)).colour;
+    svg << "<polyline fill=\"none\" " << stroke_attributes(static_cast<std::size_t>(r.config)) << " stroke-width=\"" << std::max(1.0, scale / 5)
         << "\" stroke-opacity=\"0.8\" points=\"";
     for (const auto& point : nlohmann::json::parse(r.best->path_json))
       svg << (point[0].get<double>() / cell + 0.5) * scale << "," << (point[1].get<double>() / cell + 0.5) * scale << " ";
-    svg << "\"/><text x=\"" << w * scale + 8 << "\" y=\"" << 14 + 16 * shown << "\" font-size=\"12\" fill=\"" << colour
-        << "\">" << aco::xml_escape(a.configs[r.config].second.name) << " " << fixed(r.best->length, 2) << "</text>";
+    const double y = 14 + 16 * shown;
+    svg << "\"/><line x1=\"" << w * scale + 8 << "\" x2=\"" << w * scale + 30 << "\" y1=\"" << y - 4 << "\" y2=\"" << y - 4
+        << "\" " << stroke_attributes(static_cast<std::size_t>(r.config)) << " stroke-width=\"2\"/><text x=\"" << w * scale + 36
+        << "\" y=\"" << y << "\" font-size=\"12\" fill=\"" << colour << "\">" << aco::xml_escape(a.configs[r.config].second.name)
+        << " " << fixed(r.best->length, 2) << "</text>";
     ++shown;
   }
   svg << "</svg>";
@@ -718,8 +824,11 @@ std::string html(const Analysis& a, const std::string& md_intro) {
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>acobench: " << aco::xml_escape(a.name)
       << "</title><style>body{font-family:sans-serif;margin:2em;max-width:1400px}table{border-collapse:collapse;"
          "margin:1em 0}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}td:first-child,th:first-child{"
-         "text-align:left}svg{margin:0.5em}</style></head><body>\n<h1>acobench report: "
+         "text-align:left}svg{margin:0.5em}.warning{background:#fff3cd;border:1px solid #e0a800;padding:0.5em}</style>"
+         "</head><body>\n<h1>acobench report: "
       << aco::xml_escape(a.name) << "</h1>\n<p>" << aco::xml_escape(md_intro) << "</p>\n";
+  for (const std::string& warning : build_warnings(a))
+    out << "<p class=\"warning\"><strong>Warning:</strong> " << aco::xml_escape(warning) << "</p>\n";
   for (const Table& t : summary_tables(a)) out << html(t);
   for (const Table& t : anytime_tables(a)) out << html(t) << ecdf_charts(a);
   const auto cols = columns();
@@ -745,7 +854,10 @@ std::string html(const Analysis& a, const std::string& md_intro) {
       std::vector<std::vector<double>> curves;
       for (const auto* t : r.runs)
         if (!t->best_so_far.empty()) curves.push_back(t->best_so_far);
-      if (!curves.empty()) chart.series.push_back(convergence_series(name, curves));
+      if (!curves.empty()) {
+        chart.series.push_back(convergence_series(name, curves));
+        chart.series.back().style = static_cast<std::size_t>(r.config);
+      }
     }
     out << box_plot_svg(box) << "\n";
     if (!chart.series.empty()) out << line_chart_svg(chart) << "\n";
@@ -778,28 +890,50 @@ std::string html(const Analysis& a, const std::string& md_intro) {
     chart.series = {gaps};
     out << "</ol>\n" << line_chart_svg(chart) << "\n";
   }
+  for (const Table& t : provenance_tables(a)) out << html(t);
   out << "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>\n</body></html>\n";
   return out.str();
 }
 
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+// A property in a CSV cell: numbers as they are (reals to 10 significant digits), text quoted.
+std::string csv_cell(const aco::ParamValue& value) {
+  if (const auto* text = std::get_if<std::string>(&value)) return quoted(*text);
+  if (const auto* real = std::get_if<double>(&value)) return number(*real, 10);
+  return aco::to_string(value);
+}
+
+// One row per run; after the fixed columns, one per property any run has (the planners' and the
+// plugins' figures, runs.csv's only columns that vary with the study), empty where a run has none.
 std::string csv(const Analysis& a) {
+  std::set<std::string> properties;
+  for (const auto& t : a.trials)
+    for (const auto& [name, value] : t.properties)
+      if (name != "ant_steps" && name != "stopped_by") properties.insert(name);  // columns of their own already
   std::ostringstream out;
   out << "problem,configuration,repetition,seed,solved,length,grid_length,gap_percent,turns,iterations,best_iteration,time_s,"
-         "ant_steps,stopped_by\n";
+         "ant_steps,stopped_by";
+  for (const auto& name : properties) out << "," << name;
+  out << "\n";
   std::map<int, std::string> names;
   for (const auto& [id, c] : a.configs) names[id] = c.name;
-  const auto quoted = [](const std::string& s) {
-    std::string q = "\"";
-    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return q + "\"";
-  };
   for (const auto& t : a.trials) {
     const double optimal = a.problems[t.problem].optimal_length;
     out << quoted(a.problems[t.problem].name) << "," << quoted(names.at(t.config)) << "," << t.repetition << "," << t.seed << ","
         << (t.solved ? 1 : 0) << "," << (t.solved ? number(t.length, 10) : "") << ","
         << (t.solved ? number(t.grid_length, 10) : "") << ","
         << (t.solved && optimal > 0 ? number(gap_percent(t, optimal), 6) : "") << "," << t.turns << "," << t.iterations
-        << "," << t.best_iteration << "," << number(t.time_s, 6) << "," << t.ant_steps << "," << t.stopped_by << "\n";
+        << "," << t.best_iteration << "," << number(t.time_s, 6) << "," << t.ant_steps << "," << t.stopped_by;
+    for (const auto& name : properties) {
+      const auto it = t.properties.find(name);
+      out << "," << (it == t.properties.end() ? "" : csv_cell(it->second));
+    }
+    out << "\n";
   }
   return out.str();
 }
@@ -812,7 +946,8 @@ void write(const std::filesystem::path& file, const std::string& text) {
 
 }  // namespace
 
-std::vector<std::filesystem::path> write_report(const std::filesystem::path& database, const std::filesystem::path& out) {
+std::vector<std::filesystem::path> write_report(const std::filesystem::path& database, const std::filesystem::path& out,
+                                                std::vector<std::string>* warnings) {
   if (!std::filesystem::exists(database)) throw aco::Error(database.string() + ": no such results database");
   const ResultsDb db(database);
   const Analysis a = analyse(db);
@@ -822,6 +957,8 @@ std::vector<std::filesystem::path> write_report(const std::filesystem::path& dat
   write(files[0], md);
   write(files[1], html(a, md.substr(md.find("\n\n") + 2, md.find("\n\n", md.find("\n\n") + 2) - md.find("\n\n") - 2)));
   write(files[2], csv(a));
+  if (warnings)
+    for (std::string& warning : build_warnings(a)) warnings->push_back(std::move(warning));
   return files;
 }
 

@@ -24,12 +24,13 @@ using aco::Error;
 
 // Bumped whenever the tables change in a way older readers would misread.
 // 2: the simulation columns of runs; 3: runs.error; 4: progress.walks, progress.time measured;
-// 5: runs.failure.
-const std::string kFormatVersion = "5";
+// 5: runs.failure; 6: the properties table, plannerConfigs.plugins.
+const std::string kFormatVersion = "6";
 
 // This version, or an earlier one upgrade() brings to it.
 bool upgradable(const std::string& version) {
-  return version == kFormatVersion || version == "1" || version == "2" || version == "3" || version == "4";
+  return version == kFormatVersion || version == "1" || version == "2" || version == "3" || version == "4" ||
+         version == "5";
 }
 
 // OMPL's tables (as ompl_benchmark_statistics.py creates them) with our run and progress
@@ -38,7 +39,8 @@ const char* const kSchema = R"(
 CREATE TABLE experiments (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512), totaltime REAL,
   timelimit REAL, memorylimit REAL, runcount INTEGER, version VARCHAR(128), hostname VARCHAR(1024),
   cpuinfo TEXT, date DATETIME, seed VARCHAR(24), setup TEXT, optimal_length REAL);
-CREATE TABLE plannerConfigs (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512) NOT NULL, settings TEXT);
+CREATE TABLE plannerConfigs (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512) NOT NULL, settings TEXT,
+  plugins TEXT);
 CREATE TABLE enums (name VARCHAR(512), value INTEGER, description TEXT, PRIMARY KEY (name, value));
 CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, plannerid INTEGER,
   repetition INTEGER, seed INTEGER, solved BOOLEAN, length REAL, grid_length REAL, gap REAL,
@@ -51,6 +53,14 @@ CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, p
 CREATE TABLE progress (runid INTEGER, time REAL, iteration INTEGER, best_cost REAL, walks INTEGER,
   PRIMARY KEY (runid, iteration), FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
 CREATE TABLE acobench_meta (key TEXT PRIMARY KEY, value TEXT);
+)";
+
+// A generic name/value table per run, as OMPL's run properties but as rows, not columns: the
+// planners' properties and the figures plugins record vary with the configuration. SQLite keeps
+// each value's type (integer, real or text).
+const char* const kPropertiesTable = R"(
+CREATE TABLE properties (runid INTEGER, name TEXT NOT NULL, value, PRIMARY KEY (runid, name),
+  FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
 )";
 
 // One connection; every failure becomes an Error naming the file and SQLite's reason.
@@ -120,6 +130,14 @@ class Statement {
   }
 
   bool null(int column) const { return sqlite3_column_type(stmt_, column) == SQLITE_NULL; }
+  // A value of a column without a declared type, as SQLite stored it.
+  aco::ParamValue value(int column) const {
+    switch (sqlite3_column_type(stmt_, column)) {
+      case SQLITE_INTEGER: return integer(column);
+      case SQLITE_FLOAT: return real(column);
+      default: return text(column);
+    }
+  }
   std::int64_t integer(int column) const { return sqlite3_column_int64(stmt_, column); }
   double real(int column) const { return sqlite3_column_double(stmt_, column); }
   std::string text(int column) const {
@@ -130,6 +148,7 @@ class Statement {
  private:
   void bind(int i, std::int64_t v) { db_.check(sqlite3_bind_int64(stmt_, i, v), sql_); }
   void bind(int i, int v) { bind(i, static_cast<std::int64_t>(v)); }
+  void bind(int i, bool v) { bind(i, static_cast<std::int64_t>(v)); }
   void bind(int i, double v) {
     db_.check(std::isnan(v) ? sqlite3_bind_null(stmt_, i) : sqlite3_bind_double(stmt_, i, v), sql_);
   }
@@ -227,7 +246,7 @@ struct ResultsDb::Impl {
   std::map<std::int64_t, int> problem_of;    // by experiment id
   std::vector<ProblemRecord> problems;
   std::map<int, std::string> config_names;  // by id
-  std::optional<Statement> find_run, insert_run, insert_progress, add_time;
+  std::optional<Statement> find_run, insert_run, insert_progress, insert_property, add_time;
 
   std::string file() const { return db.file(); }
   // The problems (`given`, in their order, or all stored ones), configurations and statements of
@@ -259,11 +278,13 @@ struct ResultsDb::Impl {
     return stored;
   }
 
-  // Formats 1 to 4 lack columns (1: the simulation measures of runs, 2: runs.error, 3:
-  // progress.walks, 4: runs.failure): they are added, NULL for the stored rows, so results of
-  // earlier runs are resumed and reported. Their progress times stay the estimates they were; a
-  // NULL walks marks them. A failed trial's failure is its stopped_by, or "error" for one that
-  // threw: which of the plugin or the engine's checks threw was not recorded.
+  // Formats 1 to 5 lack columns (1: the simulation measures of runs, 2: runs.error, 3:
+  // progress.walks, 4: runs.failure, 5: plannerConfigs.plugins) or the properties table: they
+  // are added, NULL or empty for the stored rows, so results of earlier runs are resumed and
+  // reported. Their progress times stay the estimates they were; a NULL walks marks them. Their
+  // runs have no properties but ant_steps and stopped_by, which the runs table holds. A failed
+  // trial's failure is its stopped_by, or "error" for one that threw: which of the plugin or the
+  // engine's checks threw was not recorded.
   void upgrade() {
     if (meta().at("format_version") == kFormatVersion) return;
     const auto columns_of = [&](const std::string& table) {
@@ -274,16 +295,20 @@ struct ResultsDb::Impl {
       return present;
     };
     const std::map<std::string, std::set<std::string>> present{{"runs", columns_of("runs")},
-                                                               {"progress", columns_of("progress")}};
+                                                               {"progress", columns_of("progress")},
+                                                               {"plannerConfigs", columns_of("plannerConfigs")}};
+    const bool has_properties = tables().contains("properties");
     Transaction transaction(db);
     for (const auto& [table, column] : std::initializer_list<std::pair<std::string, std::string>>{
              {"runs", "outcome TEXT"}, {"runs", "time_to_goal REAL"}, {"runs", "collisions INTEGER"},
              {"runs", "replans INTEGER"}, {"runs", "clearance REAL"}, {"runs", "control_steps INTEGER"},
-             {"runs", "error TEXT"}, {"runs", "failure TEXT"}, {"progress", "walks INTEGER"}})
+             {"runs", "error TEXT"}, {"runs", "failure TEXT"}, {"progress", "walks INTEGER"},
+             {"plannerConfigs", "plugins TEXT"}})
       if (!present.at(table).contains(column.substr(0, column.find(' '))))
         db.exec("ALTER TABLE " + table + " ADD COLUMN " + column);
     db.exec("UPDATE runs SET failure = CASE WHEN stopped_by IN ('crashed', 'timed out', 'out of memory') THEN stopped_by "
             "ELSE 'error' END WHERE error IS NOT NULL AND failure IS NULL");
+    if (!has_properties) db.exec(kPropertiesTable);
     Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
     set.run(kFormatVersion).finish();
     transaction.commit();
@@ -340,6 +365,7 @@ struct ResultsDb::Impl {
     Transaction transaction(db);
     if (!tables().empty()) return false;
     db.exec(kSchema);
+    db.exec(kPropertiesTable);
     Statement set(db, "INSERT INTO acobench_meta (key, value) VALUES (?1, ?2)");
     set.run(std::string("format_version"), kFormatVersion).finish();
     set.run(std::string("experiment_name"), experiment_name).finish();
@@ -448,6 +474,7 @@ void ResultsDb::Impl::load(const std::vector<ProblemRecord>* given) {
                        "collisions, replans, clearance, control_steps, error, failure) "
                        "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23)");
   insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost, walks) VALUES (?1, ?2, ?3, ?4, ?5)");
+  insert_property.emplace(db, "INSERT INTO properties (runid, name, value) VALUES (?1, ?2, ?3)");
   add_time.emplace(db, "UPDATE experiments SET totaltime = totaltime + ?2 WHERE id = ?1");
 }
 
@@ -455,19 +482,27 @@ ResultsDb::~ResultsDb() = default;
 
 int ResultsDb::add_config(const ConfigRecord& config) {
   auto& d = *impl_;
-  const auto settings = parse_json(config.settings_json, "the settings of configuration " + in_quotes(config.name));
+  parse_json(config.settings_json, "the settings of configuration " + in_quotes(config.name));
   std::lock_guard lock(d.mutex);
   Transaction transaction(d.db);
   Statement find(d.db, "SELECT id, settings FROM plannerConfigs WHERE name = ?1");
   find.run(config.name);
+  // The plugin files as this run found them: a rerun from another build folder updates them.
+  const auto plugins = config.plugins_json.empty() ? std::nullopt : std::optional(config.plugins_json);
   if (find.next()) {
     parse_json(find.text(1), "the stored settings of configuration " + in_quotes(config.name));
     if (const auto conflicts = config_conflicts(config.name, find.text(1), config.settings_json); !conflicts.empty())
       throw Error(conflicts_message(d.file(), d.meta().at("experiment_name"), conflicts));
-    return static_cast<int>(find.integer(0));
+    const auto id = static_cast<int>(find.integer(0));
+    if (plugins) {
+      Statement update(d.db, "UPDATE plannerConfigs SET plugins = ?2 WHERE id = ?1");
+      update.run(id, *plugins).finish();
+      transaction.commit();
+    }
+    return id;
   }
-  Statement add(d.db, "INSERT INTO plannerConfigs (name, settings) VALUES (?1, ?2)");
-  add.run(config.name, config.settings_json).finish();
+  Statement add(d.db, "INSERT INTO plannerConfigs (name, settings, plugins) VALUES (?1, ?2, ?3)");
+  add.run(config.name, config.settings_json, plugins).finish();
   const auto id = static_cast<int>(sqlite3_last_insert_rowid(d.db.handle()));
   transaction.commit();
   d.config_names[id] = config.name;
@@ -531,6 +566,8 @@ void ResultsDb::store(const TrialRecord& t) {
               measured ? std::optional(to_sql(t.walks[at])) : std::nullopt)
         .finish();
   }
+  for (const auto& [name, value] : t.properties)
+    std::visit([&](const auto& v) { d.insert_property->run(run, name, v).finish(); }, value);
   d.add_time->run(experiment, t.time_s).finish();
   transaction.commit();
 }
@@ -544,9 +581,9 @@ std::vector<std::pair<int, ConfigRecord>> ResultsDb::configs() const {
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
   std::vector<std::pair<int, ConfigRecord>> all;
-  Statement read(d.db, "SELECT id, name, settings FROM plannerConfigs ORDER BY id");
+  Statement read(d.db, "SELECT id, name, settings, plugins FROM plannerConfigs ORDER BY id");
   read.run();
-  while (read.next()) all.push_back({static_cast<int>(read.integer(0)), {read.text(1), read.text(2)}});
+  while (read.next()) all.push_back({static_cast<int>(read.integer(0)), {read.text(1), read.text(2), read.text(3)}});
   return all;
 }
 
@@ -560,6 +597,7 @@ std::vector<TrialRecord> ResultsDb::trials() const {
                  "control_steps, error, failure FROM runs "
                  "ORDER BY experimentid, plannerid, repetition");
   Statement progress(d.db, "SELECT best_cost, time, walks FROM progress WHERE runid = ?1 ORDER BY iteration");
+  Statement properties(d.db, "SELECT name, value FROM properties WHERE runid = ?1");
   runs.run();
   while (runs.next()) {
     const auto problem = d.problem_of.find(runs.integer(1));
@@ -600,6 +638,8 @@ std::vector<TrialRecord> ResultsDb::trials() const {
       t.elapsed_s.clear();
       t.walks.clear();
     }
+    properties.run(runs.integer(0));
+    while (properties.next()) t.properties[properties.text(0)] = properties.value(1);
     all.push_back(std::move(t));
   }
   return all;

@@ -12,7 +12,9 @@
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/parallel.hpp"
+#include "aco/plugin_record.hpp"
 #include "aco/thread_limit.hpp"
+#include "aco/version.hpp"
 #include "aco/studies/results_db.hpp"
 
 namespace acobench {
@@ -69,6 +71,10 @@ class Runner {
       for (const auto& t : db_->trials()) add_score(t);
     // Where the maps are, for the report's pictures (not part of the identity: the folder may move).
     db_->set_meta("experiment_file", std::filesystem::absolute(e.file).lexically_normal().string());
+    // Which acobench ran the trials, and whether it was optimised: the report warns of times
+    // measured by an unoptimised build.
+    db_->set_meta("host_version", aco::version_text("acobench"));
+    db_->set_meta("host_build", ACO_BUILD_OPTIMISATION);
   }
 
   RunSummary run() {
@@ -138,7 +144,7 @@ class Runner {
   int add(const Configuration& c) {
     Configuration resolved = c;
     if (!resolved.run) resolved.run = resolve(c, e_.problems, registry_);
-    const int id = db_->add_config({c.name, settings_json(c, *resolved.run, registry_)});
+    const int id = db_->add_config({c.name, settings_json(c, *resolved.run, registry_), aco::plugins_json(*resolved.run, registry_)});
     trials_.add_config(id, resolved);
     order_.push_back(id);
     return id;

@@ -12,6 +12,8 @@ nlohmann::json record_json(const TrialRecord& t) {
             {"stopped_by", t.stopped_by}, {"path", t.path_json},    {"best_so_far", t.best_so_far},
             {"elapsed_s", t.elapsed_s}, {"walks", t.walks},         {"error", t.error},
             {"failure", t.failure}};
+  json& properties = j["properties"] = json::object();
+  for (const auto& [name, value] : t.properties) properties[name] = std::visit([](const auto& v) { return json(v); }, value);
   if (const auto& s = t.simulation)
     j["simulation"] = {{"outcome", s->outcome},   {"time_to_goal", s->time_to_goal}, {"collisions", s->collisions},
                        {"replans", s->replans},   {"clearance", s->clearance},       {"control_steps", s->control_steps}};
@@ -39,6 +41,12 @@ TrialRecord record_from(const nlohmann::json& j) {
   t.walks = j.at("walks").get<std::vector<std::uint64_t>>();
   t.error = j.at("error");
   t.failure = j.at("failure");
+  for (const auto& [name, value] : j.at("properties").items()) {
+    if (value.is_boolean()) t.properties[name] = value.get<bool>();
+    else if (value.is_number_integer()) t.properties[name] = value.get<std::int64_t>();
+    else if (value.is_number()) t.properties[name] = value.get<double>();
+    else t.properties[name] = value.get<std::string>();
+  }
   if (j.contains("simulation")) {
     const json& s = j.at("simulation");
     t.simulation = SimulationRecord{s.at("outcome"), s.at("time_to_goal"), s.at("collisions"),

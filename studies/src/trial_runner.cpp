@@ -189,6 +189,7 @@ TrialRecord TrialRunner::plan(const TrialOrder& t) {
   r.best_so_far = o.search.best_so_far;
   r.elapsed_s = o.search.elapsed_s;
   r.walks = o.search.walks;
+  r.properties = o.properties;
   return r;
 }
 
@@ -242,9 +243,10 @@ std::string settings_json(const Configuration& config, const aco::RunSpec& run, 
   nlohmann::json j;
   j["keys"] = config.keys;
   j["run"] = nlohmann::ordered_json::parse(aco::to_json(run));
-  // Name, version and hash of each slot's binary; not its file: a moved build is the same.
+  // Name, version and hash of each slot's binary; not its file (a moved build is the same), nor its
+  // build, which its hash implies (and databases stored before it was recorded must match).
   j["plugins"] = nlohmann::ordered_json::parse(aco::plugins_json(run, registry));
-  for (auto& plugin : j["plugins"]) plugin.erase("file");
+  for (auto& plugin : j["plugins"]) plugin.erase("file"), plugin.erase("build");
   return j.dump();
 }
 

@@ -56,12 +56,15 @@ std::span<const ParamSpec> colony_parameters();
 ColonySettings colony_settings(const ParameterValues& values);
 ParameterValues colony_values(const ColonySettings& settings);
 
-// Borrowed strategies; init, heuristic, update and deadlock are all required.
+// Borrowed strategies; init, heuristic, update and deadlock are all required. `figures`, if set,
+// keeps what they record (Context::record(), add()); the two colonies of the bidirectional search
+// may share one: their counts add up, and of two values the backward colony's, recorded last, stays.
 struct Pipeline {
   PheromoneInit* init = nullptr;
   Heuristic* heuristic = nullptr;
   PheromoneUpdate* update = nullptr;
   DeadlockPolicy* deadlock = nullptr;
+  FigureSink* figures = nullptr;
 };
 
 struct ColonyResult : SearchResult {

@@ -21,4 +21,12 @@ class BOOST_SYMBOL_VISIBLE OutOfMemoryError : public Error {
   ~OutOfMemoryError() override;
 };
 
+// A fault the engine found in what a plugin did, its message naming the plugin, the hook and the
+// iteration already (a figure recorded as NaN): the error boundary passes it on unchanged.
+class BOOST_SYMBOL_VISIBLE PluginFault : public Error {
+ public:
+  using Error::Error;
+  ~PluginFault() override;
+};
+
 }  // namespace aco

@@ -34,8 +34,9 @@ struct LoadedPipeline {
 LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec);
 
 // run_colony with a loaded pipeline. The bidirectional search's backward colony gets its own
-// instances of the same plugins, instantiated here from `spec`.
+// instances of the same plugins, instantiated here from `spec`. Both record into `figures`.
 ColonyResult run_colony(PluginRegistry& registry, const PipelineSpec& spec, const LoadedPipeline& pipeline,
-                        const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings);
+                        const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings,
+                        FigureSink* figures = nullptr);
 
 }  // namespace aco

@@ -42,8 +42,9 @@ namespace aco {
 //    parameter table, and so the descriptor, may hold that older hosts cannot read.
 // 10: the seventh slot, map (MapReader): a descriptor's kind may be "map", whose factory makes a
 //     MapReader, and Map objects made by a plugin's code reach the host.
+// 11: Context::figures, record() and add() (a plugin's own figures); the record's build field.
 // A literal, so the record can spell it; kPluginAbiVersion is the one to use in code.
-#define ACO_FRAMEWORK_PLUGIN_ABI 10
+#define ACO_FRAMEWORK_PLUGIN_ABI 11
 inline constexpr std::uint32_t kPluginAbiVersion = ACO_FRAMEWORK_PLUGIN_ABI;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";
@@ -99,6 +100,6 @@ ACO_SLOTS(ACO_SLOT_TYPE_)
       aco_plugin_params.data(), aco_plugin_params.size(), &aco_plugin_create};                            \
   [[gnu::used, gnu::section(ACO_PLUGIN_RECORD_SECTION)]] const char aco_plugin_record__##KIND##__##NAME[] =  \
       ACO_PLUGIN_RECORD_MAGIC "\0" ACO_PLUGIN_STRINGIFY(ACO_PLUGIN_ABI_VERSION) "\0" ACO_PLUGIN_STDLIB "\0"  \
-      __VERSION__ "\0" #KIND "\0" #NAME "\0" VERSION "\0" SUMMARY;                                        \
+      __VERSION__ "\0" ACO_BUILD_OPTIMISATION "\0" #KIND "\0" #NAME "\0" VERSION "\0" SUMMARY;                                        \
   }                                                                                                       \
   BOOST_DLL_ALIAS(aco_plugin_descriptor, aco_plugin__##KIND##__##NAME)

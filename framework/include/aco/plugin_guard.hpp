@@ -21,6 +21,17 @@ struct PluginIdentity {
   std::string file;
 };
 
+// A guarded call: the plugin, its hook and the iteration (< 0: none to name).
+struct PluginCall {
+  const PluginIdentity* who = nullptr;
+  const char* hook = nullptr;
+  int iteration = -1;
+};
+
+// The innermost guarded call the calling thread is in (who null: none), for what a plugin calls
+// back (Context::record()) to know which plugin called.
+PluginCall current_plugin_call() noexcept;
+
 // Marks the calling thread as inside `who`'s `hook` while it lives (iteration < 0: none to
 // name), so a crash report can say where the thread was. The guard opens one around every call.
 class PluginCallScope {
@@ -54,7 +65,8 @@ std::string describe_hook(const char* hook, int iteration);
 std::string describe_plugin(const Strategy& plugin, const char* slot);
 
 // Throws the Error for the exception being handled, thrown by `who` in `hook` (iteration < 0:
-// none to name). Call inside a catch block only.
+// none to name); a PluginFault, which names the plugin already, passes unchanged. Call inside a
+// catch block only.
 [[noreturn]] void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration = -1);
 
 // `plugin` behind a decorator of its interface that calls it inside the boundary: one per slot.

@@ -6,7 +6,7 @@
 // ACO_PLUGIN writes one record per plugin into the ELF section ".aco_plugins": NUL-separated
 // text fields
 //
-//   ACOP \0 <plugin ABI> \0 <standard library> \0 <compiler> \0 <kind> \0 <name> \0 <version> \0 <summary> \0
+//   ACOP \0 <plugin ABI> \0 <standard library> \0 <compiler> \0 <build> \0 <kind> \0 <name> \0 <version> \0 <summary> \0
 //
 // Records of several plugins in one library follow each other, perhaps with NUL padding between.
 // The first two fields keep their meaning in every ABI version; the others may change with it.
@@ -33,12 +33,27 @@
 #define ACO_PLUGIN_STDLIB "unknown standard library"
 #endif
 
+// How the code that expands it was compiled (GCC and clang define __OPTIMIZE__ from -O1 on, CMake's
+// Release and RelWithDebInfo define NDEBUG): the times of an unoptimised (Debug) build mean little,
+// and acobench's report warns of one. The plugin record and acobench's results database carry it.
+#if defined(__OPTIMIZE__) && defined(NDEBUG)
+#define ACO_BUILD_OPTIMISATION "optimised"
+#elif defined(__OPTIMIZE__)
+#define ACO_BUILD_OPTIMISATION "optimised, assertions on"
+#else
+#define ACO_BUILD_OPTIMISATION "unoptimised"
+#endif
+
 namespace aco {
+
+// Whether a build of ACO_BUILD_OPTIMISATION's text is an unoptimised one.
+inline bool unoptimised(const std::string& build) { return build.rfind("unoptimised", 0) == 0; }
 
 struct PluginRecord {
   std::string abi;  // as written: a number, unless the library is not what it claims
   std::string stdlib;
   std::string compiler;  // __VERSION__ of the compiler that built the plugin, for information
+  std::string build;     // ACO_BUILD_OPTIMISATION as the plugin was compiled
   std::string kind;
   std::string name;
   std::string version;

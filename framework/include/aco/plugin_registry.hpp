@@ -31,6 +31,7 @@ struct PluginProvenance {
   std::string version;
   std::string file;
   std::string sha256;  // of the library file's contents, hex
+  std::string build;   // "optimised", "unoptimised"...: the record's (ACO_BUILD_OPTIMISATION)
 };
 
 class BOOST_SYMBOL_VISIBLE PluginRegistry {

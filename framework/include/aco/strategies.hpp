@@ -5,12 +5,15 @@
 #include <boost/config.hpp>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "aco/graph.hpp"
 #include "aco/robot.hpp"
 
 namespace aco {
+
+class FigureSink;
 
 // What every strategy sees of the run in progress.
 struct Context {
@@ -23,6 +26,26 @@ struct Context {
   double beta = 1.0;
   std::uint64_t seed = 0;
   int iteration = 0;  // the current iteration, 0-based
+  // Where record() and add() go (aco/figures.hpp); null, as in a plugin's own unit test or
+  // aco-plugin-check, checks what they are given and keeps nothing.
+  FigureSink* figures = nullptr;
+
+  // A plugin's own figures of its run (restarts, nodes forbidden, deadlocks resolved), kept beside
+  // the planner's (PlanOutcome::properties) as "<slot>/<plugin>.<name>": in acoplan's --json,
+  // acobench's results database, runs.csv and report. A name is lower-case letters, digits and
+  // '_', starting with a letter (at most 64 characters); a value must be finite. Either mistake
+  // stops the run with an Error naming the plugin, the hook and the iteration.
+  //
+  // add(): a count, summed over every call of the run. Thread-safe, and the sum is the same
+  // whatever the thread count: the one to use in hooks that run on construction threads
+  // (DeadlockPolicy::on_stuck, Heuristic::update_node and step_factors), and for any count.
+  // record(): sets a value; the last call of the run wins. Only in single-threaded hooks (init,
+  // start, update, compute, compute_powered, after_iteration, smooth): called during the ants'
+  // construction it is an Error, since which thread's call came last would depend on the thread
+  // count. One name is either a count or a value. Add 0 (or record the starting value) in
+  // initialize() or start() to have the figure in every run, the ones where nothing happened too.
+  void record(std::string_view name, double value) const;
+  void add(std::string_view name, std::int64_t delta = 1) const;
 };
 
 // One ant's walk in one iteration.

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "aco/figures.hpp"
 #include "aco/path.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/run_spec.hpp"
@@ -29,7 +30,9 @@ struct PlanOutcome {
   int turns = 0;
   double time_ms = 0.0;
   // Planner-specific measures (OMPL's run properties): "ant_steps" and "stopped_by" (aco),
-  // "evaluations" (ifwa, pso: candidate solutions decoded into walks).
+  // "evaluations" (ifwa, pso: candidate solutions decoded into walks); and the figures the run's
+  // plugins recorded (Context::record(), add()) as "<slot>/<plugin>.<name>", an integer (a count)
+  // or a real. Hosts write them all alike: acoplan's --json, acobench's database and runs.csv.
   std::map<std::string, ParamValue> properties;
   std::vector<double> iteration_best;  // aco: per iteration, for pictures
   std::vector<double> pheromone;       // aco: final tau per edge, for pictures
@@ -48,6 +51,7 @@ struct PlanContext {
   NodeId goal;
   const RunSpec& run;
   const LoadedPipeline& pipeline;
+  FigureSink& figures;  // where the plugins' figures go (plan() adds them to the properties)
 };
 
 struct Planner {

@@ -87,8 +87,9 @@ std::string to_json(const RunSpec& spec);
 RunSpec run_spec_from_json(const std::string& json, PluginRegistry& registry);
 
 // Which plugin binary fills each slot of the run, as one JSON object
-// ({"update": {"name": "acs", "version": "1.0", "file": "...", "sha256": "..."}, ...}): what a
-// run's output records so that a result can be traced to the code that made it.
+// ({"update": {"name": "acs", "version": "1.0", "file": "...", "sha256": "...", "build": "optimised"},
+// ...}; build: ACO_BUILD_OPTIMISATION as the plugin was compiled): what a run's output records so
+// that a result can be traced to the code that made it.
 std::string plugins_json(const RunSpec& spec, const PluginRegistry& registry);
 
 // One "key = value" line of a config file; under a [section] line the key is "section.key".

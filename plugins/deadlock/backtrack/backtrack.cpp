@@ -16,7 +16,11 @@ const aco::SettingsTable<Parameters> kParams({
 class Backtrack final : public aco::DeadlockPolicy {
  public:
   explicit Backtrack(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
-  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return p_.steps; }
+  // How often ants backed off: a measure of how maze-like the map is for this colony.
+  int on_stuck(const aco::Context& c, std::span<const aco::NodeId>) const override {
+    c.add("backoffs");
+    return p_.steps;
+  }
 
  private:
   Parameters p_;

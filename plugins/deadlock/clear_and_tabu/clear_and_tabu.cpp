@@ -25,13 +25,17 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
 
   void after_iteration(const aco::Context& c, const aco::Iteration& it, std::span<double> tau,
                        std::vector<std::uint8_t>& forbidden) override {
+    std::int64_t newly_forbidden = 0;
     for (const aco::Ant& ant : it.ants) {
       if (ant.arrived) continue;
       for (aco::EdgeId e : ant.edges) tau[e] *= p_.keep;
       const aco::NodeId dead_end = ant.nodes.back();
-      if (dead_end != c.start && !forbidden[dead_end] && keeps_goal_reachable(c, forbidden, dead_end))
+      if (dead_end != c.start && !forbidden[dead_end] && keeps_goal_reachable(c, forbidden, dead_end)) {
         forbidden[dead_end] = 1;
+        ++newly_forbidden;
+      }
     }
+    c.add("nodes_forbidden", newly_forbidden);
   }
 
  private:

@@ -43,6 +43,7 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
     int nodes = 0;
     for (aco::NodeId n = 0; n < g.num_nodes(); ++n) nodes += g.degree(n) > 0;
     choices_ = 0.5 * (1.0 + double(g.num_edges()) / std::max(nodes, 1));
+    c.add("restarts", 0);  // in every run's figures, the runs without a restart too
   }
 
   void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
@@ -60,6 +61,7 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
     if (p_.restart_after > 0 && c.iteration - last_improvement_ >= p_.restart_after) {
       std::fill(tau.begin(), tau.end(), tau_max);  // forget the trail; the engine keeps the best path
       last_improvement_ = c.iteration;
+      c.add("restarts");
       return;
     }
     if (!bounded_) {

@@ -27,8 +27,17 @@ struct BoxPlot {
 
 std::string box_plot_svg(const BoxPlot& plot);
 
-// The k-th colour of the plots' palette (it repeats after ten), for drawings that match them.
-const char* colour(std::size_t k);
+// How the k-th series is drawn: ten colours, and with each further ten the next dash pattern
+// (solid, dashed, dotted, dash-dot), so that 40 series stay distinguishable; after that the styles
+// repeat. Drawings that match the plots (the report's path pictures) use it too.
+struct SeriesStyle {
+  const char* colour;
+  const char* dash;  // an SVG stroke-dasharray; "" for a solid line
+};
+inline constexpr std::size_t kDistinctStyles = 40;
+SeriesStyle series_style(std::size_t k);
+// stroke="..." (and stroke-dasharray="..." unless solid): the SVG attributes of series_style(k).
+std::string stroke_attributes(std::size_t k);
 
 // One curve of a line chart: value[i] is drawn at x[i], or at x = i + 1 (the iteration) when x is
 // empty. A non-finite value (or on a log axis, an x <= 0) leaves a gap; the band is shaded
@@ -39,6 +48,9 @@ struct Series {
   std::vector<double> band_low;   // empty, or as long as value
   std::vector<double> band_high;  // empty, or as long as value
   std::vector<double> x;          // empty, or as long as value and non-decreasing
+  // Its series_style(); by default its position in the chart. A report gives each configuration
+  // its own, the same in every chart, whichever series a chart leaves out.
+  std::optional<std::size_t> style = {};
 };
 
 // One run's best-so-far curve as a step function: value[i] holds from x[i] (its effort by the end

@@ -9,7 +9,9 @@
 //                   cpuinfo, date (creation, UTC), seed (NULL: every trial has its own), setup
 //                   (the problem as JSON), plus the experiment property optimal_length (NULL if
 //                   unknown).
-//   plannerConfigs  one row per configuration: id, name, settings (its resolved settings, JSON).
+//   plannerConfigs  one row per configuration: id, name, settings (its resolved settings, JSON),
+//                   plugins (per slot the binary it last ran: name, version, file, sha256, build;
+//                   JSON, NULL if not known).
 //   enums           OMPL's table of enum descriptions; empty, created for OMPL's tools.
 //   runs            one row per trial: id, experimentid, plannerid, repetition, seed, solved,
 //                   length, grid_length, gap, turns, iterations, best_iteration, time (s),
@@ -33,9 +35,16 @@
 //                   time (iteration * runs.time / iterations): the report leaves those runs out of
 //                   its time and walk charts. The key is (runid, iteration), not OMPL's (runid,
 //                   time): the times of two iterations of a very fast run may coincide.
+//   properties      one row per property of a trial (aco::PlanOutcome::properties): runid, name,
+//                   value (integer, real or text as SQLite stores it). The planners' own
+//                   ("ant_steps", "stopped_by" of aco; "evaluations" of ifwa and pso) and the
+//                   figures the run's plugins recorded, "<slot>/<plugin>.<name>" (Context::record(),
+//                   add()). Trials of format 4 or earlier have none.
 //   acobench_meta   key/value: format_version, experiment_name and fingerprint (a canonical text
 //                   from the caller naming everything that defines the trials; of a grown
-//                   experiment, of every configuration and problem it held: growth.hpp).
+//                   experiment, of every configuration and problem it held: growth.hpp);
+//                   host_version and host_build (ACO_BUILD_OPTIMISATION) of the acobench that ran
+//                   the trials last.
 //
 // Resuming: each trial is one transaction (its runs row with all its progress rows) in WAL mode,
 // so a process killed at any moment (SIGKILL included) leaves every committed trial whole and no
@@ -78,7 +87,7 @@ class ResultsDb {
   // The id of the configuration: the existing one if its name is stored with the same settings
   // (compared as JSON values; of acobench's settings, the resolved run and plugin binaries, not
   // the keys that wrote them); an Error listing the differences if the name is stored with other
-  // settings.
+  // settings. Its plugins, if given, replace the stored ones.
   int add_config(const ConfigRecord& config);
 
   // (problem, config id, repetition) of every stored trial.

@@ -3,9 +3,12 @@
 // which the results database stores (results_db.hpp), the trial runner makes (trial_runner.hpp),
 // and worker processes and MPI ranks send (as CBOR) without knowing of the database.
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "aco/parameters.hpp"
 
 namespace acobench {
 
@@ -18,6 +21,10 @@ struct ProblemRecord {
 struct ConfigRecord {
   std::string name;
   std::string settings_json;  // the full resolved settings
+  // Per slot, the plugin binary the configuration last ran: name, version, file, sha256, build
+  // (aco::plugins_json). Not part of its identity (a moved or rebuilt file is told, not refused
+  // here: the experiment's fingerprint refuses other binaries); "" when not known.
+  std::string plugins_json = {};
 };
 
 // What a simulation trial (an acosim scenario as a problem) measured beyond solved and length.
@@ -52,6 +59,9 @@ struct TrialRecord {
   // "out of memory") and why (one of kFailureKinds); both "" otherwise.
   std::string error;
   std::string failure;
+  // The run's properties (aco::PlanOutcome::properties): the planner's ("ant_steps",
+  // "evaluations"...) and the plugins' figures ("update/max_min.restarts").
+  std::map<std::string, aco::ParamValue> properties;
 };
 
 // Why trials fail, as runs.failure stores it: a crash (a signal), the trial time limit, the trial

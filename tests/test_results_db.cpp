@@ -278,7 +278,7 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   const fs::path file = fresh_db();
   open(file);  // creates it
   sql_value(file, "UPDATE acobench_meta SET value = '0' WHERE key = 'format_version' RETURNING value");
-  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 5"));
+  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 6"));
 
   const fs::path missing = fresh_db();
   auto problems = kProblems;

@@ -58,9 +58,6 @@ constexpr const char* kUsage =
     "Exit codes: 0 done, 1 an error of acobench's own (a bad option or file, a refused database),\n"
     "3 trials failed (stored as failed; acobench run without --allow-failures).\n\n";
 
-// acobench run's exit code when a trial of the experiment failed (1 is an error of acobench's own).
-constexpr int kTrialsFailed = 3;
-
 std::string clock_text(double seconds) {
   const long s = std::lround(std::max(0.0, seconds));
   char text[32];
@@ -143,7 +140,7 @@ std::string quoted_list(const std::vector<std::string>& names) {
   return text;
 }
 
-// The run's verdict: 0, or kTrialsFailed when a trial failed and failures are not allowed.
+// The run's verdict: 0, or aco::kExitTrialsFailed when a trial failed and failures are not allowed.
 int print_summary(const acobench::RunSummary& s, const acobench::Experiment& experiment, const acobench::RunOptions& run,
                   bool allow_failures) {
   const auto& g = s.growth;
@@ -179,9 +176,9 @@ int print_summary(const acobench::RunSummary& s, const acobench::Experiment& exp
     std::cerr << "acobench: --allow-failures: exit 0 all the same\n";
     return 0;
   }
-  std::cerr << "acobench: exit " << kTrialsFailed << ": trials failed (all in the report: acobench report "
+  std::cerr << "acobench: exit " << aco::kExitTrialsFailed << ": trials failed (all in the report: acobench report "
             << run.database.string() << "); --allow-failures accepts them\n";
-  return kTrialsFailed;
+  return aco::kExitTrialsFailed;
 }
 
 #ifdef ACOBENCH_WITH_MPI

@@ -20,6 +20,7 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitError = 1;   // the command failed; the message on stderr says why
 inline constexpr int kExitUsage = 2;   // aco-plugin-check, aco-new-plugin: the command line cannot be read
 inline constexpr int kExitNoPath = 3;  // acoplan: no path found; acosim: the robot did not reach the goal
+inline constexpr int kExitTrialsFailed = 3;  // acobench: a trial failed (now or in an earlier run of the study)
 
 inline constexpr const char* kThreadsHelp = "worker threads, 0 = all cores; results do not depend on it";
 

@@ -73,6 +73,10 @@ TEST_CASE("a bad pheromone or heuristic value is named with the plugin, the hook
       {{"--heuristic", "bad_value", "--heuristic.by_node", "true", "--heuristic.value", "inf", "--threads", "1"}, "heuristic", "inf",
        heuristic, "update_node()", 3},
       {{"--heuristic", "bad_value", "--heuristic.by_node", "true", "--threads", "2"}, "heuristic", "nan", heuristic, "update_node()", 3},
+      {{"--heuristic", "bad_value", "--heuristic.by_step", "true", "--heuristic.value", "negative"}, "heuristic", "-1",
+       "step factor", "step_factors()", 3},
+      {{"--heuristic", "bad_value", "--heuristic.by_step", "true", "--heuristic.value", "inf"}, "heuristic", "inf", "step factor",
+       "step_factors()", 3},
   };
   for (const BadValue& c : cases) {
     expect_error(c.args, plugin(c.slot, "bad_value") + " wrote " + c.value + " to the " + c.field + " of edge (0,0) -> (1,0) in " +

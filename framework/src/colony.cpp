@@ -336,9 +336,16 @@ class Colony {
         std::span<double> factors(scratch.factors.data(), n);
         p_.heuristic->step_factors(context_, ant, {candidates, std::size_t(n)}, factors);
         total = 0.0;
-        for (int i = 0; i < n; ++i) total += weights[i] *= factors[i];
-        if (first_invalid(factors) != factors.size()) reject_factors(factors, candidates);
-        if (!(total <= std::numeric_limits<double>::max())) overflowed();
+        bool negative_factor = false;
+        for (int i = 0; i < n; ++i) {
+          negative_factor |= !(factors[i] >= 0.0);
+          total += weights[i] *= factors[i];
+        }
+        // In the pass that applies them, as for the pheromone: NaN and infinity reach the total.
+        if (negative_factor || !(total <= std::numeric_limits<double>::max())) {
+          if (first_invalid(factors) != factors.size()) reject_factors(factors, candidates);
+          overflowed();
+        }
       }
       const EdgeId e = candidates[choose(rng, n, weights, total)];
       const NodeId next = targets[e];

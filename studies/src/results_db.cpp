@@ -566,8 +566,9 @@ void ResultsDb::store(const TrialRecord& t) {
               measured ? std::optional(to_sql(t.walks[at])) : std::nullopt)
         .finish();
   }
-  for (const auto& [name, value] : t.properties)
-    std::visit([&](const auto& v) { d.insert_property->run(run, name, v).finish(); }, value);
+  // Not a structured binding: clang 14 (the fuzz preset) cannot capture one in the lambda.
+  for (const auto& property : t.properties)
+    std::visit([&](const auto& v) { d.insert_property->run(run, property.first, v).finish(); }, property.second);
   d.add_time->run(experiment, t.time_s).finish();
   transaction.commit();
 }

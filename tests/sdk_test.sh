@@ -66,9 +66,22 @@ grep -q '"map-format":"shapes","map.resolution":0.5' <<< "$out"
 cp "$source"/examples/shapes_map/room* "$work/"
 "$bin/acobench" run "$work/room_experiment.yaml" --plugin-dir "$shapes" --db "$work/room.db" > "$work/room.log"
 [ "$(sqlite3 "$work/room.db" "SELECT COUNT(*) || ' ' || SUM(solved) FROM runs")" = "8 8" ]
-# The report draws the maps again with the plugin (found on ACO_PLUGIN_PATH).
-ACO_PLUGIN_PATH="$shapes" "$bin/acobench" report "$work/room.db" --out "$work/room-report" >/dev/null
-if grep -q "map not drawn" "$work/room-report/report.html"; then echo "sdk: the report did not draw the shapes map" >&2; exit 1; fi
+# The report draws the maps again with the plugin (found through --plugin-dir or ACO_PLUGIN_PATH).
+for finds_plugin in "--plugin-dir $shapes" "ACO_PLUGIN_PATH=$shapes"; do
+  rm -rf "$work/room-report"
+  if [ "${finds_plugin%%=*}" = ACO_PLUGIN_PATH ]; then
+    ACO_PLUGIN_PATH="$shapes" "$bin/acobench" report "$work/room.db" --out "$work/room-report" >/dev/null
+  else
+    "$bin/acobench" report "$work/room.db" --out "$work/room-report" --plugin-dir "$shapes" >/dev/null
+  fi
+  if grep -q "map not drawn" "$work/room-report/report.html"; then
+    echo "sdk: the report did not draw the shapes map (plugin found through $finds_plugin)" >&2
+    exit 1
+  fi
+done
+# Without the plugin the report still comes, saying why the map is missing.
+"$bin/acobench" report "$work/room.db" --out "$work/room-report-bare" >/dev/null
+grep -q "map not drawn" "$work/room-report-bare/report.html"
 out=$("$bin/acosim" "$work/room_scenario.yaml" --plugin-dir "$shapes" --json)
 grep -q '"outcome":"reached"' <<< "$out"
 

@@ -1,7 +1,7 @@
 // acobench: ablation studies of plugin combinations, with a results database and reports.
 //   acobench run EXPERIMENT.yaml [--db FILE] [--threads N] [--shard K/N] [--allow-failures]   (also under mpirun)
 //   acobench merge SHARD.db... [--db FILE]
-//   acobench report DATABASE [--out DIR]
+//   acobench report DATABASE [--out DIR] [--plugin-dir DIR]
 #include <signal.h>
 #include <unistd.h>
 
@@ -51,7 +51,7 @@ constexpr const char* kUsage =
     "      (the failures are counted by reason at the end); --allow-failures: exit 0 all the same\n"
     "  acobench merge DATABASE... [--db FILE]\n"
     "      one database of the trials of several of an experiment's (shards, or any runs of it)\n"
-    "  acobench report DATABASE [--out DIR]\n"
+    "  acobench report DATABASE [--out DIR] [--plugin-dir DIR]\n"
     "      statistics, Markdown and HTML report, CSV of all runs\n"
     "  acobench --version\n"
     "      the framework's version, commit, build type and compiler\n\n"
@@ -342,11 +342,13 @@ int merge(const std::vector<std::string>& args) {
 int report(const std::vector<std::string>& args) {
   po::options_description options("acobench report");
   std::string out = ".";
+  aco::HostOptions host;
   options.add_options()("database", po::value<std::string>()->required(), "results database")
       ("out", po::value(&out), "folder for report.md, report.html and runs.csv (default: current folder)");
+  host.add_plugin_dir(options);  // map plugins, to draw the maps of their formats
   const po::variables_map vm = aco::parse_arguments(args, options, "database", 1);
   std::vector<std::string> warnings;
-  const auto files = acobench::write_report(vm["database"].as<std::string>(), out, &warnings);
+  const auto files = acobench::write_report(vm["database"].as<std::string>(), out, &warnings, host.plugin_search_dirs());
   for (const auto& f : files) std::cout << f.string() << "\n";
   for (const auto& warning : warnings) std::cerr << "acobench: warning: " << warning << "\n";
   return 0;

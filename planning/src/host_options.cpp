@@ -15,12 +15,16 @@
 namespace aco {
 namespace po = boost::program_options;
 
+void HostOptions::add_plugin_dir(po::options_description& options) {
+  options.add_options()("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"),
+                        "also search DIR for plugins (before ACO_PLUGIN_PATH and the default folders)");
+}
+
 void HostOptions::add_plugin_dir_and_max_memory(po::options_description& options) {
-  options.add_options()
-      ("plugin-dir", po::value(&plugin_dirs)->composing()->value_name("DIR"),
-       "also search DIR for plugins (before ACO_PLUGIN_PATH and the default folders)")
-      ("max-memory", po::value<std::string>()->value_name("SIZE")->notifier([this](const std::string& size) { max_memory = size; }),
-       kMaxMemoryHelp);
+  add_plugin_dir(options);
+  options.add_options()(
+      "max-memory", po::value<std::string>()->value_name("SIZE")->notifier([this](const std::string& size) { max_memory = size; }),
+      kMaxMemoryHelp);
 }
 
 void HostOptions::add_threads(po::options_description& options, const std::string& scope) {

@@ -64,6 +64,7 @@ struct Analysis {
   std::vector<double> average_rank;          // per config
   std::vector<std::string> ablation_path;
   std::filesystem::path experiment_dir;  // the maps are relative to it
+  std::vector<std::filesystem::path> plugin_dirs;  // where map plugins are looked for
   std::vector<int> buckets;              // per problem: Moving AI bucket, or -1
   std::size_t unmeasured = 0;            // runs stored without anytime curves (by an older acobench)
   std::string host_version, host_build;  // of the acobench that ran the trials ("" if not recorded)
@@ -774,8 +775,8 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
   try {
     const std::filesystem::path file = a.experiment_dir / setup.at("map").get<std::string>();
     if (setup.contains("map-format")) {
-      // A map plugin's format: found where ACO_PLUGIN_PATH and the bundled plugins are.
-      aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
+      // A map plugin's format: found in acobench report's --plugin-dir, ACO_PLUGIN_PATH and the bundled folder.
+      aco::PluginRegistry registry(a.plugin_dirs);
       const std::string format = setup.at("map-format").get<std::string>();
       aco::Keys keys;
       const nlohmann::json parameters = setup.value("map-parameters", nlohmann::json::object());
@@ -947,10 +948,12 @@ void write(const std::filesystem::path& file, const std::string& text) {
 }  // namespace
 
 std::vector<std::filesystem::path> write_report(const std::filesystem::path& database, const std::filesystem::path& out,
-                                                std::vector<std::string>* warnings) {
+                                                std::vector<std::string>* warnings,
+                                                const std::vector<std::filesystem::path>& plugin_dirs) {
   if (!std::filesystem::exists(database)) throw aco::Error(database.string() + ": no such results database");
   const ResultsDb db(database);
-  const Analysis a = analyse(db);
+  Analysis a = analyse(db);
+  a.plugin_dirs = plugin_dirs;
   std::filesystem::create_directories(out);
   const std::string md = markdown(a, database);
   const std::vector<std::filesystem::path> files = {out / "report.md", out / "report.html", out / "runs.csv"};

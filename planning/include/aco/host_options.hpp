@@ -30,6 +30,8 @@ struct HostOptions {
   std::optional<std::string> max_memory;  // --max-memory as given; none: the default limit
   int threads = 0;                       // --threads; 0: all cores
 
+  // Adds --plugin-dir DIR to `options`, stored here.
+  void add_plugin_dir(boost::program_options::options_description& options);
   // Adds --plugin-dir DIR and --max-memory SIZE to `options`, stored here.
   void add_plugin_dir_and_max_memory(boost::program_options::options_description& options);
   // Adds --threads N, stored here; a negative N is refused. `scope` starts its help ("with --batch: ").

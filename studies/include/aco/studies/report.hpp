@@ -6,12 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "aco/plugin_registry.hpp"
+
 namespace acobench {
 
 // Writes report.md, report.html and runs.csv into `out` (created if missing); returns them. The
 // warnings the report gives (an unoptimised build of acobench or of a plugin ran the trials) are
-// also added to `warnings`, for the caller to print.
-std::vector<std::filesystem::path> write_report(const std::filesystem::path& database, const std::filesystem::path& out,
-                                                std::vector<std::string>* warnings = nullptr);
+// also added to `warnings`, for the caller to print. The map plugins of problems whose maps a
+// plugin reads are looked for in `plugin_dirs` (default: ACO_PLUGIN_PATH's and the bundled folder).
+std::vector<std::filesystem::path> write_report(
+    const std::filesystem::path& database, const std::filesystem::path& out, std::vector<std::string>* warnings = nullptr,
+    const std::vector<std::filesystem::path>& plugin_dirs = aco::PluginRegistry::default_search_dirs());
 
 }  // namespace acobench

@@ -109,7 +109,7 @@ PruneTiming time_prune(aco::PluginRegistry& registry, const aco::Graph& graph, c
 }
 
 std::unique_ptr<aco::Map> load(const std::filesystem::path& file) {
-  if (!std::filesystem::exists(file)) throw aco::Error(file.string() + " not found (give --shared-data DIR)");
+  if (!std::filesystem::exists(file)) throw aco::Error(file.string() + " not found (give --maps DIR or --large-map FILE)");
   return aco::load_map(file);
 }
 
@@ -403,7 +403,7 @@ std::set<std::string> parse_sections(const std::string& text) {
 
 int main(int argc, char** argv) try {
   int repeats = 30;
-  std::string shared = ACO_BENCH_SHARED_DATA_DIR;
+  std::string maps = ACO_BENCH_DATA_DIR "/maps";
   std::string large = "movingai/street/Berlin_0_512.map";
   int large_index = 400;
   int large_repeats = 5;
@@ -413,8 +413,8 @@ int main(int argc, char** argv) try {
   options.add_options()("help,h", "print this help")
       ("repeats", po::value(&repeats), "runs per small-map measurement (seeds 1..N)")
       ("only", po::value(&only), "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins, dwa (default: all)")
-      ("shared-data", po::value(&shared), "folder with movingai/ (default ../shared/data)")
-      ("large-map", po::value(&large), "512x512 map for the thread-scaling run, relative to --shared-data")
+      ("maps", po::value(&maps), "folder the large map is in (default: the project's data/maps)")
+      ("large-map", po::value(&large), "512x512 map for the large-map sections, relative to --maps")
       ("large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")
       ("large-repeats", po::value(&large_repeats), "runs per thread count on the large map")
       ("large-plugin-repeats", po::value(&large_plugin_repeats), "runs per plugin in the large-plugins section");
@@ -434,9 +434,9 @@ int main(int argc, char** argv) try {
   if (sections.count("fireworks")) time_fireworks(repeats);
   if (sections.count("dwa")) time_dwa(registry, repeats);
   if (sections.count("terrain")) identical = time_terrain(registry, repeats) && identical;
-  if (sections.count("large")) identical = time_large(registry, shared, large, large_index, large_repeats) && identical;
+  if (sections.count("large")) identical = time_large(registry, maps, large, large_index, large_repeats) && identical;
   if (sections.count("large-plugins"))
-    identical = time_large_plugins(registry, shared, large, large_index, large_plugin_repeats) && identical;
+    identical = time_large_plugins(registry, maps, large, large_index, large_plugin_repeats) && identical;
   return identical ? 0 : 1;
 } catch (po::error& e) {
   std::cerr << "aco_bench: error: " << aco::program_options_message(e) << "\n";

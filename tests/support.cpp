@@ -25,7 +25,6 @@ extern char** environ;
 namespace test {
 
 std::filesystem::path data_dir() { return ACO_TEST_DATA_DIR; }
-std::filesystem::path shared_data_dir() { return ACO_TEST_SHARED_DATA_DIR; }
 
 aco::OccupancyGrid classic_map(int n) {
   const auto file = data_dir() / "maps/classic20" / ("map" + std::to_string(n) + ".txt");

@@ -21,7 +21,6 @@
 namespace test {
 
 std::filesystem::path data_dir();         // the project's data/
-std::filesystem::path shared_data_dir();  // ../shared/data (Moving AI subset, classic maps)
 
 // data/maps/classic20/map<n>.txt, the 20x20 maps of the papers' MATLAB code.
 aco::OccupancyGrid classic_map(int n);

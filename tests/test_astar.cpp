@@ -63,7 +63,7 @@ TEST_CASE("A* matches the classic20 table of optimal lengths", "[astar]") {
     const char* file;
     double cutting, no_cutting, four;
   };
-  // /work/shared/data/classic20/README.md
+  // data/maps/classic20/README.md
   const Row table[] = {{"map1.txt", 34.3848, 37.8995, 42.0},
                        {"map2.txt", 28.6274, 29.7990, 38.0},
                        {"map3.txt", 30.9706, 33.3137, 38.0}};
@@ -92,14 +92,8 @@ TEST_CASE("A* matches the classic20 table of optimal lengths", "[astar]") {
 }
 
 TEST_CASE("A* matches Moving AI optimal lengths (8-neighbourhood, no corner cutting)", "[astar][slow]") {
-  const fs::path root = test::shared_data_dir() / "movingai";
-  // The Moving AI subset lives beside the project (../shared/data), not in it: a clone without
-  // that folder cannot run this check, and says so instead of failing.
-  if (!fs::is_directory(root)) {
-    WARN("skipped: no Moving AI data at " << root.string() << " (set ACO_SHARED_DATA_DIR)");
-    return;
-  }
-  const char* files[] = {"dao/arena.map.scen",          "dao/arena2.map.scen",         "dao/lak304d.map.scen",
+  const fs::path root = test::data_dir() / "maps/movingai";
+  const char* files[] = {"arena.map.scen",          "dao/arena2.map.scen",         "dao/lak304d.map.scen",
                          "room/64room_000.map.scen",    "room/8room_000.map.scen",     "maze/maze512-1-0.map.scen",
                          "random/random512-10-0.map.scen", "street/Berlin_0_512.map.scen"};
   for (const char* name : files) {

@@ -210,7 +210,7 @@ TEST_CASE("fireworks on a large map: block weights and the walk limit, still det
   const auto unlimited = aco::run_fireworks(graph, 0, graph.node({19, 19}), settings({{"iterations", "10"}, {"walk_limit", "0"}}));
   CHECK(unlimited.best_so_far == per_cell.best_so_far);
   // ...but does on a 193x194 map, where walks wander: the search then differs, still valid.
-  const auto file = test::shared_data_dir() / "movingai/dao/lak304d.map";
+  const auto file = test::data_dir() / "maps/movingai/dao/lak304d.map";
   if (!std::filesystem::exists(file)) {
     WARN("skipped: no Moving AI data at " << file.string());
     return;

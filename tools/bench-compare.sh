@@ -19,10 +19,9 @@ if [ ! -e "$base/src/.git" ]; then
   rm -rf "$base"
   git worktree add --detach "$base/src" "$commit" >/dev/null
 fi
-# The large maps are found where this checkout's build finds them.
-shared=$(sed -n 's/^ACO_SHARED_DATA_DIR:PATH=//p' build/release/CMakeCache.txt)
+# A commit from before data/maps/movingai held the large maps read them from ACO_SHARED_DATA_DIR.
 cmake -S "$base/src" -B "$base/build" -DCMAKE_BUILD_TYPE=Release -DACO_BUILD_TESTS=OFF -DACO_BUILD_PYTHON=OFF \
-  -DACO_WITH_MPI=OFF -DACO_SHARED_DATA_DIR="$shared" >/dev/null
+  -DACO_WITH_MPI=OFF -DACO_SHARED_DATA_DIR="$PWD/data/maps" --no-warn-unused-cli >/dev/null
 plugins=$(cmake --build "$base/build" --target help | grep -oE 'aco_(init|heuristic|update|deadlock|smoother|local)_[a-z_]+' |
   sort -u | tr '\n' ' ')
 # shellcheck disable=SC2086

@@ -11,7 +11,7 @@
 #     A slow harness on both cores, sharing one corpus (each job's log is fuzz-N.log here):
 #     tools/fuzz.sh experiment -jobs=2 -workers=2 -runs=500000
 # FUZZ_TARGETS="esri_ascii pgm_heights" limits short and long runs (and the build) to those.
-# Seeds: the small files of data/ (and ../shared/data) of each format, tests/fuzz/corpus/<target>
+# Seeds: the small files of data/ of each format, tests/fuzz/corpus/<target>
 # and the regression inputs. A crash leaves its input in build/fuzz/crashes/<target>/: fix the
 # loader, then keep the input in tests/fuzz/regressions/<target>/, which the test suite replays.
 set -euo pipefail
@@ -44,11 +44,10 @@ nice -n 10 cmake --build --preset fuzz -j 2 --target "${targets[@]/#/fuzz_}"
 
 # The seed files of a target's format: small ones only, so each input runs quickly.
 seed_files() {
-  local shared=../shared/data
   case "$1" in
-    movingai_map) find data/maps data/terrain "$shared/movingai" -name '*.map' ;;
+    movingai_map) find data/maps data/terrain -name '*.map' ;;
     movingai_scen) find data/maps data/terrain -name '*.scen' ;;
-    matrix_map) find data/maps/classic20 "$shared/classic20" -name '*.txt' ;;
+    matrix_map) find data/maps/classic20 -name '*.txt' ;;
     esri_ascii) find data/terrain -name '*.asc' ;;
     ini_config) find data/presets data/scenarios -name '*.ini' ;;
     experiment) find data/experiments -name '*.yaml' ;;

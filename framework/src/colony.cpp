@@ -25,7 +25,6 @@
 #include "aco/plugin_error.hpp"
 #include "aco/plugin_guard.hpp"
 #include "aco/rng.hpp"
-#include "default_hooks.hpp"
 
 namespace aco {
 namespace {
@@ -231,9 +230,8 @@ class Colony {
     }
     if (s_.null_model != NullModel::none) return iteration_best;  // the twins learn nothing
     const Iteration view{ants, iteration_best, best()};
-    ran_default_after_iteration = false;
     p_.deadlock->after_iteration(context_, view, tau_, forbidden_);
-    if (check_every_hook_ && !ran_default_after_iteration) check_pheromone(*p_.deadlock, "deadlock", "after_iteration()");
+    if (check_every_hook_) check_pheromone(*p_.deadlock, "deadlock", "after_iteration()");
     forbidden_[context_.start] = forbidden_[context_.goal] = 0;
     p_.update->update(context_, view, tau_);
     if (check_every_hook_) check_pheromone(*p_.update, "update", "update()");
@@ -342,10 +340,7 @@ class Colony {
           total += weights[i] *= factors[i];
         }
         // In the pass that applies them, as for the pheromone: NaN and infinity reach the total.
-        if (negative_factor || !(total <= std::numeric_limits<double>::max())) {
-          if (first_invalid(factors) != factors.size()) reject_factors(factors, candidates);
-          overflowed();
-        }
+        if (negative_factor || !(total <= std::numeric_limits<double>::max())) reject_factors_or_overflow(factors, candidates);
       }
       const EdgeId e = candidates[choose(rng, n, weights, total)];
       const NodeId next = targets[e];
@@ -370,9 +365,11 @@ class Colony {
     throw Error("the transition weights overflowed: pheromone or heuristic values are too large");
   }
 
-  [[noreturn]] void reject_factors(std::span<const double> factors, const EdgeId* candidates) const {
+  [[noreturn]] void reject_factors_or_overflow(std::span<const double> factors, const EdgeId* candidates) const {
     const std::size_t i = first_invalid(factors);
-    reject_value(*p_.heuristic, "heuristic", "step_factors()", "step factor", factors[i], static_cast<std::size_t>(candidates[i]));
+    if (i != factors.size())
+      reject_value(*p_.heuristic, "heuristic", "step_factors()", "step factor", factors[i], static_cast<std::size_t>(candidates[i]));
+    overflowed();
   }
 
   // Pseudo-random proportional rule: with probability q0 the best candidate, else the roulette.

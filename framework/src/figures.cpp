@@ -21,12 +21,7 @@ std::string key_prefix(const PluginIdentity* plugin) {
 }
 
 // "plugin update/x (FILE)", or "a strategy" outside the registry's plugins.
-std::string recorder(const PluginCall& call) {
-  if (!call.who) return "a strategy";
-  std::string text = "plugin " + call.who->slot + "/" + call.who->name;
-  if (!call.who->file.empty()) text += " (" + call.who->file + ")";
-  return text;
-}
+std::string recorder(const PluginCall& call) { return call.who ? describe(*call.who) : "a strategy"; }
 
 // " in update() in iteration 3 (0-based, as Context::iteration)", or "" outside a guarded call.
 std::string where(const PluginCall& call) { return call.hook ? " in " + describe_hook(call.hook, call.iteration) : ""; }

@@ -37,14 +37,13 @@ void append_number(char* out, std::size_t size, std::size_t& length, long value)
   append(out, size, length, text);
 }
 
-// "plugin update/max_min (FILE)"
+}  // namespace
+
 std::string describe(const PluginIdentity& who) {
   std::string plugin = "plugin " + who.slot + "/" + who.name;
   if (!who.file.empty()) plugin += " (" + who.file + ")";
   return plugin;
 }
-
-}  // namespace
 
 PluginCallScope::PluginCallScope(const PluginIdentity& who, const char* hook, int iteration) noexcept
     : who_(current_call.who), hook_(current_call.hook), iteration_(current_call.iteration) {

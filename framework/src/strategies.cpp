@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "aco/error.hpp"
-#include "default_hooks.hpp"
 #include "aco/parallel.hpp"
 
 namespace aco {
@@ -43,10 +42,6 @@ void Heuristic::step_factors(const Context&, const Ant&, std::span<const EdgeId>
 
 void PheromoneUpdate::start(const Context&, std::span<double>) {}
 
-thread_local bool ran_default_after_iteration = false;
-
-void DeadlockPolicy::after_iteration(const Context&, const Iteration&, std::span<double>, std::vector<std::uint8_t>&) {
-  ran_default_after_iteration = true;
-}
+void DeadlockPolicy::after_iteration(const Context&, const Iteration&, std::span<double>, std::vector<std::uint8_t>&) {}
 
 }  // namespace aco

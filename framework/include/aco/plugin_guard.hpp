@@ -60,6 +60,9 @@ std::string describe_current_exception();
 // (iteration < 0: the hook alone), as every message numbers iterations.
 std::string describe_hook(const char* hook, int iteration);
 
+// "plugin update/max_min (FILE)" (the file left out when unknown).
+std::string describe(const PluginIdentity& who);
+
 // "plugin update/max_min (FILE)" for a plugin made by the registry (behind the guard); "the
 // update plugin" (the slot given) for an object made otherwise, such as a test's own strategy.
 std::string describe_plugin(const Strategy& plugin, const char* slot);

@@ -6,3 +6,5 @@ preset="${1:-release}"
 tools/setup.sh
 cmake --preset "$preset" >/dev/null
 cmake --build --preset "$preset" -j "$(nproc)"
+echo "$0: built build/$preset; its programs are in build/$preset/bin: put them on the PATH with" \
+     "'. tools/env.sh'$([ "$preset" = release ] || echo " (ACO_PRESET=$preset . tools/env.sh)")" >&2

@@ -150,6 +150,19 @@ TEST_CASE("acoplan lists and describes plugins, and prints help with plugin opti
   expect_error({"--describe", "max_mn"}, "no plugin named 'max_mn'; did you mean 'update/max_min'?");
 }
 
+TEST_CASE("acoplan --describe takes SLOT/NAME and lists the slots of a name several have", "[acoplan][describe]") {
+  for (const std::string slot : {"init", "heuristic"}) {
+    const auto described = test::acoplan({"--describe", slot + "/potential_field"});
+    CHECK(described.exit_code == 0);
+    CHECK_THAT(described.out, StartsWith(slot + "/potential_field "));
+  }
+  expect_error({"--describe", "potential_field"},
+               "--describe: 'potential_field' names a plugin in 2 slots; give its slot too, as SLOT/NAME: "
+               "init/potential_field or heuristic/potential_field");
+  expect_error({"--describe", "update/potential_field"}, "no plugin named 'update/potential_field'");
+  CHECK_THAT(test::acoplan({"--help"}).out, Contains("--describe SLOT/NAME"));
+}
+
 TEST_CASE("acoplan writes an SVG picture", "[acoplan]") {
   const auto file = test::temp_file("run.svg", "");
   const auto r = test::acoplan({"--svg", file.string(), "--svg-pheromone"});

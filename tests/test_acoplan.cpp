@@ -163,6 +163,41 @@ TEST_CASE("acoplan --describe takes SLOT/NAME and lists the slots of a name seve
   CHECK_THAT(test::acoplan({"--help"}).out, Contains("--describe SLOT/NAME"));
 }
 
+// The line of the summary that starts with `label`, or "" if there is none.
+std::string summary_line(const std::string& summary, const std::string& label) {
+  std::istringstream in(summary);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(label, 0) == 0) return line;
+  return "";
+}
+
+// --update acs without --q0 used to read like a run with it: the gap differed, the summary not.
+TEST_CASE("acoplan's summary shows every setting changed from the defaults and no other", "[acoplan][summary]") {
+  const std::vector<std::string> base{"--preset", "ant-system", "--update", "acs", "--iterations", "5"};
+  const auto plain = test::acoplan(base);
+  REQUIRE(plain.exit_code == 0);
+  CHECK(summary_line(plain.out, "settings: ") ==
+        "settings: the engine defaults, as --help and --describe SLOT/NAME list them");
+
+  auto changed = base;
+  changed.insert(changed.end(), {"--q0", "0.7", "--search", "bidirectional", "--update.rho", "0.2", "--walk-limit",
+                                 "3", "--stagnation", "0", "--update.q", "1", "--repeat", "2"});
+  const auto r = test::acoplan(changed);
+  REQUIRE(r.exit_code == 0);
+  const std::string line = summary_line(r.out, "settings: ");
+  CHECK(line == "settings: q0=0.7 search=bidirectional walk-limit=3 update.rho=0.2 (changed from the engine defaults), "
+                "as --help and --describe SLOT/NAME list them");
+  // Given but equal to the default: stagnation 0 and acs's q 1 are not changes. Neither is what
+  // another line shows (the colony line's iterations, the pipeline line's update=acs).
+  for (const char* unchanged : {"stagnation", "update.q", "iterations", "update="}) CHECK_THAT(line, !Contains(unchanged));
+  // The recommended preset's settings are changes too: a bare acoplan shows what robust sets.
+  CHECK_THAT(summary_line(test::acoplan({"--iterations", "5"}).out, "settings: "),
+             Contains("fill-dead-ends=true") && Contains("q0=0.7") && Contains("heuristic.floor=0.5"));
+  // Another planner shows its own keys on its line; colony settings are not its.
+  CHECK(summary_line(test::acoplan({"--planner", "astar", "--q0", "0.5", "--max-slope", "45"}).out, "settings: ") ==
+        "settings: max-slope=45 (changed from the engine defaults), as --help and --describe SLOT/NAME list them");
+}
+
 TEST_CASE("acoplan writes an SVG picture", "[acoplan]") {
   const auto file = test::temp_file("run.svg", "");
   const auto r = test::acoplan({"--svg", file.string(), "--svg-pheromone"});

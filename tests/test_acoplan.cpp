@@ -198,6 +198,46 @@ TEST_CASE("acoplan's summary shows every setting changed from the defaults and n
         "settings: max-slope=45 (changed from the engine defaults), as --help and --describe SLOT/NAME list them");
 }
 
+// The bundled ROS map_server and PGM height samples, with their READMEs' commands: each loads,
+// the colony solves it, and the exact optimum is the one the README states.
+TEST_CASE("acoplan loads and solves the bundled ROS and PGM height samples", "[acoplan][sample-maps]") {
+  struct Sample {
+    std::vector<std::string> args;
+    double optimum;
+    double lowest, highest;  // of the heights along the path; 0, 0 on a 2D map
+  };
+  const std::string dir = (test::data_dir() / "maps").string();
+  const std::vector<Sample> samples{
+      {{"--map", dir + "/ros/office.yaml", "--start", "8,8", "--goal", "90,60"}, 111.7401, 0, 0},
+      {{"--map", dir + "/heights/hills.pgm", "--height-scale", "0.05", "--cell-size", "1", "--max-slope", "25",
+        "--start", "0,40", "--goal", "60,44"},
+       72.2692, 0, 12},
+      {{"--map", dir + "/heights/hills16.pgm", "--height-scale", "0.001", "--cell-size", "5", "--max-slope", "25",
+        "--start", "0,32", "--goal", "95,32"},
+       524.0169, 20, 60},
+  };
+  for (const auto& sample : samples) {
+    INFO(sample.args[1]);
+    const json j = run_json(sample.args);
+    REQUIRE(j["solved"].get<bool>());
+    CHECK(j["optimal_length"].get<double>() == Approx(sample.optimum).margin(1e-4));
+    CHECK(j["grid_length"].get<double>() >= sample.optimum - 1e-4);
+    CHECK(j["grid_length"].get<double>() <= 1.05 * sample.optimum);
+    for (const auto& point : j["path"]) {
+      const double z = point.size() == 3 ? point[2].get<double>() : 0.0;
+      CHECK(z >= sample.lowest);
+      CHECK(z <= sample.highest);
+    }
+  }
+  // The 16-bit image keeps millimetres: heights along the route are not all whole metres.
+  const json route = run_json(samples[2].args)["path"];
+  CHECK(std::any_of(route.begin(), route.end(), [](const json& p) { return p[2].get<double>() != std::round(p[2].get<double>()); }));
+  // The slope limit is what makes the height sample's route longer than the unlimited one.
+  auto unlimited = samples[1].args;
+  unlimited[7] = "90";
+  CHECK(run_json(unlimited)["optimal_length"].get<double>() == Approx(65.3231).margin(1e-4));
+}
+
 TEST_CASE("acoplan writes an SVG picture", "[acoplan]") {
   const auto file = test::temp_file("run.svg", "");
   const auto r = test::acoplan({"--svg", file.string(), "--svg-pheromone"});

@@ -23,6 +23,7 @@
 #include "support.hpp"
 
 using Catch::Contains;
+using Catch::StartsWith;
 
 using namespace test::acobench_helpers;
 
@@ -119,9 +120,14 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   const auto first = run_acobench({"run", file.string(), "--db", db.string(), "--threads", "1"});
   REQUIRE(first.exit_code == 0);
   CHECK_THAT(first.out, Contains("28 trials, 0 already in"));  // 4 configs + 2 + 1 ablation candidates (update, q0), 4 repetitions
+  // Said before the first trial too, with what makes the count.
+  CHECK_THAT(first.out, StartsWith("acobench: small: 28 trials: (4 + 3 on the ablation path) configurations x 1 problem "
+                                   "x 4 repetitions; 0 already in " + db.string() + ", 28 to run\n"));
   const auto again = run_acobench({"run", file.string(), "--db", db.string()});
   REQUIRE(again.exit_code == 0);
   CHECK_THAT(again.out, Contains("28 trials, 28 already in"));
+  // The ablation path's stored trials are found as its rounds start.
+  CHECK_THAT(again.out, Contains("; 16 already in " + db.string() + ", at most 12 to run\n"));
   CHECK_THAT(again.out, Contains("0 run"));
 
   // The thread count does not change any result.
@@ -411,6 +417,8 @@ TEST_CASE("failed trials are stored named and counted by reason and acobench exi
   INFO(r.out << r.err);
   CHECK(r.exit_code == 3);
   CHECK_THAT(r.out, Contains("9 trials, 0 already in"));
+  CHECK_THAT(r.out, StartsWith("acobench: throws: 9 trials: 3 configurations x 1 problem x 3 repetitions; 0 already in " +
+                               db.string() + ", 9 to run\n"));
   CHECK_THAT(r.err, Contains("6 of 9 trials failed, by reason and configuration:\n"));
   CHECK_THAT(r.err, Contains("  a plugin threw: 3\n    'thrower': 3, e.g. problem 'map1', "
                              "repetition 0: plugin update/throwing (") &&
@@ -434,6 +442,7 @@ TEST_CASE("failed trials are stored named and counted by reason and acobench exi
   const auto again = run_acobench(args);
   CHECK(again.exit_code == 3);
   CHECK_THAT(again.out, Contains("9 trials, 9 already in") && Contains("0 run"));
+  CHECK_THAT(again.out, Contains("; 9 already in " + db.string() + ", 0 to run\n"));
   CHECK_THAT(again.err, Contains("6 of 9 trials failed (6 stored as failed by an earlier run)") &&
                             Contains("a plugin threw: 3") && Contains("a plugin wrote an invalid value: 3"));
   auto allowed_args = args;

@@ -150,6 +150,94 @@ TEST_CASE("acoplan lists and describes plugins, and prints help with plugin opti
   expect_error({"--describe", "max_mn"}, "no plugin named 'max_mn'; did you mean 'update/max_min'?");
 }
 
+TEST_CASE("acoplan --describe takes SLOT/NAME and lists the slots of a name several have", "[acoplan][describe]") {
+  for (const std::string slot : {"init", "heuristic"}) {
+    const auto described = test::acoplan({"--describe", slot + "/potential_field"});
+    CHECK(described.exit_code == 0);
+    CHECK_THAT(described.out, StartsWith(slot + "/potential_field "));
+  }
+  expect_error({"--describe", "potential_field"},
+               "--describe: 'potential_field' names a plugin in 2 slots; give its slot too, as SLOT/NAME: "
+               "init/potential_field or heuristic/potential_field");
+  expect_error({"--describe", "update/potential_field"}, "no plugin named 'update/potential_field'");
+  CHECK_THAT(test::acoplan({"--help"}).out, Contains("--describe SLOT/NAME"));
+}
+
+// The line of the summary that starts with `label`, or "" if there is none.
+std::string summary_line(const std::string& summary, const std::string& label) {
+  std::istringstream in(summary);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(label, 0) == 0) return line;
+  return "";
+}
+
+// --update acs without --q0 used to read like a run with it: the gap differed, the summary not.
+TEST_CASE("acoplan's summary shows every setting changed from the defaults and no other", "[acoplan][summary]") {
+  const std::vector<std::string> base{"--preset", "ant-system", "--update", "acs", "--iterations", "5"};
+  const auto plain = test::acoplan(base);
+  REQUIRE(plain.exit_code == 0);
+  CHECK(summary_line(plain.out, "settings: ") ==
+        "settings: the engine defaults, as --help and --describe SLOT/NAME list them");
+
+  auto changed = base;
+  changed.insert(changed.end(), {"--q0", "0.7", "--search", "bidirectional", "--update.rho", "0.2", "--walk-limit",
+                                 "3", "--stagnation", "0", "--update.q", "1", "--repeat", "2"});
+  const auto r = test::acoplan(changed);
+  REQUIRE(r.exit_code == 0);
+  const std::string line = summary_line(r.out, "settings: ");
+  CHECK(line == "settings: q0=0.7 search=bidirectional walk-limit=3 update.rho=0.2 (changed from the engine defaults), "
+                "as --help and --describe SLOT/NAME list them");
+  // Given but equal to the default: stagnation 0 and acs's q 1 are not changes. Neither is what
+  // another line shows (the colony line's iterations, the pipeline line's update=acs).
+  for (const char* unchanged : {"stagnation", "update.q", "iterations", "update="}) CHECK_THAT(line, !Contains(unchanged));
+  // The recommended preset's settings are changes too: a bare acoplan shows what robust sets.
+  CHECK_THAT(summary_line(test::acoplan({"--iterations", "5"}).out, "settings: "),
+             Contains("fill-dead-ends=true") && Contains("q0=0.7") && Contains("heuristic.floor=0.5"));
+  // Another planner shows its own keys on its line; colony settings are not its.
+  CHECK(summary_line(test::acoplan({"--planner", "astar", "--q0", "0.5", "--max-slope", "45"}).out, "settings: ") ==
+        "settings: max-slope=45 (changed from the engine defaults), as --help and --describe SLOT/NAME list them");
+}
+
+// The bundled ROS map_server and PGM height samples, with their READMEs' commands: each loads,
+// the colony solves it, and the exact optimum is the one the README states.
+TEST_CASE("acoplan loads and solves the bundled ROS and PGM height samples", "[acoplan][sample-maps]") {
+  struct Sample {
+    std::vector<std::string> args;
+    double optimum;
+    double lowest, highest;  // of the heights along the path; 0, 0 on a 2D map
+  };
+  const std::string dir = (test::data_dir() / "maps").string();
+  const std::vector<Sample> samples{
+      {{"--map", dir + "/ros/office.yaml", "--start", "8,8", "--goal", "90,60"}, 111.7401, 0, 0},
+      {{"--map", dir + "/heights/hills.pgm", "--height-scale", "0.05", "--cell-size", "1", "--max-slope", "25",
+        "--start", "0,40", "--goal", "60,44"},
+       72.2692, 0, 12},
+      {{"--map", dir + "/heights/hills16.pgm", "--height-scale", "0.001", "--cell-size", "5", "--max-slope", "25",
+        "--start", "0,32", "--goal", "95,32"},
+       524.0169, 20, 60},
+  };
+  for (const auto& sample : samples) {
+    INFO(sample.args[1]);
+    const json j = run_json(sample.args);
+    REQUIRE(j["solved"].get<bool>());
+    CHECK(j["optimal_length"].get<double>() == Approx(sample.optimum).margin(1e-4));
+    CHECK(j["grid_length"].get<double>() >= sample.optimum - 1e-4);
+    CHECK(j["grid_length"].get<double>() <= 1.05 * sample.optimum);
+    for (const auto& point : j["path"]) {
+      const double z = point.size() == 3 ? point[2].get<double>() : 0.0;
+      CHECK(z >= sample.lowest);
+      CHECK(z <= sample.highest);
+    }
+  }
+  // The 16-bit image keeps millimetres: heights along the route are not all whole metres.
+  const json route = run_json(samples[2].args)["path"];
+  CHECK(std::any_of(route.begin(), route.end(), [](const json& p) { return p[2].get<double>() != std::round(p[2].get<double>()); }));
+  // The slope limit is what makes the height sample's route longer than the unlimited one.
+  auto unlimited = samples[1].args;
+  unlimited[7] = "90";
+  CHECK(run_json(unlimited)["optimal_length"].get<double>() == Approx(65.3231).margin(1e-4));
+}
+
 TEST_CASE("acoplan writes an SVG picture", "[acoplan]") {
   const auto file = test::temp_file("run.svg", "");
   const auto r = test::acoplan({"--svg", file.string(), "--svg-pheromone"});

@@ -69,6 +69,22 @@ TEST_CASE("resolve_run types every key once, and to_keys and JSON give the same 
   CHECK(aco::to_keys(aco::run_spec_from_json(json, test::plugins())) == written);
 }
 
+TEST_CASE("changed_values lists the keys that differ from the defaults of their tables", "[run_spec]") {
+  const aco::Keys problem{{"map", "m.map"}, {"start", "1,2"}, {"goal", "30,4"}};
+  CHECK(aco::changed_values(resolve(problem), test::plugins()).empty());
+  aco::Keys keys = problem;
+  keys.insert({{"update", "max_min"},
+                {"update.rho", "0.3"},     // ant_system's default, not max_min's (0.1)
+                {"update.p_best", "0.05"},  // max_min's default, given
+                {"q0", "0.25"},
+                {"ants", std::to_string(aco::ColonySettings{}.ants)},
+                {"neighbourhood", "16"}});
+  std::vector<std::string> changed;
+  for (const auto& [key, value] : aco::changed_values(resolve(keys), test::plugins()))
+    changed.push_back(key + "=" + aco::to_string(value));
+  CHECK(changed == std::vector<std::string>{"neighbourhood=16", "q0=0.25", "update=max_min", "update.rho=0.3"});
+}
+
 TEST_CASE("resolve_run names the key of every mistake", "[run_spec][errors]") {
   std::string key;
   CHECK_THAT(key_error({{"antz", "3"}}, &key), Contains("unknown key '--antz'") && Contains("did you mean '--ants'?"));

@@ -140,6 +140,36 @@ std::string quoted_list(const std::vector<std::string>& names) {
   return text;
 }
 
+// "1 problem", "24 problems".
+std::string counted(std::size_t count, const std::string& noun) {
+  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
+
+// Before the first trial: how many trials the experiment has and how many are stored already,
+// so that a user knows what was started ("4320 trials: 18 configurations x 24 problems x 10
+// repetitions; 0 already in paper003.db, 4320 to run").
+std::function<void(const acobench::TrialPlan&)> announce_trials(const acobench::Experiment& experiment,
+                                                                const acobench::RunOptions& run) {
+  return [&experiment, &run](const acobench::TrialPlan& plan) {
+    const std::size_t configurations = plan.configurations + plan.ablation_configurations;
+    const std::size_t all = configurations * plan.problems * static_cast<std::size_t>(plan.repetitions);
+    std::cout << "acobench: " << experiment.name << ": ";
+    if (run.shard) std::cout << "shard " << acobench::to_string(*run.shard) << ": " << plan.trials << " of the ";
+    std::cout << all << " trials: ";
+    if (plan.ablation_configurations)
+      std::cout << "(" << plan.configurations << " + " << plan.ablation_configurations << " on the ablation path) configurations";
+    else
+      std::cout << counted(plan.configurations, "configuration");
+    // The ablation path's stored trials are known as its rounds start (they come after all others).
+    const bool ablation_stored = plan.ablation_configurations > 0 && plan.stored > 0;
+    std::cout << " x " << counted(plan.problems, "problem") << " x "
+              << counted(static_cast<std::size_t>(plan.repetitions), "repetition") << "; " << plan.stored
+              << " already in " << run.database.string() << ", " << (ablation_stored ? "at most " : "")
+              << plan.trials - plan.stored << " to run\n"
+              << std::flush;
+  };
+}
+
 // The run's verdict: 0, or aco::kExitTrialsFailed when a trial failed and failures are not allowed.
 int print_summary(const acobench::RunSummary& s, const acobench::Experiment& experiment, const acobench::RunOptions& run,
                   bool allow_failures) {
@@ -198,6 +228,7 @@ int run_with_ranks(const acobench::mpi::Session& session, const acobench::Experi
     acobench::mpi::Coordinator coordinator(session, experiment.fingerprint(registry));
     run.executor = &coordinator;
     run.progress = Progress();
+    run.starting = announce_trials(experiment, run);
     on_stop_tell(run.database.string(), command_line(args));
     const auto s = acobench::run_experiment(experiment, registry, run);
     coordinator.finish();
@@ -286,6 +317,7 @@ int run(const std::vector<std::string>& args) {
   if (workers) run.executor = &executor.emplace(*workers);
   warn_same_runs(experiment);
   run.progress = Progress();
+  run.starting = announce_trials(experiment, run);
   on_stop_tell(run.database.string(), command_line(args));
   return print_summary(acobench::run_experiment(experiment, registry, run), experiment, run, allow_failures);
 }

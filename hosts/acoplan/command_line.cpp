@@ -231,7 +231,8 @@ Request parse_command_line(int argc, const char* const* argv) {
       ("list-presets", po::bool_switch(), "list the named presets and exit")
       ("print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")
       ("list-plugins", po::bool_switch(), "list the plugins found and exit")
-      ("describe", po::value<std::string>()->value_name("NAME"), "print a plugin's parameter table and exit");
+      ("describe", po::value<std::string>()->value_name("SLOT/NAME"),
+       "print a plugin's parameter table and exit (e.g. init/potential_field; the NAME alone if one slot only has it)");
   host_options.add_plugin_dir_and_max_memory(general);
   add_table(general, kHostParameters, "");
   po::options_description problem("Problem and graph");

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "aco/astar.hpp"
@@ -31,6 +32,32 @@ std::string map_line(const aco::Graph& graph) {
          "), " + aco::describe(graph.options) + "\n";
 }
 
+// Whether the summary's other lines show `key`: the map line the graph's, the colony line its
+// settings, the pipeline or planner line the plugins and the planner's parameters. A planner
+// other than the colony uses no colony setting and no plugin but the smoother.
+bool shown_elsewhere(const std::string& key, const aco::RunSpec& run) {
+  static const std::set<std::string> lines = {"neighbourhood", "corner-cutting", "planner", "ants", "iterations",
+                                              "alpha", "beta", "seed"};
+  const std::string owner = key.substr(0, key.find('.'));
+  const bool slot_key = std::find(aco::kSlots.begin(), aco::kSlots.end(), owner) != aco::kSlots.end();
+  if (lines.count(key) || (slot_key && owner == key)) return true;
+  if (run.planner == "aco") return false;
+  const auto colony = aco::colony_parameters();
+  return owner == run.planner || (slot_key && owner != "smoother") ||
+         std::any_of(colony.begin(), colony.end(), [&](const aco::ParamSpec& p) { return key == p.name; });
+}
+
+// What else makes this run differ from another of the same pipeline (q0, search, fill-dead-ends,
+// a plugin's parameters...): the keys that differ from the engine's defaults.
+std::string settings_line(const PlanReport& report) {
+  std::string changed;
+  for (const auto& [key, value] : aco::changed_values(report.run, report.registry))
+    if (!shown_elsewhere(key, report.run)) changed += " " + key + "=" + aco::to_string(value);
+  return "settings:" +
+         (changed.empty() ? std::string(" the engine defaults") : changed + " (changed from the engine defaults)") +
+         ", as --help and --describe SLOT/NAME list them\n";
+}
+
 std::string pipeline_lines(const PlanReport& report) {
   const aco::RunSpec& run = report.run;
   std::ostringstream out;
@@ -40,7 +67,7 @@ std::string pipeline_lines(const PlanReport& report) {
       for (const auto& [name, v] : run.planner_parameters.all()) out << " " << run.planner << "." << name << "=" << aco::to_string(v);
       out << ", seed " << run.colony.seed;
     }
-    out << "\n";
+    out << "\n" << settings_line(report);
     return out.str();
   }
   out << "colony:   " << run.colony.ants << " ants x " << run.colony.iterations << " iterations, alpha "
@@ -48,7 +75,7 @@ std::string pipeline_lines(const PlanReport& report) {
   if (!report.pipeline_source.empty()) out << "preset:   " << report.pipeline_source << "\n";
   out << "pipeline:";
   for (const char* slot : aco::kSlots) out << " " << slot << "=" << run.pipeline.at(slot).plugin;
-  out << "\n";
+  out << "\n" << settings_line(report);
   return out.str();
 }
 

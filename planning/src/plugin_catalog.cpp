@@ -63,9 +63,11 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
     if (name == "map/" + format.name || (name == format.name && !plugin_named))
       return "map/" + format.name + " built-in: " + format.summary + "\n" + extensions_line(format.extensions) +
              "no parameters (terrain formats read max-slope, height-scale and cell-size)\n";
+  // In the slots' order (init before heuristic), as --list-plugins shows them.
   std::vector<const aco::PluginFile*> matches;
-  for (const auto& p : registry.available())
-    if (p.name == name || p.kind + "/" + p.name == name) matches.push_back(&p);
+  for (const aco::SlotInfo& slot : aco::kSlotTable)
+    for (const auto& p : registry.available())
+      if (p.kind == slot.name && (p.name == name || p.kind + "/" + p.name == name)) matches.push_back(&p);
   if (matches.empty()) {
     std::string message = "--describe: no plugin named '" + name + "'";
     std::vector<std::string> names;
@@ -76,8 +78,10 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
     throw aco::Error(message);
   }
   if (matches.size() > 1) {
-    std::string message = "--describe: '" + name + "' is ambiguous; use one of:";
-    for (const auto* p : matches) message += " " + p->kind + "/" + p->name;
+    std::string message = "--describe: '" + name + "' names a plugin in " + std::to_string(matches.size()) +
+                          " slots; give its slot too, as SLOT/NAME:";
+    for (std::size_t i = 0; i < matches.size(); ++i)
+      message += (i == 0 ? " " : i + 1 == matches.size() ? " or " : ", ") + matches[i]->kind + "/" + matches[i]->name;
     throw aco::Error(message);
   }
   const auto& d = registry.load(matches[0]->kind, matches[0]->name);

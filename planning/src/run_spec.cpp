@@ -304,6 +304,23 @@ Keys to_keys(const RunSpec& spec) {
   return keys;
 }
 
+std::vector<std::pair<std::string, ParamValue>> changed_values(const RunSpec& spec, PluginRegistry& registry) {
+  // The reference: the same problem, planner and plugins, every other key left to its default.
+  Keys choices;
+  for (const auto& [key, value] : to_keys(spec))
+    if (key == "planner" || is_slot(key) || key == kScenIndex.name ||
+        std::find(kProblemTexts.begin(), kProblemTexts.end(), key) != kProblemTexts.end())
+      choices[key] = value;
+  Keys defaults = to_keys(resolve_run(choices, registry));
+  defaults["planner"] = planner_parameter().default_value;
+  for (const char* slot : kSlots) defaults[slot] = default_plugin(slot);
+  std::vector<std::pair<std::string, ParamValue>> changed;
+  for (const auto& [key, value] : run_values(spec))
+    if (const auto it = defaults.find(key); it == defaults.end() || it->second != to_string(value))
+      changed.emplace_back(key, value);
+  return changed;
+}
+
 std::string to_json(const RunSpec& spec) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   for (const auto& [key, value] : run_values(spec))

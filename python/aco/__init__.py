@@ -32,7 +32,8 @@ def plugins() -> list:
 
 
 def describe(name: str) -> str:
-    """A plugin's description as ``acoplan --describe NAME`` prints it ("max_min" or "update/max_min")."""
+    """A plugin's description as ``acoplan --describe SLOT/NAME`` prints it ("update/max_min"; "max_min" alone
+    when one slot only has a plugin so called, else aco.Error lists the SLOT/NAME forms)."""
     return _aco.describe(name)
 
 

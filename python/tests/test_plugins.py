@@ -22,6 +22,13 @@ def test_describe_is_acoplans(build):
         aco.describe("max_mn")
 
 
+def test_describe_takes_slot_and_name_and_names_the_slots_of_a_shared_name():
+    assert aco.describe("init/potential_field").startswith("init/potential_field ")
+    assert aco.describe("heuristic/potential_field").startswith("heuristic/potential_field ")
+    with pytest.raises(aco.Error, match="give its slot too, as SLOT/NAME: init/potential_field or heuristic/potential_field"):
+        aco.describe("potential_field")
+
+
 def test_a_plugin_folder_added_is_searched():
     folder = os.environ.get("ACO_TEST_HOSTILE_PLUGIN_DIR")
     if not folder:

@@ -95,6 +95,8 @@ class Runner {
     total_ = (fixed.size() + n * (n + 1) / 2) * e_.problems.size() * e_.repetitions;
     if (options_.shard) total_ = shard_size(*options_.shard, total_);
     summary.trials = total_;
+    if (options_.starting)
+      options_.starting({fixed.size(), n * (n + 1) / 2, e_.problems.size(), e_.repetitions, total_, stored(fixed)});
 
     run_trials(fixed, summary);
     // Fawcett and Hoos's ablation path: from the baseline, flip each remaining component in
@@ -171,25 +173,38 @@ class Runner {
     return {failures, relative};
   }
 
-  void run_trials(const std::vector<int>& configs, RunSummary& summary) {
-    std::vector<TrialOrder> trials;
+  // Calls visit(problem, config, repetition) for each trial of `configs` this run owns (a shard's
+  // only).
+  template <class Visit>
+  void for_each_trial(const std::vector<int>& configs, Visit visit) const {
     for (const int c : configs) {
       // The configuration's place in the experiment, not its id: a shard's trials are the same
       // whatever its database held before.
       const auto position = static_cast<std::size_t>(std::find(order_.begin(), order_.end(), c) - order_.begin());
       for (int p = 0; p < static_cast<int>(e_.problems.size()); ++p)
-        for (int r = 0; r < e_.repetitions; ++r) {
-          if (options_.shard && !options_.shard->owns(trial_index(position, p, r))) continue;
-          if (finished_.count({p, c, r})) {
-            ++summary.skipped;
-            ++done_;
-            if (const auto failed = failed_before_.find({p, c, r}); failed != failed_before_.end())
-              summary.failures.push_back({trials_.config(c).name, failed->second.first, failed->second.second, true});
-            continue;
-          }
-          trials.push_back({p, c, r});
-        }
+        for (int r = 0; r < e_.repetitions; ++r)
+          if (!options_.shard || options_.shard->owns(trial_index(position, p, r))) visit(p, c, r);
     }
+  }
+
+  std::size_t stored(const std::vector<int>& configs) const {
+    std::size_t count = 0;
+    for_each_trial(configs, [&](int p, int c, int r) { count += finished_.count({p, c, r}); });
+    return count;
+  }
+
+  void run_trials(const std::vector<int>& configs, RunSummary& summary) {
+    std::vector<TrialOrder> trials;
+    for_each_trial(configs, [&](int p, int c, int r) {
+      if (finished_.count({p, c, r})) {
+        ++summary.skipped;
+        ++done_;
+        if (const auto failed = failed_before_.find({p, c, r}); failed != failed_before_.end())
+          summary.failures.push_back({trials_.config(c).name, failed->second.first, failed->second.second, true});
+        return;
+      }
+      trials.push_back({p, c, r});
+    });
     if (options_.progress) options_.progress(done_, total_);
     executor_->run(trials_, trials, [&](const TrialRecord& record) {
       db_->store(record);

@@ -3,6 +3,8 @@
 // Moving AI .map files, each with a one-line .scen whose optimal length is exact A* on the
 // 8-neighbourhood without corner cutting.
 //
+// aco_mapgen --ros OUTDIR writes data/maps/ros's office, a ROS map_server YAML + PGM map.
+//
 // aco_mapgen --benchmark OUTDIR writes the generated validation maps of data/maps/generated
 // (random, room and maze maps, 20 scenarios each; see write_benchmark).
 //
@@ -565,9 +567,55 @@ void write_benchmark(const std::filesystem::path& dir, int first_seed, bool larg
   }
 }
 
+// A ROS map_server map (--ros): a 10 m x 7 m office at 0.1 m per cell, as a robot's scan would
+// leave it: walls, three rooms above a corridor and two below, each with a door, desks, and
+// unknown space (grey 205) around the outer walls. Drawn by hand, no randomness.
+struct Rect {
+  int x0, y0, x1, y1;  // cells, both ends included
+};
+
+void write_ros_office(const std::filesystem::path& dir) {
+  constexpr int kWidth = 100, kHeight = 70;
+  constexpr unsigned char kFree = 254, kOccupied = 0, kUnknown = 205;  // map_saver's trinary values
+  std::vector<unsigned char> pixels(static_cast<std::size_t>(kWidth) * kHeight, kUnknown);
+  auto fill = [&](Rect r, unsigned char value) {
+    for (int y = r.y0; y <= r.y1; ++y)
+      for (int x = r.x0; x <= r.x1; ++x) pixels[static_cast<std::size_t>(y) * kWidth + x] = value;
+  };
+  fill({4, 4, 95, 65}, kOccupied);  // the outer walls, two cells thick, and the floor inside
+  fill({6, 6, 93, 63}, kFree);
+  for (const Rect wall : {Rect{6, 28, 93, 29}, Rect{6, 40, 93, 41},                      // the corridor's walls
+                          Rect{35, 6, 36, 27}, Rect{65, 6, 66, 27}, Rect{50, 42, 51, 63}})  // between rooms
+    fill(wall, kOccupied);
+  for (const Rect door : {Rect{22, 28, 29, 29}, Rect{48, 28, 55, 29}, Rect{78, 28, 85, 29},  // 0.8 m doors
+                          Rect{12, 40, 19, 41}, Rect{70, 40, 77, 41}})
+    fill(door, kFree);
+  for (const Rect desk : {Rect{10, 10, 24, 14}, Rect{10, 20, 16, 24}, Rect{42, 12, 58, 16}, Rect{72, 9, 76, 22},
+                          Rect{84, 9, 88, 22}, Rect{20, 50, 40, 54}, Rect{60, 48, 64, 60}, Rect{76, 52, 88, 56},
+                          Rect{60, 33, 61, 35}})  // and a pillar in the corridor
+    fill(desk, kOccupied);
+  std::string pgm = "P5\n" + std::to_string(kWidth) + " " + std::to_string(kHeight) + "\n255\n";
+  pgm.append(pixels.begin(), pixels.end());
+  write_file(dir / "office.pgm", pgm);
+  write_file(dir / "office.yaml",
+             "image: office.pgm\nresolution: 0.1\norigin: [-0.6, -0.6, 0.0]\nnegate: 0\noccupied_thresh: 0.65\n"
+             "free_thresh: 0.196\nmode: trinary\n");
+  std::cout << "office.yaml, office.pgm: " << kWidth << "x" << kHeight << " cells at 0.1 m\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--ros") {
+    try {
+      std::filesystem::create_directories(argv[2]);
+      write_ros_office(argv[2]);
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "aco_mapgen: " << e.what() << "\n";
+      return 1;
+    }
+  }
   const bool large = argc > 1 && std::string(argv[1]) == "--large";
   const bool benchmark = (argc == 3 || argc == 4) && (std::string(argv[1]) == "--benchmark" || large);
   // Any other option (--help) is not a folder to fill with maps.
@@ -576,6 +624,7 @@ int main(int argc, char** argv) {
     std::cerr << "usage: aco_mapgen OUTDIR [TERRAIN_OUTDIR]\n"
                  "       aco_mapgen --benchmark OUTDIR [FIRST_SEED]\n"
                  "       aco_mapgen --large OUTDIR [FIRST_SEED]\n"
+                 "       aco_mapgen --ros OUTDIR   (a ROS map_server office, office.yaml + office.pgm: data/maps/ros)\n"
                  "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR,\n"
                  "and paper004 into TERRAIN_OUTDIR if given (data/terrain); with --benchmark, the generated\n"
                  "random, room and maze validation maps with 20 scenarios each (data/maps/generated); with\n"

@@ -1,7 +1,8 @@
-// aco_terraingen: reproducible synthetic terrain as ESRI ASCII grids (.asc), a sum of seeded
-// Gaussian hills on a base height.
+// aco_terraingen: reproducible synthetic terrain as ESRI ASCII grids (.asc) or PGM height
+// images (.pgm, 8 or 16 bit), a sum of seeded Gaussian hills on a base height.
 //
 //   aco_terraingen --width 64 --height 48 --seed 3 --hills 20 --out my.asc
+//   aco_terraingen --relief 25 --base 0 --height-scale 0.1 --bits 8 --out hill.pgm   # grey = height / 0.1
 //   aco_terraingen --paper000 data/terrain     # the look-alikes of paper 000's maps, with .scen
 //
 // Deterministic: aco::Rng only (no std:: distributions, no clock) and heights written with two
@@ -37,7 +38,10 @@ constexpr aco::ParamSpec kOptions[] = {
      "mean standard deviation of a hill, in cells (each hill draws from [0.5, 1.5] times it)"},
     {"base", aco::ParamType::real, "800", "-1e6:1e6", "height of the plain between the hills"},
     {"relief", aco::ParamType::real, "200", "0:1e6", "height of the highest point above the base"},
-    {"cellsize", aco::ParamType::real, "10", "(0:1e6]", "horizontal size of a cell, in the heights' units"},
+    {"cellsize", aco::ParamType::real, "10", "(0:1e6]", "horizontal size of a cell, in the heights' units (.asc)"},
+    {"height-scale", aco::ParamType::real, "1", "(0:1e12]",
+     ".pgm: height per grey level, grey = height / X rounded (plan with acoplan --height-scale X)"},
+    {"bits", aco::ParamType::integer, "16", "8:8:16", ".pgm: grey levels of 8 or 16 bits"},
 };
 
 struct Hill {
@@ -55,6 +59,8 @@ struct TerrainSpec {
   double base = 800;
   double relief = 200;
   double cellsize = 10;
+  double height_scale = 1;
+  int bits = 16;
   std::vector<Hill> extra_hills;  // placed by hand, besides the random ones
 };
 
@@ -68,6 +74,8 @@ TerrainSpec spec_from(const aco::ParameterValues& v) {
   s.base = v.real("base");
   s.relief = v.real("relief");
   s.cellsize = v.real("cellsize");
+  s.height_scale = v.real("height-scale");
+  s.bits = static_cast<int>(v.integer("bits"));
   return s;
 }
 
@@ -112,6 +120,24 @@ std::string esri_ascii(const TerrainSpec& s, const std::vector<double>& heights)
     out << "\n";
   }
   return out.str();
+}
+
+// A binary PGM (P5; 16 bit big-endian, as the format says) of grey = height / height_scale.
+std::string height_pgm(const TerrainSpec& s, const std::vector<double>& heights) {
+  const int maxval = s.bits == 8 ? 255 : 65535;
+  std::string pgm = "P5\n" + std::to_string(s.width) + " " + std::to_string(s.height) + "\n" + std::to_string(maxval) + "\n";
+  for (std::size_t i = 0; i < heights.size(); ++i) {
+    const double grey = std::round(heights[i] / s.height_scale);
+    if (grey < 0 || grey > maxval)
+      throw aco::Error("height " + format("%g", heights[i]) + " of cell (" + std::to_string(i % s.width) + "," +
+                       std::to_string(i / s.width) + ") is grey level " + format("%.0f", grey) + ", outside 0.." +
+                       std::to_string(maxval) + " of a " + std::to_string(s.bits) +
+                       "-bit PGM: change --base, --relief or --height-scale");
+    const auto level = static_cast<unsigned>(grey);
+    if (s.bits == 16) pgm += static_cast<char>(level >> 8);
+    pgm += static_cast<char>(level & 0xff);
+  }
+  return pgm;
 }
 
 void write_file(const std::filesystem::path& file, const std::string& text) {
@@ -166,7 +192,7 @@ void write_paper000(const PaperMap& m, const std::filesystem::path& dir) {
 
 constexpr const char* kUsage =
     "usage: aco_terraingen [--width N --height N --seed N --hills N --hill-radius R --base Z --relief Z --cellsize C] "
-    "--out FILE.asc\n"
+    "[--height-scale X --bits 8|16] --out FILE.asc|FILE.pgm\n"
     "       aco_terraingen --paper000 DIR   (writes epf20.asc, epf30.asc, epf50.asc and their .scen into DIR)\n";
 
 }  // namespace
@@ -192,9 +218,11 @@ int main(int argc, char** argv) {
         write_paper000(m, paper_dir);
       return 0;
     }
-    if (out.empty()) throw aco::Error(std::string("--out FILE.asc is required\n") + kUsage);
+    const std::string ending = std::filesystem::path(out).extension().string();
+    if (ending != ".asc" && ending != ".pgm")
+      throw aco::Error("--out FILE.asc or FILE.pgm is required (the ending chooses the format)\n" + std::string(kUsage));
     const TerrainSpec spec = spec_from(aco::resolve(kOptions, given, "--"));
-    write_file(out, esri_ascii(spec, generate(spec)));
+    write_file(out, ending == ".asc" ? esri_ascii(spec, generate(spec)) : height_pgm(spec, generate(spec)));
   } catch (const std::exception& e) {
     std::cerr << "aco_terraingen: " << e.what() << "\n";
     return 1;

@@ -10,8 +10,10 @@ namespace aco {
 // it shadows; then the folders searched. Runs no plugin code.
 std::string list_plugins(PluginRegistry& registry);
 
-// One plugin ("max_min" or "update/max_min"): its provenance and its parameter table with types,
-// defaults and ranges. Error for an unknown name (with the nearest) or an ambiguous one.
+// One plugin, "slot/name" ("update/max_min"), or the name alone when one slot only has a plugin
+// so called: its provenance and its parameter table with types, defaults and ranges. Error for an
+// unknown name (with the nearest), and for a bare name that several slots have (init and
+// heuristic both have potential_field), listing the slot/name forms to give instead.
 std::string describe_plugin(PluginRegistry& registry, const std::string& name);
 
 }  // namespace aco

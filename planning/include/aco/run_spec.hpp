@@ -81,6 +81,12 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
 std::vector<std::pair<std::string, ParamValue>> run_values(const RunSpec& spec);
 Keys to_keys(const RunSpec& spec);  // the same as text
 
+// The keys of run_values() whose value differs from the engine's default for the same problem:
+// a planner or plugin other than the default, and every other key that differs from its table's
+// default (a plugin's parameters from that plugin's own table, whichever plugin the slot has), in
+// run_values()'s order. Presets and config files are no reference: robust's q0 = 0.7 is a change.
+std::vector<std::pair<std::string, ParamValue>> changed_values(const RunSpec& spec, PluginRegistry& registry);
+
 // The RunSpec as one JSON object with typed values ({"ants": 50, "update": "acs",
 // "update.rho": 0.3, ...}, the keys of to_keys()), and back (checked by resolve_run()).
 std::string to_json(const RunSpec& spec);

@@ -37,11 +37,24 @@ class ThreadExecutor : public TrialExecutor {
   int threads_;
 };
 
+// What a run is about to do, known before its first trial: the experiment's size and how much of
+// it the database holds already.
+struct TrialPlan {
+  std::size_t configurations = 0;           // the experiment's (factorial ones and null-model twins included)
+  std::size_t ablation_configurations = 0;  // those of the ablation path, n(n+1)/2 for n components
+  std::size_t problems = 0;
+  int repetitions = 0;
+  std::size_t trials = 0;  // (configurations + ablation_configurations) x problems x repetitions, or a shard's part
+  std::size_t stored = 0;  // of the configurations' trials (not the ablation path's), already in the database
+};
+
 struct RunOptions {
   std::filesystem::path database;
   int threads = 0;  // 0 = all cores; results do not depend on it
   // Called after every stored trial with (done, total); from one thread at a time.
   std::function<void(std::size_t done, std::size_t total)> progress;
+  // Called once, before the first trial runs.
+  std::function<void(const TrialPlan&)> starting;
   // Only this shard's trials of the configurations (an ablation path is left to a run of the
   // merged database: its rounds need every trial of the round before).
   std::optional<Shard> shard;

@@ -79,12 +79,13 @@ std::string goal_mark(double x, double y) {
     << "\" cy=\"" << y << "\" r=\"3\" fill=\"#000\"/>";
   return s.str();
 }
-// A cross where the robot touched an obstacle.
+// A cross where the robot touched an obstacle: black on a white outline, to stand out on the red
+// of an unknown cell as on the dark grey of a known one.
 std::string collision_mark(double x, double y) {
-  std::ostringstream s;
-  s << "<path d=\"M" << x - 7 << ',' << y - 7 << "L" << x + 7 << ',' << y + 7 << "M" << x - 7 << ',' << y + 7 << "L" << x + 7 << ','
-    << y - 7 << "\" stroke=\"#c0392b\" stroke-width=\"3\"/>";
-  return s.str();
+  std::ostringstream cross;
+  cross << "M" << x - 7 << ',' << y - 7 << "L" << x + 7 << ',' << y + 7 << "M" << x - 7 << ',' << y + 7 << "L" << x + 7 << ',' << y - 7;
+  return "<path d=\"" + cross.str() + "\" stroke=\"#fff\" stroke-width=\"6\"/><path d=\"" + cross.str() +
+         "\" stroke=\"#000\" stroke-width=\"3\"/>";
 }
 
 // A marker with its word beside it: above and to the right, unless that would leave the map;

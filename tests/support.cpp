@@ -14,11 +14,13 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
+#include "aco/svg.hpp"
 
 extern char** environ;
 
@@ -282,4 +284,83 @@ aco::ColonyResult run_on_thread_counts(const aco::Graph& graph, aco::NodeId star
   return results[0];
 }
 
+namespace {
+
+// The value of attribute `name` in a tag's text, or "" if it has none.
+std::string svg_attribute(const std::string& tag, const std::string& name) {
+  for (auto at = tag.find(name + "=\""); at != std::string::npos; at = tag.find(name + "=\"", at + 1)) {
+    if (at > 0 && tag[at - 1] != ' ' && tag[at - 1] != '\n') continue;  // the tail of another name (dy in "ody=")
+    const auto begin = at + name.size() + 2;
+    return tag.substr(begin, tag.find('"', begin) - begin);
+  }
+  return "";
+}
+
+double number_or(const std::string& text, double otherwise) { return text.empty() ? otherwise : std::stod(text); }
+
+// The numbers inside "function(a b c)" or "function(a,b)" in a transform, if it holds that function.
+std::vector<double> transform_arguments(const std::string& transform, const std::string& function) {
+  const auto at = transform.find(function + "(");
+  if (at == std::string::npos) return {};
+  std::string inside = transform.substr(at + function.size() + 1, transform.find(')', at) - at - function.size() - 1);
+  std::replace(inside.begin(), inside.end(), ',', ' ');
+  std::istringstream in(inside);
+  std::vector<double> numbers;
+  for (double v; in >> v;) numbers.push_back(v);
+  return numbers;
+}
+
+std::string unescape_xml(std::string text) {
+  for (const auto& [entity, character] : {std::pair{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&amp;", "&"}})
+    for (auto at = text.find(entity); at != std::string::npos; at = text.find(entity, at + 1)) text.replace(at, std::strlen(entity), character);
+  return text;
+}
+
+}  // namespace
+
+std::vector<std::string> texts_outside_view_box(const std::string& svg) {
+  const auto root_end = svg.find('>', svg.find("<svg"));
+  const std::string root = svg.substr(svg.find("<svg"), root_end - svg.find("<svg"));
+  double width = number_or(svg_attribute(root, "width"), 0), height = number_or(svg_attribute(root, "height"), 0);
+  if (const auto box = transform_arguments("viewBox(" + svg_attribute(root, "viewBox") + ")", "viewBox"); box.size() == 4)
+    width = box[2], height = box[3];
+  const double root_font = number_or(svg_attribute(root, "font-size"), 12);
+  std::vector<std::string> outside;
+  std::vector<std::pair<double, double>> offsets{{0, 0}};  // the enclosing groups' translations, summed
+  for (auto at = svg.find('<', root_end); at != std::string::npos; at = svg.find('<', at + 1)) {
+    const auto end = svg.find('>', at);
+    const std::string tag = svg.substr(at, end - at + 1);
+    if (tag.rfind("<g", 0) == 0 && (tag.size() < 3 || tag[2] == ' ' || tag[2] == '>') && tag[tag.size() - 2] != '/') {
+      const auto move = transform_arguments(svg_attribute(tag, "transform"), "translate");
+      offsets.emplace_back(offsets.back().first + (move.empty() ? 0 : move[0]), offsets.back().second + (move.size() < 2 ? 0 : move[1]));
+    } else if (tag == "</g>") {
+      offsets.pop_back();
+    } else if (tag.rfind("<text", 0) == 0) {
+      const auto close = svg.find("</text>", end);
+      const std::string content = unescape_xml(svg.substr(end + 1, close - end - 1));
+      const double font = number_or(svg_attribute(tag, "font-size"), root_font);
+      const double x = number_or(svg_attribute(tag, "x"), 0), y = number_or(svg_attribute(tag, "y"), 0) + number_or(svg_attribute(tag, "dy"), 0);
+      const double w = aco::text_width(content, font);
+      const std::string anchor = svg_attribute(tag, "text-anchor");
+      const double left = anchor == "end" ? x - w : anchor == "middle" ? x - w / 2 : x;
+      const auto rotation = transform_arguments(svg_attribute(tag, "transform"), "rotate");
+      const double angle = rotation.empty() ? 0 : rotation[0] * std::acos(-1.0) / 180;
+      const double cx = rotation.size() == 3 ? rotation[1] : 0, cy = rotation.size() == 3 ? rotation[2] : 0;
+      for (const double corner_x : {left, left + w})
+        for (const double corner_y : {y - 0.8 * font, y + 0.25 * font}) {
+          const double px = cx + (corner_x - cx) * std::cos(angle) - (corner_y - cy) * std::sin(angle) + offsets.back().first;
+          const double py = cy + (corner_x - cx) * std::sin(angle) + (corner_y - cy) * std::cos(angle) + offsets.back().second;
+          if (px < -0.5 || px > width + 0.5 || py < -0.5 || py > height + 0.5) {
+            outside.push_back("\"" + content + "\" reaches (" + std::to_string(px) + ", " + std::to_string(py) + ") in a picture of " +
+                              std::to_string(width) + " x " + std::to_string(height));
+            break;
+          }
+        }
+      at = close;
+    }
+  }
+  return outside;
+}
+
 }  // namespace test
+

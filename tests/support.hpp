@@ -49,6 +49,13 @@ std::set<std::pair<int, int>> reference_cells_entered(aco::Cell a, aco::Cell b);
 std::vector<std::pair<aco::Cell, aco::Cell>> reference_vertex_sides(aco::Cell a, aco::Cell b);
 bool reference_segment_clear(const aco::Map& map, aco::Cell a, aco::Cell b, bool corner_cutting);
 
+// The <text> elements of an SVG picture that reach outside its viewBox (or width and height), each
+// described with its box: a text's width is aco::text_width's estimate at its font-size (12 unless
+// set on it or the root), its height 0.8 font sizes above the baseline and 0.25 below; x, y, dy,
+// text-anchor, rotate(a cx cy) on the text and translate(x,y) on enclosing groups are applied.
+// Layouts reserve room with the same estimate, so an empty answer means nothing is cut off.
+std::vector<std::string> texts_outside_view_box(const std::string& svg);
+
 // A Context for calling a strategy directly.
 aco::Context context(const aco::Graph& graph, aco::Cell start, aco::Cell goal, int iteration = 0,
                      int max_iterations = 100);

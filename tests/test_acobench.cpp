@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <catch2/catch.hpp>
+#include <set>
 #include <chrono>
 #include <cmath>
 #include <nlohmann/json.hpp>
@@ -472,6 +473,31 @@ TEST_CASE("an experiment given by a relative path, with absolute map paths, stor
   const std::string html = file_bytes(file.parent_path() / "report/report.html");
   CHECK(html.find("map not drawn") == std::string::npos);
   CHECK_THAT(html, Contains("class=\"paths\""));
+}
+
+TEST_CASE("every plot of a report of many long-named configurations holds its text inside its picture", "[acobench][report][svg]") {
+  // Twenty configurations with long names, an ablation path, a map drawn with every best path:
+  // box plot, convergence, anytime and ECDF charts, paths and the ablation chart.
+  std::string yaml = "name: long-names\nseed: 3\nrepetitions: 2\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
+                     "settings: {ants: 5, iterations: 4}\nbaseline: {name: ant_system}\nconfigurations:\n";
+  for (int k = 1; k <= 20; ++k)
+    yaml += "  - {name: \"configuration " + std::to_string(k) + " with alpha " + std::to_string(k) +
+            " and a rather long descriptive name (MMAS)\", alpha: " + std::to_string(k) + "}\n";
+  yaml += "  - {name: target, alpha: 2, beta: 3, update: max_min}\nablation: {target: target}\n";
+  const auto file = experiment(yaml);
+  const auto db = file.parent_path() / "long-names.db";
+  REQUIRE(run_acobench({"run", file.string(), "--db", db.string()}).exit_code == 0);
+  const auto out = file.parent_path() / "report";
+  REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
+  const std::string html = file_bytes(out / "report.html");
+  std::set<std::string> kinds;
+  for (auto at = html.find("<svg"); at != std::string::npos; at = html.find("<svg", at + 1)) {
+    const std::string svg = html.substr(at, html.find("</svg>", at) + 6 - at);
+    const auto kind = svg.find("class=\"");
+    kinds.insert(svg.substr(kind + 7, svg.find('"', kind + 7) - kind - 7));
+    for (const auto& text : test::texts_outside_view_box(svg)) FAIL_CHECK(svg.substr(0, 60) << ": " << text);
+  }
+  CHECK(kinds == std::set<std::string>{"boxplot", "convergence", "anytime", "ecdf", "paths"});
 }
 
 TEST_CASE("acobench measures the gap of a smoothed run on its grid path against the grid optimum", "[acobench][report]") {

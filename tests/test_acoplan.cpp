@@ -1,12 +1,14 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "aco/host_options.hpp"
 #include "aco/output_file.hpp"
 #include "aco/plugin.hpp"
+#include "aco/svg.hpp"
 #include "acoplan/acoplan.hpp"
 #include "support.hpp"
 
@@ -246,6 +248,87 @@ TEST_CASE("acoplan writes an SVG picture", "[acoplan]") {
   const std::string svg((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   CHECK_THAT(svg, Contains("<svg") && Contains("id=\"grid-path\"") && Contains("id=\"convergence\"") &&
                       Contains("id=\"pheromone\"") && Contains("</svg>"));
+}
+
+namespace {
+
+// The part of `svg` from `<g id="ID"` to its closing tag (the groups of the run picture hold no
+// nested groups).
+std::string svg_group(const std::string& svg, const std::string& id) {
+  const auto begin = svg.find("<g id=\"" + id + "\"");
+  REQUIRE(begin != std::string::npos);
+  return svg.substr(begin, svg.find("</g>", begin) - begin);
+}
+
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t count = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
+  return count;
+}
+
+// The y coordinates of the points of every polyline and dot of class `css_class`.
+std::vector<double> curve_heights(const std::string& svg, const std::string& css_class) {
+  std::vector<double> heights;
+  for (auto at = svg.find("class=\"" + css_class + "\""); at != std::string::npos; at = svg.find("class=\"" + css_class + "\"", at + 1)) {
+    const auto element = svg.rfind('<', at), end = svg.find('>', at);
+    const std::string tag = svg.substr(element, end - element);
+    if (tag.rfind("<circle", 0) == 0) {
+      const auto cy = tag.find("cy=\"");
+      heights.push_back(std::stod(tag.substr(cy + 4)));
+      continue;
+    }
+    std::istringstream points(tag.substr(tag.find("points=\"") + 8));
+    std::string point;
+    while (points >> point && point.find(',') != std::string::npos) heights.push_back(std::stod(point.substr(point.find(',') + 1)));
+  }
+  return heights;
+}
+
+}  // namespace
+
+TEST_CASE("acoplan's SVG draws obstacle cells as one rectangle per run with crisp edges", "[acoplan][svg]") {
+  // Runs of blocked cells: row 0 has two, row 1 one of four cells, row 2 none, row 3 three single cells.
+  const auto grid = test::grid({"##.##.", ".####.", "......", "#.#.#."});
+  const aco::Graph graph = aco::build_graph(grid, {});
+  aco::RunPicture picture;
+  picture.goal = graph.node({5, 2});
+  picture.pheromone.assign(static_cast<std::size_t>(graph.num_edges()), 1.0);
+  const std::string svg = aco::render_svg(graph, picture);
+  const std::string obstacles = svg_group(svg, "obstacles");
+  CHECK_THAT(obstacles, Contains("shape-rendering=\"crispEdges\""));
+  CHECK(occurrences(obstacles, "<rect") == 6);
+  CHECK_THAT(obstacles, Contains("<rect x=\"0.5\" y=\"0.5\" width=\"4\" height=\"1\"/>"));
+  CHECK_THAT(svg_group(svg, "pheromone"), Contains("shape-rendering=\"crispEdges\""));
+
+  // The pheromone field too: on an open map with the same pheromone on every edge, a cell's shade
+  // follows its number of neighbours, so each row is three runs: its two end cells and the rest.
+  const auto open_grid = test::grid({"........", "........", "........"});
+  const aco::Graph open = aco::build_graph(open_grid, {});
+  picture.pheromone.assign(static_cast<std::size_t>(open.num_edges()), 1.0);
+  CHECK(occurrences(svg_group(aco::render_svg(open, picture), "pheromone"), "<rect") == 9);
+}
+
+TEST_CASE("acoplan's convergence chart keeps every iteration best inside its frame", "[acoplan][svg]") {
+  const auto grid = test::grid({"...."});
+  const aco::Graph graph = aco::build_graph(grid, {});
+  aco::RunPicture picture;
+  picture.goal = 3;
+  picture.best_so_far = {50, 50, 40, 40, 38, 38};
+  // An iteration far worse than the first, and one in which no ant arrived.
+  picture.iteration_best = {50, 120, 40, std::numeric_limits<double>::infinity(), 38, 45};
+  const std::string svg = aco::render_svg(graph, picture);
+  const std::string chart = svg.substr(svg.find("<g id=\"convergence\""));
+  const double frame_height = std::stod(chart.substr(chart.find("height=\"") + 8));
+  const auto heights = curve_heights(chart, "iteration-best");
+  CHECK(heights.size() == 5);  // every finite value drawn
+  for (const double y : heights) {
+    INFO("y " << y << " in a frame of height " << frame_height);
+    CHECK(y > 0.0);  // inside the frame, not on its edge where the frame's line would hide it
+    CHECK(y < frame_height);
+  }
+  CHECK_THAT(chart, Contains(">120</text>") && Contains(">38</text>"));
+  // The iteration without a path leaves a gap: two pieces, not a line across it.
+  CHECK(occurrences(chart, "class=\"iteration-best\"") == 2);
 }
 
 TEST_CASE("acoplan rejects malformed map files with the file, line and problem", "[acoplan][bad-input]") {

@@ -9,6 +9,7 @@
 #include "aco/simulation/simulation.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/error.hpp"
+#include "aco/svg.hpp"
 #include "support.hpp"
 
 using Catch::Contains;
@@ -112,6 +113,57 @@ TEST_CASE("acosim: a moving obstacle is sensed and passed", "[acosim]") {
   CHECK(r.collisions == 0);
   REQUIRE(r.frames.back().moving.size() == 1);
   CHECK(r.frames.back().moving[0].x() == Approx(11 - 0.2 * r.time));
+}
+
+namespace {
+
+// The number in `attribute="..."` of the first element of `svg` that holds `marker`.
+double attribute_of(const std::string& svg, const std::string& marker, const std::string& attribute) {
+  const auto at = svg.find(marker);
+  REQUIRE(at != std::string::npos);
+  const auto value = svg.find(attribute + "=\"", at);
+  REQUIRE(value != std::string::npos);
+  return std::stod(svg.substr(value + attribute.size() + 2));
+}
+
+}  // namespace
+
+TEST_CASE("acosim's picture has start and goal marked and a legend beside the map for every line and mark", "[acosim][svg]") {
+  const auto file = scenario(
+      "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa}\nunknown: [[6, 2]]\n"
+      "moving:\n  - {position: [11, 0.5], velocity: [-0.2, 0], radius: 0.3}\n");
+  const acosim::Scenario s = acosim::load_scenario(file, test::plugins());
+  const acosim::SimulationResult r = acosim::simulate(s, test::plugins());
+  const std::string svg = acosim::render_svg(s, r);
+  // Start and goal: a marker at the cell's centre (24 pixels per cell, 12 margin) and a word.
+  CHECK(attribute_of(svg, "<g id=\"start\"", "cx") == 12 + 0.5 * 24);
+  CHECK(attribute_of(svg, "<g id=\"start\"", "cy") == 12 + 2.5 * 24);
+  CHECK(attribute_of(svg, "<g id=\"goal\"", "cx") == 12 + 11.5 * 24);
+  CHECK_THAT(svg, Contains(">start</text></g>") && Contains(">goal</text></g>"));
+  // The legend names what this run drew: one replan (the unknown cell blocks the straight
+  // path), no collision.
+  REQUIRE(r.plans.size() == 2);
+  const std::string legend = svg.substr(svg.find("<g id=\"legend\""));
+  for (const char* entry : {">start<", ">goal<", ">obstacle on the map<", ">obstacle the map did not show<", ">planned path<",
+                            ">replanned path (1)<", ">moving obstacle's track<", ">moving obstacle at the end<",
+                            ">driven trajectory<"})
+    CHECK_THAT(legend, Contains(entry));
+  CHECK_THAT(legend, !Contains("collision"));
+  // Beside the map (12 wide), not over it, and inside the picture by the text width estimate.
+  const double map_right = 12 + 12 * 24;
+  const double legend_left = std::stod(legend.substr(legend.find("translate(") + 10));
+  CHECK(legend_left > map_right);
+  const double width = attribute_of(svg, "<svg", "width");
+  CHECK(legend_left + 36 + aco::text_width("obstacle the map did not show", 13) <= width);
+  CHECK_THAT(svg, Contains("viewBox=\"0 0 "));
+
+  SECTION("a collision is marked where the robot stopped, and the legend says so") {
+    const acosim::Scenario blind = acosim::with_run_keys(s, {{{"local", "track"}}, {}}, test::plugins());
+    const acosim::SimulationResult hit = acosim::simulate(blind, test::plugins());
+    REQUIRE(hit.collisions == 1);
+    const std::string picture = acosim::render_svg(blind, hit);
+    CHECK_THAT(picture, Contains("<g id=\"collision\">") && Contains(">collision</text>"));
+  }
 }
 
 TEST_CASE("acosim: bad scenarios are errors naming the file, the line and the key", "[acosim][bad-input]") {

@@ -9,6 +9,7 @@
 #include "aco/error.hpp"
 #include "aco/studies/plots.hpp"
 #include "aco/studies/statistics.hpp"
+#include "support.hpp"
 
 namespace {
 
@@ -309,12 +310,13 @@ TEST_CASE("box plots of constant, empty or no samples stay free of NaN", "[stati
 
 TEST_CASE("box plots slant long sample names and cut the longest", "[statistics][plots]") {
   acobench::BoxPlot plot;
-  plot.samples = {{"max_min rho=0.02 p_best=0.05 & smoother", {1, 2}}, {"acs", {2, 3}}, {"ant_system", {1}}};
+  plot.samples = {{"max_min rho=0.02 p_best=0.05 & smoother=prune local=dwa", {1, 2}}, {"acs", {2, 3}}, {"ant_system", {1}}};
   const std::string svg = acobench::box_plot_svg(plot);
   CHECK(well_formed(svg));
   CHECK(count(svg, "rotate(-45") == 3);
-  CHECK_THAT(svg, Contains(">max_min rho=0.02 p_best\u2026<") && Contains(">acs<"));
-  CHECK_THAT(svg, Contains("<title>max_min rho=0.02 p_best=0.05 &amp; smoother: n 2"));
+  CHECK_THAT(svg, Contains(">max_min rho=0.02 p_best=0.05 &amp; smoother\u2026<") && Contains(">acs<"));
+  CHECK_THAT(svg, Contains("<title>max_min rho=0.02 p_best=0.05 &amp; smoother=prune local=dwa: n 2"));
+  CHECK(test::texts_outside_view_box(svg).empty());
 }
 
 TEST_CASE("convergence series average the runs with a 95 % band", "[statistics][plots]") {
@@ -446,10 +448,61 @@ TEST_CASE("line charts with their own x: a log axis, steps, fixed y range, and a
   CHECK(svg == acobench::line_chart_svg(chart));
   CHECK_THAT(svg, Contains("width=\"640\""));
 
-  // A long configuration name widens the legend (the plotting area first, then the picture).
+  // A longer name widens the legend beside the plot (the plotting area first, then the picture);
+  // one too long for that puts the legend under the plot.
+  chart.series[1].name = "003 obstacle-density init + wolf-pack";
+  const std::string wider = acobench::line_chart_svg(chart);
+  CHECK_THAT(wider, !Contains("width=\"640\"") && Contains("<g class=\"legend\">\n<line x1=\"386\" x2=\"406\" y1=\"50\""));
   chart.series[1].name = "003 obstacle-density init + wolf-pack update + Gaussian deposition";
   const std::string wide = acobench::line_chart_svg(chart);
   CHECK(well_formed(wide));
-  CHECK_FALSE(wide.find("width=\"640\"") != std::string::npos);
-  CHECK_THAT(wide, Contains(">003 obstacle-density init + wolf-pack update + Gaussian deposition<"));
+  CHECK_THAT(wide, Contains(">003 obstacle-density init + wolf-pack update + Gaussian deposition<") &&
+                       Contains("<g class=\"legend\">\n<line x1=\"16\" x2=\"36\" y1=\"416\""));  // under the x axis title
+  CHECK(test::texts_outside_view_box(wider).empty());
+  CHECK(test::texts_outside_view_box(wide).empty());
+}
+
+namespace {
+
+// Forty configurations with long names of digits and wide letters, as a study of many variants has.
+std::vector<std::string> forty_long_names() {
+  std::vector<std::string> names;
+  for (int k = 1; k <= 40; ++k)
+    names.push_back("configuration " + std::to_string(k) + " MMAS with alpha " + std::to_string(k * 0.25) +
+                    " and a rather long name (wolf_pack, maximum)");
+  return names;
+}
+
+}  // namespace
+
+TEST_CASE("every plot's text lies inside its picture: forty long names, wide tick labels, long titles", "[statistics][plots][svg]") {
+  const auto names = forty_long_names();
+  acobench::BoxPlot box;
+  box.title = "final path length of forty configurations on a map with a long name: Berlin_0_512.map";
+  box.value_label = "path length";
+  box.reference = 123456.789;
+  for (std::size_t k = 0; k < names.size(); ++k) box.samples.push_back({names[k], {123000.0 + double(k), 124000.0 + double(k)}});
+  const std::string boxes = acobench::box_plot_svg(box);
+  CHECK(well_formed(boxes));
+  for (const auto& text : test::texts_outside_view_box(boxes)) FAIL_CHECK("box plot: " << text);
+  // A few short names stay level, side by side, in the 640-wide picture.
+  box.samples.resize(3);
+  for (std::size_t k = 0; k < 3; ++k) box.samples[k].name = "cfg " + std::to_string(k);
+  const std::string level = acobench::box_plot_svg(box);
+  CHECK(count(level, "rotate(-45") == 0);
+  CHECK(test::texts_outside_view_box(level).empty());
+
+  acobench::LineChart chart;
+  chart.title = "best-so-far length (mean, 95 % CI) of forty configurations: Berlin_0_512.map";
+  chart.y_label = "path length";
+  chart.reference = 123456.789;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    chart.series.push_back(acobench::convergence_series(names[k], {{130000.0 + double(k), 125000.0, 123500.0}}));
+  for (const bool log_x : {false, true}) {
+    chart.log_x = log_x;
+    const std::string lines = acobench::line_chart_svg(chart);
+    CHECK(well_formed(lines));
+    for (const auto& text : test::texts_outside_view_box(lines)) FAIL_CHECK("line chart: " << text);
+    CHECK_THAT(lines, Contains(">" + names.back() + "<"));  // the legend names every series in full
+  }
 }

@@ -250,7 +250,7 @@ TEST_CASE("The SVG of a terrain shows shading, contours and a height legend", "[
   CHECK(fills.size() >= 4);
   // Paths in cells, not in map units: the goal is drawn at cell (3,2), not at (30,20).
   CHECK_THAT(svg, Contains("cx=\"3\" cy=\"2\""));
-  CHECK_THAT(svg, Contains("<g id=\"obstacles\" fill=\"#333\">\n<rect x=\"1.5\" y=\"0.5\""));
+  CHECK_THAT(svg, Contains("<g id=\"obstacles\" fill=\"#333\" shape-rendering=\"crispEdges\">\n<rect x=\"1.5\" y=\"0.5\""));
 
   SECTION("flat maps are drawn as before") {
     const auto grid = test::grid({"...", ".#."});

@@ -18,6 +18,7 @@ constexpr double kMapPixels = 560.0;
 constexpr double kPlotWidth = 420.0;
 constexpr double kPlotHeight = 300.0;
 constexpr double kMargin = 40.0;
+constexpr double kConvergenceAir = 0.05;  // of the values' range, above and below them
 
 
 void polyline(std::ostream& out, const std::vector<std::pair<double, double>>& points, const char* style) {
@@ -178,23 +179,34 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
     draw_contours(out, *terrain, *heights, 1.0 / scale);
   }
   if (!pic.pheromone.empty()) {
-    // Pheromone of a cell = sum over the edges into it.
+    // Pheromone of a cell = sum over the edges into it, shown as the green's opacity in steps of
+    // kOpacityStep, so that neighbouring cells of one step merge into one rectangle (a 512 x 512
+    // map's field shrinks from some 200,000 rectangles to a few tens of thousands).
+    constexpr double kOpacityStep = 0.02, kMostOpaque = 0.8;
     std::vector<double> cell(graph.num_nodes(), 0.0);
     for (EdgeId e = 0; e < graph.num_edges(); ++e) cell[graph.targets[e]] += pic.pheromone[e];
     const double top = *std::max_element(cell.begin(), cell.end());
-    out << "<g id=\"pheromone\" fill=\"#2e7d32\">\n";
-    for (NodeId n = 0; n < graph.num_nodes(); ++n) {
-      if (top <= 0 || cell[n] <= 0) continue;
-      const double opacity = std::sqrt(cell[n] / top) * 0.8;
-      if (opacity < 0.02) continue;
-      const Cell c = graph.cell(n);
-      out << "<rect x=\"" << c.x - 0.5 << "\" y=\"" << c.y - 0.5 << "\" width=\"1\" height=\"1\" fill-opacity=\"" << opacity
-          << "\"/>\n";
-    }
+    const auto level = [&](int x, int y) -> int {  // steps of opacity; 0: not drawn
+      const NodeId node = graph.node({x, y});
+      if (top <= 0 || cell[node] <= 0) return 0;
+      return static_cast<int>(std::lround(std::sqrt(cell[node] / top) * kMostOpaque / kOpacityStep));
+    };
+    out << "<g id=\"pheromone\" fill=\"#2e7d32\" shape-rendering=\"crispEdges\">\n";
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w;) {
+        const int l = level(x, y);
+        int end = x + 1;
+        while (end < w && level(end, y) == l) ++end;
+        if (l > 0)
+          out << "<rect x=\"" << x - 0.5 << "\" y=\"" << y - 0.5 << "\" width=\"" << end - x << "\" height=\"1\" fill-opacity=\""
+              << l * kOpacityStep << "\"/>\n";
+        x = end;
+      }
     out << "</g>\n";
   }
-  // Blocked cells, merged into horizontal runs to keep large maps small.
-  out << "<g id=\"obstacles\" fill=\"#333\">\n";
+  // Blocked cells, merged into horizontal runs to keep large maps small, with crisp edges:
+  // anti-aliased edges of neighbouring rows would leave light seams between them.
+  out << "<g id=\"obstacles\" fill=\"#333\" shape-rendering=\"crispEdges\">\n";
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w;) {
       if (graph.map->passable({x, y})) {
@@ -228,6 +240,9 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
   out << "</g>\n";
 }
 
+// The curves span every value: the highest and lowest of both curves and the optimum, with air
+// above and below so that no value, an early poor iteration's best in particular, lies on the
+// frame where it could not be told from it. An iteration in which no ant arrived leaves a gap.
 void draw_convergence(std::ostream& out, const RunPicture& pic, double left, double top) {
   std::vector<double> finite;
   for (const auto* curve : {&pic.best_so_far, &pic.iteration_best})
@@ -241,25 +256,35 @@ void draw_convergence(std::ostream& out, const RunPicture& pic, double left, dou
     out << "<text x=\"" << kPlotWidth / 2 << "\" y=\"" << kPlotHeight / 2 << "\" text-anchor=\"middle\">no path found</text>\n</g>\n";
     return;
   }
-  double low = *std::min_element(finite.begin(), finite.end());
-  double high = *std::max_element(finite.begin(), finite.end());
-  if (high - low < 1e-9) low -= 1, high += 1;
-  const std::size_t n = pic.best_so_far.size();
+  const double low = *std::min_element(finite.begin(), finite.end());
+  const double high = *std::max_element(finite.begin(), finite.end());
+  const double air = high - low < 1e-9 ? 1.0 : (high - low) * kConvergenceAir;
+  const double axis_low = low - air, axis_high = high + air;
+  const std::size_t n = std::max(pic.best_so_far.size(), pic.iteration_best.size());
   auto px = [&](std::size_t i) { return n <= 1 ? 0.0 : kPlotWidth * double(i) / double(n - 1); };
-  auto py = [&](double v) { return kPlotHeight * (1.0 - (v - low) / (high - low)); };
+  auto py = [&](double v) { return kPlotHeight * (1.0 - (v - axis_low) / (axis_high - axis_low)); };
   auto curve = [&](const std::vector<double>& values, const char* style) {
     std::vector<std::pair<double, double>> points;
-    for (std::size_t i = 0; i < values.size(); ++i)
-      if (std::isfinite(values[i])) points.emplace_back(px(i), py(values[i]));
-    polyline(out, points, style);
+    for (std::size_t i = 0; i <= values.size(); ++i) {
+      if (i < values.size() && std::isfinite(values[i])) {
+        points.emplace_back(px(i), py(values[i]));
+        continue;
+      }
+      if (points.size() == 1)  // one iteration between gaps: a dot, as a line needs two
+        out << "<circle cx=\"" << points[0].first << "\" cy=\"" << points[0].second << "\" r=\"1.5\" " << style << "/>\n";
+      polyline(out, points, style);
+      points.clear();
+    }
   };
   curve(pic.iteration_best, "stroke=\"#90a4ae\" stroke-width=\"1\" class=\"iteration-best\"");
   curve(pic.best_so_far, "stroke=\"#1565c0\" stroke-width=\"2\" class=\"best-so-far\"");
   if (pic.optimal_length > 0)
     out << "<line x1=\"0\" x2=\"" << kPlotWidth << "\" y1=\"" << py(pic.optimal_length) << "\" y2=\"" << py(pic.optimal_length)
         << "\" stroke=\"#43a047\" stroke-dasharray=\"4,3\" class=\"optimum\"/>\n";
-  out << "<text x=\"-4\" y=\"" << py(high) + 4 << "\" text-anchor=\"end\">" << high << "</text>\n";
-  out << "<text x=\"-4\" y=\"" << py(low) + 4 << "\" text-anchor=\"end\">" << low << "</text>\n";
+  // The highest and the lowest value, each at its height with a tick.
+  for (const double v : {high, low})
+    out << "<line x1=\"-4\" x2=\"0\" y1=\"" << py(v) << "\" y2=\"" << py(v) << "\" stroke=\"#888\"/><text x=\"-6\" y=\"" << py(v) + 4
+        << "\" text-anchor=\"end\">" << v << "</text>\n";
   out << "<text x=\"0\" y=\"" << kPlotHeight + 16 << "\">1</text>\n";
   out << "<text x=\"" << kPlotWidth << "\" y=\"" << kPlotHeight + 16 << "\" text-anchor=\"end\">" << n << "</text>\n";
   out << "<text x=\"" << kPlotWidth / 2 << "\" y=\"" << kPlotHeight + 16 << "\" text-anchor=\"middle\">iterations run</text>\n";
@@ -299,6 +324,23 @@ std::string render_svg(const Graph& graph, const RunPicture& pic) {
 
 void write_svg(const std::filesystem::path& file, const Graph& graph, const RunPicture& picture) {
   write_output_file(file, render_svg(graph, picture), "SVG");
+}
+
+double text_width(std::string_view text, double font_size) {
+  double ems = 0.0;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if ((byte & 0xC0) == 0x80) continue;  // inside a UTF-8 character, counted at its first byte
+    const std::string_view narrow = " ijl'.,:;|!", slim = "frt()[]{}/-\\\"";
+    double em = 0.9;  // symbols (% + = & ...) and characters beyond ASCII (\u2026, \u25b2)
+    if (narrow.find(c) != std::string_view::npos) em = 0.33;
+    else if (slim.find(c) != std::string_view::npos) em = 0.43;
+    else if (c == 'm' || c == 'w' || c == 'M' || c == 'W') em = 1.0;
+    else if (c >= 'A' && c <= 'Z') em = 0.79;
+    else if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) em = 0.64;
+    ems += em;
+  }
+  return ems * font_size;
 }
 
 std::string xml_escape(const std::string& text) {

@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
         ("version", "print the framework's version, commit, build type and compiler and exit")
         ("json", po::bool_switch(), "print the summary and the trajectory as one JSON object")
         ("csv", po::value(&csv)->value_name("FILE"), "write the trajectory (t, x, y, heading, v, w) as CSV")
-        ("svg", po::value(&svg)->value_name("FILE"), "write a picture: map, unknown cells, plans, trajectory, moving tracks")
+        ("svg", po::value(&svg)->value_name("FILE"), "write a picture: map, unknown cells, plans, trajectory, moving tracks, start and goal, with a legend")
         ("html", po::value(&html)->value_name("FILE"), "write a page that plays the run (play/pause, time slider)")
         ("batch", po::value<int>()->value_name("N"), "run N generated variations of the scenario and print their summary")
         ("seed", po::value<std::uint64_t>()->default_value(1), "with --batch or --variation: the variations' seed")

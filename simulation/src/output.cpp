@@ -1,6 +1,7 @@
 // What a simulation leaves behind: a JSON summary with the trajectory, a CSV of the trajectory,
 // and an SVG of the map, the plans, the driven trajectory and the moving obstacles' tracks.
 #include <nlohmann/json.hpp>
+#include <algorithm>
 #include <sstream>
 
 #include "aco/map_io.hpp"
@@ -53,50 +54,166 @@ std::string trajectory_csv(const SimulationResult& r) {
 namespace {
 
 constexpr double kCell = 24.0, kPad = 12.0;  // pixels per map unit, margin
+constexpr double kLegendGap = 24.0, kLegendRow = 22.0, kSwatch = 28.0;  // the legend beside the map
+constexpr double kFontSize = 13.0;
 double px(double x) { return kPad + (x + 0.5) * kCell; }
 
+// The line styles, shared by the drawing and its legend.
+constexpr const char* kFirstPlanStyle = "stroke=\"#2471a3\" stroke-width=\"2\" stroke-dasharray=\"6,4\"";
+constexpr const char* kReplanStyle = "stroke=\"#8e44ad\" stroke-width=\"2\" stroke-dasharray=\"6,4\"";
+constexpr const char* kTrackStyle = "stroke=\"#e67e22\" stroke-width=\"1.5\" stroke-opacity=\"0.6\"";
+constexpr const char* kTrajectoryStyle = "stroke=\"#27ae60\" stroke-width=\"2.5\"";
+constexpr const char* kObstacleFill = "fill=\"#444\"";
+constexpr const char* kUnknownFill = "fill=\"#c0392b\" fill-opacity=\"0.7\"";
+constexpr const char* kMovingFill = "fill=\"#e67e22\" fill-opacity=\"0.55\" stroke=\"#e67e22\"";
+
+// The start marker (a ring) and the goal marker (a bull's eye), centred on (x, y).
+std::string start_mark(double x, double y) {
+  std::ostringstream s;
+  s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"7\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"2.5\"/>";
+  return s.str();
+}
+std::string goal_mark(double x, double y) {
+  std::ostringstream s;
+  s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"7\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"2.5\"/><circle cx=\"" << x
+    << "\" cy=\"" << y << "\" r=\"3\" fill=\"#000\"/>";
+  return s.str();
+}
+// A cross where the robot touched an obstacle: black on a white outline, to stand out on the red
+// of an unknown cell as on the dark grey of a known one.
+std::string collision_mark(double x, double y) {
+  std::ostringstream cross;
+  cross << "M" << x - 7 << ',' << y - 7 << "L" << x + 7 << ',' << y + 7 << "M" << x - 7 << ',' << y + 7 << "L" << x + 7 << ',' << y - 7;
+  return "<path d=\"" + cross.str() + "\" stroke=\"#fff\" stroke-width=\"6\"/><path d=\"" + cross.str() +
+         "\" stroke=\"#000\" stroke-width=\"3\"/>";
+}
+
+// A marker with its word beside it: above and to the right, unless that would leave the map;
+// the white outline keeps the word legible over lines and obstacles.
+void labelled_mark(std::ostream& s, const char* id, const std::string& mark, const char* word, double x, double y, double map_right) {
+  const bool left = x + 10 + aco::text_width(word, kFontSize) > map_right;
+  const bool below = y - 8 - kFontSize < kPad;
+  s << "<g id=\"" << id << "\">" << mark << "<text x=\"" << (left ? x - 10 : x + 10) << "\" y=\"" << (below ? y + 8 + kFontSize : y - 8)
+    << "\" text-anchor=\"" << (left ? "end" : "start") << "\" font-family=\"sans-serif\" font-size=\"" << kFontSize
+    << "\" font-weight=\"bold\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">" << word << "</text></g>\n";
+}
+
+struct LegendEntry {
+  std::string swatch;  // drawn in a kSwatch x kSwatch box whose top left corner is (0, 0)
+  std::string text;
+};
+
+// Every kind of line and mark the picture holds, in one column.
+std::vector<LegendEntry> legend_entries(const Scenario& scenario, const SimulationResult& r, bool moving_discs) {
+  const std::string line = "<line x1=\"2\" x2=\"26\" y1=\"7\" y2=\"7\" ";
+  const std::string cell = "<rect x=\"7\" y=\"0\" width=\"14\" height=\"14\" ";
+  std::vector<LegendEntry> entries{{start_mark(14, 7), "start"}, {goal_mark(14, 7), "goal"},
+                                   {cell + kObstacleFill + "/>", "obstacle on the map"}};
+  if (!scenario.unknown.empty()) entries.push_back({cell + kUnknownFill + "/>", "obstacle the map did not show"});
+  if (!r.plans.empty()) entries.push_back({line + kFirstPlanStyle + "/>", "planned path"});
+  if (r.plans.size() > 1)
+    entries.push_back({line + kReplanStyle + "/>", "replanned path" + std::string(r.plans.size() > 2 ? "s" : "") + " (" +
+                                                        std::to_string(r.plans.size() - 1) + ")"});
+  if (!scenario.moving.empty()) {
+    entries.push_back({line + kTrackStyle + "/>", "moving obstacle's track"});
+    if (moving_discs) entries.push_back({"<circle cx=\"14\" cy=\"7\" r=\"6\" " + std::string(kMovingFill) + "/>", "moving obstacle at the end"});
+  }
+  entries.push_back({line + kTrajectoryStyle + "/>", "driven trajectory"});
+  if (r.collisions > 0) entries.push_back({collision_mark(14, 7), "collision"});
+  return entries;
+}
+
+double legend_width(const std::vector<LegendEntry>& entries) {
+  double widest = 0.0;
+  for (const auto& entry : entries) widest = std::max(widest, aco::text_width(entry.text, kFontSize));
+  return kSwatch + 8 + widest;
+}
+
+void draw_legend(std::ostream& s, const std::vector<LegendEntry>& entries, double left, double top) {
+  s << "<g id=\"legend\" class=\"legend\" transform=\"translate(" << left << ',' << top << ")\" font-family=\"sans-serif\" font-size=\""
+    << kFontSize << "\">\n";
+  for (std::size_t i = 0; i < entries.size(); ++i)
+    s << "<g class=\"legend-entry\" transform=\"translate(0," << double(i) * kLegendRow << ")\">" << entries[i].swatch << "<text x=\""
+      << kSwatch + 8 << "\" y=\"12\">" << aco::xml_escape(entries[i].text) << "</text></g>\n";
+  s << "</g>\n";
+}
+
 // The picture: the map, unknown cells, every plan, each moving obstacle's track, the driven
-// trajectory and the outcome line. The player adds the robot and the discs on top.
-std::string picture(const Scenario& scenario, const SimulationResult& r, const std::string& extra) {
+// trajectory, start and goal, the outcome line below and the legend beside the map. The
+// player adds the robot and the discs on top (`extra`); the still picture draws the discs where
+// they were at the end (`moving_discs`).
+std::string picture(const Scenario& scenario, const SimulationResult& r, const std::string& extra, bool moving_discs) {
   const aco::Map& map = *scenario.map;
+  const double map_right = kPad + map.width() * kCell, map_bottom = kPad + map.height() * kCell;
+  std::ostringstream summary;
+  summary.precision(6);
+  summary << r.outcome << (r.reason.empty() ? "" : ": " + r.reason) << "; time " << r.time << " s, " << r.replans << " replans";
+  const std::string outcome = summary.str();
+  const auto entries = legend_entries(scenario, r, moving_discs);
+  const double legend_left = map_right + kLegendGap;
+  const double width = std::max(legend_left + legend_width(entries), kPad + aco::text_width(outcome, kFontSize)) + kPad;
+  const double height = std::max(map_bottom + 24, kPad + double(entries.size()) * kLegendRow) + kPad;
   std::ostringstream s;
   s.precision(6);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" id=\"world\" width=\"" << 2 * kPad + map.width() * kCell << "\" height=\""
-    << 2 * kPad + map.height() * kCell + 24 << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  const auto square = [&](aco::Cell c, const char* attributes) {
-    s << "<rect " << attributes << " x=\"" << kPad + c.x * kCell << "\" y=\"" << kPad + c.y * kCell << "\" width=\"" << kCell
-      << "\" height=\"" << kCell << "\"/>\n";
-  };
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" id=\"world\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
+    << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s << "<rect x=\"" << kPad << "\" y=\"" << kPad << "\" width=\"" << map.width() * kCell << "\" height=\"" << map.height() * kCell
+    << "\" fill=\"none\" stroke=\"#888\"/>\n";
+  // Obstacle cells merged into horizontal runs, drawn with crisp edges: no seams between them.
+  s << "<g id=\"obstacles\" " << kObstacleFill << " shape-rendering=\"crispEdges\">\n";
   for (int y = 0; y < map.height(); ++y)
-    for (int x = 0; x < map.width(); ++x)
-      if (!map.passable({x, y})) square({x, y}, "fill=\"#444\"");
-  for (const aco::Cell& c : scenario.unknown) square(c, "class=\"unknown\" fill=\"#c0392b\" fill-opacity=\"0.7\"");
-  const auto polyline = [&](const std::vector<Eigen::Vector2d>& points, const char* attributes) {
+    for (int x = 0; x < map.width();) {
+      int end = x;
+      while (end < map.width() && !map.passable({end, y})) ++end;
+      if (end > x)
+        s << "<rect x=\"" << kPad + x * kCell << "\" y=\"" << kPad + y * kCell << "\" width=\"" << (end - x) * kCell << "\" height=\""
+          << kCell << "\"/>\n";
+      x = std::max(end, x + 1);
+    }
+  s << "</g>\n<g id=\"unknown\" " << kUnknownFill << " shape-rendering=\"crispEdges\">\n";
+  for (const aco::Cell& c : scenario.unknown)
+    s << "<rect class=\"unknown\" x=\"" << kPad + c.x * kCell << "\" y=\"" << kPad + c.y * kCell << "\" width=\"" << kCell
+      << "\" height=\"" << kCell << "\"/>\n";
+  s << "</g>\n";
+  const auto polyline = [&](const std::vector<Eigen::Vector2d>& points, const std::string& attributes) {
     s << "<polyline fill=\"none\" " << attributes << " points=\"";
     for (const auto& p : points) s << px(p.x()) << "," << px(p.y()) << " ";
     s << "\"/>\n";
   };
   for (std::size_t i = 0; i < r.plans.size(); ++i)
-    polyline(r.plans[i], i == 0 ? "class=\"plan\" stroke=\"#2471a3\" stroke-width=\"2\" stroke-dasharray=\"6,4\""
-                                : "class=\"plan\" stroke=\"#8e44ad\" stroke-width=\"2\" stroke-dasharray=\"6,4\"");
+    polyline(r.plans[i], std::string("class=\"plan\" ") + (i == 0 ? kFirstPlanStyle : kReplanStyle));
   for (std::size_t k = 0; k < scenario.moving.size(); ++k) {
     std::vector<Eigen::Vector2d> track;
     for (const Frame& f : r.frames) track.push_back(f.moving[k]);
-    polyline(track, "class=\"moving\" stroke=\"#e67e22\" stroke-width=\"1.5\" stroke-opacity=\"0.6\"");
+    polyline(track, std::string("class=\"moving\" ") + kTrackStyle);
   }
   std::vector<Eigen::Vector2d> driven;
   for (const Frame& f : r.frames) driven.push_back(f.robot.position());
-  polyline(driven, "class=\"trajectory\" id=\"trajectory\" stroke=\"#27ae60\" stroke-width=\"2.5\"");
+  polyline(driven, std::string("class=\"trajectory\" id=\"trajectory\" ") + kTrajectoryStyle);
+  if (moving_discs && !r.frames.empty())
+    for (std::size_t k = 0; k < scenario.moving.size(); ++k) {
+      const Eigen::Vector2d& at = r.frames.back().moving[k];
+      s << "<circle class=\"moving-end\" cx=\"" << px(at.x()) << "\" cy=\"" << px(at.y()) << "\" r=\""
+        << scenario.moving[k].radius * kCell << "\" " << kMovingFill << "/>\n";
+    }
+  labelled_mark(s, "start", start_mark(px(scenario.start.x), px(scenario.start.y)), "start", px(scenario.start.x), px(scenario.start.y),
+                map_right);
+  labelled_mark(s, "goal", goal_mark(px(scenario.goal.x), px(scenario.goal.y)), "goal", px(scenario.goal.x), px(scenario.goal.y),
+                map_right);
+  if (r.collisions > 0 && !r.frames.empty()) {
+    const auto& robot = r.frames.back().robot;
+    s << "<g id=\"collision\">" << collision_mark(px(robot.x), px(robot.y)) << "</g>\n";
+  }
   s << extra;
-  s << "<text x=\"" << kPad << "\" y=\"" << 2 * kPad + map.height() * kCell + 12 << "\" font-family=\"sans-serif\" font-size=\"13\">"
-    << aco::xml_escape(r.outcome + (r.reason.empty() ? "" : ": " + r.reason)) << "; time " << r.time << " s, " << r.replans
-    << " replans</text>\n</svg>\n";
+  draw_legend(s, entries, legend_left, kPad);
+  s << "<text id=\"outcome\" x=\"" << kPad << "\" y=\"" << map_bottom + 18 << "\" font-family=\"sans-serif\" font-size=\"" << kFontSize
+    << "\">" << aco::xml_escape(outcome) << "</text>\n</svg>\n";
   return s.str();
 }
 
 }  // namespace
 
-std::string render_svg(const Scenario& scenario, const SimulationResult& r) { return picture(scenario, r, ""); }
+std::string render_svg(const Scenario& scenario, const SimulationResult& r) { return picture(scenario, r, "", true); }
 
 // The player: the picture with the robot (disc and heading) and the moving discs drawn at one
 // frame, a play/pause button and a time slider. Frames are inline data; no network. Opened
@@ -122,7 +239,7 @@ std::string render_html(const Scenario& scenario, const SimulationResult& r) {
        << r.replans << " replans, local planner " << aco::xml_escape(scenario.run.pipeline.at("local").plugin) << "</p>\n"
        << "<div id=\"controls\"><button id=\"play\">play</button> <input id=\"slider\" type=\"range\" min=\"0\" max=\""
        << r.frames.size() - 1 << "\" value=\"0\"> <span id=\"time\">0 s</span> <span id=\"speed\"></span></div>\n"
-       << picture(scenario, r, robot.str()) << "<script>\nconst frames = " << frames.dump() << ";\nconst radius = " << radius << ";\n"
+       << picture(scenario, r, robot.str(), false) << "<script>\nconst frames = " << frames.dump() << ";\nconst radius = " << radius << ";\n"
        << R"JS(const slider = document.getElementById('slider'), play = document.getElementById('play');
 const body = document.getElementById('robot-body'), heading = document.getElementById('robot-heading');
 const discs = document.querySelectorAll('.disc');

@@ -21,15 +21,23 @@ constexpr double kTop = 40.0;   // room for the title
 constexpr double kRight = 20.0;
 constexpr double kLegendWidth = 170.0;
 constexpr double kBottom = 50.0;          // x tick labels and the x axis label
-constexpr double kRotatedBottom = 130.0;  // sample names written at a slant
-constexpr std::size_t kLongestSlantedName = 24;  // longer names are cut, in full in the tooltip
-constexpr double kCharWidth = 6.5;        // rough width of a 12 px sans-serif character
+constexpr double kRotatedBottom = 130.0;  // sample names written at a slant, at least
+constexpr std::size_t kLongestSlantedName = 40;  // longer names are cut, in full in the tooltip
+constexpr double kMinSlantedSlot = 18.0;  // a box's width of axis, so that slanted names do not overlap
+constexpr double kSin45 = 0.7071067811865476;
+constexpr double kFontSize = 12.0, kTitleFontSize = 15.0;
+constexpr double kYTitleX = 18.0;         // the y axis title's centre line, written upwards
 constexpr double kMinLineFrameWidth = 300.0;  // a line chart's plotting area, however wide its legend
+constexpr std::size_t kMaxLegendRowsBeside = 15;  // more rows, or a wider legend, go under the plot
+constexpr double kMaxLegendWidthBeside = 300.0;
+constexpr double kLegendRow = 20.0;
 constexpr std::array kPalette{"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
                               "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
 constexpr std::array kDashes{"", "7,3", "2,2", "8,3,2,3"};
 static_assert(kPalette.size() * kDashes.size() == kDistinctStyles);
 
+
+double text_width(const std::string& text) { return aco::text_width(text, kFontSize); }
 
 // At most `decimals` decimals, trailing zeros dropped; std::to_chars ignores the locale.
 std::string number(double value, int decimals = 1) {
@@ -128,7 +136,8 @@ void draw_value_axis(std::ostream& out, const Frame& frame, const std::string& l
         << number(tick, frame.y.decimals) << "</text>\n";
   }
   const std::string middle = number(frame.top + frame.height / 2);
-  out << "<text x=\"18\" y=\"" << middle << "\" text-anchor=\"middle\" transform=\"rotate(-90 18 " << middle << ")\">"
+  out << "<text x=\"" << number(kYTitleX) << "\" y=\"" << middle << "\" text-anchor=\"middle\" transform=\"rotate(-90 "
+      << number(kYTitleX) << ' ' << middle << ")\">"
       << aco::xml_escape(label) << "</text>\n";
   out << "<rect x=\"" << number(frame.left) << "\" y=\"" << number(frame.top) << "\" width=\"" << number(frame.width)
       << "\" height=\"" << number(frame.height) << "\" fill=\"none\" stroke=\"#555\"/>\n</g>\n";
@@ -188,18 +197,25 @@ void draw_box(std::ostream& out, const Frame& frame, const NamedSample& sample, 
   out << "</g>\n";
 }
 
-// A sample's name under its box. Names too long to sit side by side are slanted, and cut if
-// they would still run off the picture (the box's tooltip has them in full).
-void draw_sample_name(std::ostream& out, std::string name, double centre, double baseline, bool slanted) {
+// A sample's name as written under its box: slanted names longer than kLongestSlantedName are cut
+// (the box's tooltip has them in full).
+std::string shown_name(std::string name, bool slanted) {
+  if (!slanted || name.size() <= kLongestSlantedName) return name;
+  std::size_t cut = kLongestSlantedName - 1;
+  while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+  return name.substr(0, cut) + "\u2026";
+}
+
+// How far a name slanted at 45 degrees, ending at its box, reaches left of and below its end:
+// its length and its height, both at 45 degrees.
+double slanted_reach(const std::string& name) { return kSin45 * (text_width(name) + kFontSize); }
+
+// A sample's name under its box, level or slanted (names too long to sit side by side).
+void draw_sample_name(std::ostream& out, const std::string& name, double centre, double baseline, bool slanted) {
   const std::string x = number(centre), y = number(baseline);
   if (!slanted) {
     out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"middle\">" << aco::xml_escape(name) << "</text>\n";
     return;
-  }
-  if (name.size() > kLongestSlantedName) {
-    std::size_t cut = kLongestSlantedName - 1;
-    while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
-    name = name.substr(0, cut) + "\u2026";
   }
   out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"end\" transform=\"rotate(-45 " << x << ' ' << y << ")\">"
       << aco::xml_escape(name) << "</text>\n";
@@ -235,16 +251,16 @@ void check_series(const Series& series) {
                      std::to_string(series.value.size()) + " values");
 }
 
-// The width of a 12 px sans-serif text, erring on the wide side so that a legend is never cut:
-// capitals and m, w are wider than the other letters.
-double text_width(const std::string& text) {
-  double width = 0.0;
-  for (const char c : text) {
-    if ((static_cast<unsigned char>(c) & 0xC0) == 0x80) continue;  // inside a UTF-8 character
-    width += (c >= 'A' && c <= 'Z') || c == 'm' || c == 'w' ? 9.0 : (c >= '0' && c <= '9') ? 6.7 : 6.3;
-  }
-  return width;
+// The left margin that holds the y tick labels (right-aligned 6 px left of the frame) and, left
+// of them, the y axis title.
+double value_axis_room(const Axis& y) {
+  double widest = 0.0;
+  for (double tick : y.ticks()) widest = std::max(widest, text_width(number(tick, y.decimals)));
+  return std::max(kLeft, kYTitleX + kFontSize + 6 + widest + 6);
 }
+
+// The picture's width is at least its title's.
+double title_room(const std::string& title) { return aco::text_width(title, kTitleFontSize) + 20; }
 
 // A line chart's x axis: linear with nice ticks, or logarithmic over whole decades.
 struct XAxis {
@@ -306,24 +322,42 @@ std::string box_plot_svg(const BoxPlot& plot) {
     summaries.push_back(summarize_sample(sample));
     if (summaries.back().n > 0) extremes.insert(extremes.end(), {summaries.back().min, summaries.back().max});
   }
-  const double slot = (kWidth - kLeft - kRight) / double(std::max<std::size_t>(plot.samples.size(), 1));
-  const bool slanted = std::any_of(plot.samples.begin(), plot.samples.end(),
-                                   [&](const NamedSample& s) { return double(s.name.size()) * kCharWidth > slot - 4; });
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < plot.samples.size(); ++i)
+    names.push_back(plot.samples[i].name + (summaries[i].n == 0 ? " (no data)" : ""));
+  // The layout makes room for every text by its estimated width (aco::text_width): the tick
+  // labels left of the frame; names side by side if they fit their boxes' slots, else slanted,
+  // with slots wide enough to keep them apart, the frame moved right until the first names' ends
+  // stay in the picture, and the bottom as deep as the longest name reaches.
   Frame frame;
-  frame.width = kWidth - kLeft - kRight;
-  frame.height = kHeight - kTop - (slanted ? kRotatedBottom : kBottom);
   frame.y = value_axis(extremes, plot.reference);
+  frame.left = value_axis_room(frame.y);
+  const double count = double(std::max<std::size_t>(plot.samples.size(), 1));
+  double slot = (kWidth - frame.left - kRight) / count;
+  const bool slanted = std::any_of(names.begin(), names.end(), [&](const std::string& name) { return text_width(name) > slot - 4; });
+  double bottom = kBottom;
+  if (slanted) {
+    slot = std::max(slot, kMinSlantedSlot);
+    bottom = kRotatedBottom;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      names[i] = shown_name(names[i], true);
+      frame.left = std::max(frame.left, 4 + slanted_reach(names[i]) - slot * (double(i) + 0.5));
+      bottom = std::max(bottom, 16 + slanted_reach(names[i]) + 4);
+    }
+  }
+  frame.width = slot * count;
+  frame.height = std::max(kHeight - kTop - (slanted ? kRotatedBottom : kBottom), text_width(plot.value_label) + 10);
+  const double width = std::max(frame.right() + kRight, title_room(plot.title));
 
   std::ostringstream out;
-  open_svg(out, "boxplot", plot.title);
+  open_svg(out, "boxplot", plot.title, width, frame.bottom() + bottom);
   draw_value_axis(out, frame, plot.value_label);
   if (extremes.empty()) no_data(out, frame);
   const double box_width = std::min(slot * 0.6, 60.0);
   for (std::size_t i = 0; i < plot.samples.size(); ++i) {
     const double centre = frame.left + slot * (double(i) + 0.5);
     if (summaries[i].n > 0) draw_box(out, frame, plot.samples[i], summaries[i], centre, box_width);
-    draw_sample_name(out, plot.samples[i].name + (summaries[i].n == 0 ? " (no data)" : ""), centre,
-                     frame.bottom() + 16, slanted);
+    draw_sample_name(out, names[i], centre, frame.bottom() + 16, slanted);
   }
   draw_reference(out, frame, plot.reference, plot.reference_label, true);
   out << "</svg>\n";
@@ -398,23 +432,52 @@ std::string line_chart_svg(const LineChart& chart) {
     for (std::size_t i = 0; i < series.value.size(); ++i)
       if (on_axis(x_of(series, i))) xs.push_back(x_of(series, i));
   }
-  // The legend's column is as wide as its longest entry, taken from the plotting area down to a
-  // minimum and then added to the picture, which is as tall as the legend's rows.
-  double longest = chart.reference ? text_width(reference_text(*chart.reference, chart.reference_label)) : 0.0;
-  for (const auto& series : chart.series) longest = std::max(longest, text_width(series.name));
-  const double legend_width = std::max(kLegendWidth, 16 + 26 + longest + 8);
-  const std::size_t legend_rows = chart.series.size() + (chart.reference ? 1 : 0);
-  Frame frame;
-  frame.width = std::max(kMinLineFrameWidth, kWidth - kLeft - legend_width);
-  frame.height = kHeight - kTop - kBottom;
-  frame.y = chart.y_range ? nice_axis(chart.y_range->first, chart.y_range->second, false) : value_axis(finite, chart.reference);
-  const double width = frame.right() + legend_width, height = std::max(kHeight, frame.top + 20 * double(legend_rows) + 10);
   const auto [x_low, x_high] = xs.empty() ? std::pair(1.0, 1.0) : std::pair(*std::min_element(xs.begin(), xs.end()),
                                                                             *std::max_element(xs.begin(), xs.end()));
   const bool by_iteration = std::all_of(chart.series.begin(), chart.series.end(), [](const Series& s) { return s.x.empty(); });
   const XAxis x_axis = chart.log_x       ? log_x_axis(x_low, x_high)
                        : by_iteration ? linear_x_axis(1.0, std::max(x_high, 1.0), 1.0)
                                       : linear_x_axis(x_low, x_high, 0.0);
+  // The layout makes room for every text by its estimated width (aco::text_width): the y tick
+  // labels left of the frame, the last x tick label (centred on the frame's right end) right of
+  // it, the title above. The legend's entries are as wide as the longest; a short legend stands
+  // in one column beside the plot (taking its width from the plotting area down to a minimum),
+  // a long or wide one in rows under the plot, as many columns as fit, the picture growing
+  // down (and wider if one column does not fit).
+  std::vector<std::pair<std::string, std::string>> legend;  // line style, text (escaped)
+  for (std::size_t k = 0; k < chart.series.size(); ++k)
+    legend.emplace_back(stroke_attributes(chart.series[k].style.value_or(k)) + " stroke-width=\"2\"",
+                        aco::xml_escape(chart.series[k].name));
+  if (chart.reference) legend.emplace_back(kReferenceStyle, reference_text(*chart.reference, chart.reference_label));
+  double longest = 0.0;
+  for (const auto& series : chart.series) longest = std::max(longest, text_width(series.name));
+  if (chart.reference) longest = std::max(longest, text_width(chart.reference_label + ' ' + number(*chart.reference, 4)));
+  const double entry_width = 26 + longest + 8;  // line, gap, text, gap
+  const double last_tick_half = x_axis.ticks.empty() ? 0.0 : text_width(x_axis.ticks.back().second) / 2 + 4;
+  Frame frame;
+  frame.y = chart.y_range ? nice_axis(chart.y_range->first, chart.y_range->second, false) : value_axis(finite, chart.reference);
+  frame.left = value_axis_room(frame.y);
+  frame.height = std::max(kHeight - kTop - kBottom, text_width(chart.y_label) + 10);
+  const bool beside = legend.size() <= kMaxLegendRowsBeside && 16 + entry_width <= kMaxLegendWidthBeside;
+  double width = 0.0, height = 0.0, legend_x = 0.0, legend_y = 0.0;
+  std::size_t columns = 1;
+  if (beside) {
+    const double legend_width = std::max(kLegendWidth, 16 + entry_width);
+    frame.width = std::max(kMinLineFrameWidth, kWidth - frame.left - legend_width);
+    legend_x = frame.right() + std::max(16.0, last_tick_half);
+    legend_y = frame.top + 10;
+    width = std::max(frame.right() + legend_width, legend_x + entry_width);
+    height = std::max(frame.bottom() + kBottom, legend_y + kLegendRow * double(legend.size()));
+  } else {
+    frame.width = kWidth - frame.left - std::max(kRight, last_tick_half);
+    legend_x = 16;
+    legend_y = frame.bottom() + kBottom + 16;
+    columns = std::max<std::size_t>(1, static_cast<std::size_t>((kWidth - legend_x - kRight) / entry_width));
+    width = std::max(kWidth, legend_x + double(columns) * entry_width + kRight);
+    const std::size_t rows = (legend.size() + columns - 1) / columns;
+    height = legend_y + kLegendRow * double(rows);
+  }
+  width = std::max({width, frame.right() + last_tick_half, title_room(chart.title)});
   auto px = [&](double x) { return frame.left + frame.width * x_axis.fraction(x); };
 
   std::ostringstream out;
@@ -456,16 +519,12 @@ std::string line_chart_svg(const LineChart& chart) {
   draw_reference(out, frame, chart.reference, chart.reference_label, false);
 
   out << "<g class=\"legend\">\n";
-  const double legend_x = frame.right() + 16;
-  auto entry = [&](std::size_t row, const std::string& line_style, const std::string& text) {
-    const std::string y = number(frame.top + 10 + 20 * double(row));
-    out << "<line x1=\"" << number(legend_x) << "\" x2=\"" << number(legend_x + 20) << "\" y1=\"" << y << "\" y2=\"" << y
-        << "\" " << line_style << "/><text x=\"" << number(legend_x + 26) << "\" y=\"" << y << "\" dy=\"4\">" << text
-        << "</text>\n";
-  };
-  for (std::size_t k = 0; k < chart.series.size(); ++k)
-    entry(k, stroke_attributes(chart.series[k].style.value_or(k)) + " stroke-width=\"2\"", aco::xml_escape(chart.series[k].name));
-  if (chart.reference) entry(chart.series.size(), kReferenceStyle, reference_text(*chart.reference, chart.reference_label));
+  for (std::size_t k = 0; k < legend.size(); ++k) {
+    const double x = legend_x + entry_width * double(k % columns), y = legend_y + kLegendRow * double(k / columns);
+    out << "<line x1=\"" << number(x) << "\" x2=\"" << number(x + 20) << "\" y1=\"" << number(y) << "\" y2=\"" << number(y)
+        << "\" " << legend[k].first << "/><text x=\"" << number(x + 26) << "\" y=\"" << number(y) << "\" dy=\"4\">"
+        << legend[k].second << "</text>\n";
+  }
   out << "</g>\n</svg>\n";
   return out.str();
 }

@@ -793,28 +793,41 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
   const int w = map->width(), h = map->height();
   const double scale = std::max(2.0, std::min(24.0, 480.0 / std::max(w, h)));
   const double cell = w > 1 ? map->position({1, 0}).x() - map->position({0, 0}).x() : 1.0;
+  // The legend beside the map, one row per configuration with a best path: as wide as its
+  // longest entry and as tall as its rows (by aco::text_width's estimate), so none is cut off.
+  std::vector<std::pair<const Result*, std::string>> shown;  // the result, its legend entry
+  for (const auto& r : a.results[p])
+    if (r.best) shown.emplace_back(&r, a.configs[r.config].second.name + " " + fixed(r.best->length, 2));
+  double longest = 0.0;
+  for (const auto& entry : shown) longest = std::max(longest, aco::text_width(entry.second, 12));
+  const double map_w = w * scale, map_h = h * scale, legend_x = map_w + 8;
+  const double width = legend_x + 28 + longest + 8, height = std::max(map_h, 16.0 * double(shown.size()) + 4);
   std::ostringstream svg;
-  svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << w * scale + 240 << "\" height=\"" << h * scale
-      << "\"><rect width=\"" << w * scale << "\" height=\"" << h * scale << "\" fill=\"#fff\" stroke=\"#999\"/>";
+  svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height << "\" font-family=\"sans-serif\" font-size=\"12\"><rect width=\"" << map_w
+      << "\" height=\"" << map_h << "\" fill=\"#fff\" stroke=\"#999\"/><g fill=\"#333\" shape-rendering=\"crispEdges\">";
+  // Blocked cells in horizontal runs, with crisp edges: no seams between rows.
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x)
-      if (!map->passable({x, y}))
-        svg << "<rect x=\"" << x * scale << "\" y=\"" << y * scale << "\" width=\"" << scale << "\" height=\"" << scale
-            << "\" fill=\"#333\"/>";
-  int shown = 0;
-  for (const auto& r : a.results[p]) {
-    if (!r.best) continue;
-    const char* colour = series_style(static_cast<std::size_t>(r.config)).colour;
-    svg << "<polyline fill=\"none\" " << stroke_attributes(static_cast<std::size_t>(r.config)) << " stroke-width=\"" << std::max(1.0, scale / 5)
+    for (int x = 0; x < w;) {
+      int end = x;
+      while (end < w && !map->passable({end, y})) ++end;
+      if (end > x)
+        svg << "<rect x=\"" << x * scale << "\" y=\"" << y * scale << "\" width=\"" << (end - x) * scale << "\" height=\"" << scale
+            << "\"/>";
+      x = std::max(end, x + 1);
+    }
+  svg << "</g>";
+  for (std::size_t row = 0; row < shown.size(); ++row) {
+    const Result& r = *shown[row].first;
+    const auto style = static_cast<std::size_t>(r.config);
+    svg << "<polyline fill=\"none\" " << stroke_attributes(style) << " stroke-width=\"" << std::max(1.0, scale / 5)
         << "\" stroke-opacity=\"0.8\" points=\"";
     for (const auto& point : nlohmann::json::parse(r.best->path_json))
       svg << (point[0].get<double>() / cell + 0.5) * scale << "," << (point[1].get<double>() / cell + 0.5) * scale << " ";
-    const double y = 14 + 16 * shown;
-    svg << "\"/><line x1=\"" << w * scale + 8 << "\" x2=\"" << w * scale + 30 << "\" y1=\"" << y - 4 << "\" y2=\"" << y - 4
-        << "\" " << stroke_attributes(static_cast<std::size_t>(r.config)) << " stroke-width=\"2\"/><text x=\"" << w * scale + 36
-        << "\" y=\"" << y << "\" font-size=\"12\" fill=\"" << colour << "\">" << aco::xml_escape(a.configs[r.config].second.name)
-        << " " << fixed(r.best->length, 2) << "</text>";
-    ++shown;
+    const double y = 14 + 16 * double(row);
+    svg << "\"/><line x1=\"" << legend_x << "\" x2=\"" << legend_x + 22 << "\" y1=\"" << y - 4 << "\" y2=\"" << y - 4 << "\" "
+        << stroke_attributes(style) << " stroke-width=\"2\"/><text x=\"" << legend_x + 28 << "\" y=\"" << y << "\" fill=\""
+        << series_style(style).colour << "\">" << aco::xml_escape(shown[row].second) << "</text>";
   }
   svg << "</svg>";
   return svg.str();

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "aco/graph.hpp"
@@ -28,5 +29,11 @@ void write_svg(const std::filesystem::path& file, const Graph& graph, const RunP
 
 // Text made safe for SVG, HTML and XML: & < > " as entities.
 std::string xml_escape(const std::string& text);
+
+// The width in pixels of `text` (UTF-8) set in a sans-serif font of `font_size` pixels, erring on
+// the wide side: the widths are DejaVu Sans's (Linux's default sans-serif, wider than Arial or
+// Helvetica) rounded up. Drawings reserve room for their labels and legends with it, so that no
+// text is cut off at the picture's edge.
+double text_width(std::string_view text, double font_size = 12.0);
 
 }  // namespace aco

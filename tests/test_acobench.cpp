@@ -592,3 +592,16 @@ TEST_CASE("every bundled experiment file loads and resolves each configuration o
   }
   CHECK(files >= 10);
 }
+
+TEST_CASE("a simulation experiment has one fingerprint whichever path names it", "[acobench]") {
+  // acobench's worker processes load the experiment by its absolute path; the scenario's map in
+  // each configuration's run must not make that another experiment than the parent's (it did:
+  // `acobench run data/experiments/dwa.yaml` from the root was refused by its workers).
+  const auto file = test::data_dir() / "experiments" / "dwa.yaml";
+  const auto before = std::filesystem::current_path();
+  std::filesystem::current_path(test::data_dir().parent_path());
+  const auto relative = acobench::load_experiment("data/experiments/dwa.yaml", test::plugins());
+  std::filesystem::current_path(before);
+  const auto absolute = acobench::load_experiment(std::filesystem::absolute(file), test::plugins());
+  CHECK(relative.fingerprint(test::plugins()) == absolute.fingerprint(test::plugins()));
+}

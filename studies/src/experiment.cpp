@@ -334,7 +334,15 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
   // its run is the same, whatever keys wrote it (growth.hpp).
   for (const auto& c : configurations) {
     nlohmann::json entry = {{"name", c.name}, {"keys", c.keys}};
-    if (c.run) entry["run"] = nlohmann::json::parse(aco::to_json(*c.run));
+    if (c.run) {
+      entry["run"] = nlohmann::json::parse(aco::to_json(*c.run));
+      // A run over scenarios holds the first scenario's map, as the path it was loaded by: the same
+      // file named from another working folder (acobench's workers load the experiment by its
+      // absolute path) is the same experiment.
+      for (const char* key : {"map", "scen"})
+        if (entry["run"].contains(key) && entry["run"][key].is_string() && !entry["run"][key].get<std::string>().empty())
+          entry["run"][key] = relative_to_file(entry["run"][key].get<std::string>());
+    }
     j["configurations"].push_back(entry);
   }
   if (ablation_target) j["ablation_target"] = ablation_target->name;

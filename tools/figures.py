@@ -226,7 +226,7 @@ def aco_bench(run: Run, only: str, *extra) -> str:
     return run.tool(ACO_BENCH, "--only", only, *extra)
 
 
-@section("engine", "15 s", "the colony's speed on classic map1 against exact A*",
+@section("engine", "10 s", "the colony's speed on classic map1 against exact A*",
          [(README, "engine")])
 def engine(run: Run):
     c = parse_classic(aco_bench(run, "classic"))
@@ -245,7 +245,7 @@ def engine(run: Run):
     return {(README, "engine"): text}
 
 
-@section("plugins", "30 s", "each plugin's cost per ant step against ant_system, two benchmark runs",
+@section("plugins", "20 s", "each plugin's cost per ant step against ant_system, two benchmark runs",
          [(README, "plugins")])
 def plugins(run: Run):
     runs = [parse_classic(aco_bench(run, "classic")) for _ in range(2)]
@@ -262,7 +262,7 @@ def plugins(run: Run):
     return {(README, "plugins"): text}
 
 
-@section("terrain-fireworks", "1.5 min", "plain ACO and EPF on paper 000's terrains, fireworks seeding",
+@section("terrain-fireworks", "15 s", "plain ACO and EPF on paper 000's terrains, fireworks seeding",
          [(README, "terrain-fireworks")])
 def terrain_fireworks(run: Run):
     t = parse_terrain(aco_bench(run, "terrain,fireworks"))
@@ -287,7 +287,7 @@ def terrain_fireworks(run: Run):
     return {(README, "terrain-fireworks"): text}
 
 
-@section("large", "15 s", "1 against 2 threads on Moving AI's Berlin_0_512", [(README, "large")])
+@section("large", "30 s", "1 against 2 threads on Moving AI's Berlin_0_512", [(README, "large")])
 def large(run: Run):
     d = parse_large(aco_bench(run, "large"))
     one, two = d["rows"][1], d["rows"][2]
@@ -310,7 +310,7 @@ def large(run: Run):
     return {(README, "large"): text}
 
 
-@section("large-plugins", "4 min", "every plugin and engine option per ant step on Berlin_0_512",
+@section("large-plugins", "5 min", "every plugin and engine option per ant step on Berlin_0_512",
          [(README, "large-plugins")])
 def large_plugins(run: Run):
     out = aco_bench(run, "large-plugins", "--large-plugin-repeats", "3")
@@ -340,7 +340,7 @@ def large_plugins(run: Run):
     return {(README, "large-plugins"): text}
 
 
-@section("throughput", "2 min", "acobench trials per second, worker processes against --in-process",
+@section("throughput", "2-4 min", "acobench trials per second, worker processes against --in-process",
          [(README, "throughput")])
 def throughput(run: Run):
     rates = {"workers": [], "in-process": []}
@@ -368,7 +368,7 @@ PAPER004_ACO = ["--preset", "ant-system", "--ants", "50", "--iterations", "50", 
                 "--update.rho", "0.5", "--update.q", "5"]
 
 
-@section("baselines", "1 min", "IFWA, PSO, Ant System and the hybrid on paper004.map", [(README, "baselines")])
+@section("baselines", "5 s", "IFWA, PSO, Ant System and the hybrid on paper004.map", [(README, "baselines")])
 def baselines(run: Run):
     configs = {
         "ifwa": ("`--planner ifwa`", ["--planner", "ifwa"]),
@@ -401,7 +401,7 @@ def baselines(run: Run):
     return {(README, "baselines"): text}
 
 
-@section("default-pipeline", "2.5 min", "the bare command on fresh maps (tools/default-pipeline-check.sh 7321)",
+@section("default-pipeline", "3 min", "the bare command on fresh maps (tools/default-pipeline-check.sh 7321)",
          [(README, "default-pipeline")])
 def default_pipeline(run: Run):
     out = run.tool("tools/default-pipeline-check.sh", "7321")
@@ -483,16 +483,16 @@ def experiment(name: str):
     return make
 
 
-EXPERIMENTS = {
-    "paper000": "3 min", "paper001": "20 s", "paper002": "20 s", "paper003": "1 min", "paper004": "30 s",
-    "ablation": "5 min", "movingai": "over an hour", "terrain": "15 min", "generated": "30 min", "dwa": "5 min",
+EXPERIMENTS = {  # on the shared 2-core machine, with a fresh database
+    "paper000": "30 s", "paper001": "10 s", "paper002": "10 s", "paper003": "30 s", "paper004": "15 s",
+    "ablation": "3.5 min", "movingai": "15-30 min", "terrain": "1-2 min", "generated": "2-4 min", "dwa": "6 min",
 }
 for _name, _estimate in EXPERIMENTS.items():
     section(_name, _estimate, f"data/experiments/{_name}.yaml into docs/results.md, with its report's plots",
             [(RESULTS, _name)])(experiment(_name))
 
 
-@section("pictures", "1 min", "the SVGs of docs/images/: a route, a terrain, an acosim run, report plots",
+@section("pictures", "15 s", "the SVGs of docs/images/: a route, a terrain, an acosim run, report plots",
          [(README, "pictures")])
 def pictures(run: Run):
     (ROOT / IMAGES).mkdir(parents=True, exist_ok=True)

@@ -409,7 +409,7 @@ def default_pipeline(run: Run):
     if not lines:
         raise FiguresError("tools/default-pipeline-check.sh printed no table")
     # The check prints option names bare; the README writes them as code.
-    lines = [re.sub(r"(--[a-z-]+(?: [a-z-]+)?)", r"`\1`", l) for l in lines]
+    lines = [re.sub(r"(?<![-\w])(--[a-z][a-z-]*(?: [a-z][a-z-]*)?)", r"`\1`", l) for l in lines]
     # The colony beats its null models where its mean and worst gap are below both twins'.
     cells = [[c.strip() for c in l.strip("|").split("|")] for l in lines[2:]]
     verdicts = []
@@ -420,7 +420,8 @@ def default_pipeline(run: Run):
         beats = all(float(bare[i].split()[0]) < float(twin[i].split()[0]) for twin in twins for i in (0, 1))
         verdicts.append(f"on {kind} maps the bare command {'beats both' if beats else 'does not beat both'} of its null "
                         "models in mean and worst gap")
-    text = (run.stamp() + "\n\n" + "\n".join(lines) + "\n\n" + "; ".join(verdicts).capitalize()
+    verdict = "; ".join(verdicts)
+    text = (run.stamp() + "\n\n" + "\n".join(lines) + "\n\n" + verdict[0].upper() + verdict[1:]
             + " (where it does, the pheromone matters on these maps; on other map shapes it may not: "
             "docs/learning-findings.md).")
     return {(README, "default-pipeline"): text}

@@ -149,14 +149,10 @@ def table(header: list[str], rows: list[list]) -> str:
     return "\n".join(lines)
 
 
-def span(values: list[float], digits: int = 2, unit: str = "") -> str:
+def span(values: list[float], digits: int = 2) -> str:
     """'1.23' or '1.20-1.35': the range over repeated measurements."""
     low, high = f"{min(values):.{digits}f}", f"{max(values):.{digits}f}"
-    return (low if low == high else f"{low}-{high}") + unit
-
-
-def floats(match: re.Match) -> list[float]:
-    return [float(g) for g in match.groups() if g is not None and re.fullmatch(r"[-\d.]+", g)]
+    return low if low == high else f"{low}-{high}"
 
 
 # ---------------------------------------------------------------------------------------------
@@ -184,7 +180,7 @@ def parse_terrain(text: str) -> dict:
     identical = re.search(r"threads identical .*: (yes|NO)", text)
     if not rows or not fireworks or not identical:
         raise FiguresError("aco_bench --only terrain,fireworks: its output has changed; update tools/figures.py")
-    return {"rows": rows, "fireworks": dict(zip(("median", "min", "us", "length"), floats(fireworks))),
+    return {"rows": rows, "fireworks": dict(zip(("median", "min", "us", "length"), map(float, fireworks.groups()))),
             "identical": identical[1] == "yes"}
 
 

@@ -79,6 +79,19 @@ smoother/prune                    1.50 us per call on the best map1 path (25 cel
         with self.assertRaisesRegex(figures.FiguresError, "aco_bench --only classic: its output has changed"):
             figures.parse_classic(text.replace("acs ", "xyz "))
 
+    def test_aco_bench_terrain_and_fireworks_output_is_read(self):
+        text = """epf20     314.40 plain           1       3.80       3.60         30.1       329.41
+epf20     314.40 plain           2       4.60       4.10         31.0       329.41
+results with 1 and 2 threads identical (last seed: path, length, steps, curve, pheromone): yes
+median 46.90 ms, min 45.00 ms, 26.0 us per evaluation, mean best length 45.5500
+"""
+        t = figures.parse_terrain(text)
+        self.assertEqual([r["threads"] for r in t["rows"]], [1, 2])
+        self.assertEqual(t["fireworks"]["median"], 46.9)
+        self.assertEqual(t["fireworks"]["length"], 45.55)
+        self.assertTrue(t["identical"])
+        self.assertFalse(figures.parse_terrain(text.replace(": yes", ": NO"))["identical"])
+
 
 if __name__ == "__main__":
     unittest.main()

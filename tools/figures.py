@@ -547,7 +547,8 @@ def large_maps(run: Run):
             for g in groups:
                 solved = [float(r["gap_percent"]) for r in mine if map_group(experiment, r["problem"]) == g and r["solved"] == "1"
                           and r["gap_percent"]]
-                gaps.append(f"{g} {statistics.mean(solved):.2f}" if solved else f"{g} -")
+                # + 0.0: an optimal path's gap rounds to -0.00 otherwise.
+                gaps.append(f"{g} {round(statistics.mean(solved), 2) + 0.0:.2f}" if solved else f"{g} -")
                 times.append(statistics.mean(float(r["time_s"]) for r in mine if map_group(experiment, r["problem"]) == g))
             solved = sum(r["solved"] == "1" for r in mine)
             rows.append([f"`{experiment}.yaml`", config, f"{solved}/{len(mine)}", ", ".join(gaps),

@@ -555,7 +555,8 @@ def large_maps(run: Run):
                          f"{1000 * min(times):.0f}-{1000 * max(times):.0f} ms / {max(float(r['time_s']) for r in mine):.2f} s"])
     text = (run.stamp() + "\n\nPer map (Moving AI), per kind and size (generated maps) or per size (terrains): solved runs, "
             "mean gap of the solved runs to the optimum in %, and time per run (the range of the maps' means / the "
-            "slowest run):\n\n" + table(["experiment", "configuration", "solved", "mean gap % by map", "time per run"], rows))
+            "slowest run), as the experiments measured them: their stamps in docs/results.md give the machine and its "
+            "load then:\n\n" + table(["experiment", "configuration", "solved", "mean gap % by map", "time per run"], rows))
     return {(README, "large-maps"): text}
 
 

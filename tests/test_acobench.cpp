@@ -12,7 +12,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <fstream>
+#include <filesystem>
 #include <map>
+#include <set>
 #include <sstream>
 #include <thread>
 
@@ -177,6 +179,24 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   CHECK_THAT(md, Contains("## Ranking across problems"));
   const std::string csv = file_bytes(out / "runs.csv");
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 28);
+  // Each plot of the page is also a file of its own (docs/results.md shows them as images), named
+  // once on stdout with its folder.
+  std::set<std::string> plots;
+  for (const auto& entry : std::filesystem::directory_iterator(out / "plots")) {
+    const std::string svg = file_bytes(entry.path());
+    INFO(entry.path());
+    CHECK(svg.starts_with("<svg") == true);
+    CHECK_THAT(svg, Contains("xmlns=\"http://www.w3.org/2000/svg\""));
+    CHECK_THAT(html, Contains(svg));
+    plots.insert(entry.path().filename().string());
+  }
+  CHECK(plots.count("ecdf-1pct.svg") == 1);
+  CHECK(plots.count("ecdf-5pct.svg") == 1);
+  CHECK(plots.count("ablation.svg") == 1);
+  for (const char* kind : {"box-", "convergence-", "anytime-time-", "anytime-walks-", "paths-"})
+    CHECK(std::count_if(plots.begin(), plots.end(), [&](const std::string& f) { return f.starts_with(kind); }) == 1);
+  CHECK_THAT(report.out, Contains((out / "plots").string() + "/ (" + std::to_string(plots.size()) + " SVG plots)"));
+  CHECK_THAT(report.out, !Contains(".svg"));
 }
 
 TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly once", "[acobench][slow]") {

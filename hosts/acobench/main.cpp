@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -376,12 +377,18 @@ int report(const std::vector<std::string>& args) {
   std::string out = ".";
   aco::HostOptions host;
   options.add_options()("database", po::value<std::string>()->required(), "results database")
-      ("out", po::value(&out), "folder for report.md, report.html and runs.csv (default: current folder)");
+      ("out", po::value(&out), "folder for report.md, report.html, runs.csv and plots/*.svg (default: current folder)");
   host.add_plugin_dir(options);  // map plugins, to draw the maps of their formats
   const po::variables_map vm = aco::parse_arguments(args, options, "database", 1);
   std::vector<std::string> warnings;
   const auto files = acobench::write_report(vm["database"].as<std::string>(), out, &warnings, host.plugin_search_dirs());
-  for (const auto& f : files) std::cout << f.string() << "\n";
+  // The plots, one file each, are many on a large study: their folder is named once.
+  std::size_t plots = 0;
+  for (const auto& f : files) {
+    if (f.parent_path().filename() == "plots") ++plots;
+    else std::cout << f.string() << "\n";
+  }
+  if (plots > 0) std::cout << (std::filesystem::path(out) / "plots").string() << "/ (" << plots << " SVG plots)\n";
   for (const auto& warning : warnings) std::cerr << "acobench: warning: " << warning << "\n";
   return 0;
 }

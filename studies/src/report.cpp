@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -601,9 +602,30 @@ std::vector<Table> anytime_tables(const Analysis& a) {
   return {t};
 }
 
+// The report's plots: each drawn inline in report.html and also written alone as
+// plots/<name>.svg, so that a page (the project's docs/results.md) can show one as an image.
+class Plots {
+ public:
+  // Records the plot under a file name made of `name` (characters unsafe in a file name become
+  // '-', a name already taken gets -2, -3, ...); returns its SVG, for the page.
+  const std::string& add(const std::string& name, std::string svg) {
+    std::string safe;
+    for (const char c : name) safe += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' ? c : '-';
+    std::string unique = safe;
+    for (int n = 2; !taken_.insert(unique).second; ++n) unique = safe + "-" + std::to_string(n);
+    files_.emplace_back(unique + ".svg", std::move(svg));
+    return files_.back().second;
+  }
+  const std::vector<std::pair<std::string, std::string>>& files() const { return files_; }
+
+ private:
+  std::set<std::string> taken_;
+  std::vector<std::pair<std::string, std::string>> files_;  // file name, SVG
+};
+
 // IOHanalyzer's fixed-target ECDF, one chart per target: per configuration, the share of its
 // (problem, run) pairs within the target by each time.
-std::string ecdf_charts(const Analysis& a) {
+std::string ecdf_charts(const Analysis& a, Plots& plots) {
   const auto all = reaches(a);
   double low = INFINITY, high = 0.0;
   for (const auto& t : a.trials)
@@ -628,25 +650,26 @@ std::string ecdf_charts(const Analysis& a) {
       chart.series.push_back(ecdf_series(a.configs[c].second.name, hits, low, high));
       chart.series.back().style = c;
     }
-    svg += line_chart_svg(chart) + "\n";
+    svg += plots.add("ecdf-" + fixed(kTargets[k], 0) + "pct", line_chart_svg(chart)) + "\n";
   }
   return svg;
 }
 
 // The mean best-so-far gap of each configuration's measured runs on problem p, against wall time
 // and against walks (log scales, 100 points between the first iteration's end and the last's).
-std::string anytime_charts(const Analysis& a, std::size_t p) {
+std::string anytime_charts(const Analysis& a, std::size_t p, Plots& plots) {
   const double optimal = a.problems[p].optimal_length;
   if (!(optimal > 0)) return "";
   struct Effort {
+    const char* file;
     const char* title;
     const char* label;
     std::function<std::vector<double>(const TrialRecord&)> of;
   };
   const Effort efforts[] = {
-      {"best-so-far gap against time (mean of the runs): ", "wall time since the search began, s (log scale)",
+      {"anytime-time-", "best-so-far gap against time (mean of the runs): ", "wall time since the search began, s (log scale)",
        [](const TrialRecord& t) { return t.elapsed_s; }},
-      {"best-so-far gap against walks (mean of the runs): ", "walks: candidate paths built (log scale)",
+      {"anytime-walks-", "best-so-far gap against walks (mean of the runs): ", "walks: candidate paths built (log scale)",
        [](const TrialRecord& t) { return as_reals(t.walks); }},
   };
   std::string svg;
@@ -677,7 +700,7 @@ std::string anytime_charts(const Analysis& a, std::size_t p) {
       chart.series.back().band_low.clear();
       chart.series.back().band_high.clear();
     }
-    svg += line_chart_svg(chart) + "\n";
+    svg += plots.add(effort.file + a.problems[p].name, line_chart_svg(chart)) + "\n";
   }
   return svg;
 }
@@ -833,7 +856,7 @@ std::string paths_svg(const Analysis& a, std::size_t p) {
   return svg.str();
 }
 
-std::string html(const Analysis& a, const std::string& md_intro) {
+std::string html(const Analysis& a, const std::string& md_intro, Plots& plots) {
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>acobench: " << aco::xml_escape(a.name)
       << "</title><style>body{font-family:sans-serif;margin:2em;max-width:1400px}table{border-collapse:collapse;"
@@ -844,7 +867,7 @@ std::string html(const Analysis& a, const std::string& md_intro) {
   for (const std::string& warning : build_warnings(a))
     out << "<p class=\"warning\"><strong>Warning:</strong> " << aco::xml_escape(warning) << "</p>\n";
   for (const Table& t : summary_tables(a)) out << html(t);
-  for (const Table& t : anytime_tables(a)) out << html(t) << ecdf_charts(a);
+  for (const Table& t : anytime_tables(a)) out << html(t) << ecdf_charts(a, plots);
   const auto cols = columns();
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
     const double optimal = a.problems[p].optimal_length;
@@ -873,10 +896,12 @@ std::string html(const Analysis& a, const std::string& md_intro) {
         chart.series.back().style = static_cast<std::size_t>(r.config);
       }
     }
-    out << box_plot_svg(box) << "\n";
-    if (!chart.series.empty()) out << line_chart_svg(chart) << "\n";
-    out << anytime_charts(a, p);
-    out << paths_svg(a, p) << "\n";
+    const std::string& problem = a.problems[p].name;
+    out << plots.add("box-" + problem, box_plot_svg(box)) << "\n";
+    if (!chart.series.empty()) out << plots.add("convergence-" + problem, line_chart_svg(chart)) << "\n";
+    out << anytime_charts(a, p, plots);
+    const std::string paths = paths_svg(a, p);
+    out << (paths.starts_with("<svg") ? plots.add("paths-" + problem, paths) : paths) << "\n";
   }
   if (!a.average_rank.empty()) {
     out << "<h2>Ranking across problems</h2><table><tr><th>configuration</th><th>average rank</th></tr>\n";
@@ -902,7 +927,7 @@ std::string html(const Analysis& a, const std::string& md_intro) {
     chart.x_label = "step";
     chart.y_label = "gap %";
     chart.series = {gaps};
-    out << "</ol>\n" << line_chart_svg(chart) << "\n";
+    out << "</ol>\n" << plots.add("ablation", line_chart_svg(chart)) << "\n";
   }
   for (const Table& t : provenance_tables(a)) out << html(t);
   out << "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>\n</body></html>\n";
@@ -969,10 +994,16 @@ std::vector<std::filesystem::path> write_report(const std::filesystem::path& dat
   a.plugin_dirs = plugin_dirs;
   std::filesystem::create_directories(out);
   const std::string md = markdown(a, database);
-  const std::vector<std::filesystem::path> files = {out / "report.md", out / "report.html", out / "runs.csv"};
+  std::vector<std::filesystem::path> files = {out / "report.md", out / "report.html", out / "runs.csv"};
+  Plots plots;
   write(files[0], md);
-  write(files[1], html(a, md.substr(md.find("\n\n") + 2, md.find("\n\n", md.find("\n\n") + 2) - md.find("\n\n") - 2)));
+  write(files[1], html(a, md.substr(md.find("\n\n") + 2, md.find("\n\n", md.find("\n\n") + 2) - md.find("\n\n") - 2), plots));
   write(files[2], csv(a));
+  std::filesystem::create_directories(out / "plots");
+  for (const auto& [name, svg] : plots.files()) {
+    files.push_back(out / "plots" / name);
+    write(files.back(), svg);
+  }
   if (warnings)
     for (std::string& warning : build_warnings(a)) warnings->push_back(std::move(warning));
   return files;

@@ -10,7 +10,9 @@
 
 namespace acobench {
 
-// Writes report.md, report.html and runs.csv into `out` (created if missing); returns them. The
+// Writes report.md, report.html and runs.csv into `out` (created if missing), and each of the
+// HTML page's plots alone as plots/<kind>-<problem>.svg (box, convergence, anytime-time,
+// anytime-walks, paths; ecdf-1pct, ecdf-5pct and ablation once); returns them all. The
 // warnings the report gives (an unoptimised build of acobench or of a plugin ran the trials) are
 // also added to `warnings`, for the caller to print. The map plugins of problems whose maps a
 // plugin reads are looked for in `plugin_dirs` (default: ACO_PLUGIN_PATH's and the bundled folder).

@@ -444,10 +444,7 @@ def experiment(name: str):
         db = Path("build/results") / f"{name}.db"
         out = Path("build/results") / name
         db.parent.mkdir(parents=True, exist_ok=True)
-        # dwa's trials run in process: in worker processes its scenarios' fingerprint differs
-        # from the parent's ("a worker process loaded another experiment"), a bug of acobench's.
-        ran = run.tool(ACOBENCH, "run", f"data/experiments/{name}.yaml", "--db", db,
-                       *(["--in-process"] if name == "dwa" else []))
+        ran = run.tool(ACOBENCH, "run", f"data/experiments/{name}.yaml", "--db", db)
         # A resumed database keeps the trials an earlier run measured, on its machine and load.
         resumed = re.search(r"(\d+) trials, (\d+) already in", ran)
         if resumed and int(resumed[2]) > 0:

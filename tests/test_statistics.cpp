@@ -287,6 +287,19 @@ TEST_CASE("box plots draw one box per sample, Tukey outliers and the reference l
   CHECK_THAT(svg, Contains("optimum 3.25") && Contains("lengths on &lt;map1&gt; &amp; co") && Contains(">max_min<"));
   CHECK_FALSE(has_undefined_number(svg));
   CHECK(svg == acobench::box_plot_svg(plot));
+  // The reference's label is a key above the frame, clear of every box (it lay across the last one).
+  const auto number_after = [&](std::size_t from, const std::string& attribute) {
+    const std::size_t at = svg.find(attribute + "=\"", from);
+    REQUIRE(at != std::string::npos);
+    return std::stod(svg.substr(at + attribute.size() + 2));
+  };
+  const std::size_t key = svg.find("class=\"reference-key\"");
+  REQUIRE(key != std::string::npos);
+  const double key_baseline = number_after(svg.find("<text", key), "y");
+  const double frame_top = number_after(svg.find("<rect", svg.find("class=\"y-axis\"")), "y");
+  CHECK(key_baseline < frame_top);
+  for (std::size_t box = svg.find("class=\"box\""); box != std::string::npos; box = svg.find("class=\"box\"", box + 1))
+    CHECK(key_baseline < number_after(box, "y"));
 }
 
 TEST_CASE("box plots of constant, empty or no samples stay free of NaN", "[statistics][plots]") {

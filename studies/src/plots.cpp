@@ -147,16 +147,24 @@ constexpr const char* kReferenceStyle = "stroke=\"#2e7d32\" stroke-dasharray=\"6
 
 std::string reference_text(double value, const std::string& label) { return aco::xml_escape(label) + ' ' + number(value, 4); }
 
-// The dashed line across the frame; the label goes above its right end unless a legend names it.
+// The dashed line across the frame. Unless a legend names it, a key above the frame's right
+// corner does (kReferenceKeyRoom): a label on the line itself lay across the last box.
+constexpr double kReferenceKeyRoom = 16.0;
+
 void draw_reference(std::ostream& out, const Frame& frame, const std::optional<double>& value, const std::string& label,
                     bool labelled_here) {
   if (!value) return;
   const std::string y = number(frame.py(*value));
   out << "<line class=\"reference\" x1=\"" << number(frame.left) << "\" x2=\"" << number(frame.right()) << "\" y1=\""
       << y << "\" y2=\"" << y << "\" " << kReferenceStyle << "/>\n";
-  if (labelled_here)
-    out << "<text x=\"" << number(frame.right() - 4) << "\" y=\"" << y << "\" dy=\"-4\" text-anchor=\"end\" fill=\"#2e7d32\">"
-        << reference_text(*value, label) << "</text>\n";
+  if (!labelled_here) return;
+  const std::string text = reference_text(*value, label);
+  const double text_right = frame.right(), text_left = text_right - text_width(label + ' ' + number(*value, 4));
+  const std::string key_y = number(frame.top - 6);
+  out << "<g class=\"reference-key\"><line x1=\"" << number(text_left - 26) << "\" x2=\"" << number(text_left - 6)
+      << "\" y1=\"" << number(frame.top - 10) << "\" y2=\"" << number(frame.top - 10) << "\" " << kReferenceStyle
+      << "/><text x=\"" << number(text_right) << "\" y=\"" << key_y << "\" text-anchor=\"end\" fill=\"#2e7d32\">" << text
+      << "</text></g>\n";
 }
 
 void no_data(std::ostream& out, const Frame& frame) {
@@ -330,6 +338,7 @@ std::string box_plot_svg(const BoxPlot& plot) {
   // with slots wide enough to keep them apart, the frame moved right until the first names' ends
   // stay in the picture, and the bottom as deep as the longest name reaches.
   Frame frame;
+  if (plot.reference) frame.top += kReferenceKeyRoom;
   frame.y = value_axis(extremes, plot.reference);
   frame.left = value_axis_room(frame.y);
   const double count = double(std::max<std::size_t>(plot.samples.size(), 1));

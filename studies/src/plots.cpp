@@ -158,13 +158,13 @@ void draw_reference(std::ostream& out, const Frame& frame, const std::optional<d
   out << "<line class=\"reference\" x1=\"" << number(frame.left) << "\" x2=\"" << number(frame.right()) << "\" y1=\""
       << y << "\" y2=\"" << y << "\" " << kReferenceStyle << "/>\n";
   if (!labelled_here) return;
-  const std::string text = reference_text(*value, label);
-  const double text_right = frame.right(), text_left = text_right - text_width(label + ' ' + number(*value, 4));
-  const std::string key_y = number(frame.top - 6);
+  // Left-aligned at the estimated width's start, so that the dash sample stays beside the text
+  // (the estimate errs wide) and the text never passes the frame's right edge.
+  const double text_left = frame.right() - text_width(label + ' ' + number(*value, 4));
+  const std::string dash_y = number(frame.top - 10);
   out << "<g class=\"reference-key\"><line x1=\"" << number(text_left - 26) << "\" x2=\"" << number(text_left - 6)
-      << "\" y1=\"" << number(frame.top - 10) << "\" y2=\"" << number(frame.top - 10) << "\" " << kReferenceStyle
-      << "/><text x=\"" << number(text_right) << "\" y=\"" << key_y << "\" text-anchor=\"end\" fill=\"#2e7d32\">" << text
-      << "</text></g>\n";
+      << "\" y1=\"" << dash_y << "\" y2=\"" << dash_y << "\" " << kReferenceStyle << "/><text x=\"" << number(text_left)
+      << "\" y=\"" << number(frame.top - 6) << "\" fill=\"#2e7d32\">" << reference_text(*value, label) << "</text></g>\n";
 }
 
 void no_data(std::ostream& out, const Frame& frame) {

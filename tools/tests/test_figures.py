@@ -51,6 +51,19 @@ class ReplaceRegions(unittest.TestCase):
         self.assertIn("old plugin table", out)
         self.assertNotIn("old engine table", out)
 
+    def test_an_inline_region_is_replaced_in_its_sentence_with_its_stamp(self):
+        page = ("It takes <!-- figures:t inline (tools/figures.sh durations) -->about 2 s<!-- figures:t end --> "
+                "on 2 threads.\n" + PAGE)
+        out = figures.replace_regions(page, {"t": "about 3 s"}, "durations", "README.md", "STAMP")
+        self.assertEqual(out, page.replace("(tools/figures.sh durations) -->about 2 s", "(STAMP) -->about 3 s"))
+        self.assertEqual(figures.replace_regions(out, {"t": "about 3 s"}, "durations", "README.md", "STAMP"), out)
+        start, end = figures.find_region(out, "t", "durations", "README.md")
+        self.assertEqual(out[start:end], "about 3 s")
+        with self.assertRaisesRegex(figures.FiguresError, "inline region 'figures:t' is not one line"):
+            figures.replace_regions(page, {"t": "two\nlines"}, "durations", "README.md")
+        with self.assertRaisesRegex(figures.FiguresError, "'figures:t' of section 'durations' is there 2 times"):
+            figures.replace_regions(page + page, {"t": "x"}, "durations", "README.md")
+
     def test_every_section_names_its_regions_in_the_tracked_files(self):
         # The tracked README.md and docs/results.md hold every region a section writes.
         for section in figures.SECTIONS.values():

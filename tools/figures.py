@@ -144,7 +144,8 @@ def commit() -> str:
     head = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
     # The generated files themselves change while the script runs; other changes mean the build
     # measured is not the commit named.
-    dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "--", ".", ":!README.md", ":!docs"],
+    generated = sorted({str(file) for s in SECTIONS.values() for file, _ in s.regions} | {"docs"})
+    dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "--", "."] + [f":!{g}" for g in generated],
                            capture_output=True, text=True).stdout.strip()
     return (head or "unknown") + (" with uncommitted changes" if dirty else "")
 

@@ -308,6 +308,23 @@ TEST_CASE("acoplan's SVG draws obstacle cells as one rectangle per run with cris
   CHECK(occurrences(svg_group(aco::render_svg(open, picture), "pheromone"), "<rect") == 9);
 }
 
+TEST_CASE("acoplan's SVG has a legend for what its map shows, inside the picture", "[acoplan][svg]") {
+  const auto grid = test::grid({"..#.", "....", ".#.."});
+  const aco::Graph graph = aco::build_graph(grid, {});
+  aco::RunPicture picture;
+  picture.goal = graph.node({3, 2});
+  const std::string plain = aco::render_svg(graph, picture);
+  const std::string legend = svg_group(plain, "map-legend");
+  for (const char* entry : {">start<", ">goal<", ">grid path (cell to cell)<", ">path after the smoother<", ">blocked cell<"})
+    CHECK_THAT(legend, Contains(entry));
+  CHECK_THAT(legend, !Contains("pheromone"));  // not drawn, so not named
+  CHECK(test::texts_outside_view_box(plain).empty());
+  picture.pheromone.assign(static_cast<std::size_t>(graph.num_edges()), 1.0);
+  const std::string with_pheromone = aco::render_svg(graph, picture);
+  CHECK_THAT(svg_group(with_pheromone, "map-legend"), Contains(">pheromone (darker: more)<"));
+  CHECK(test::texts_outside_view_box(with_pheromone).empty());
+}
+
 TEST_CASE("acoplan's convergence chart keeps every iteration best inside its frame", "[acoplan][svg]") {
   const auto grid = test::grid({"...."});
   const aco::Graph graph = aco::build_graph(grid, {});

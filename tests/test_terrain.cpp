@@ -251,6 +251,10 @@ TEST_CASE("The SVG of a terrain shows shading, contours and a height legend", "[
   // Paths in cells, not in map units: the goal is drawn at cell (3,2), not at (30,20).
   CHECK_THAT(svg, Contains("cx=\"3\" cy=\"2\""));
   CHECK_THAT(svg, Contains("<g id=\"obstacles\" fill=\"#333\" shape-rendering=\"crispEdges\">\n<rect x=\"1.5\" y=\"0.5\""));
+  // The map's legend under the height legend, which names the blocked cells itself.
+  const std::string map_legend = svg.substr(svg.find("<g id=\"map-legend\""));
+  CHECK_THAT(map_legend, Contains(">start<") && Contains(">path after the smoother<") && !Contains("blocked"));
+  CHECK(test::texts_outside_view_box(svg).empty());
 
   SECTION("flat maps are drawn as before") {
     const auto grid = test::grid({"...", ".#."});

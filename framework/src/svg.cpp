@@ -163,6 +163,38 @@ void draw_height_legend(std::ostream& out, HeightRange range, double left, doubl
   out << "</g>\n";
 }
 
+constexpr const char* kStartColour = "#43a047";
+constexpr const char* kGoalColour = "#e53935";
+constexpr double kMapLegendRow = 18.0;
+
+// What the map shows, in two columns: the start and goal marks, both paths, and, when drawn, the
+// blocked cells (a terrain's height legend names its own) and the pheromone field. Returns its height.
+double draw_map_legend(std::ostream& out, const RunPicture& pic, bool terrain_shading, double left, double top) {
+  struct Entry {
+    std::string mark;  // an element's name and attributes, drawn about (10, 0) of its row
+    const char* label;
+  };
+  std::vector<Entry> entries = {
+      {std::string("circle cx=\"10\" cy=\"0\" r=\"4\" fill=\"") + kStartColour + "\"", "start"},
+      {std::string("circle cx=\"10\" cy=\"0\" r=\"4\" fill=\"") + kGoalColour + "\"", "goal"},
+      {"line x1=\"0\" x2=\"20\" y1=\"0\" y2=\"0\" stroke=\"#1565c0\" stroke-width=\"2\"", "grid path (cell to cell)"},
+      {"line x1=\"0\" x2=\"20\" y1=\"0\" y2=\"0\" stroke=\"#d32f2f\" stroke-width=\"2\" stroke-dasharray=\"6,3\"",
+       "path after the smoother"}};
+  if (!terrain_shading) entries.push_back({"rect x=\"4\" y=\"-6\" width=\"12\" height=\"12\" fill=\"#333\"", "blocked cell"});
+  if (!pic.pheromone.empty())
+    entries.push_back({"rect x=\"4\" y=\"-6\" width=\"12\" height=\"12\" fill=\"#2e7d32\" fill-opacity=\"0.6\"",
+                       "pheromone (darker: more)"});
+  // One flat group (no nested ones), each entry placed by its own transform and coordinates.
+  out << "<g id=\"map-legend\" transform=\"translate(" << left << ',' << top << ")\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const double x = double(i % 2) * kPlotWidth / 2, y = double(i / 2) * kMapLegendRow;
+    out << '<' << entries[i].mark << " transform=\"translate(" << x << ',' << y << ")\"/><text x=\"" << x + 26 << "\" y=\""
+        << y + 4 << "\">" << entries[i].label << "</text>\n";
+  }
+  out << "</g>\n";
+  return double((entries.size() + 1) / 2) * kMapLegendRow;
+}
+
 // Cells are drawn centred on their positions, in map units scaled by `scale`.
 // `terrain` is the map if it is one; `heights` its height range if it is not flat.
 void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, double scale, const TerrainMap* terrain,
@@ -232,7 +264,7 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
   style << "id=\"path\" stroke=\"#d32f2f\" stroke-width=\"" << line << "\" stroke-dasharray=\"" << 3 * line << ','
         << 1.5 * line << "\"";
   polyline(out, points, style.str().c_str());
-  for (const auto& [node, colour] : {std::pair{pic.start, "#43a047"}, std::pair{pic.goal, "#e53935"}}) {
+  for (const auto& [node, colour] : {std::pair{pic.start, kStartColour}, std::pair{pic.goal, kGoalColour}}) {
     const auto& p = graph.positions[node];
     out << "<circle cx=\"" << p.x() / unit << "\" cy=\"" << p.y() / unit << "\" r=\"" << std::max(0.35, 4.0 / scale) << "\" fill=\""
         << colour << "\"/>\n";
@@ -307,18 +339,23 @@ std::string render_svg(const Graph& graph, const RunPicture& pic) {
   const double scale = kMapPixels / std::max(graph.width, graph.height);
   const double map_w = graph.width * scale, map_h = graph.height * scale;
   const double plot_left = kMargin * 2 + map_w + 30;
-  const double legend_top = kMargin + 10 + kPlotHeight + 80;  // the height legend, under the plot's own legend
+  // Under the plot's own legend: the height legend on terrain, then the map's.
+  const double height_legend_top = kMargin + 10 + kPlotHeight + 80;
+  const double map_legend_top = height_legend_top + (heights ? 56 : 0);
   const double width = plot_left + kPlotWidth + kMargin;
-  const double height = std::max(map_h, (heights ? legend_top + 40 - kMargin : kPlotHeight + 60)) + kMargin * 2;
+  // The parts are drawn first and the picture sized after, to hold the tallest of them.
+  std::ostringstream parts;
+  draw_map(parts, graph, pic, scale, terrain, heights);
+  draw_convergence(parts, pic, plot_left, kMargin + 10);
+  if (heights) draw_height_legend(parts, *heights, plot_left, height_legend_top);
+  const double legend_bottom = map_legend_top + draw_map_legend(parts, pic, heights.has_value(), plot_left, map_legend_top);
+  const double height = std::max(map_h + kMargin * 2, legend_bottom + kMargin / 2);
   std::ostringstream out;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
       << width << ' ' << height << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
   out << "<text x=\"" << kMargin << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"14\">" << xml_escape(pic.title) << "</text>\n";
-  draw_map(out, graph, pic, scale, terrain, heights);
-  draw_convergence(out, pic, plot_left, kMargin + 10);
-  if (heights) draw_height_legend(out, *heights, plot_left, legend_top);
-  out << "</svg>\n";
+  out << parts.str() << "</svg>\n";
   return out.str();
 }
 

@@ -10,7 +10,7 @@ trap 'rm -rf "$work"' EXIT
 for folder in ros heights; do
   shipped="$source/data/maps/$folder"
   mkdir "$work/$folder"
-  grep -E '^(    )?build/release/tools/aco_' "$shipped/README.md" |
+  grep -E '^build/release/tools/aco_' "$shipped/README.md" |
     sed -e "s#build/release/tools/#$tools/#" -e "s#data/maps/$folder#$work/$folder#g" > "$work/$folder.sh" ||
     { echo "sample maps: no build/release/tools/aco_... command in $shipped/README.md" >&2; exit 1; }
   (cd "$source" && bash -euo pipefail "$work/$folder.sh" > /dev/null)

@@ -72,11 +72,8 @@ def find_region(text: str, name: str, section: str, file: str) -> tuple[int, int
     line; for an inline region, between its markers). A region that is missing, doubled or
     unclosed is an error naming the section."""
     if is_inline(text, name):
-        found = list(_inline_re(name).finditer(text))
-        if len(found) != 1:
-            raise FiguresError(f"{file}: inline region 'figures:{name}' of section '{section}' is there "
-                               f"{len(found)} times; it needs to be there once")
-        return found[0].start(1), found[0].end(1)
+        found = find_inline(text, name, section, file)
+        return found.start(1), found.end(1)
     begins = list(_marker_re(name, "begin").finditer(text))
     ends = list(_marker_re(name, "end").finditer(text))
     how = (f"add the lines '{begin_marker(name, section)}' and '{end_marker(name)}' where its figures belong, or "
@@ -104,18 +101,23 @@ def is_inline(text: str, name: str) -> bool:
     return bool(_inline_re(name).search(text)) and not _marker_re(name, "begin").search(text)
 
 
+def find_inline(text: str, name: str, section: str, file: str) -> re.Match:
+    """Inline region NAME, markers included (group 1: its body); an error unless it is there once."""
+    found = list(_inline_re(name).finditer(text))
+    if len(found) != 1:
+        raise FiguresError(f"{file}: inline region 'figures:{name}' of section '{section}' is there "
+                           f"{len(found)} times; it needs to be there once")
+    return found[0]
+
+
 def replace_regions(text: str, bodies: dict[str, str], section: str, file: str, inline_stamp: str = "") -> str:
     """TEXT with the body of each region in BODIES replaced; everything else is left as it was. An
     inline region's body must be one line; its marker gets INLINE_STAMP."""
     for name, body in bodies.items():
         if is_inline(text, name):
-            found = list(_inline_re(name).finditer(text))
-            if len(found) != 1:
-                raise FiguresError(f"{file}: inline region 'figures:{name}' of section '{section}' is there "
-                                   f"{len(found)} times; it needs to be there once")
+            m = find_inline(text, name, section, file)
             if "\n" in body.strip():
                 raise FiguresError(f"section '{section}': the body of inline region 'figures:{name}' is not one line")
-            m = found[0]
             text = (text[:m.start()] + inline_marker(name, inline_stamp or section) + body.strip()
                     + end_marker(name) + text[m.end():])
             continue

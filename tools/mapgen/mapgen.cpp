@@ -6,7 +6,11 @@
 // aco_mapgen --ros OUTDIR writes data/maps/ros's office, a ROS map_server YAML + PGM map.
 //
 // aco_mapgen --benchmark OUTDIR writes the generated validation maps of data/maps/generated
-// (random, room and maze maps, 20 scenarios each; see write_benchmark).
+// (random, room, maze, cave and hall maps, 20 scenarios each; see write_benchmark); --large the
+// same families at 1024 and 2048 cells a side.
+//
+// aco_mapgen --upsample MAP FACTOR OUTDIR [COUNT] draws a Moving AI map FACTOR times larger, with
+// COUNT scenarios: a large map of a real map's shape.
 //
 // The papers' maps exist only as figures; these maps imitate them (obstacle kinds, placement,
 // random density), they are not the originals. See data/maps/papers/README.md.
@@ -24,6 +28,7 @@
 #include <functional>
 #include <iostream>
 #include <limits>
+#include <numeric>
 #include <optional>
 #include <queue>
 #include <string>
@@ -35,6 +40,7 @@
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/map.hpp"
+#include "aco/map_io.hpp"
 #include "aco/rng.hpp"
 
 namespace {
@@ -352,8 +358,8 @@ void write_map(const PaperMap& m, const std::filesystem::path& dir) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Validation maps (--benchmark): random, room and maze maps in the style of the Moving AI families,
-// at sizes and parameters the recommended pipelines were not tuned on, each with a .scen of
+// Validation maps (--benchmark): random, room, maze, cave and hall maps in the style of the Moving
+// AI families, at sizes and parameters the recommended pipelines were not tuned on, each with a .scen of
 // scenarios spread over the path lengths, so that quality can be measured on maps nobody looked at
 // while choosing settings.
 
@@ -450,6 +456,175 @@ OccupancyGrid maze_map(int size, int corridor, double loops, aco::Rng& rng, cons
   return g;
 }
 
+// The 4-connected parts of the free cells of an n x n grid (blocked[i] != 0: blocked), each a list
+// of cell indices in row-major order, in the order of their first cell.
+std::vector<std::vector<int>> free_parts(const std::vector<char>& blocked, int n) {
+  std::vector<int> label(blocked.size(), -1);
+  std::vector<std::vector<int>> parts;
+  for (int first = 0; first < n * n; ++first) {
+    if (blocked[first] || label[first] >= 0) continue;
+    std::vector<int> part{first};
+    label[first] = static_cast<int>(parts.size());
+    for (std::size_t k = 0; k < part.size(); ++k) {
+      const int x = part[k] % n, y = part[k] / n;
+      for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+        const int u = x + dx, v = y + dy;
+        if (u < 0 || v < 0 || u >= n || v >= n || blocked[v * n + u] || label[v * n + u] >= 0) continue;
+        label[v * n + u] = label[first];
+        part.push_back(v * n + u);
+      }
+    }
+    std::sort(part.begin(), part.end());
+    parts.push_back(std::move(part));
+  }
+  return parts;
+}
+
+// Caves in the style of game maps (Moving AI's dao and bg sets): large open caverns joined by a
+// few narrow tunnels. A cellular automaton on a grid `scale` times coarser than the map (each cell
+// blocked with probability 0.5, the border blocked, then five rounds of "blocked iff at least 5
+// of the 3x3 block are") leaves separate caverns; they are upsampled and smoothed twice by the
+// same rule on the map itself, which rounds the scale-cell staircases. Caverns of fewer than
+// `scale` x `scale` x 8 cells are filled; the others are joined by a minimum spanning tree of
+// straight tunnels 2 to 4 cells wide between their nearest cells, plus the next shortest
+// tunnel with probability `loops` per cavern, so there are few ways from one cavern to another.
+OccupancyGrid cave_map(int size, int scale, double loops, aco::Rng& rng, const std::string& name) {
+  const auto smooth = [](std::vector<char>& blocked, int n, int rounds) {
+    std::vector<char> next(blocked.size());
+    for (int round = 0; round < rounds; ++round) {
+      for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+          int count = 0;
+          for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+              const int u = x + dx, v = y + dy;
+              count += u < 0 || v < 0 || u >= n || v >= n || blocked[v * n + u];
+            }
+          next[y * n + x] = count >= 5;
+        }
+      blocked.swap(next);
+    }
+  };
+  const int coarse = size / scale;
+  std::vector<char> cells(static_cast<std::size_t>(coarse) * coarse);
+  for (int y = 0; y < coarse; ++y)
+    for (int x = 0; x < coarse; ++x) {
+      const bool border = x == 0 || y == 0 || x == coarse - 1 || y == coarse - 1;
+      cells[y * coarse + x] = rng.uniform() < 0.5 || border;
+    }
+  smooth(cells, coarse, 5);
+  std::vector<char> fine(static_cast<std::size_t>(size) * size);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) fine[y * size + x] = cells[std::min(y / scale, coarse - 1) * coarse + std::min(x / scale, coarse - 1)];
+  smooth(fine, size, 2);
+  std::vector<std::vector<int>> caverns;
+  for (auto& part : free_parts(fine, size)) {
+    if (static_cast<int>(part.size()) >= scale * scale * 8) caverns.push_back(std::move(part));
+    else
+      for (int c : part) fine[c] = 1;
+  }
+  // The tunnel between two caverns: their nearest pair of cells, on a sample of each cavern's
+  // cells (every cell would cost |A| x |B|; a sample of 400 is within a few cells of it).
+  struct Tunnel {
+    double length;
+    int from, to;  // cells
+    std::size_t a, b;  // caverns
+  };
+  const auto sample = [](const std::vector<int>& part) {
+    std::vector<int> some;
+    const std::size_t step = std::max<std::size_t>(1, part.size() / 400);
+    for (std::size_t k = 0; k < part.size(); k += step) some.push_back(part[k]);
+    return some;
+  };
+  std::vector<std::vector<int>> samples;
+  for (const auto& cavern : caverns) samples.push_back(sample(cavern));
+  std::vector<Tunnel> tunnels;
+  for (std::size_t a = 0; a < caverns.size(); ++a)
+    for (std::size_t b = a + 1; b < caverns.size(); ++b) {
+      Tunnel best{std::numeric_limits<double>::infinity(), 0, 0, a, b};
+      for (int p : samples[a])
+        for (int q : samples[b]) {
+          const double d = std::hypot(p % size - q % size, p / size - q / size);
+          if (d < best.length) best = {d, p, q, a, b};
+        }
+      tunnels.push_back(best);
+    }
+  std::sort(tunnels.begin(), tunnels.end(), [](const Tunnel& x, const Tunnel& y) { return x.length < y.length; });
+  // Kruskal's minimum spanning tree over the caverns; a tunnel left out joins a cavern that has
+  // no extra tunnel yet with probability `loops`.
+  std::vector<std::size_t> root(caverns.size());
+  std::iota(root.begin(), root.end(), std::size_t{0});
+  const std::function<std::size_t(std::size_t)> find = [&](std::size_t i) { return root[i] == i ? i : root[i] = find(root[i]); };
+  std::vector<char> has_loop(caverns.size(), 0);
+  const auto dig = [&](const Tunnel& t) {
+    const double x0 = t.from % size, y0 = t.from / size, x1 = t.to % size, y1 = t.to / size;
+    const int width = 2 + static_cast<int>(rng.below(3));
+    const int steps = static_cast<int>(std::ceil(4.0 * t.length)) + 1;
+    for (int k = 0; k <= steps; ++k) {
+      const double x = x0 + (x1 - x0) * k / steps, y = y0 + (y1 - y0) * k / steps;
+      for (int dy = 0; dy < width; ++dy)
+        for (int dx = 0; dx < width; ++dx) {
+          const int u = static_cast<int>(std::lround(x)) + dx - width / 2, v = static_cast<int>(std::lround(y)) + dy - width / 2;
+          if (u > 0 && v > 0 && u < size - 1 && v < size - 1) fine[v * size + u] = 0;
+        }
+    }
+  };
+  for (const Tunnel& t : tunnels) {
+    if (find(t.a) != find(t.b)) {
+      root[find(t.a)] = find(t.b);
+      dig(t);
+    } else if (!has_loop[t.a] && !has_loop[t.b] && t.length < 4.0 * scale && rng.uniform() < loops) {
+      has_loop[t.a] = has_loop[t.b] = 1;
+      dig(t);
+    }
+  }
+  OccupancyGrid g(size, size, name);
+  for (int y = 0; y < size; ++y)
+    for (int x = 0; x < size; ++x) g.set_blocked({x, y}, fine[y * size + x]);
+  return g;
+}
+
+// Large rooms with few doors, as in the buildings of game maps: the map split recursively (binary
+// space partition, across its longer side) by one-cell walls until a room is less than 2 x
+// `room` + 1 cells a side, so rooms have `room` to 2 x `room` cells a side. Each wall gets one door
+// of 1 to 3 cells (so the rooms form a tree: one way from room to room) and, with probability
+// `loops`, a second one. A wall never ends in front of an earlier wall's door.
+OccupancyGrid hall_map(int size, int room, double loops, aco::Rng& rng, const std::string& name) {
+  OccupancyGrid g(size, size, name);
+  const auto closed = [&](int x, int y) { return !g.contains({x, y}) || g.blocked({x, y}); };
+  // The free rectangle [x0, x1] x [y0, y1], walls or the map's edge around it.
+  const std::function<void(int, int, int, int)> split = [&](int x0, int y0, int x1, int y1) {
+    const int w = x1 - x0 + 1, h = y1 - y0 + 1;
+    const bool vertical = w >= h;  // a vertical wall splits the width
+    const int side = vertical ? w : h;
+    if (side < 2 * room + 1) return;
+    // Where the wall may stand: `room` cells on either side, not in front of a door.
+    std::vector<int> places;
+    for (int at = (vertical ? x0 : y0) + room; at <= (vertical ? x1 : y1) - room; ++at)
+      if (vertical ? closed(at, y0 - 1) && closed(at, y1 + 1) : closed(x0 - 1, at) && closed(x1 + 1, at)) places.push_back(at);
+    if (places.empty()) return;
+    const int at = places[rng.below(places.size())];
+    const int length = vertical ? h : w;
+    if (vertical) fill_rect(g, at, y0, at, y1);
+    else fill_rect(g, x0, at, x1, at);
+    const int doors = rng.uniform() < loops ? 2 : 1;
+    for (int d = 0; d < doors; ++d) {
+      const int width = std::min(length, 1 + static_cast<int>(rng.below(3)));
+      const int along = static_cast<int>(rng.below(length - width + 1));
+      for (int k = along; k < along + width; ++k) g.set_blocked(vertical ? Cell{at, y0 + k} : Cell{x0 + k, at}, false);
+    }
+    if (vertical) {
+      split(x0, y0, at - 1, y1);
+      split(at + 1, y0, x1, y1);
+    } else {
+      split(x0, y0, x1, at - 1);
+      split(x0, at + 1, x1, y1);
+    }
+  };
+  split(0, 0, size - 1, size - 1);
+  return g;
+}
+
 // Exact distances from `from` over the graph (Dijkstra); infinity where unreachable. Used only to
 // choose goals at given distances, never by a planner.
 std::vector<double> distances_from(const aco::Graph& graph, aco::NodeId from) {
@@ -522,24 +697,31 @@ std::string scenarios(const OccupancyGrid& g, int count, aco::Rng& rng) {
   return text;
 }
 
-// The validation set: three families at 32x32, 64x64 and 512x512, three seeds for the small maps
-// and two for the large ones, 20 scenarios each. The tuning maps were Moving AI's random512-10,
+// The validation set: random, room and maze maps at 32x32, 64x64 and 512x512, and open maps (caves,
+// halls: large regions, few narrow passages) at 256x256 and 512x512; three seeds for the 32 and
+// 64 maps and two for the others, 20 scenarios each. The tuning maps were Moving AI's random512-10,
 // 8room/64room, maze512-1 (perfect, corridor 1), so the parameters here differ: 25 % and 20 %
 // obstacles, 32-cell rooms, corridors 2 and 4 cells wide with loops.
 // first_seed shifts every seed, for a tuning set disjoint from the shipped one.
-// With `large`, the same families at 1024x1024 and 2048x2048 instead, one seed and 10 scenarios
+// With `large`, all five families at 1024x1024 and 2048x2048 instead, one seed and 10 scenarios
 // each: the scale measurements' maps.
-void write_benchmark(const std::filesystem::path& dir, int first_seed, bool large) {
+// `family`: only that family's maps ("" = all).
+void write_benchmark(const std::filesystem::path& dir, int first_seed, bool large, const std::string& family) {
   const int kScenarios = large ? 10 : 20;
   struct Spec {
     std::string family;
     int size;
   };
   const std::vector<Spec> specs =
-      large ? std::vector<Spec>{{"random", 1024}, {"random", 2048}, {"room", 1024}, {"room", 2048}, {"maze", 1024}, {"maze", 2048}}
+      large ? std::vector<Spec>{{"random", 1024}, {"random", 2048}, {"room", 1024}, {"room", 2048}, {"maze", 1024},
+                                {"maze", 2048},   {"cave", 1024},   {"cave", 2048}, {"hall", 1024}, {"hall", 2048}}
             : std::vector<Spec>{{"random", 32}, {"random", 64}, {"random", 512}, {"room", 32}, {"room", 64},
-                                {"room", 512},  {"maze", 32},   {"maze", 64},    {"maze", 512}};
+                                {"room", 512},  {"maze", 32},   {"maze", 64},    {"maze", 512}, {"cave", 256},
+                                {"cave", 512},  {"hall", 256},  {"hall", 512}};
+  if (!family.empty() && std::none_of(specs.begin(), specs.end(), [&](const Spec& s) { return s.family == family; }))
+    throw aco::Error("no map family '" + family + "' (random, room, maze, cave, hall)");
   for (const auto& spec : specs) {
+    if (!family.empty() && spec.family != family) continue;
     const int seeds = spec.size <= 64 ? 3 : spec.size <= 512 ? 2 : 1;
     for (int seed = first_seed; seed < first_seed + seeds; ++seed) {
       aco::Rng rng(static_cast<std::uint64_t>(spec.size) * 1000 + seed);
@@ -554,6 +736,14 @@ void write_benchmark(const std::filesystem::path& dir, int first_seed, bool larg
         const int room = spec.size <= 64 ? 8 : 32;
         name = "room" + std::to_string(spec.size) + "-" + std::to_string(room) + "-s" + std::to_string(seed);
         grid = room_map(spec.size, room, 0.3, rng, name);
+      } else if (spec.family == "cave") {
+        const int scale = spec.size <= 256 ? 4 : spec.size <= 1024 ? 8 : 16;
+        name = "cave" + std::to_string(spec.size) + "-" + std::to_string(scale) + "-s" + std::to_string(seed);
+        grid = cave_map(spec.size, scale, 0.3, rng, name);
+      } else if (spec.family == "hall") {
+        const int room = spec.size / 8;
+        name = "hall" + std::to_string(spec.size) + "-" + std::to_string(room) + "-s" + std::to_string(seed);
+        grid = hall_map(spec.size, room, 0.2, rng, name);
       } else {
         const int corridor = spec.size <= 32 ? 1 : spec.size <= 64 ? 2 : 4;
         name = "maze" + std::to_string(spec.size) + "-" + std::to_string(corridor) + "-s" + std::to_string(seed);
@@ -565,6 +755,23 @@ void write_benchmark(const std::filesystem::path& dir, int first_seed, bool larg
                 << kScenarios << " scenarios\n";
     }
   }
+}
+
+// --upsample: a Moving AI map drawn FACTOR times larger (every cell a FACTOR x FACTOR block), as
+// a large map with a real map's shape, with `count` scenarios spread over the path lengths in its
+// largest connected part (the longest last).
+void write_upsampled(const std::filesystem::path& file, int factor, const std::filesystem::path& dir, int count) {
+  if (factor < 1 || factor > 64) throw aco::Error("--upsample: FACTOR must be 1 to 64, not " + std::to_string(factor));
+  const OccupancyGrid small = aco::load_movingai_map(file);
+  const std::string name = file.stem().string() + "-x" + std::to_string(factor);
+  OccupancyGrid g(small.width() * factor, small.height() * factor, name);
+  for (int y = 0; y < g.height(); ++y)
+    for (int x = 0; x < g.width(); ++x) g.set_blocked({x, y}, small.blocked({x / factor, y / factor}));
+  aco::Rng rng(static_cast<std::uint64_t>(factor) * 1000 + static_cast<std::uint64_t>(count));
+  write_file(dir / (name + ".map"), movingai_map_text(g));
+  write_file(dir / (name + ".map.scen"), scenarios(g, count, rng));
+  std::cout << name << ": " << g.width() << "x" << g.height() << ", " << blocked_cells(g) << " blocked, " << count
+            << " scenarios\n";
 }
 
 // A ROS map_server map (--ros): a 10 m x 7 m office at 0.1 m per cell, as a robot's scan would
@@ -606,6 +813,16 @@ void write_ros_office(const std::filesystem::path& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if ((argc == 5 || argc == 6) && std::string(argv[1]) == "--upsample") {
+    try {
+      std::filesystem::create_directories(argv[4]);
+      write_upsampled(argv[2], std::stoi(argv[3]), argv[4], argc == 6 ? std::stoi(argv[5]) : 10);
+      return 0;
+    } catch (const std::exception& e) {
+      std::cerr << "aco_mapgen: " << e.what() << "\n";
+      return 1;
+    }
+  }
   if (argc == 3 && std::string(argv[1]) == "--ros") {
     try {
       std::filesystem::create_directories(argv[2]);
@@ -617,24 +834,27 @@ int main(int argc, char** argv) {
     }
   }
   const bool large = argc > 1 && std::string(argv[1]) == "--large";
-  const bool benchmark = (argc == 3 || argc == 4) && (std::string(argv[1]) == "--benchmark" || large);
+  const bool benchmark = (argc >= 3 && argc <= 5) && (std::string(argv[1]) == "--benchmark" || large);
   // Any other option (--help) is not a folder to fill with maps.
   const bool option = argc > 1 && !benchmark && argv[1][0] == '-';
   if (option || (!benchmark && argc != 2 && argc != 3)) {
     std::cerr << "usage: aco_mapgen OUTDIR [TERRAIN_OUTDIR]\n"
-                 "       aco_mapgen --benchmark OUTDIR [FIRST_SEED]\n"
-                 "       aco_mapgen --large OUTDIR [FIRST_SEED]\n"
+                 "       aco_mapgen --benchmark OUTDIR [FIRST_SEED [FAMILY]]\n"
+                 "       aco_mapgen --large OUTDIR [FIRST_SEED [FAMILY]]\n"
                  "       aco_mapgen --ros OUTDIR   (a ROS map_server office, office.yaml + office.pgm: data/maps/ros)\n"
+                 "       aco_mapgen --upsample MAP FACTOR OUTDIR [COUNT]   (a Moving AI map FACTOR times larger, COUNT\n"
+                 "                 scenarios, default 10: OUTDIR/<stem>-x<FACTOR>.map and .map.scen)\n"
                  "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR,\n"
                  "and paper004 into TERRAIN_OUTDIR if given (data/terrain); with --benchmark, the generated\n"
-                 "random, room and maze validation maps with 20 scenarios each (data/maps/generated); with\n"
-                 "--large, the same families at 1024x1024 and 2048x2048 with 10 scenarios each\n";
+                 "random, room, maze, cave and hall validation maps with 20 scenarios each (data/maps/generated);\n"
+                 "with --large, the same families at 1024x1024 and 2048x2048 with 10 scenarios each; FAMILY: only\n"
+                 "that family's maps (random, room, maze, cave or hall)\n";
     return 1;
   }
   try {
     if (benchmark) {
       std::filesystem::create_directories(argv[2]);
-      write_benchmark(argv[2], argc == 4 ? std::stoi(argv[3]) : 1, large);
+      write_benchmark(argv[2], argc >= 4 ? std::stoi(argv[3]) : 1, large, argc == 5 ? argv[4] : "");
       return 0;
     }
     const std::filesystem::path dir = argv[1];

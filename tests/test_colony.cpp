@@ -127,6 +127,34 @@ TEST_CASE("the stagnation rule stops a run after that many iterations without im
   CHECK(trivial.walks.empty());
 }
 
+TEST_CASE("a time limit stops the run at an iteration boundary with the best path so far", "[colony]") {
+  const auto map = test::classic_map(1);
+  const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
+  Baseline b;
+  aco::ColonySettings s;
+  s.iterations = 50;
+  // Any run outlasts a nanosecond: the first iteration boundary ends it, whatever the machine.
+  s.time_limit = 1e-9;
+  const auto limited = aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s);
+  CHECK(limited.stopped_by == "time");
+  CHECK(limited.iterations == 1);
+  CHECK(limited.best_so_far.size() == 1);
+  REQUIRE(limited.solved);
+  CHECK(limited.length == limited.best_so_far.back());
+  // A limit that is never reached, and the budget's last iteration past the limit, are the
+  // iteration budget's stop.
+  s.time_limit = 1e6;
+  CHECK(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s).stopped_by == "iterations");
+  s.iterations = 1;
+  s.time_limit = 1e-9;
+  CHECK(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s).stopped_by == "iterations");
+  for (const double bad : {-1.0, std::numeric_limits<double>::infinity(), std::nan("")}) {
+    s.time_limit = bad;
+    CHECK_THROWS_WITH(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s),
+                      Catch::Contains("time-limit must be finite and >= 0"));
+  }
+}
+
 namespace {
 // Steps back one node whenever an ant is stuck.
 class BacktrackOne final : public aco::DeadlockPolicy {
@@ -137,7 +165,7 @@ class ForbidNode final : public aco::DeadlockPolicy {
  public:
   explicit ForbidNode(aco::NodeId n) : node(n) {}
   int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }
-  void after_iteration(const aco::Context&, const aco::Iteration&, std::span<double>,
+  void after_iteration(const aco::Context&, const aco::Iteration&, aco::Trail&,
                        std::vector<std::uint8_t>& forbidden) override {
     forbidden[node] = 1;
   }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cmath>
 #include <limits>
@@ -81,24 +82,33 @@ struct PheromoneFoundBad {
   const char* where;
 };
 
-// Per-thread construction buffers. `visited` holds a stamp per node: a node is in the current
-// ant's tabu list when its stamp equals the ant's, so no clearing between ants. `on_walk` marks
-// the nodes of the current walk only (a backed-off node stays tabu but leaves the walk): the
-// bidirectional search joins two ants where their walks meet.
+// Per-thread construction buffers. `marks` says per node whether the current ant may enter it,
+// in one read per candidate: a node the ant entered holds 2 x its stamp + 1 while it lies on the
+// walk and 2 x its stamp once the ant backed off it (still tabu; the bidirectional search joins
+// two ants where their walks meet, so it needs the difference), and a forbidden node (dead-end
+// filling, a deadlock policy) holds kForbidden, above every stamp. Stamps grow from ant to ant,
+// so nothing is cleared between ants.
 struct Scratch {
-  explicit Scratch(int nodes, int max_degree)
-      : visited(nodes, 0), on_walk(nodes, 0), candidates(max_degree), weights(max_degree), factors(max_degree) {}
+  static constexpr std::uint32_t kForbidden = 0xFFFFFFFF;
+  static constexpr std::uint32_t kLastStamp = 0x7FFFFFFE;  // 2 x stamp + 1 stays below kForbidden
+  Scratch(const std::vector<std::uint8_t>& forbidden, int max_degree)
+      : marks(forbidden.size()), candidates(max_degree), weights(max_degree), factors(max_degree) {
+    for (std::size_t n = 0; n < forbidden.size(); ++n) marks[n] = forbidden[n] ? kForbidden : 0;
+  }
   std::uint32_t next_stamp() {
-    if (++stamp == 0) {
-      std::fill(visited.begin(), visited.end(), 0);
-      std::fill(on_walk.begin(), on_walk.end(), 0);
+    if (++stamp > kLastStamp) {
+      for (std::uint32_t& m : marks)
+        if (m != kForbidden) m = 0;
       stamp = 1;
     }
     return stamp;
   }
-  bool walked(NodeId n) const { return on_walk[n] == stamp; }
-  std::vector<std::uint32_t> visited;
-  std::vector<std::uint32_t> on_walk;
+  bool tabu(NodeId n) const { return marks[n] >= 2 * stamp; }
+  bool walked(NodeId n) const { return marks[n] == 2 * stamp + 1; }
+  void enter(NodeId n) { marks[n] = 2 * stamp + 1; }
+  void leave(NodeId n) { marks[n] = 2 * stamp; }
+  void forbid(NodeId n, bool forbidden) { marks[n] = forbidden ? kForbidden : 0; }
+  std::vector<std::uint32_t> marks;
   std::uint32_t stamp = 0;
   std::vector<EdgeId> candidates;
   std::vector<double> weights;
@@ -124,21 +134,27 @@ class Colony {
     context_.beta = settings.beta;
     context_.seed = settings.seed;
     context_.figures = pipeline.figures;
-    const auto edges = static_cast<std::size_t>(graph.num_edges());
-    for (std::vector<double>* field : {&tau_, &eta_beta_}) {
-      field->reserve(edges);
-      prefer_huge_pages(field->data(), edges * sizeof(double));
-      field->assign(edges, 0.0);
-    }
     forbidden_.assign(graph.num_nodes(), 0);
     if (settings.fill_dead_ends) forbidden_ = dead_ends(graph, start, goal);
+    known_forbidden_ = forbidden_;
     local_search_ = settings.local_search != "none";
     int max_degree = 1;
     for (NodeId n = 0; n < graph.num_nodes(); ++n) max_degree = std::max(max_degree, graph.degree(n));
-    scratch_ = std::make_unique<ScratchPool>([nodes = graph.num_nodes(), max_degree] { return Scratch(nodes, max_degree); });
+    scratch_ = std::make_unique<ScratchPool>([this, max_degree] { return Scratch(known_forbidden_, max_degree); });
   }
 
   void begin() {
+    // The heuristic first, the pheromone after: the heuristic's double values are converted to
+    // float and dropped (unless it changes by iteration) before the pheromone takes its memory.
+    uses_walk_ = p_.heuristic->uses_walk();
+    compute_heuristic();
+    by_node_ = p_.heuristic->varies_by_iteration() && p_.heuristic->updates_by_node();
+    if (by_node_) {
+      fresh_ = std::make_unique<std::atomic<int>[]>(static_cast<std::size_t>(g_.num_nodes()));
+      for (NodeId n = 0; n < g_.num_nodes(); ++n) fresh_[n].store(context_.iteration, std::memory_order_relaxed);
+    }
+    allocate(tau_, static_cast<std::size_t>(g_.num_edges()));
+    trail_ = Trail(tau_);
     if (s_.null_model == NullModel::no_learning) {
       // The init and update plugins are never asked: with tau = 1 every candidate's tau^alpha is 1.
       std::fill(tau_.begin(), tau_.end(), 1.0);
@@ -148,13 +164,7 @@ class Colony {
       p_.update->start(context_, tau_);
       check_pheromone(*p_.update, "update", "start()");
     }
-    uses_walk_ = p_.heuristic->uses_walk();
-    compute_heuristic();
-    by_node_ = p_.heuristic->varies_by_iteration() && p_.heuristic->updates_by_node();
-    if (by_node_) {
-      fresh_ = std::make_unique<std::atomic<int>[]>(static_cast<std::size_t>(g_.num_nodes()));
-      for (NodeId n = 0; n < g_.num_nodes(); ++n) fresh_[n].store(context_.iteration, std::memory_order_relaxed);
-    }
+    plain_ = trail_.plain();
   }
 
   void prepare(int iteration) {
@@ -174,7 +184,10 @@ class Colony {
 
   Scratch& local_scratch() { return scratch_->local(); }
   const Context& context() const { return context_; }
-  std::vector<double> take_pheromone() { return std::move(tau_); }  // at the end of a run
+  std::vector<double> take_pheromone() {  // at the end of a run
+    trail_.values();
+    return std::move(tau_);
+  }
   const Ant* best() const { return has_best_ ? &best_ : nullptr; }
   std::uint64_t max_moves() const { return max_moves_; }
 
@@ -183,16 +196,16 @@ class Colony {
     ant.edges.clear();
     ant.arrived = false;
     ant.length = 0.0;
-    const std::uint32_t stamp = scratch.next_stamp();
+    scratch.next_stamp();
     ant.nodes.push_back(context_.start);
-    scratch.visited[context_.start] = stamp;
-    scratch.on_walk[context_.start] = stamp;
+    scratch.enter(context_.start);
   }
 
   // Moves the ant one node on, backing off first while it is stuck. False: the ant died.
   bool step(Ant& ant, Scratch& scratch, Rng& rng) const {
     const bool tau_alpha_is_tau = s_.alpha == 1.0 || s_.null_model == NullModel::no_learning;
-    return tau_alpha_is_tau ? step<true>(ant, scratch, rng) : step<false>(ant, scratch, rng);
+    if (plain_) return tau_alpha_is_tau ? step<true, true>(ant, scratch, rng) : step<false, true>(ant, scratch, rng);
+    return tau_alpha_is_tau ? step<true, false>(ant, scratch, rng) : step<false, false>(ant, scratch, rng);
   }
 
   // One ant's whole walk to the goal; returns the number of moves it made.
@@ -230,11 +243,13 @@ class Colony {
     }
     if (s_.null_model != NullModel::none) return iteration_best;  // the twins learn nothing
     const Iteration view{ants, iteration_best, best()};
-    p_.deadlock->after_iteration(context_, view, tau_, forbidden_);
+    p_.deadlock->after_iteration(context_, view, trail_, forbidden_);
     if (check_every_hook_) check_pheromone(*p_.deadlock, "deadlock", "after_iteration()");
     forbidden_[context_.start] = forbidden_[context_.goal] = 0;
-    p_.update->update(context_, view, tau_);
+    publish_forbidden();
+    p_.update->update_trail(context_, view, trail_);
     if (check_every_hook_) check_pheromone(*p_.update, "update", "update()");
+    plain_ = trail_.plain();
     return iteration_best;
   }
 
@@ -246,9 +261,45 @@ class Colony {
   }
 
  private:
+  template <class T>
+  static void allocate(std::vector<T>& field, std::size_t size) {
+    field.reserve(size);
+    prefer_huge_pages(field.data(), size * sizeof(T));
+    field.assign(size, T{});
+  }
+
+  // eta^beta in double for the plugin, then in float for the ants: half the memory and half the
+  // bytes an ant reads per candidate. Each node's values are divided by the node's largest first:
+  // the ants compare a node's candidates only among themselves (the roulette and q0's best both
+  // ignore a common factor), so this changes no choice, and no value falls outside float's range
+  // whatever beta and the map's size. A heuristic that changes by iteration keeps its double
+  // values, which it may update from (Heuristic::update_node()).
   void compute_heuristic() {
-    p_.heuristic->compute_powered(context_, eta_beta_);
-    check_heuristic("compute_powered()", 0, eta_beta_.size());
+    if (eta_double_.empty()) allocate(eta_double_, static_cast<std::size_t>(g_.num_edges()));
+    p_.heuristic->compute_powered(context_, eta_double_);
+    check_heuristic(eta_double_, "compute_powered()", 0);
+    if (eta_.empty()) allocate(eta_, eta_double_.size());
+    aco::parallel_for(tbb::blocked_range<NodeId>(0, g_.num_nodes(), 4096), [&](const tbb::blocked_range<NodeId>& r) {
+      for (NodeId n = r.begin(); n != r.end(); ++n) store_node_eta(n, eta_double_.data() + g_.offsets[n]);
+    });
+    if (!p_.heuristic->varies_by_iteration()) std::vector<double>().swap(eta_double_);
+  }
+
+  void store_node_eta(NodeId n, const double* values) const {
+    const EdgeId first = g_.offsets[n], degree = g_.offsets[n + 1] - first;
+    double top = 0.0;
+    for (EdgeId i = 0; i < degree; ++i) top = std::max(top, values[i]);
+    const double scale = top > 0.0 ? 1.0 / top : 1.0;
+    for (EdgeId i = 0; i < degree; ++i) eta_[first + i] = static_cast<float>(values[i] * scale);
+  }
+
+  // The forbidden nodes a deadlock policy added or took back, into every thread's marks.
+  void publish_forbidden() {
+    for (std::size_t n = 0; n < forbidden_.size(); ++n) {
+      if (forbidden_[n] == known_forbidden_[n]) continue;
+      known_forbidden_[n] = forbidden_[n];
+      for (Scratch& scratch : *scratch_) scratch.forbid(static_cast<NodeId>(n), forbidden_[n] != 0);
+    }
   }
 
   // A check of what a hook wrote: a bad value is named where it was made (plugin, hook,
@@ -260,9 +311,10 @@ class Colony {
     if (e != tau_.size()) reject_value(plugin, slot, hook, "pheromone", tau_[e], e);
   }
 
-  void check_heuristic(const char* hook, std::size_t first, std::size_t last) const {
-    const std::size_t e = first + first_invalid(std::span(eta_beta_).subspan(first, last - first));
-    if (e != last) reject_value(*p_.heuristic, "heuristic", hook, "heuristic (eta^beta)", eta_beta_[e], e);
+  // `values`: eta^beta of the edges from `first` on.
+  void check_heuristic(std::span<const double> values, const char* hook, std::size_t first) const {
+    const std::size_t i = first_invalid(values);
+    if (i != values.size()) reject_value(*p_.heuristic, "heuristic", hook, "heuristic (eta^beta)", values[i], first + i);
   }
 
   [[noreturn]] void reject_value(const Strategy& plugin, const char* slot, const char* hook, const std::string& field,
@@ -282,25 +334,28 @@ class Colony {
     std::lock_guard lock(update_locks_[static_cast<std::size_t>(n) % update_locks_.size()]);
     const int since = fresh_[n].load(std::memory_order_relaxed);
     if (since == now) return;
-    const EdgeId first = g_.offsets[n], last = g_.offsets[n + 1];
-    p_.heuristic->update_node(context_, n, since, {eta_beta_.data() + first, static_cast<std::size_t>(last - first)});
-    check_heuristic("update_node()", first, last);
+    const EdgeId first = g_.offsets[n];
+    const std::span<double> values(eta_double_.data() + first, static_cast<std::size_t>(g_.offsets[n + 1] - first));
+    p_.heuristic->update_node(context_, n, since, values);
+    check_heuristic(values, "update_node()", first);
+    store_node_eta(n, values.data());
     fresh_[n].store(now, std::memory_order_release);
   }
 
-  // Specialised for alpha = 1, the usual case, which needs no pow() in the inner loop.
-  template <bool kAlphaOne>
+  // Specialised for alpha = 1, the usual case, which needs no pow() in the inner loop, and for a
+  // plain trail (stored values are tau), which needs no scale and bounds.
+  template <bool kAlphaOne, bool kPlain>
   bool step(Ant& ant, Scratch& scratch, Rng& rng) const {
-    const std::uint32_t stamp = scratch.stamp;
-    std::uint32_t* visited = scratch.visited.data();
+    const std::uint32_t tabu = 2 * scratch.stamp;
+    const std::uint32_t* marks = scratch.marks.data();
     EdgeId* candidates = scratch.candidates.data();
     double* weights = scratch.weights.data();
     const EdgeId* offsets = g_.offsets.data();
     const NodeId* targets = g_.targets.data();
-    const std::uint8_t* forbidden = forbidden_.data();
     const double* tau = tau_.data();
-    const double* eta_beta = eta_beta_.data();
+    const float* eta = eta_.data();
     const double alpha = s_.alpha;  // unused when kAlphaOne
+    const double scale = trail_.scale(), low = trail_.low(), high = trail_.high();  // unused when kPlain
     for (;;) {
       const NodeId current = ant.nodes.back();
       if (by_node_) update_heuristic(current);
@@ -309,10 +364,12 @@ class Colony {
       bool negative = false;
       for (EdgeId e = offsets[current], end = offsets[current + 1]; e < end; ++e) {
         const NodeId j = targets[e];
-        if (visited[j] == stamp || forbidden[j]) continue;
-        const double t = tau[e];
-        negative |= !(t >= 0.0);
-        const double w = (kAlphaOne ? t : power(t, alpha)) * eta_beta[e];
+        if (marks[j] >= tabu) continue;  // on the walk, backed off or forbidden
+        const double stored = tau[e];
+        negative |= !(stored >= 0.0);
+        // min and max pass NaN on (std::max(NaN, low) is NaN), for the check below to see.
+        const double t = kPlain ? stored : std::min(std::max(stored * scale, low), high);
+        const double w = (kAlphaOne ? t : power(t, alpha)) * eta[e];
         candidates[n] = e;
         weights[n] = w;
         total += w;
@@ -325,7 +382,7 @@ class Colony {
       if (n == 0) {
         const int back = std::min<int>(p_.deadlock->on_stuck(context_, ant.nodes), int(ant.nodes.size()) - 1);
         if (back <= 0) return false;
-        for (std::size_t i = ant.nodes.size() - back; i < ant.nodes.size(); ++i) scratch.on_walk[ant.nodes[i]] = 0;
+        for (std::size_t i = ant.nodes.size() - back; i < ant.nodes.size(); ++i) scratch.leave(ant.nodes[i]);
         ant.nodes.resize(ant.nodes.size() - back);
         ant.edges.resize(ant.edges.size() - back);
         continue;
@@ -346,8 +403,7 @@ class Colony {
       const NodeId next = targets[e];
       ant.edges.push_back(e);
       ant.nodes.push_back(next);
-      visited[next] = stamp;
-      scratch.on_walk[next] = stamp;
+      scratch.enter(next);
       return true;
     }
   }
@@ -385,14 +441,20 @@ class Colony {
   ColonySettings s_;
   bool check_every_hook_;
   Context context_;
-  std::vector<double> tau_;
-  // Mutable for heuristics that update by node: the (const, multi-threaded) construction brings
-  // a node's eta^beta up to date when an ant first stands on it in an iteration.
-  mutable std::vector<double> eta_beta_;
+  std::vector<double> tau_;  // the trail's stored values
+  Trail trail_{std::span<double>()};
+  bool plain_ = true;  // trail_.plain(), cached between the hooks that may change it
+  // eta^beta as the ants read it (compute_heuristic()), and as the heuristic wrote it, kept only
+  // for one that changes by iteration. Mutable for heuristics that update by node: the (const,
+  // multi-threaded) construction brings a node's eta^beta up to date when an ant first stands on
+  // it in an iteration.
+  mutable std::vector<float> eta_;
+  mutable std::vector<double> eta_double_;
   bool by_node_ = false;
   std::unique_ptr<std::atomic<int>[]> fresh_;  // per node: the iteration its eta^beta is for
   mutable std::array<std::mutex, 64> update_locks_;
   std::vector<std::uint8_t> forbidden_;
+  std::vector<std::uint8_t> known_forbidden_;  // what the threads' marks hold (publish_forbidden())
   std::unique_ptr<ScratchPool> scratch_;
   WalkShortener shortener_;
   bool local_search_ = false;
@@ -480,11 +542,13 @@ Rng walk_stream(const ColonySettings& s, int it, std::uint64_t k, std::uint64_t 
   return Rng::stream(s.seed, static_cast<std::uint64_t>(it), k);
 }
 
+using Clock = std::chrono::steady_clock;
+
 // The iteration loop shared by both searches: `construct` fills the forward colony's ants (and
 // the backward ones) for one iteration and returns the moves made.
 template <class Construct>
-ColonyResult iterate(const ColonySettings& s, std::span<Colony* const> colonies, std::span<std::vector<Ant>> ants,
-                     Construct&& construct) {
+ColonyResult iterate(const ColonySettings& s, Clock::time_point started, std::span<Colony* const> colonies,
+                     std::span<std::vector<Ant>> ants, Construct&& construct) {
   ColonyResult result;
   const SearchClock clock;
   for (Colony* colony : colonies) colony->begin();
@@ -518,6 +582,11 @@ ColonyResult iterate(const ColonySettings& s, std::span<Colony* const> colonies,
       result.stopped_by = "same path";
       break;
     }
+    if (s.time_limit > 0.0 && it + 1 < s.iterations &&
+        std::chrono::duration<double>(Clock::now() - started).count() >= s.time_limit) {
+      result.stopped_by = "time";
+      break;
+    }
   }
   for (Colony* colony : colonies) colony->check_final_pheromone();
   if (result.solved) result.path = colonies[0]->best()->nodes;
@@ -526,12 +595,12 @@ ColonyResult iterate(const ColonySettings& s, std::span<Colony* const> colonies,
 }
 
 ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
-                        const ColonySettings& s, bool check_every_hook) {
+                        const ColonySettings& s, bool check_every_hook, Clock::time_point started) {
   Colony colony(graph, start, goal, pipeline, s, check_every_hook);
   std::vector<std::vector<Ant>> ants(1, std::vector<Ant>(s.ants));
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&colony};
-  return iterate(s, colonies, ants, [&](int it) {
+  return iterate(s, started, colonies, ants, [&](int it) {
     aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       Scratch& local = colony.local_scratch();
       for (int k = range.begin(); k != range.end(); ++k) {
@@ -544,13 +613,14 @@ ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Pip
 }
 
 ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, const Pipeline& forward_pipeline,
-                               const Pipeline& backward_pipeline, const ColonySettings& s, bool check_every_hook) {
+                               const Pipeline& backward_pipeline, const ColonySettings& s, bool check_every_hook,
+                               Clock::time_point started) {
   Colony forward(graph, start, goal, forward_pipeline, s, check_every_hook);
   Colony backward(graph, goal, start, backward_pipeline, s, check_every_hook);
   std::vector<std::vector<Ant>> ants(2, std::vector<Ant>(s.ants));
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&forward, &backward};
-  return iterate(s, colonies, ants, [&](int it) {
+  return iterate(s, started, colonies, ants, [&](int it) {
     aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       Scratch& fs = forward.local_scratch();
       Scratch& bs = backward.local_scratch();
@@ -578,6 +648,7 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const Pipeline&
   if (!(s.alpha >= 0 && std::isfinite(s.alpha)) || !(s.beta >= 0 && std::isfinite(s.beta)))
     throw Error("alpha and beta must be finite and >= 0");
   if (s.stagnation < 0) throw Error("stagnation must be >= 0");
+  if (!(s.time_limit >= 0 && std::isfinite(s.time_limit))) throw Error("time-limit must be finite and >= 0");
   if (!(s.same_path_fraction > 0 && s.same_path_fraction <= 1)) throw Error("same-path-fraction must be in (0, 1]");
   if (!(s.q0 >= 0 && s.q0 <= 1)) throw Error("q0 must be in [0, 1]");
 }
@@ -601,17 +672,23 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pip
     if (backward->init == pipeline.init || backward->update == pipeline.update)
       throw Error("the bidirectional search's two colonies must not share strategy objects (they keep per-run state)");
   }
-  const auto run = [&](bool check_every_hook) {
-    return settings.bidirectional ? run_bidirectional(graph, start, goal, pipeline, *backward, settings, check_every_hook)
-                                  : run_single(graph, start, goal, pipeline, settings, check_every_hook);
+  // A time limit counts from here: the colony's setup (its per-edge fields, dead-end filling) too.
+  const Clock::time_point started = Clock::now();
+  const auto run = [&](const ColonySettings& s, bool check_every_hook) {
+    return s.bidirectional ? run_bidirectional(graph, start, goal, pipeline, *backward, s, check_every_hook, started)
+                           : run_single(graph, start, goal, pipeline, s, check_every_hook, started);
   };
   try {
-    return run(false);
+    return run(settings, false);
   } catch (const PheromoneFoundBad& found) {
     // Strategies start every run afresh (strategies.hpp), so the repeat makes the same writes and
     // its check after every hook throws the Error that names the plugin, the hook and the iteration.
+    // Up to the iteration that found the value, with no time limit to stop the repeat earlier.
+    ColonySettings repeat = settings;
+    repeat.iterations = found.iteration + 1;
+    repeat.time_limit = 0.0;
     try {
-      run(true);
+      run(repeat, true);
     } catch (const PheromoneFoundBad&) {
     }
     const NodeId from = graph.source(static_cast<EdgeId>(found.edge));

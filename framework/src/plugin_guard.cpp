@@ -193,6 +193,10 @@ class GuardedUpdate final : public Guarded<PheromoneUpdate> {
   void start(const Context& c, std::span<double> tau) override {
     call("start()", c.iteration, [&] { p_->start(c, tau); });
   }
+  // Named update() in reports: it is the update hook, whose default calls update().
+  void update_trail(const Context& c, const Iteration& iteration, Trail& trail) override {
+    call("update()", c.iteration, [&] { p_->update_trail(c, iteration, trail); });
+  }
 
 };
 
@@ -202,9 +206,9 @@ class GuardedDeadlock final : public Guarded<DeadlockPolicy> {
   int on_stuck(const Context& c, std::span<const NodeId> walk) const override {
     return call("on_stuck()", c.iteration, [&] { return p_->on_stuck(c, walk); });
   }
-  void after_iteration(const Context& c, const Iteration& iteration, std::span<double> tau,
+  void after_iteration(const Context& c, const Iteration& iteration, Trail& trail,
                        std::vector<std::uint8_t>& forbidden) override {
-    call("after_iteration()", c.iteration, [&] { p_->after_iteration(c, iteration, tau, forbidden); });
+    call("after_iteration()", c.iteration, [&] { p_->after_iteration(c, iteration, trail, forbidden); });
   }
 
 };

@@ -42,6 +42,54 @@ void Heuristic::step_factors(const Context&, const Ant&, std::span<const EdgeId>
 
 void PheromoneUpdate::start(const Context&, std::span<double>) {}
 
-void DeadlockPolicy::after_iteration(const Context&, const Iteration&, std::span<double>, std::vector<std::uint8_t>&) {}
+void PheromoneUpdate::update_trail(const Context& context, const Iteration& iteration, Trail& trail) {
+  update(context, iteration, trail.values());
+}
+
+void DeadlockPolicy::after_iteration(const Context&, const Iteration&, Trail&, std::vector<std::uint8_t>&) {}
+
+namespace {
+
+// Element-wise over the stored values, so the thread count cannot change one.
+template <class Body>
+void for_each_stored(std::span<double> stored, Body body) {
+  aco::parallel_for(tbb::blocked_range<std::size_t>(0, stored.size(), 1 << 15), [&](const auto& range) {
+    for (std::size_t e = range.begin(); e != range.end(); ++e) body(stored[e]);
+  });
+}
+
+}  // namespace
+
+void Trail::evaporate(double rho) {
+  scale_ *= 1.0 - rho;
+  // Deposits divide by the scale: keep it far from underflow (rho = 1 makes it 0 at once).
+  if (scale_ < 1e-100) {
+    const double scale = scale_;
+    for_each_stored(stored_, [scale](double& s) { s *= scale; });
+    scale_ = 1.0;
+  }
+}
+
+void Trail::bound(double low, double high) {
+  low_ = low;
+  high_ = high;
+}
+
+void Trail::fill(double tau) {
+  scale_ = 1.0;
+  std::fill(stored_.begin(), stored_.end(), tau);
+}
+
+std::span<double> Trail::values() {
+  if (!plain()) {
+    const double scale = scale_, low = low_, high = high_;
+    // A negative or NaN value stays as it is, for the engine's check to name its writer.
+    for_each_stored(stored_, [=](double& s) {
+      if (s >= 0.0) s = std::clamp(s * scale, low, high);
+    });
+    scale_ = 1.0;
+  }
+  return stored_;
+}
 
 }  // namespace aco

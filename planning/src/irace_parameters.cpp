@@ -183,10 +183,12 @@ std::string irace_plugin_parameters(aco::PluginRegistry& registry, const std::st
 std::string irace_parameters(aco::PluginRegistry& registry, const std::vector<std::string>& slots) {
   ParameterFile file;
   // The seed is irace's (the target runner passes it); a null model is a question asked of a
-  // pipeline, not a setting to tune.
+  // pipeline, not a setting to tune; a time limit is a budget, like ants and iterations, which
+  // irace would simply raise.
   file.comment("colony (seed is irace's: the target runner passes it)");
   for (const auto& spec : aco::colony_parameters())
-    if (std::string_view(spec.name) != "seed" && std::string_view(spec.name) != "null-model")
+    if (std::string_view(spec.name) != "seed" && std::string_view(spec.name) != "null-model" &&
+        std::string_view(spec.name) != "time-limit")
       file.add(irace_name(spec.name), spec.name, spec);
   for (const auto& slot : slots) {
     file.comment(slot);

@@ -27,6 +27,16 @@ def test_keywords_and_the_keys_dict_are_the_same_keys():
     assert by_keyword.config["fill-dead-ends"] is False
 
 
+def test_a_time_limit_stops_the_colony_at_an_iteration_boundary():
+    # Every run outlasts a nanosecond: the first iteration's end stops it, on any machine.
+    result = aco.plan(MAP1, (0, 0), (19, 19), time_limit=1e-9, iterations=50, seed=3)
+    assert result.json["stopped_by"] == "time"
+    assert result.json["iterations"] == 1
+    assert result.solved
+    assert result.config["time-limit"] == 1e-9
+    assert aco.plan(MAP1, (0, 0), (19, 19), iterations=5, seed=3).json["stopped_by"] == "iterations"
+
+
 def test_a_preset_is_acoplans_preset():
     result = aco.plan(MAP1, (0, 0), (19, 19), preset="paper001", seed=4)
     cli = acoplan_json("--preset", "paper001", "--map", MAP1, "--start", "0,0", "--goal", "19,19", "--seed", "4")

@@ -337,14 +337,28 @@ void run_slot(Heuristic& heuristic, const Problem& problem, Trace& trace) {
   }
 }
 
+// What the engine's ants read of a trail: tau(e) for every edge, or the stored value where that
+// is negative or NaN (the check's business, which reading within the bounds would hide).
+std::vector<double> read(const Trail& trail) {
+  std::vector<double> tau(trail.size());
+  for (std::size_t e = 0; e < tau.size(); ++e) {
+    const double stored = trail.stored()[e];
+    tau[e] = stored >= 0.0 ? trail[static_cast<EdgeId>(e)] : stored;
+  }
+  return tau;
+}
+
+// As the engine calls it: update_trail() on one trail kept through the run (the default calls
+// update() with its values; a rule such as max_min keeps a scale and bounds in it instead).
 void run_slot(PheromoneUpdate& update, const Problem& problem, Trace& trace) {
-  std::vector<double> tau(problem.graph.num_edges(), 1.0);
-  update.start(problem.context(0, kIterations), tau);
-  trace.add_checked(tau, "tau after start()");
+  std::vector<double> stored(problem.graph.num_edges(), 1.0);
+  update.start(problem.context(0, kIterations), stored);
+  trace.add_checked(stored, "tau after start()");
+  Trail trail(stored);
   int iteration = 0;
   for (const auto& ants : standard_iterations(problem)) {
-    update.update(problem.context(iteration++, kIterations), ants.view(), tau);
-    trace.add_checked(tau, "tau after update() of '" + ants.name + "'");
+    update.update_trail(problem.context(iteration++, kIterations), ants.view(), trail);
+    trace.add_checked(read(trail), "tau after update() of '" + ants.name + "'");
   }
 }
 
@@ -360,8 +374,9 @@ void run_slot(DeadlockPolicy& deadlock, const Problem& problem, Trace& trace) {
       if (back < 0) trace.problem("on_stuck() returned " + std::to_string(back) + " (must be >= 0)");
       trace.add(back);
     }
-    deadlock.after_iteration(c, ants.view(), tau, forbidden);
-    trace.add_checked(tau, "tau after after_iteration() of '" + ants.name + "'");
+    Trail trail(tau);
+    deadlock.after_iteration(c, ants.view(), trail, forbidden);
+    trace.add_checked(read(trail), "tau after after_iteration() of '" + ants.name + "'");
     if (forbidden.size() != static_cast<std::size_t>(problem.graph.num_nodes()))
       trace.problem("after_iteration() resized the forbidden nodes to " + std::to_string(forbidden.size()));
     for (const auto f : forbidden) trace.add(f);

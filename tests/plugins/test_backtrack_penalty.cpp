@@ -15,7 +15,8 @@ TEST_CASE("backtrack_penalty: a stuck ant dies and the pheromone into its last h
   std::vector<double> tau(g.num_edges(), 2.0);
   std::vector<std::uint8_t> forbidden(g.num_nodes(), 0);
   const std::vector<aco::Ant> ants{dead, alive};
-  policy->after_iteration(c, {ants, nullptr, nullptr}, tau, forbidden);
+  aco::Trail tau_trail(tau);
+  policy->after_iteration(c, {ants, nullptr, nullptr}, tau_trail, forbidden);
   for (aco::NodeId n = 0; n < g.num_nodes(); ++n) {
     const aco::Cell cell = g.cell(n);
     const bool penalised = cell.y == 1 && cell.x >= 3 && cell.x <= 5;  // the last three nodes
@@ -30,7 +31,8 @@ TEST_CASE("backtrack_penalty: a stuck ant dies and the pheromone into its last h
   short_walk.arrived = false;
   std::vector<double> t2(g.num_edges(), 2.0);
   const std::vector<aco::Ant> one{short_walk};
-  policy->after_iteration(c, {one, nullptr, nullptr}, t2, forbidden);
+  aco::Trail t2_trail(t2);
+  policy->after_iteration(c, {one, nullptr, nullptr}, t2_trail, forbidden);
   const aco::NodeId start = g.node({0, 1});
   for (aco::EdgeId e = g.edges_begin(start); e < g.edges_end(start); ++e) CHECK(t2[g.reverse[e]] == 2.0);
   const aco::NodeId second = g.node({1, 1});

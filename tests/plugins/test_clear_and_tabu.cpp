@@ -25,7 +25,8 @@ TEST_CASE("clear_and_tabu: the dead ant's walk is cleared and its dead end forbi
   std::vector<std::uint8_t> forbidden(g.num_nodes(), 0);
   const std::vector<aco::Ant> ants{dead, alive};
   CHECK(policy->on_stuck(c, dead.nodes) == 0);
-  policy->after_iteration(c, {ants, nullptr, nullptr}, tau, forbidden);
+  aco::Trail tau_trail(tau);
+  policy->after_iteration(c, {ants, nullptr, nullptr}, tau_trail, forbidden);
   for (aco::EdgeId e : dead.edges) CHECK(tau[e] == 0.0);
   for (aco::EdgeId e : alive.edges) CHECK(tau[e] == 3.0);
   CHECK(forbidden[g.node({2, 3})] == 1);
@@ -49,7 +50,8 @@ TEST_CASE("clear_and_tabu never forbids a node the goal depends on", "[plugin][c
   std::vector<double> tau(g.num_edges(), 3.0);
   std::vector<std::uint8_t> forbidden(g.num_nodes(), 0);
   const std::vector<aco::Ant> ants{dead};
-  policy->after_iteration(c, {ants, nullptr, nullptr}, tau, forbidden);
+  aco::Trail tau_trail(tau);
+  policy->after_iteration(c, {ants, nullptr, nullptr}, tau_trail, forbidden);
   CHECK(forbidden[g.node({3, 1})] == 0);
   for (aco::EdgeId e : dead.edges) CHECK(tau[e] == 1.5);  // keep = 0.5
 }
@@ -60,11 +62,11 @@ class Watch final : public aco::DeadlockPolicy {
  public:
   explicit Watch(aco::DeadlockPolicy& inner) : inner_(inner) {}
   int on_stuck(const aco::Context& c, std::span<const aco::NodeId> walk) const override { return inner_.on_stuck(c, walk); }
-  void after_iteration(const aco::Context& c, const aco::Iteration& it, std::span<double> tau,
+  void after_iteration(const aco::Context& c, const aco::Iteration& it, aco::Trail& trail,
                        std::vector<std::uint8_t>& forbidden) override {
     for (const aco::Ant& ant : it.ants)
       for (aco::NodeId n : ant.nodes) entered_after_forbidden += forbidden[n];
-    inner_.after_iteration(c, it, tau, forbidden);
+    inner_.after_iteration(c, it, trail, forbidden);
     forbidden_count = 0;
     for (auto f : forbidden) forbidden_count += f;
   }
@@ -129,7 +131,8 @@ TEST_CASE("clear_and_tabu forbids exactly the nodes a search per dead ant would"
     for (int iteration = 0; iteration < 6; ++iteration) {
       std::vector<aco::Ant> ants(5);
       for (auto& a : ants) a.nodes = {start, open[rng() % open.size()]};
-      policy->after_iteration(c, {ants, nullptr, nullptr}, tau, forbidden);
+      aco::Trail tau_trail(tau);
+      policy->after_iteration(c, {ants, nullptr, nullptr}, tau_trail, forbidden);
       for (const auto& a : ants) {
         const aco::NodeId n = a.nodes.back();
         if (n == start || expected[n]) continue;

@@ -14,7 +14,8 @@ TEST_CASE("discard lets a stuck ant die and changes nothing else", "[plugin][dis
   aco::Ant dead = test::ant(graph, {{0, 0}, {1, 0}});
   dead.arrived = false;
   const std::vector<aco::Ant> ants{dead};
-  policy->after_iteration(context, {ants, nullptr, nullptr}, tau, forbidden);
+  aco::Trail tau_trail(tau);
+  policy->after_iteration(context, {ants, nullptr, nullptr}, tau_trail, forbidden);
   CHECK(tau == std::vector<double>(graph.num_edges(), 1.0));
   CHECK(forbidden == std::vector<std::uint8_t>(graph.num_nodes(), 0));
 }

@@ -93,3 +93,25 @@ TEST_CASE("max_min restarts the trail after the set number of iterations without
   update->update(f.context, {ants, &ants[0], &ants[0]}, tau);
   for (double t : tau) CHECK(t == Approx(tau_max));
 }
+
+TEST_CASE("max_min's lazy trail gives the values of its plain update", "[plugin][max_min]") {
+  // The engine keeps one Trail through the run (evaporation a scale, the bounds applied where
+  // tau is read); update() on plain values evaporates and bounds every edge at once.
+  Fixture f;
+  auto lazy = test::make<aco::PheromoneUpdate>("update", "max_min", {{"rho", "0.3"}, {"best_so_far_every", "3"}});
+  auto plain = test::make<aco::PheromoneUpdate>("update", "max_min", {{"rho", "0.3"}, {"best_so_far_every", "3"}});
+  std::vector<double> stored(f.graph.num_edges(), 1.0), tau(f.graph.num_edges(), 1.0);
+  lazy->start(f.context, stored);
+  plain->start(f.context, tau);
+  aco::Trail trail(stored);
+  const std::vector<aco::Ant> ants{f.other, f.best};
+  for (int it = 0; it < 40; ++it) {
+    f.context.iteration = it;
+    // The iteration best alternates, so both deposits and both bounds are exercised.
+    const aco::Iteration view{ants, &ants[it % 2], &ants[1]};
+    lazy->update_trail(f.context, view, trail);
+    plain->update(f.context, view, tau);
+    for (aco::EdgeId e = 0; e < f.graph.num_edges(); ++e) CHECK(trail[e] == Approx(tau[e]).epsilon(1e-12));
+  }
+  CHECK_FALSE(trail.plain());
+}

@@ -31,6 +31,10 @@ struct ColonySettings {
   // probability q0 an ant takes its best candidate instead of spinning the roulette. 0 = classic.
   double q0 = 0.0;
   int stagnation = 0;  // stop after this many iterations without improvement; 0 = run them all
+  // Stop at the first iteration boundary after this many seconds since run_colony() began (the
+  // colony's setup included); 0 = no limit. OMPL's termination condition: the result then
+  // depends on the machine, so studies keep iteration budgets.
+  double time_limit = 0.0;
   // Paper 001's rule: stop once this fraction of an iteration's ants walked one and the same path.
   bool same_path_stop = false;
   double same_path_fraction = 0.9;
@@ -71,7 +75,7 @@ struct ColonyResult : SearchResult {
   std::vector<double> iteration_best;  // per iteration (none if no ant arrived)
   std::vector<int> arrived;            // per iteration: ants that reached the goal
   std::uint64_t ant_steps = 0;         // moves made by all ants, backtracking included
-  std::string stopped_by = "iterations";  // or "stagnation", "same path"
+  std::string stopped_by = "iterations";  // or "stagnation", "same path", "time"
   std::vector<double> pheromone;       // final tau per edge
 };
 

@@ -43,8 +43,10 @@ namespace aco {
 // 10: the seventh slot, map (MapReader): a descriptor's kind may be "map", whose factory makes a
 //     MapReader, and Map objects made by a plugin's code reach the host.
 // 11: Context::figures, record() and add() (a plugin's own figures); the record's build field.
+// 12: Trail (a pheromone with a lazy scale and bounds): PheromoneUpdate::update_trail(), and
+//     DeadlockPolicy::after_iteration() takes a Trail.
 // A literal, so the record can spell it; kPluginAbiVersion is the one to use in code.
-#define ACO_FRAMEWORK_PLUGIN_ABI 11
+#define ACO_FRAMEWORK_PLUGIN_ABI 12
 inline constexpr std::uint32_t kPluginAbiVersion = ACO_FRAMEWORK_PLUGIN_ABI;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";

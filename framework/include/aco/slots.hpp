@@ -44,7 +44,7 @@ inline constexpr SlotInfo kSlotTable[] = {
     {"heuristic", "Heuristic", "heuristic", "distance", "compute",
      "varies_by_iteration, compute_powered, updates_by_node, update_node, uses_walk, step_factors",
      "eta and factors >= 0 and finite; update_node as compute_powered; deterministic; threads; a colony run", true},
-    {"update", "PheromoneUpdate", "update", "ant_system", "update", "start",
+    {"update", "PheromoneUpdate", "update", "ant_system", "update", "start, update_trail",
      "pheromone >= 0 and finite after each iteration case; deterministic; threads; a colony run", true},
     {"deadlock", "DeadlockPolicy", "deadlock", "discard", "on_stuck", "after_iteration",
      "steps back within the walk; pheromone finite; deterministic; threads; a colony run", true},

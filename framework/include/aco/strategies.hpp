@@ -3,7 +3,9 @@
 // optional hooks with harmless defaults. Plugins implement them; see plugin.hpp.
 #include <Eigen/Core>
 #include <boost/config.hpp>
+#include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -113,6 +115,44 @@ class BOOST_SYMBOL_VISIBLE Heuristic : public Strategy {
                             std::span<double> factors) const;
 };
 
+// The pheromone of a running colony, per edge: tau(e) = clamp(stored(e) x scale, low, high). An
+// update rule that evaporates every edge alike and keeps the trail within bounds (MAX-MIN) calls
+// evaporate() and bound(), which cost nothing per edge: on a 2048x2048 map a pass over every edge
+// (33 M of them) per iteration costs more than the ants' walks. Any other rule asks for values()
+// and works on plain per-edge values; then scale and bounds are 1 and [0, infinity), and
+// stored(e) is tau(e).
+class BOOST_SYMBOL_VISIBLE Trail {
+ public:
+  static constexpr double kNoBound = std::numeric_limits<double>::infinity();
+  explicit Trail(std::span<double> stored) : stored_(stored) {}
+
+  std::size_t size() const { return stored_.size(); }
+  double operator[](EdgeId e) const { return std::clamp(stored_[e] * scale_, low_, high_); }
+  // tau(e) = tau, within the bounds (a negative or NaN value is kept for the engine's check).
+  void set(EdgeId e, double tau) { stored_[e] = (tau >= 0.0 ? std::clamp(tau, low_, high_) : tau) / scale_; }
+  // Every tau(e) times 1 - rho, in O(1) (the stored values are rescaled once the scale gets tiny).
+  void evaporate(double rho);
+  // Every tau(e) kept within [low, high] from now on, in O(1): applied where tau is read.
+  void bound(double low, double high);
+  void fill(double tau);  // every edge; O(edges)
+  // The plain values: scale and bounds applied to every edge (O(edges) unless already plain).
+  // Writes to them are tau; the bounds stay in force where tau is read.
+  std::span<double> values();
+
+  // How the engine reads the trail in its inner loop.
+  bool plain() const { return scale_ == 1.0 && low_ == 0.0 && high_ == kNoBound; }
+  std::span<const double> stored() const { return stored_; }
+  double scale() const { return scale_; }
+  double low() const { return low_; }
+  double high() const { return high_; }
+
+ private:
+  std::span<double> stored_;
+  double scale_ = 1.0;
+  double low_ = 0.0;
+  double high_ = kNoBound;
+};
+
 // Slot "update": pheromone evaporation and deposit after every iteration.
 class BOOST_SYMBOL_VISIBLE PheromoneUpdate : public Strategy {
  public:
@@ -121,6 +161,11 @@ class BOOST_SYMBOL_VISIBLE PheromoneUpdate : public Strategy {
   // Called once after the init plugin set the pheromone. An update rule that fixes the
   // pheromone scale (ACS's tau0) may rescale the field here, keeping the init plugin's shape.
   virtual void start(const Context& context, std::span<double> tau);
+  // What the engine calls after every iteration. The default calls update() with
+  // trail.values(); a rule that evaporates every edge alike overrides it to use the trail's
+  // evaporate() and bound() instead (see update/max_min), and keeps update() for callers with
+  // plain values.
+  virtual void update_trail(const Context& context, const Iteration& iteration, Trail& trail);
 };
 
 // Slot "deadlock": what happens to an ant that is not at the goal and has nowhere to go.
@@ -131,8 +176,9 @@ class BOOST_SYMBOL_VISIBLE DeadlockPolicy : public Strategy {
   // steps back before it continues (the nodes it leaves stay tabu), or 0 to let it die.
   virtual int on_stuck(const Context& context, std::span<const NodeId> walk) const = 0;
   // Called once per iteration, before the pheromone update, with all ants in ant order. May
-  // change the pheromone and forbid nodes (forbidden[n] = 1) for the rest of the run.
-  virtual void after_iteration(const Context& context, const Iteration& iteration, std::span<double> tau,
+  // change the pheromone (trail.set(), or trail.values() for plain per-edge values) and forbid
+  // nodes (forbidden[n] = 1) for the rest of the run.
+  virtual void after_iteration(const Context& context, const Iteration& iteration, Trail& trail,
                                std::vector<std::uint8_t>& forbidden);
 };
 

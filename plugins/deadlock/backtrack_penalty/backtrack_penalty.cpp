@@ -21,7 +21,7 @@ class BacktrackPenalty final : public aco::DeadlockPolicy {
 
   int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }
 
-  void after_iteration(const aco::Context& c, const aco::Iteration& it, std::span<double> tau,
+  void after_iteration(const aco::Context& c, const aco::Iteration& it, aco::Trail& trail,
                        std::vector<std::uint8_t>&) override {
     const aco::Graph& g = *c.graph;
     for (const aco::Ant& ant : it.ants) {
@@ -30,7 +30,10 @@ class BacktrackPenalty final : public aco::DeadlockPolicy {
       const std::size_t first = ant.nodes.size() > std::size_t(p_.h) ? ant.nodes.size() - p_.h : 1;
       for (std::size_t i = first; i < ant.nodes.size(); ++i) {
         const aco::NodeId n = ant.nodes[i];
-        for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) tau[g.reverse[e]] *= p_.penalty;
+        for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) {
+          const aco::EdgeId into = g.reverse[e];
+          trail.set(into, trail[into] * p_.penalty);
+        }
       }
     }
   }

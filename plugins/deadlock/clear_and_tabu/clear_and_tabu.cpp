@@ -23,12 +23,12 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
 
   int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }
 
-  void after_iteration(const aco::Context& c, const aco::Iteration& it, std::span<double> tau,
+  void after_iteration(const aco::Context& c, const aco::Iteration& it, aco::Trail& trail,
                        std::vector<std::uint8_t>& forbidden) override {
     std::int64_t newly_forbidden = 0;
     for (const aco::Ant& ant : it.ants) {
       if (ant.arrived) continue;
-      for (aco::EdgeId e : ant.edges) tau[e] *= p_.keep;
+      for (aco::EdgeId e : ant.edges) trail.set(e, trail[e] * p_.keep);
       const aco::NodeId dead_end = ant.nodes.back();
       if (dead_end != c.start && !forbidden[dead_end] && keeps_goal_reachable(c, forbidden, dead_end)) {
         forbidden[dead_end] = 1;

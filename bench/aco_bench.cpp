@@ -2,6 +2,7 @@
 // reports medians; ns per ant step = run time / moves made by all ants.
 #include <tbb/global_control.h>
 #include <tbb/info.h>
+#include <sys/resource.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "ifwa/fireworks.hpp"
 #include "aco/map_io.hpp"
@@ -349,6 +351,47 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
   return identical;
 }
 
+// A map drawn `factor` times larger: every cell a factor x factor block.
+aco::OccupancyGrid upsampled(const aco::Map& map, int factor) {
+  aco::OccupancyGrid big(map.width() * factor, map.height() * factor, map.name() + " x" + std::to_string(factor));
+  for (int y = 0; y < big.height(); ++y)
+    for (int x = 0; x < big.width(); ++x) big.set_blocked({x, y}, !map.passable({x / factor, y / factor}));
+  return big;
+}
+
+// The recommended pipeline (data/presets/robust.ini) as the map grows, 2 threads: classic map1
+// (20x20) corner to corner, the large map's scenario (512x512), and the same map drawn 4 times
+// larger (2048x2048) with the scenario's cells scaled. ns per ant step = run time / ant steps;
+// the process's peak memory after the 2048x2048 runs is theirs (the largest by far).
+void time_scale(aco::PluginRegistry& registry, const std::filesystem::path& shared, const std::string& large,
+                int large_index, int repeats, int large_repeats, int scale_repeats) {
+  const aco::Keys robust = robust_preset();
+  const aco::ColonySettings settings = aco::resolve_run(robust, registry).colony;
+  std::printf("\n== the recommended pipeline (data/presets/robust.ini) as the map grows, 2 threads ==\n");
+  std::printf("%-34s %12s %12s %12s %14s %8s %10s\n", "map", "edges", "median ms", "ns/ant step", "ant steps", "gap %",
+              "peak MiB");
+  tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 2);
+  const auto row = [&](const std::string& name, const aco::Graph& graph, aco::Cell start, aco::Cell goal, int runs) {
+    const Timing t = time_runs(graph, start, goal, registry, robust, settings, runs, 2);
+    const auto optimal = aco::astar(graph, graph.node(start), graph.node(goal));
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    std::printf("%-34s %12d %12.1f %12.1f %14llu %8.2f %10.0f\n", name.c_str(), graph.num_edges(), t.median_ms,
+                t.ns_per_step, static_cast<unsigned long long>(t.total_steps / runs),
+                optimal && t.last.solved ? 100.0 * (t.mean_length / optimal->length - 1.0) : -1.0,
+                usage.ru_maxrss / 1024.0);
+  };
+  const auto classic = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/classic20/map1.txt");
+  row("classic map1 (20x20)", aco::build_graph(*classic, {}), {0, 0}, {19, 19}, repeats);
+  const auto problem = load_large(shared, large, large_index);
+  const aco::Scenario& s = problem->scenario;
+  row(large + " #" + std::to_string(large_index), problem->graph, s.start, s.goal, large_repeats);
+  constexpr int kFactor = 4;
+  const aco::OccupancyGrid big = upsampled(*problem->map, kFactor);
+  row(large + " x4 #" + std::to_string(large_index), aco::build_graph(big, {}), {s.start.x * kFactor, s.start.y * kFactor},
+      {s.goal.x * kFactor, s.goal.y * kFactor}, scale_repeats);
+}
+
 // Paper 003's DWA (local/dwa) at one control step on its 20x20 map: the robot at (5, 6) heading
 // for (8, 7) at 0.5 m/s, every blocked cell within 7 sensed, one disc moving; with the paper's
 // defaults, then following the path (local.follow 0.5). Reports microseconds per step and the
@@ -387,7 +430,7 @@ void time_dwa(aco::PluginRegistry& registry, int repeats) {
   }
 }
 
-const std::set<std::string> kSections = {"classic", "fireworks", "terrain", "large", "large-plugins", "dwa"};
+const std::set<std::string> kSections = {"classic", "fireworks", "terrain", "large", "large-plugins", "scale", "dwa"};
 
 // "--only terrain,large" -> {"terrain", "large"}; empty text = every section.
 std::set<std::string> parse_sections(const std::string& text) {
@@ -396,7 +439,7 @@ std::set<std::string> parse_sections(const std::string& text) {
   std::istringstream in(text);
   for (std::string name; std::getline(in, name, ',');) {
     if (!kSections.count(name))
-      throw aco::Error("--only: unknown section '" + name + "' (sections: classic, fireworks, terrain, large, large-plugins, dwa)");
+      throw aco::Error("--only: unknown section '" + name + "' (sections: classic, fireworks, terrain, large, large-plugins, scale, dwa)");
     sections.insert(name);
   }
   return sections;
@@ -411,16 +454,18 @@ int main(int argc, char** argv) try {
   int large_index = 400;
   int large_repeats = 5;
   int large_plugin_repeats = 3;
+  int scale_repeats = 3;
   std::string only;
   po::options_description options("aco_bench options");
   options.add_options()("help,h", "print this help")
       ("repeats", po::value(&repeats), "runs per small-map measurement (seeds 1..N)")
-      ("only", po::value(&only), "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins, dwa (default: all)")
+      ("only", po::value(&only), "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins, scale, dwa (default: all)")
       ("maps", po::value(&maps), "folder the large map is in (default: the project's data/maps)")
       ("large-map", po::value(&large), "512x512 map for the large-map sections, relative to --maps")
       ("large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")
       ("large-repeats", po::value(&large_repeats), "runs per thread count on the large map")
-      ("large-plugin-repeats", po::value(&large_plugin_repeats), "runs per plugin in the large-plugins section");
+      ("large-plugin-repeats", po::value(&large_plugin_repeats), "runs per plugin in the large-plugins section")
+      ("scale-repeats", po::value(&scale_repeats), "runs on the 2048x2048 map in the scale section");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, options), vm);
   po::notify(vm);
@@ -428,7 +473,7 @@ int main(int argc, char** argv) try {
     std::cout << options;
     return 0;
   }
-  if (repeats < 1 || large_repeats < 1 || large_plugin_repeats < 1) throw aco::Error("repeats must be >= 1");
+  if (repeats < 1 || large_repeats < 1 || large_plugin_repeats < 1 || scale_repeats < 1) throw aco::Error("repeats must be >= 1");
   const std::set<std::string> sections = parse_sections(only);
   aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
 
@@ -440,6 +485,7 @@ int main(int argc, char** argv) try {
   if (sections.count("large")) identical = time_large(registry, maps, large, large_index, large_repeats) && identical;
   if (sections.count("large-plugins"))
     identical = time_large_plugins(registry, maps, large, large_index, large_plugin_repeats) && identical;
+  if (sections.count("scale")) time_scale(registry, maps, large, large_index, repeats, large_repeats, scale_repeats);
   return identical ? 0 : 1;
 } catch (po::error& e) {
   std::cerr << "aco_bench: error: " << aco::program_options_message(e) << "\n";

@@ -115,6 +115,26 @@ TEST_CASE("acoplan --irace prints only the final length, the same as --json's", 
   CHECK(irace_cost(repeated) == Approx(json::parse(r.out)["summary"]["length"]["mean"].get<double>()).epsilon(1e-12));
 }
 
+TEST_CASE("acoplan --irace-cost gap and gap-penalised are the grid path's gap to A*'s optimum in %", "[acoplan][irace]") {
+  // A short run that stays above the optimum: one ant, one iteration, no local search.
+  const std::vector<std::string> args{"--scen", (test::data_dir() / "maps/movingai/dao/arena2.map.scen").string(),
+                                      "--scen-index", "900", "--ants", "2", "--iterations", "2", "--local-search",
+                                      "none", "--q0", "0", "--seed", "3"};
+  const auto r = test::acoplan(with(args, {"--json"}));
+  REQUIRE(r.exit_code == 0);
+  const json run = json::parse(r.out);
+  const double gap = 100.0 * (run["grid_length"].get<double>() / run["optimal_length"].get<double>() - 1.0);
+  REQUIRE(gap > 1.0);
+  CHECK(irace_cost(with(args, {"--irace-cost", "gap"})) == Approx(gap).epsilon(1e-12));
+  CHECK(irace_cost(with(args, {"--irace-cost", "gap-penalised"})) == Approx(gap * (1.0 + gap)).epsilon(1e-12));
+  CHECK(irace_cost(with(args, {"--irace-cost", "length"})) == run["length"].get<double>());
+  // The optimum itself costs exactly 0, though its sum may differ from A*'s in the last bits.
+  CHECK(irace_cost(with(quick, {"--irace-cost", "gap-penalised"})) == 0.0);
+  const auto bad = test::acoplan(with(quick, {"--irace", "--irace-cost", "mean"}));
+  CHECK(bad.exit_code == 1);
+  CHECK_THAT(bad.err, Contains("--irace-cost: 'mean' is not one of length, gap, gap-penalised"));
+}
+
 TEST_CASE("acoplan --irace gives an unsolved run the penalty cost and exit status 0 but errors still fail",
           "[acoplan][irace][bad-input]") {
   const auto walled = test::temp_file("walled.txt", "0 1 0\n0 1 0\n0 1 0\n");

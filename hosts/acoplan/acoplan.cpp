@@ -34,12 +34,20 @@ void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco
   aco::write_svg(*r.svg, graph, picture);
 }
 
-// --irace: the mean length over the runs, an unsolved run counting as kIraceUnsolvedCost, in
-// the shortest text that reads back as the same double (so it equals --json's length).
-std::string irace_cost(const std::vector<aco::PlanRun>& runs) {
-  const double total = std::accumulate(runs.begin(), runs.end(), 0.0, [](double sum, const aco::PlanRun& o) {
-    return sum + (o.solved() ? o.length : kIraceUnsolvedCost);
-  });
+// --irace: the mean cost over the runs, an unsolved run counting as kIraceUnsolvedCost, in the
+// shortest text that reads back as the same double (so a length equals --json's length).
+std::string irace_cost(const std::vector<aco::PlanRun>& runs, Request::IraceCost kind) {
+  const auto cost = [kind](const aco::PlanRun& o) {
+    if (!o.solved()) return kIraceUnsolvedCost;
+    if (kind == Request::IraceCost::length) return o.length;
+    if (!o.optimal_length) throw aco::Error("--irace-cost gap: A* found no path where the colony found one");
+    // A path as long as A*'s may differ from it in the last bits (another order of the sums).
+    const double gap = std::max(0.0, 100.0 * (o.search.length / *o.optimal_length - 1.0));
+    if (gap < 1e-9) return 0.0;
+    return kind == Request::IraceCost::gap ? gap : gap * (1.0 + gap);
+  };
+  const double total =
+      std::accumulate(runs.begin(), runs.end(), 0.0, [&](double sum, const aco::PlanRun& o) { return sum + cost(o); });
   char text[64];
   const auto end = std::to_chars(text, text + sizeof text, total / static_cast<double>(runs.size())).ptr;
   return std::string(text, end);
@@ -68,7 +76,7 @@ int plan(const acoplan::Request& r, std::ostream& out) {
 
   if (r.irace) {
     // irace reads the last line of stdout; an unsolved run has its cost, so it is no failure.
-    out << irace_cost(runs) << "\n";
+    out << irace_cost(runs, r.irace_cost) << "\n";
   } else if (runs.size() == 1) {
     out << (r.json ? aco::to_json(report, runs[0]) + "\n" : aco::summary(report, runs[0]));
   } else {

@@ -217,8 +217,11 @@ Request parse_command_line(int argc, const char* const* argv) {
        "Moving AI scenario file; start and goal come from --scen-index, the map from FILE minus .scen unless --map")
       ("json", po::bool_switch(), "print one JSON object instead of the readable summary")
       ("irace", po::bool_switch(),
-       "for irace's target runner: print only the cost, the path length (mean over --repeat; 1e9 for an unsolved "
+       "for irace's target runner: print only the cost, the mean over --repeat of --irace-cost (1e9 for an unsolved "
        "run), and exit 0 unless there is an error")
+      ("irace-cost", po::value<std::string>()->value_name("KIND")->default_value("length"),
+       "with --irace: length = the final path's length; gap = the grid path's gap to A*'s optimum in %; "
+       "gap-penalised = that gap g plus its square, g (1 + g), which punishes the worst runs")
       ("dump-irace-params", po::value<std::string>()->value_name("FILE"),
        "write irace's parameter file (colony and plugin parameters) to FILE (- = stdout) and exit")
       ("irace-slots", po::value<std::string>()->value_name("SLOTS"),
@@ -363,6 +366,11 @@ Request parse_command_line(int argc, const char* const* argv) {
     }
     r.json = vm["json"].as<bool>();
     r.irace = vm["irace"].as<bool>();
+    const std::string cost = vm["irace-cost"].as<std::string>();
+    if (cost == "length") r.irace_cost = Request::IraceCost::length;
+    else if (cost == "gap") r.irace_cost = Request::IraceCost::gap;
+    else if (cost == "gap-penalised") r.irace_cost = Request::IraceCost::gap_penalised;
+    else throw aco::Error("--irace-cost: '" + cost + "' is not one of length, gap, gap-penalised");
     if (vm["print-config"].as<bool>()) {
       r.action = Request::Action::print_config;
       r.config = config_file(r);

@@ -21,15 +21,20 @@ struct Request {
   std::string describe;  // plugin to describe
   std::string help;      // full --help text
   std::string config;
-  std::string pipeline_source;  // "preset robust (the default for 2D maps ...)", "preset paper001", "config FILE"    // the resolved configuration as a config file (--print-config)
+  std::string pipeline_source;  // "preset robust (the default for 2D maps ...)", "preset paper001", "config FILE"
   std::string irace_params_file;         // --dump-irace-params: where to write the table ("-" = stdout)
   std::vector<std::string> irace_slots;  // the slots whose plugins irace chooses (--irace-slots)
   std::string irace_plugin;              // --irace-plugin SLOT/NAME: only its parameters ("" = the slots')
 
   std::optional<std::filesystem::path> svg;
   bool json = false;
-  bool irace = false;
-  std::optional<std::uint64_t> max_memory;  // --max-memory in bytes; none: the default limit  // print only the cost (mean length, kIraceUnsolvedCost if unsolved) and exit 0
+  bool irace = false;  // print only the cost (--irace-cost, kIraceUnsolvedCost if unsolved) and exit 0
+  // --irace-cost: what a run costs irace. length: the final path's length; gap: the grid path's
+  // gap to A*'s optimum in percent; gap-penalised: that gap g plus its square, g (1 + g), so that
+  // a configuration is judged by its worst runs too, not by its mean alone.
+  enum class IraceCost { length, gap, gap_penalised };
+  IraceCost irace_cost = IraceCost::length;
+  std::optional<std::uint64_t> max_memory;  // --max-memory in bytes; none: the default limit
 
   aco::ParameterValues host;  // acoplan's own settings: threads, svg-pheromone, repeat
   aco::RunSpec run;           // everything else, resolved once

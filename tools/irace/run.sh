@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Tunes acoplan with irace: prepares TUNING_DIR and runs irace on tools/irace/scenario.txt there.
-#   tools/irace/run.sh [--slots SLOTS | --plugin SLOT/NAME] TUNING_DIR [IRACE_OPTIONS...]
+#   tools/irace/run.sh [--slots SLOTS | --plugin SLOT/NAME | --params FILE [--forbidden FILE]] TUNING_DIR [IRACE_OPTIONS...]
 # (installed with the SDK: aco-irace, the same arguments).
 # --slots: the slots whose plugin irace chooses (acoplan --irace-slots; default all but local).
 # --plugin: only that plugin's parameters, its slot fixed to it (acoplan --irace-plugin).
+# --params: a parameter file of your own instead of acoplan's dump (tools/irace/presets has the
+# presets'), with its forbidden expressions from --forbidden FILE (default: none).
 # IRACE_OPTIONS go to irace as they are, e.g. --max-experiments 200 --parallel 2 --seed 1.
 # ACOPLAN, ACOPLAN_OPTIONS: as for target-runner; the parameter file is written by that acoplan
 # with those options too, so a --plugin-dir there finds the same plugins. An option set in
@@ -13,14 +15,28 @@
 # and best-options.txt: the acoplan options of the best configuration, one line (when irace raced).
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-usage="usage: $(basename "$0") [--slots SLOTS | --plugin SLOT/NAME] TUNING_DIR [IRACE_OPTIONS...]"
+usage="usage: $(basename "$0") [--slots SLOTS | --plugin SLOT/NAME | --params FILE [--forbidden FILE]] TUNING_DIR [IRACE_OPTIONS...]"
 choice=()
+params=""
+forbidden="$here/forbidden.txt"
 case "${1:-}" in
   --help | -h) echo "$usage"; echo "(tools/irace/README.md, installed as share/aco/irace/README.md, says more)"; exit 0 ;;
-  --slots | --plugin)
+  --slots | --plugin | --params)
     [ $# -ge 2 ] || { echo "run.sh: $1 needs a value" >&2; exit 2; }
-    [ "$1" = --slots ] && choice=(--irace-slots "$2") || choice=(--irace-plugin "$2")
-    shift 2 ;;
+    case "$1" in
+      --slots) choice=(--irace-slots "$2") ;;
+      --plugin) choice=(--irace-plugin "$2") ;;
+      --params)
+        [ -f "$2" ] || { echo "run.sh: no parameter file $2" >&2; exit 2; }
+        params="$(cd "$(dirname "$2")" && pwd)/$(basename "$2")"
+        forbidden=/dev/null ;;
+    esac
+    shift 2
+    if [ -n "$params" ] && [ "${1:-}" = --forbidden ]; then
+      [ $# -ge 2 ] && [ -f "$2" ] || { echo "run.sh: --forbidden needs a file" >&2; exit 2; }
+      forbidden="$2"
+      shift 2
+    fi ;;
 esac
 if [ $# -lt 1 ] || [[ "$1" == -* ]]; then
   echo "$usage" >&2
@@ -39,8 +55,12 @@ fi
 mkdir -p "$dir"
 dir="$(cd "$dir" && pwd)"
 
-# shellcheck disable=SC2086  # the options are words, as target-runner passes them
-"$acoplan" --dump-irace-params "$dir/parameters.txt" "${choice[@]}" ${ACOPLAN_OPTIONS-}
+if [ -n "$params" ]; then
+  cp "$params" "$dir/parameters.txt"
+else
+  # shellcheck disable=SC2086  # the options are words, as target-runner passes them
+  "$acoplan" --dump-irace-params "$dir/parameters.txt" "${choice[@]}" ${ACOPLAN_OPTIONS-}
+fi
 # shellcheck disable=SC2086  # the options are words, as target-runner passes them
 for word in ${ACOPLAN_OPTIONS-}; do
   [[ "$word" == --* ]] || continue
@@ -60,7 +80,7 @@ while IFS= read -r line; do
     [[ "$names" == *" $word "* ]] || known=0
   done
   ((known)) && echo "$line" >> "$dir/forbidden.txt"
-done < "$here/forbidden.txt"
+done < "$forbidden"
 
 Rscript -e 'irace::irace.cmdline()' --scenario "$here/scenario.txt" --exec-dir "$dir" \
   --parameter-file "$dir/parameters.txt" --forbidden-file "$dir/forbidden.txt" "$@" | tee "$dir/irace.log"

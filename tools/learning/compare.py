@@ -3,7 +3,8 @@
 
 Runs acoplan --json for every (problem, seed, variant), caches each run's result in a JSON-lines
 file (so a re-run with more variants only runs what is new), and prints per variant: solved,
-mean and worst gap of the grid path (grid_length / optimal_length - 1), mean time; then, for
+mean and worst gap of the grid path (grid_length / optimal_length - 1), mean and longest time
+(acoplan's time_ms: planning and smoothing); then, for
 each variant against the first, sign counts and a Wilcoxon signed-rank test over the
 (problem, seed) pairs.
 
@@ -27,7 +28,10 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-ACOPLAN = os.path.join(ROOT, "build/release/hosts/acoplan/acoplan")
+# ACOPLAN: another acoplan, e.g. an installed copy (cmake --install) while the tree is rebuilt.
+ACOPLAN = os.environ.get("ACOPLAN", os.path.join(ROOT, "build/release/hosts/acoplan/acoplan"))
+PLUGINS = (os.path.join(os.path.dirname(os.path.dirname(ACOPLAN)), "lib/aco/plugins") if "ACOPLAN" in os.environ
+           else os.path.join(ROOT, "build/release/plugins"))
 
 
 def problems(scen_dir, per_scen, pattern):
@@ -99,6 +103,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--by-type", action="store_true", help="also one table per map type")
+    ap.add_argument("--type-by", choices=("name", "folder"), default="name",
+                    help="a map's type: its file name up to the first digit (generated maps), or its folder (Moving AI's sets)")
     ap.add_argument("--cache", default="/tmp/learning-cache.jsonl")
     a = ap.parse_args()
 
@@ -120,7 +126,7 @@ def main():
                 e = json.loads(line)
                 cache[e["key"]] = e["result"]
     # A rebuilt acoplan or plugin invalidates the cache.
-    binary = max(os.stat(f).st_mtime_ns for f in [ACOPLAN] + glob.glob(os.path.join(ROOT, "build/release/plugins/*.so")))
+    binary = max(os.stat(f).st_mtime_ns for f in [ACOPLAN] + glob.glob(os.path.join(PLUGINS, "*.so")))
     jobs = {}
     for name, extra in variants:
         for scen, index in probs:
@@ -147,8 +153,12 @@ def main():
         print(f"{len(errors)} runs failed, e.g.: {errors[0]}", file=sys.stderr)
     pairs = [(scen, index, seed) for scen, index in probs for seed in seeds]
     if a.by_type:
-        # One table per map type: the file name up to its first digit (maze, random, room, ...).
-        kind = lambda scen: re.match(r"[^0-9]*", os.path.basename(scen)).group(0)
+        # One table per map type: the file name up to its first digit (maze, random, room, ...), or
+        # the folder it is in (dao, maze, room, street, ... of data/maps/movingai).
+        if a.type_by == "folder":
+            kind = lambda scen: os.path.basename(os.path.dirname(scen))
+        else:
+            kind = lambda scen: re.match(r"[^0-9]*", os.path.basename(scen)).group(0)
         for t in sorted({kind(p[0]) for p in pairs}):
             print(f"\n{t}:")
             table(variants, results, [p for p in pairs if kind(p[0]) == t])
@@ -158,8 +168,8 @@ def main():
 
 def table(variants, results, pairs):
     first = variants[0][0]
-    print(f"| variant | solved | mean gap % | worst gap % | mean time ms | vs {first}: better/equal/worse | Wilcoxon p |")
-    print("|---|---|---|---|---|---|---|")
+    print(f"| variant | solved | mean gap % | worst gap % | mean time ms | slowest ms | vs {first}: better/equal/worse | Wilcoxon p |")
+    print("|---|---|---|---|---|---|---|---|")
     for name, _ in variants:
         gaps = [gap(results[(name,) + p]) for p in pairs]
         solved = [g for g in gaps if g is not None]
@@ -173,7 +183,7 @@ def table(variants, results, pairs):
             diffs = [(g if g is not None else 1.0) - (b if b is not None else 1.0) for g, b in zip(gaps, base)]
             cmp = f"{sum(d < -1e-12 for d in diffs)}/{sum(abs(d) <= 1e-12 for d in diffs)}/{sum(d > 1e-12 for d in diffs)}"
             pval = f"{wilcoxon(diffs):.3g}"
-        print(f"| {name} | {len(solved)}/{len(pairs)} | {mean:.3f} | {worst:.2f} | {sum(times) / len(times):.0f} | {cmp} | {pval} |")
+        print(f"| {name} | {len(solved)}/{len(pairs)} | {mean:.3f} | {worst:.2f} | {sum(times) / len(times):.0f} | {max(times):.0f} | {cmp} | {pval} |")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Tunes a recommended pipeline with irace on generated training maps, never on the bundled ones:
+#   tools/irace/tune-preset.sh robust|terrain TUNING_DIR [IRACE_OPTIONS...]
+# robust, the 2D preset: `aco_mapgen --benchmark` maps of seed TUNE_SEED (default 4242; the
+# bundled ones are seed 1), every family at 64 cells a side and more (random, room, maze: 64 and
+# 512; cave and hall: 256 and 512), scenarios 9, 14 and 19 of each (the middle and the long half).
+# terrain, the height-map preset: aco_terraingen hills of 40, 64, 100 and 128 cells a side (three
+# seeds each from TUNE_SEED), corner to corner both ways.
+# Both search presets/common.params (terrain adds presets/terrain.params) on top of
+# presets/fixed.ini, with acoplan --irace-cost gap-penalised (a run costs its gap g in % plus g
+# squared, so the worst runs count) and irace's t-test, which races on those costs (its default
+# Friedman test ranks them, and a rank cannot tell a 5 % gap from a 0.5 % one).
+# Leaves in TUNING_DIR what run.sh does (irace.log, irace.Rdata, best-options.txt), the maps and
+# instances.txt. ACOPLAN names the acoplan to tune (run.sh); give it an installed copy
+# (cmake --install build/release --prefix DIR) to go on building the tree while irace runs.
+# docs/learning-findings.md has the runs and their results, e.g.
+#   tools/irace/tune-preset.sh robust /tmp/tune-robust --max-experiments 5000 --parallel 2 --seed 1
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+usage="usage: $(basename "$0") robust|terrain TUNING_DIR [IRACE_OPTIONS...]"
+[ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
+preset="$1"
+dir="$2"
+shift 2
+mkdir -p "$dir/maps"
+dir="$(cd "$dir" && pwd)"
+seed="${TUNE_SEED:-4242}"
+acoplan="${ACOPLAN:-$root/build/release/hosts/acoplan/acoplan}"
+: > "$dir/instances.txt"
+case "$preset" in
+  robust)
+    [ -e "$dir/maps/hall512-64-s$((seed + 1)).map.scen" ] ||
+      "$root/build/release/tools/aco_mapgen" --benchmark "$dir/maps" "$seed" > "$dir/maps.log"
+    for scen in "$dir"/maps/*.map.scen; do
+      [[ "$(basename "$scen")" =~ ^[a-z]+32- ]] && continue  # the 32x32 maps: every pipeline solves them
+      for index in 9 14 19; do echo "$scen --scen-index $index" >> "$dir/instances.txt"; done
+    done
+    cp "$here/presets/common.params" "$dir/search.params" ;;
+  terrain)
+    for size in 40 64 100 128; do
+      for s in 0 1 2; do
+        terrain="$dir/maps/hills$size-s$((seed + s)).asc"
+        [ -e "$terrain" ] || "$root/build/release/tools/aco_terraingen" --width "$size" --height "$size" \
+          --seed "$((seed + s))" --hills "$((size / 3))" --out "$terrain" > /dev/null
+        # A Moving AI scenario file for the terrain (acoplan's --scen reads its map): both
+        # diagonals, each with A*'s length on the terrain's graph.
+        {
+          echo "version 1"
+          last=$((size - 1))
+          for problem in "0 0 $last $last" "0 $last $last 0"; do
+            read -r sx sy gx gy <<< "$problem"
+            length="$("$acoplan" --planner astar --map "$terrain" --start "$sx,$sy" --goal "$gx,$gy" --json |
+              /usr/bin/python3 -c 'import json, sys; print(json.load(sys.stdin)["length"])')"
+            printf '0\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$(basename "$terrain")" "$size" "$size" "$sx" "$sy" "$gx" "$gy" "$length"
+          done
+        } > "$terrain.scen"
+        for index in 0 1; do echo "$terrain.scen --scen-index $index" >> "$dir/instances.txt"; done
+      done
+    done
+    cat "$here/presets/common.params" "$here/presets/terrain.params" > "$dir/search.params" ;;
+  *) echo "tune-preset.sh: no search space for preset '$preset' (robust or terrain)" >&2; exit 2 ;;
+esac
+# Copies in TUNING_DIR: the tuning reads nothing of the tree while it runs.
+cp "$here/presets/fixed.ini" "$dir/fixed.ini"
+export ACOPLAN_OPTIONS="--threads 1 --config $dir/fixed.ini --irace-cost gap-penalised"
+export ACOPLAN_TIMEOUT="${ACOPLAN_TIMEOUT:-60}"
+exec "$here/run.sh" --params "$dir/search.params" --forbidden "$here/presets/budget.forbidden" "$dir" \
+  --train-instances-dir / --train-instances-file "$dir/instances.txt" --test-type t-test "$@"

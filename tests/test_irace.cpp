@@ -133,6 +133,14 @@ TEST_CASE("acoplan --irace-cost gap and gap-penalised are the grid path's gap to
   const auto bad = test::acoplan(with(quick, {"--irace", "--irace-cost", "mean"}));
   CHECK(bad.exit_code == 1);
   CHECK_THAT(bad.err, Contains("--irace-cost: 'mean' is not one of length, gap, gap-penalised"));
+  // --irace-effort X adds X times the ants' moves per walk over the optimal path's length.
+  const double effort = run["ant_steps"].get<double>() / run["convergence_walks"].back().get<double>() /
+                        run["optimal_length"].get<double>();
+  REQUIRE(effort > 1.0);
+  CHECK(irace_cost(with(args, {"--irace-cost", "gap", "--irace-effort", "0.5"})) == Approx(gap + 0.5 * effort).epsilon(1e-12));
+  const auto negative = test::acoplan(with(quick, {"--irace", "--irace-effort", "-1"}));
+  CHECK(negative.exit_code == 1);
+  CHECK_THAT(negative.err, Contains("--irace-effort must be finite and >= 0"));
 }
 
 TEST_CASE("acoplan --irace gives an unsolved run the penalty cost and exit status 0 but errors still fail",
@@ -158,13 +166,14 @@ TEST_CASE("acoplan --dump-irace-params lists the colony and every plugin of ever
   std::map<std::string, IraceParameter> by_name;
   for (const auto& p : parameters) by_name[p.name] = p;
 
-  // The colony's table, without the seed (irace passes its own) and the null model (a question
-  // asked of a pipeline, not a setting).
+  // The colony's table, without the seed (irace passes its own), the null model (a question
+  // asked of a pipeline, not a setting) and the time limit (a budget irace would raise).
   CHECK(by_name.count("seed") == 0);
   CHECK(by_name.count("null_model") == 0);
+  CHECK(by_name.count("time_limit") == 0);
   for (const auto& p : parameters) CHECK(p.flag != "--seed ");
   for (const auto& spec : aco::colony_parameters())
-    if (std::string(spec.name) != "seed" && std::string(spec.name) != "null-model") {
+    if (std::string(spec.name) != "seed" && std::string(spec.name) != "null-model" && std::string(spec.name) != "time-limit") {
       std::string name = spec.name;
       std::replace(name.begin(), name.end(), '-', '_');
       REQUIRE(by_name.count(name));

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -293,12 +294,18 @@ class Colony {
     for (EdgeId i = 0; i < degree; ++i) eta_[first + i] = static_cast<float>(values[i] * scale);
   }
 
-  // The forbidden nodes a deadlock policy added or took back, into every thread's marks.
+  // The forbidden nodes a deadlock policy added or took back, into every thread's marks. Most
+  // iterations change none: equal blocks are skipped at memcmp's speed.
   void publish_forbidden() {
-    for (std::size_t n = 0; n < forbidden_.size(); ++n) {
-      if (forbidden_[n] == known_forbidden_[n]) continue;
-      known_forbidden_[n] = forbidden_[n];
-      for (Scratch& scratch : *scratch_) scratch.forbid(static_cast<NodeId>(n), forbidden_[n] != 0);
+    constexpr std::size_t kBlock = 4096;
+    for (std::size_t first = 0; first < forbidden_.size(); first += kBlock) {
+      const std::size_t last = std::min(forbidden_.size(), first + kBlock);
+      if (std::memcmp(forbidden_.data() + first, known_forbidden_.data() + first, last - first) == 0) continue;
+      for (std::size_t n = first; n < last; ++n) {
+        if (forbidden_[n] == known_forbidden_[n]) continue;
+        known_forbidden_[n] = forbidden_[n];
+        for (Scratch& scratch : *scratch_) scratch.forbid(static_cast<NodeId>(n), forbidden_[n] != 0);
+      }
     }
   }
 

@@ -81,9 +81,11 @@ bool WalkShortener::straight_segment(NodeId from, NodeId to, std::vector<NodeId>
       }
     }
     if (best < 0 || static_cast<int>(segment.size()) >= limit) return false;
-    const EdgeId e = g_.edge_by_move(node, all[best].dx, all[best].dy);
-    if (e < 0 || forbidden_[g_.targets[e]]) return false;
-    node = g_.targets[e];
+    // The move exists where the node's mask has it (the graph's move order is the moves' order);
+    // its target is the cell it leads to. No edge id is needed until the walk is rebuilt.
+    if (!(g_.move_mask[node] >> best & 1u)) return false;
+    node += all[best].dy * g_.width + all[best].dx;
+    if (forbidden_[node]) return false;
     at = {at.x + all[best].dx, at.y + all[best].dy};
     segment.push_back(node);
   }

@@ -36,15 +36,24 @@ void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco
 
 // --irace: the mean cost over the runs, an unsolved run counting as kIraceUnsolvedCost, in the
 // shortest text that reads back as the same double (so a length equals --json's length).
-std::string irace_cost(const std::vector<aco::PlanRun>& runs, Request::IraceCost kind) {
-  const auto cost = [kind](const aco::PlanRun& o) {
-    if (!o.solved()) return kIraceUnsolvedCost;
+std::string irace_cost(const std::vector<aco::PlanRun>& runs, Request::IraceCost kind, double effort_weight) {
+  const auto quality = [kind](const aco::PlanRun& o) {
     if (kind == Request::IraceCost::length) return o.length;
     if (!o.optimal_length) throw aco::Error("--irace-cost gap: A* found no path where the colony found one");
     // A path as long as A*'s may differ from it in the last bits (another order of the sums).
     const double gap = std::max(0.0, 100.0 * (o.search.length / *o.optimal_length - 1.0));
     if (gap < 1e-9) return 0.0;
     return kind == Request::IraceCost::gap ? gap : gap * (1.0 + gap);
+  };
+  // The ants' moves per walk over the optimal path's length: about 1 for walks as long as it.
+  const auto effort = [](const aco::PlanRun& o) {
+    const double walks = o.search.walks.empty() ? 0.0 : static_cast<double>(o.search.walks.back());
+    if (walks == 0.0 || !o.optimal_length || *o.optimal_length <= 0.0) return 0.0;
+    return static_cast<double>(o.count("ant_steps")) / walks / *o.optimal_length;
+  };
+  const auto cost = [&](const aco::PlanRun& o) {
+    if (!o.solved()) return kIraceUnsolvedCost;
+    return effort_weight > 0.0 ? quality(o) + effort_weight * effort(o) : quality(o);
   };
   const double total =
       std::accumulate(runs.begin(), runs.end(), 0.0, [&](double sum, const aco::PlanRun& o) { return sum + cost(o); });
@@ -76,7 +85,7 @@ int plan(const acoplan::Request& r, std::ostream& out) {
 
   if (r.irace) {
     // irace reads the last line of stdout; an unsolved run has its cost, so it is no failure.
-    out << irace_cost(runs, r.irace_cost) << "\n";
+    out << irace_cost(runs, r.irace_cost, r.irace_effort) << "\n";
   } else if (runs.size() == 1) {
     out << (r.json ? aco::to_json(report, runs[0]) + "\n" : aco::summary(report, runs[0]));
   } else {

@@ -3,6 +3,7 @@
 #include <boost/program_options.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <sstream>
 
 #include "aco/error.hpp"
@@ -222,6 +223,9 @@ Request parse_command_line(int argc, const char* const* argv) {
       ("irace-cost", po::value<std::string>()->value_name("KIND")->default_value("length"),
        "with --irace: length = the final path's length; gap = the grid path's gap to A*'s optimum in %; "
        "gap-penalised = that gap g plus its square, g (1 + g), which punishes the worst runs")
+      ("irace-effort", po::value<double>()->value_name("X")->default_value(0.0),
+       "with --irace: add X times the colony's effort, its ant moves per walk over the optimal path's length "
+       "(about 1 for walks as long as the optimum): effort stands for time, deterministically")
       ("dump-irace-params", po::value<std::string>()->value_name("FILE"),
        "write irace's parameter file (colony and plugin parameters) to FILE (- = stdout) and exit")
       ("irace-slots", po::value<std::string>()->value_name("SLOTS"),
@@ -371,6 +375,9 @@ Request parse_command_line(int argc, const char* const* argv) {
     else if (cost == "gap") r.irace_cost = Request::IraceCost::gap;
     else if (cost == "gap-penalised") r.irace_cost = Request::IraceCost::gap_penalised;
     else throw aco::Error("--irace-cost: '" + cost + "' is not one of length, gap, gap-penalised");
+    r.irace_effort = vm["irace-effort"].as<double>();
+    if (!(r.irace_effort >= 0.0 && std::isfinite(r.irace_effort)))
+      throw aco::Error("--irace-effort must be finite and >= 0");
     if (vm["print-config"].as<bool>()) {
       r.action = Request::Action::print_config;
       r.config = config_file(r);

@@ -34,6 +34,9 @@ struct Request {
   // a configuration is judged by its worst runs too, not by its mean alone.
   enum class IraceCost { length, gap, gap_penalised };
   IraceCost irace_cost = IraceCost::length;
+  // --irace-effort X: X times the ants' moves per walk over the optimal path's length is added to
+  // the cost, so that irace weighs effort (which time follows) against quality, deterministically.
+  double irace_effort = 0.0;
   std::optional<std::uint64_t> max_memory;  // --max-memory in bytes; none: the default limit
 
   aco::ParameterValues host;  // acoplan's own settings: threads, svg-pheromone, repeat

@@ -8,8 +8,11 @@
 # seeds each from TUNE_SEED), corner to corner both ways.
 # Both search presets/common.params (terrain adds presets/terrain.params) on top of
 # presets/fixed.ini, with acoplan --irace-cost gap-penalised (a run costs its gap g in % plus g
-# squared, so the worst runs count) and irace's t-test, which races on those costs (its default
-# Friedman test ranks them, and a rank cannot tell a 5 % gap from a 0.5 % one).
+# squared, so the worst runs count) --irace-effort TUNE_EFFORT (default 0.25 times the ants'
+# moves per walk over the optimal length: time, which the effort follows, counts too, and the
+# preset must also fit its time on maps 16 times larger than the training maps) and irace's
+# t-test, which races on those costs (its default Friedman test ranks them, and a rank cannot
+# tell a 5 % gap from a 0.5 % one).
 # Leaves in TUNING_DIR what run.sh does (irace.log, irace.Rdata, best-options.txt), the maps and
 # instances.txt. ACOPLAN names the acoplan to tune (run.sh); give it an installed copy
 # (cmake --install build/release --prefix DIR) to go on building the tree while irace runs.
@@ -63,7 +66,7 @@ case "$preset" in
 esac
 # Copies in TUNING_DIR: the tuning reads nothing of the tree while it runs.
 cp "$here/presets/fixed.ini" "$dir/fixed.ini"
-export ACOPLAN_OPTIONS="--threads 1 --config $dir/fixed.ini --irace-cost gap-penalised"
+export ACOPLAN_OPTIONS="--threads 1 --config $dir/fixed.ini --irace-cost gap-penalised --irace-effort ${TUNE_EFFORT:-0.25}"
 export ACOPLAN_TIMEOUT="${ACOPLAN_TIMEOUT:-60}"
 exec "$here/run.sh" --params "$dir/search.params" --forbidden "$here/presets/budget.forbidden" "$dir" \
   --train-instances-dir / --train-instances-file "$dir/instances.txt" --test-type t-test "$@"

@@ -7,15 +7,14 @@
 namespace aco {
 
 void WalkScratch::reset(int num_nodes) {
-  if (static_cast<int>(index.size()) == num_nodes) return;
-  index.assign(num_nodes, 0);
-  stamp.assign(num_nodes, 0);
+  if (static_cast<int>(marks.size()) == num_nodes) return;
+  marks.assign(num_nodes, Mark{});
   current = 0;
 }
 
 std::uint32_t WalkScratch::next_stamp() {
   if (++current == 0) {
-    std::fill(stamp.begin(), stamp.end(), 0);
+    for (Mark& m : marks) m.stamp = 0;
     current = 1;
   }
   return current;
@@ -23,7 +22,13 @@ std::uint32_t WalkScratch::next_stamp() {
 
 WalkShortener::WalkShortener(const Graph& graph, const std::vector<std::uint8_t>& forbidden, int window)
     : g_(graph), forbidden_(forbidden), window_(window) {
-  for (const Move& m : moves(graph.options.neighbourhood)) inverse_length_.push_back(1.0 / std::hypot(m.dx, m.dy));
+  const std::span<const Move> all = moves(graph.options.neighbourhood);
+  for (std::size_t m = 0; m < all.size(); ++m) {
+    inverse_length_.push_back(1.0 / std::hypot(all[m].dx, all[m].dy));
+    if (std::abs(all[m].dx) <= 1 && std::abs(all[m].dy) <= 1) unit_move_[(all[m].dy + 1) * 3 + all[m].dx + 1] = static_cast<int>(m);
+  }
+  eight_ = graph.options.neighbourhood == Neighbourhood::eight;
+  inverse_diagonal_ = 1.0 / std::hypot(1, 1);
 }
 
 namespace {
@@ -38,8 +43,7 @@ void prefix_costs(const Graph& g, const std::vector<NodeId>& nodes, std::vector<
 void WalkShortener::cut_loops(std::vector<NodeId>& nodes, WalkScratch& s) const {
   const std::uint32_t stamp = s.next_stamp();
   for (std::size_t k = 0; k < nodes.size(); ++k) {
-    s.index[nodes[k]] = static_cast<std::int32_t>(k);
-    s.stamp[nodes[k]] = stamp;
+    s.marks[nodes[k]] = {stamp, static_cast<std::int32_t>(k)};
   }
   prefix_costs(g_, nodes, s.prefix);
   s.segment.clear();
@@ -50,8 +54,9 @@ void WalkShortener::cut_loops(std::vector<NodeId>& nodes, WalkScratch& s) const 
     std::size_t next = k + 1;
     for (EdgeId e = g_.edges_begin(nodes[k]); e < g_.edges_end(nodes[k]); ++e) {
       const NodeId t = g_.targets[e];
-      if (s.stamp[t] != stamp) continue;
-      const auto j = static_cast<std::size_t>(s.index[t]);
+      const WalkScratch::Mark mark = s.marks[t];
+      if (mark.stamp != stamp) continue;
+      const auto j = static_cast<std::size_t>(mark.index);
       if (j > next && g_.costs[e] < s.prefix[j] - s.prefix[k]) next = j;
     }
     k = next;
@@ -71,13 +76,23 @@ bool WalkShortener::straight_segment(NodeId from, NodeId to, std::vector<NodeId>
     // The move best aligned with the direction to the end (largest cosine); if the graph has
     // no such edge here, or its cell is forbidden, the straight segment is blocked.
     const int dx = end.x - at.x, dy = end.y - at.y;
-    double best_alignment = 0.0;
     int best = -1;
-    for (std::size_t m = 0; m < all.size(); ++m) {
-      const double alignment = (all[m].dx * dx + all[m].dy * dy) * inverse_length_[m];
-      if (alignment > best_alignment) {
-        best_alignment = alignment;
-        best = static_cast<int>(m);
+    if (eight_) {
+      // The loop below for the 8-neighbourhood, in closed form and the same arithmetic: the
+      // diagonal towards the end when its cosine, (|dx| + |dy|) / sqrt 2, beats the larger axis's
+      // (a tie goes to the straight move, first in move order).
+      const int ax = std::abs(dx), ay = std::abs(dy);
+      const int sx = (dx > 0) - (dx < 0), sy = (dy > 0) - (dy < 0);
+      const bool diagonal = (ax + ay) * inverse_diagonal_ > std::max(ax, ay);
+      best = diagonal ? unit_move_[(sy + 1) * 3 + sx + 1] : ax >= ay ? unit_move_[4 + sx] : unit_move_[(sy + 1) * 3 + 1];
+    } else {
+      double best_alignment = 0.0;
+      for (std::size_t m = 0; m < all.size(); ++m) {
+        const double alignment = (all[m].dx * dx + all[m].dy * dy) * inverse_length_[m];
+        if (alignment > best_alignment) {
+          best_alignment = alignment;
+          best = static_cast<int>(m);
+        }
       }
     }
     if (best < 0 || static_cast<int>(segment.size()) >= limit) return false;
@@ -134,13 +149,13 @@ void WalkShortener::straighten(std::vector<NodeId>& nodes, WalkScratch& s) const
   const std::uint32_t stamp = s.next_stamp();
   nodes.clear();
   for (NodeId n : out) {
-    const auto at = static_cast<std::size_t>(s.index[n]);
-    if (s.stamp[n] == stamp && at < nodes.size() && nodes[at] == n) {
+    const WalkScratch::Mark mark = s.marks[n];
+    const auto at = static_cast<std::size_t>(mark.index);
+    if (mark.stamp == stamp && at < nodes.size() && nodes[at] == n) {
       nodes.resize(at + 1);
       continue;
     }
-    s.stamp[n] = stamp;
-    s.index[n] = static_cast<std::int32_t>(nodes.size());
+    s.marks[n] = {stamp, static_cast<std::int32_t>(nodes.size())};
     nodes.push_back(n);
   }
 }

@@ -12,8 +12,13 @@ namespace aco {
 
 // Per-thread buffers, reused from walk to walk.
 struct WalkScratch {
-  std::vector<std::int32_t> index;   // per node: position on the walk, valid where stamp matches
-  std::vector<std::uint32_t> stamp;  // per node
+  // Per node: its position on the walk, valid where the stamp is the current one. One entry of
+  // two words, so a lookup is one cache line, not one in each of two arrays.
+  struct Mark {
+    std::uint32_t stamp = 0;
+    std::int32_t index = 0;
+  };
+  std::vector<Mark> marks;
   std::uint32_t current = 0;
   std::vector<NodeId> nodes;
   std::vector<NodeId> segment;
@@ -46,6 +51,9 @@ class WalkShortener {
   const std::vector<std::uint8_t>& forbidden_;
   int window_;
   std::vector<double> inverse_length_;  // per move of the neighbourhood
+  int unit_move_[9] = {-1, -1, -1, -1, -1, -1, -1, -1, -1};  // the move (dx, dy) in [-1, 1]^2, by (dy + 1) * 3 + dx + 1
+  bool eight_ = false;  // the 8-neighbourhood: straight_segment's closed form
+  double inverse_diagonal_ = 0.0;  // inverse_length_ of a diagonal move
 };
 
 }  // namespace aco

@@ -42,6 +42,7 @@ ACOPLAN = BUILD / "hosts/acoplan/acoplan"
 ACOBENCH = BUILD / "hosts/acobench/acobench"
 ACOSIM = BUILD / "hosts/acosim/acosim"
 ACO_BENCH = BUILD / "bench/aco_bench"
+ACO_MAPGEN = BUILD / "tools/aco_mapgen"
 README = Path("README.md")
 RESULTS = Path("docs/results.md")
 IMAGES = Path("docs/images")
@@ -476,7 +477,7 @@ def default_pipeline(run: Run):
 def chosen_plots(name: str, plots: list[str]) -> list[str]:
     def first(prefix: str, count: int) -> list[str]:
         return [p for p in plots if p.startswith(prefix)][:count]
-    if name in ("movingai", "generated", "terrain"):
+    if name in ("movingai", "generated", "terrain", "anytime"):
         return first("ecdf-", 2)  # hundreds of problems: the fixed-target ECDFs over all of them
     if name == "dwa":
         return first("box-", 2) + first("ablation", 1)
@@ -490,6 +491,8 @@ def experiment(name: str):
         db = Path("build/results") / f"{name}.db"
         out = Path("build/results") / name
         db.parent.mkdir(parents=True, exist_ok=True)
+        if name == "anytime" and not (ROOT / "build/maps/large/cave2048-16-s1.map").exists():
+            run.tool(ACO_MAPGEN, "--large", "build/maps/large", "1", "cave")  # its 2048x2048 problem (4 MB: not bundled)
         ran = run.tool(ACOBENCH, "run", f"data/experiments/{name}.yaml", "--db", db)
         # A resumed database keeps the trials an earlier run measured, on its machine and load.
         resumed = re.search(r"(\d+) trials, (\d+) already in", ran)
@@ -503,7 +506,8 @@ def experiment(name: str):
         keep = {"movingai": ("Summary by problem set", "Gap by difficulty bucket"),
                 "terrain": ("Summary by problem set", "Gap by difficulty bucket"),
                 "generated": ("Summary by problem set", "Gap by difficulty bucket"),
-                "dwa": ("Simulations", "Ablation path")}.get(name)
+                "dwa": ("Simulations", "Ablation path"),
+                "anytime": ("Summary by problem set", "Does the pheromone matter?")}.get(name)
         parts = re.split(r"^(?=## )", report, flags=re.M)[1:]
         if keep:
             parts = [p for p in parts if p.removeprefix("## ").startswith(keep)]
@@ -529,6 +533,7 @@ def experiment(name: str):
 EXPERIMENTS = {  # on the shared 2-core machine, with a fresh database
     "paper000": "30 s", "paper001": "10 s", "paper002": "10 s", "paper003": "30 s", "paper004": "15 s",
     "ablation": "3.5 min", "movingai": "15-30 min", "terrain": "1-2 min", "generated": "2-4 min", "dwa": "6 min",
+    "anytime": "10-15 min",
 }
 for _name, _estimate in EXPERIMENTS.items():
     section(_name, _estimate, f"data/experiments/{_name}.yaml into docs/results.md, with its report's plots",

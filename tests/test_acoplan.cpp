@@ -522,7 +522,7 @@ TEST_CASE("the shipped presets load and plan with the pipeline they document", "
   const json terrain = run_json({"--config", (test::data_dir() / "presets/terrain.ini").string(), "--map", hills,
                                  "--start", "0,0", "--goal", "39,39"});
   CHECK(terrain["solved"].get<bool>());
-  CHECK(terrain["config"]["update"] == "max_min");
+  CHECK(terrain["config"]["search"] == "bidirectional");
   CHECK(terrain["length"].get<double>() >= terrain["optimal_length"].get<double>() - 1e-9);
 }
 

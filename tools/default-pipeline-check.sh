@@ -4,7 +4,7 @@
 # be equal), against the classic Ant System setting that was the default before
 # (--preset ant-system), and against its null models (docs/learning.md): the same walks with the
 # pheromone ignored (--null-model no-learning) and as independent restarts (--null-model
-# restarts; the slowest, since a restart walk has no walk limit). Fresh maps: aco_mapgen --benchmark SEED (random, room and maze maps,
+# restarts; the slowest, since a restart walk has no walk limit). Fresh maps: aco_mapgen --benchmark SEED (random, room, maze, cave and hall maps,
 # 32x32 to 512x512; scenarios first, middle and last of each map) and aco_terraingen terrains
 # (20x20 to 128x128, corner to corner). Gap = grid path / A* optimum on the same graph - 1.
 #   tools/default-pipeline-check.sh [SEED] [OUTDIR]      (default seed 7321; 2-3 minutes on 2 cores, half of it the restart twin)
@@ -62,5 +62,5 @@ for kind, preset in (("2d", "robust"), ("terrain", "terrain")):
                 "no-learning": "no pipeline named, --null-model no-learning", "restarts": "no pipeline named, --null-model restarts"}[run]
         mean = f"{100 * sum(gaps) / len(gaps):.2f} %" if gaps else "-"
         worst = f"{100 * max(gaps):.2f} %" if gaps else "-"
-        print(f"| {'2D (random, room, maze)' if kind == '2d' else 'terrain'} | {name} | {len(rs)} | {len(gaps)} | {mean} | {worst} |")
+        print(f"| {'2D (random, room, maze, cave, hall)' if kind == '2d' else 'terrain'} | {name} | {len(rs)} | {len(gaps)} | {mean} | {worst} |")
 PY

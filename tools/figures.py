@@ -42,7 +42,6 @@ ACOPLAN = BUILD / "hosts/acoplan/acoplan"
 ACOBENCH = BUILD / "hosts/acobench/acobench"
 ACOSIM = BUILD / "hosts/acosim/acosim"
 ACO_BENCH = BUILD / "bench/aco_bench"
-ACO_MAPGEN = BUILD / "tools/aco_mapgen"
 README = Path("README.md")
 RESULTS = Path("docs/results.md")
 IMAGES = Path("docs/images")
@@ -491,8 +490,6 @@ def experiment(name: str):
         db = Path("build/results") / f"{name}.db"
         out = Path("build/results") / name
         db.parent.mkdir(parents=True, exist_ok=True)
-        if name == "anytime" and not (ROOT / "build/maps/large/cave2048-16-s1.map").exists():
-            run.tool(ACO_MAPGEN, "--large", "build/maps/large", "1", "cave")  # its 2048x2048 problem (4 MB: not bundled)
         ran = run.tool(ACOBENCH, "run", f"data/experiments/{name}.yaml", "--db", db)
         # A resumed database keeps the trials an earlier run measured, on its machine and load.
         resumed = re.search(r"(\d+) trials, (\d+) already in", ran)

@@ -104,3 +104,16 @@ TEST_CASE("a text parameter takes any string and its table field reads and write
   CHECK(table.read(values).object == "pkg.mod:Other");
   CHECK(std::get<std::string>(table.write(Settings{}).all().at("class")) == "m:C");
 }
+
+TEST_CASE("a settings table's choice refuses a name it does not list", "[parameters]") {
+  struct Search {
+    bool bidirectional = false;
+  };
+  const aco::SettingsTable<Search> table(
+      {aco::choice("search", &Search::bidirectional, {"single", "bidirectional"}, {false, true}, "how")});
+  aco::ParameterValues values;
+  values.set("search", std::string("bidirectional"));
+  CHECK(table.read(values).bidirectional);
+  values.set("search", std::string("both"));
+  REQUIRE_THROWS_WITH(table.read(values), Contains("search: 'both' is not one of single,bidirectional"));
+}

@@ -171,14 +171,17 @@ std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem
   return {chosen, resolve(table, keys, key_prefix + kMapSlot + ".")};
 }
 
+std::unique_ptr<Map> load_problem_map(const ProblemSpec& spec, PluginRegistry* registry) {
+  const std::filesystem::path file = spec.map.empty() && !spec.scen.empty() ? scenario_map_file(spec.scen) : spec.map;
+  if (file.empty()) throw Error("a problem needs a map with start and goal, or a scenario");
+  if (registry) return load_map(file, spec.terrain, *registry, spec.map_format, spec.map_parameters);
+  if (!spec.map_format.empty() && !find_builtin_map_format(spec.map_format))
+    throw Error(file.string() + ": map format '" + spec.map_format + "' is a map plugin, and no plugin registry was given");
+  if (const auto* builtin = find_builtin_map_format(spec.map_format)) return builtin->read(file, spec.terrain);
+  return load_map(file, spec.terrain);
+}
+
 LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry) {
-  const auto read = [&](const std::filesystem::path& file) {
-    if (registry) return load_map(file, spec.terrain, *registry, spec.map_format, spec.map_parameters);
-    if (!spec.map_format.empty() && !find_builtin_map_format(spec.map_format))
-      throw Error(file.string() + ": map format '" + spec.map_format + "' is a map plugin, and no plugin registry was given");
-    if (const auto* builtin = find_builtin_map_format(spec.map_format)) return builtin->read(file, spec.terrain);
-    return load_map(file, spec.terrain);
-  };
   LoadedProblem p;
   if (!spec.scen.empty()) {
     const auto scenarios = load_scenarios(spec.scen);
@@ -186,7 +189,7 @@ LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry) {
       throw Error("scen-index " + std::to_string(spec.scen_index) + " is out of range: " + spec.scen.string() + " has " +
                   std::to_string(scenarios.size()) + " scenarios");
     const Scenario& s = scenarios[spec.scen_index];
-    p.map = read(spec.map.empty() ? scenario_map_file(spec.scen) : spec.map);
+    p.map = load_problem_map(spec, registry);
     if (p.map->width() != s.width || p.map->height() != s.height)
       throw Error(spec.scen.string() + ": scenario " + std::to_string(spec.scen_index) + " is for a " +
                   std::to_string(s.width) + "x" + std::to_string(s.height) + " map, but " + p.map->name() + " is " +
@@ -195,13 +198,72 @@ LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry) {
     p.goal = s.goal;
   } else {
     if (spec.map.empty() || !spec.start || !spec.goal) throw Error("a problem needs a map with start and goal, or a scenario");
-    p.map = read(spec.map);
+    p.map = load_problem_map(spec, registry);
     p.start = *spec.start;
     p.goal = *spec.goal;
   }
   check_cell(*p.map, p.start, "start");
   check_cell(*p.map, p.goal, "goal");
   return p;
+}
+
+namespace {
+
+// The problem keys, sorted from the others by the caller: map.NAME ones in `map_keys` without "map.".
+ProblemSpec resolve_problem_keys(const Keys& problem, const Keys& map_keys, PluginRegistry& registry,
+                                 const std::string& key_prefix) {
+  ProblemSpec p;
+  if (problem.count("map")) p.map = problem.at("map");
+  if (problem.count("scen")) p.scen = problem.at("scen");
+  if (problem.count("start")) p.start = parse_cell(problem.at("start"), key_prefix + "start");
+  if (problem.count("goal")) p.goal = parse_cell(problem.at("goal"), key_prefix + "goal");
+  if (!p.scen.empty() && (p.start || p.goal))
+    throw KeyError(key_prefix + "scen", "give either " + key_prefix + "scen or " + key_prefix + "start/" + key_prefix +
+                                            "goal, not both");
+  if (problem.count("scen-index") && p.scen.empty())
+    throw KeyError(key_prefix + "scen-index", key_prefix + "scen-index needs " + key_prefix + "scen");
+  // The map file: --map, or the scenario's (a scenario file misnamed is load_problem()'s to say).
+  const std::filesystem::path map_file =
+      !p.map.empty() ? p.map : p.scen.extension() == ".scen" ? scenario_map_file(p.scen) : std::filesystem::path();
+  if (!map_file.empty()) {
+    const std::string format = problem.count("map-format") ? problem.at("map-format") : "";
+    std::tie(p.map_format, p.map_parameters) = resolve_map_format(map_file, format, map_keys, registry, key_prefix);
+  } else if (problem.count("map-format") || !map_keys.empty()) {
+    const std::string key = problem.count("map-format") ? "map-format" : kMapSlot + ("." + map_keys.begin()->first);
+    throw KeyError(key_prefix + key, key_prefix + key + " needs a map (" + key_prefix + "map or " + key_prefix + "scen)");
+  }
+  Keys numbers;
+  for (const auto& [key, value] : problem)
+    if (in_table(problem_parameters(), key)) numbers[key] = value;
+  const ParameterValues problem_values = resolve(problem_parameters(), numbers, key_prefix);
+  p.scen_index = static_cast<int>(problem_values.integer("scen-index"));
+  p.terrain = terrain_table().read(problem_values);
+  return p;
+}
+
+bool is_problem_key(const std::string& key) {
+  return std::find(kProblemTexts.begin(), kProblemTexts.end(), key) != kProblemTexts.end() ||
+         in_table(problem_parameters(), key);
+}
+
+}  // namespace
+
+ProblemSpec resolve_problem(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix) {
+  Keys problem, map_keys;
+  for (const auto& [key, value] : keys) {
+    if (key.starts_with(std::string(kMapSlot) + ".")) {
+      map_keys[key.substr(std::string(kMapSlot).size() + 1)] = value;
+    } else if (is_problem_key(key)) {
+      problem[key] = value;
+    } else {
+      std::vector<std::string> known(kProblemTexts.begin(), kProblemTexts.end());
+      for (const auto& p : problem_parameters()) known.push_back(p.name);
+      std::string message = "'" + key_prefix + key + "' is not a key of a problem";
+      if (const auto near = nearest(key, known); !near.empty()) message += "; did you mean '" + key_prefix + near + "'?";
+      throw KeyError(key_prefix + key, message);
+    }
+  }
+  return resolve_problem_keys(problem, map_keys, registry, key_prefix);
 }
 
 RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix) {
@@ -242,8 +304,7 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
       } else {
         unknown(key, "unknown key '" + key_prefix + key + "'");
       }
-    } else if (std::find(kProblemTexts.begin(), kProblemTexts.end(), key) != kProblemTexts.end() ||
-               in_table(problem_parameters(), key)) {
+    } else if (is_problem_key(key)) {
       problem[key] = value;
     } else if (in_table(graph_parameters(), key)) {
       graph[key] = value;
@@ -254,32 +315,7 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
     }
   }
 
-  ProblemSpec& p = spec.problem;
-  if (problem.count("map")) p.map = problem.at("map");
-  if (problem.count("scen")) p.scen = problem.at("scen");
-  if (problem.count("start")) p.start = parse_cell(problem.at("start"), key_prefix + "start");
-  if (problem.count("goal")) p.goal = parse_cell(problem.at("goal"), key_prefix + "goal");
-  if (!p.scen.empty() && (p.start || p.goal))
-    throw KeyError(key_prefix + "scen", "give either " + key_prefix + "scen or " + key_prefix + "start/" + key_prefix +
-                                            "goal, not both");
-  if (problem.count("scen-index") && p.scen.empty())
-    throw KeyError(key_prefix + "scen-index", key_prefix + "scen-index needs " + key_prefix + "scen");
-  // The map file: --map, or the scenario's (a scenario file misnamed is load_problem()'s to say).
-  const std::filesystem::path map_file =
-      !p.map.empty() ? p.map : p.scen.extension() == ".scen" ? scenario_map_file(p.scen) : std::filesystem::path();
-  if (!map_file.empty()) {
-    const std::string format = problem.count("map-format") ? problem.at("map-format") : "";
-    std::tie(p.map_format, p.map_parameters) = resolve_map_format(map_file, format, map_keys, registry, key_prefix);
-  } else if (problem.count("map-format") || !map_keys.empty()) {
-    const std::string key = problem.count("map-format") ? "map-format" : kMapSlot + ("." + map_keys.begin()->first);
-    throw KeyError(key_prefix + key, key_prefix + key + " needs a map (" + key_prefix + "map or " + key_prefix + "scen)");
-  }
-  Keys numbers;
-  for (const auto& [key, value] : problem)
-    if (in_table(problem_parameters(), key)) numbers[key] = value;
-  const ParameterValues problem_values = resolve(problem_parameters(), numbers, key_prefix);
-  p.scen_index = static_cast<int>(problem_values.integer("scen-index"));
-  p.terrain = terrain_table().read(problem_values);
+  spec.problem = resolve_problem_keys(problem, map_keys, registry, key_prefix);
   spec.graph = graph_table().read(resolve(graph_parameters(), graph, key_prefix));
   spec.colony = colony_settings(resolve(colony_parameters(), colony, key_prefix));
   spec.planner_parameters = resolve(planner_parameters(spec.planner), planner, key_prefix + spec.planner + ".");

@@ -70,9 +70,7 @@ std::unique_ptr<aco::Map> make_map(const ArrayMap& source, const aco::TerrainOpt
 py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain_keys) {
   aco::Keys keys = terrain_keys;
   keys["map"] = file.string();
-  keys["start"] = keys["goal"] = "0,0";  // not checked: load_map() reads the file only
-  const aco::RunSpec run = aco::resolve_run(keys, registry(), "--");
-  const auto map = aco::load_map(file, run.problem.terrain, registry(), run.problem.map_format, run.problem.map_parameters);
+  const auto map = aco::load_problem_map(aco::resolve_problem(keys, registry(), "--"), &registry());
   const py::ssize_t w = map->width(), h = map->height();
   if (const auto* terrain = dynamic_cast<const aco::TerrainMap*>(map.get())) {
     py::array_t<double> heights({h, w});

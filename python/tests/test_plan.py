@@ -102,6 +102,8 @@ def test_results_do_not_depend_on_the_thread_count():
     (lambda: aco.plan(SOURCE / "nowhere.map", (0, 0), (1, 1)), "nowhere.map"),
     (lambda: aco.plan(MAP1, (0, 0), (19, 19), scen="x"), "'scen' is an argument of plan()"),
     (lambda: aco.plan(MAP1, (0, 0), "19,19"), "goal must be a cell (x, y)"),
+    (lambda: aco.Map.load(MAP1, ants=5), "'--ants' is not a key of a problem"),
+    (lambda: aco.Map.load(MAP1, max_slop=5), "did you mean '--max-slope'?"),
 ])
 def test_mistakes_raise_aco_error_with_the_command_lines_message(call, message):
     with pytest.raises(aco.Error) as error:

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/map.hpp"
 #include "aco/svg.hpp"
 #include "aco/studies/statistics.hpp"
 
@@ -536,6 +537,45 @@ std::string line_chart_svg(const LineChart& chart) {
   }
   out << "</g>\n</svg>\n";
   return out.str();
+}
+
+std::string map_paths_svg(const aco::Map& map, const std::vector<MapPath>& paths) {
+  const int w = map.width(), h = map.height();
+  const double scale = std::max(2.0, std::min(24.0, 480.0 / std::max(w, h)));
+  const double cell = w > 1 ? map.position({1, 0}).x() - map.position({0, 0}).x() : 1.0;
+  // The legend beside the map, one row per path: as wide as its longest entry and as tall as its
+  // rows (by aco::text_width's estimate), so none is cut off.
+  double longest = 0.0;
+  for (const MapPath& path : paths) longest = std::max(longest, aco::text_width(path.label, 12));
+  const double map_w = w * scale, map_h = h * scale, legend_x = map_w + 8;
+  const double width = legend_x + 28 + longest + 8, height = std::max(map_h, 16.0 * double(paths.size()) + 4);
+  std::ostringstream svg;
+  svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height << "\" font-family=\"sans-serif\" font-size=\"12\"><rect width=\"" << map_w
+      << "\" height=\"" << map_h << "\" fill=\"#fff\" stroke=\"#999\"/><g fill=\"#333\" shape-rendering=\"crispEdges\">";
+  // Blocked cells in horizontal runs, with crisp edges: no seams between rows.
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w;) {
+      int end = x;
+      while (end < w && !map.passable({end, y})) ++end;
+      if (end > x)
+        svg << "<rect x=\"" << x * scale << "\" y=\"" << y * scale << "\" width=\"" << (end - x) * scale << "\" height=\"" << scale
+            << "\"/>";
+      x = std::max(end, x + 1);
+    }
+  svg << "</g>";
+  for (std::size_t row = 0; row < paths.size(); ++row) {
+    const MapPath& path = paths[row];
+    svg << "<polyline fill=\"none\" " << stroke_attributes(path.style) << " stroke-width=\"" << std::max(1.0, scale / 5)
+        << "\" stroke-opacity=\"0.8\" points=\"";
+    for (const auto& point : path.points) svg << (point[0] / cell + 0.5) * scale << "," << (point[1] / cell + 0.5) * scale << " ";
+    const double y = 14 + 16 * double(row);
+    svg << "\"/><line x1=\"" << legend_x << "\" x2=\"" << legend_x + 22 << "\" y1=\"" << y - 4 << "\" y2=\"" << y - 4 << "\" "
+        << stroke_attributes(path.style) << " stroke-width=\"2\"/><text x=\"" << legend_x + 28 << "\" y=\"" << y << "\" fill=\""
+        << series_style(path.style).colour << "\">" << aco::xml_escape(path.label) << "</text>";
+  }
+  svg << "</svg>";
+  return svg.str();
 }
 
 }  // namespace acobench

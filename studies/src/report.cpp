@@ -16,12 +16,10 @@
 #include <variant>
 
 #include "aco/error.hpp"
-#include "aco/map_formats.hpp"
-#include "aco/map_io.hpp"
 #include "aco/plugin_record.hpp"
 #include "aco/run_spec.hpp"
-#include "aco/svg.hpp"
 #include "aco/studies/plots.hpp"
+#include "aco/studies/report_document.hpp"
 #include "aco/studies/results_db.hpp"
 #include "aco/studies/statistics.hpp"
 
@@ -65,7 +63,7 @@ struct Analysis {
   std::vector<double> average_rank;          // per config
   std::vector<std::string> ablation_path;
   std::filesystem::path experiment_dir;  // the maps are relative to it
-  std::vector<std::filesystem::path> plugin_dirs;  // where map plugins are looked for
+  aco::PluginRegistry* registry = nullptr;  // the map plugins
   std::vector<int> buckets;              // per problem: Moving AI bucket, or -1
   std::size_t unmeasured = 0;            // runs stored without anytime curves (by an older acobench)
   std::string host_version, host_build;  // of the acobench that ran the trials ("" if not recorded)
@@ -190,13 +188,6 @@ std::vector<Column> columns() {
   };
 }
 
-// A table of the report's summaries, written once and rendered as Markdown and as HTML.
-struct Table {
-  std::string title;
-  std::string intro;
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-};
 
 // Problems from one scenario file share a set name: "arena#40" belongs to "arena".
 std::string problem_set(const std::string& problem) { return problem.substr(0, problem.find('#')); }
@@ -602,30 +593,27 @@ std::vector<Table> anytime_tables(const Analysis& a) {
   return {t};
 }
 
-// The report's plots: each drawn inline in report.html and also written alone as
-// plots/<name>.svg, so that a page (the project's docs/results.md) can show one as an image.
-class Plots {
+// The report's figures: each drawn inline in report.html and also written alone as
+// plots/<file>, so that a page (the project's docs/results.md) can show one as an image.
+class FigureFiles {
  public:
-  // Records the plot under a file name made of `name` (characters unsafe in a file name become
-  // '-', a name already taken gets -2, -3, ...); returns its SVG, for the page.
-  const std::string& add(const std::string& name, std::string svg) {
+  // A figure whose file name is made of `name` (characters unsafe in a file name become '-', a
+  // name already taken gets -2, -3, ...).
+  Figure add(const std::string& name, std::string svg) {
     std::string safe;
     for (const char c : name) safe += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' ? c : '-';
     std::string unique = safe;
     for (int n = 2; !taken_.insert(unique).second; ++n) unique = safe + "-" + std::to_string(n);
-    files_.emplace_back(unique + ".svg", std::move(svg));
-    return files_.back().second;
+    return {unique + ".svg", std::move(svg), ""};
   }
-  const std::vector<std::pair<std::string, std::string>>& files() const { return files_; }
 
  private:
   std::set<std::string> taken_;
-  std::vector<std::pair<std::string, std::string>> files_;  // file name, SVG
 };
 
 // IOHanalyzer's fixed-target ECDF, one chart per target: per configuration, the share of its
 // (problem, run) pairs within the target by each time.
-std::string ecdf_charts(const Analysis& a, Plots& plots) {
+std::vector<Figure> ecdf_charts(const Analysis& a, FigureFiles& files) {
   const auto all = reaches(a);
   double low = INFINITY, high = 0.0;
   for (const auto& t : a.trials)
@@ -633,8 +621,8 @@ std::string ecdf_charts(const Analysis& a, Plots& plots) {
       low = std::min(low, t.elapsed_s.front());
       high = std::max(high, t.elapsed_s.back());
     }
-  if (!(high >= low)) return "";
-  std::string svg;
+  if (!(high >= low)) return {};
+  std::vector<Figure> figures;
   for (std::size_t k = 0; k < kTargets.size(); ++k) {
     LineChart chart;
     chart.title = "runs within " + fixed(kTargets[k], 0) + " % of the optimum, by time (ECDF)";
@@ -650,16 +638,16 @@ std::string ecdf_charts(const Analysis& a, Plots& plots) {
       chart.series.push_back(ecdf_series(a.configs[c].second.name, hits, low, high));
       chart.series.back().style = c;
     }
-    svg += plots.add("ecdf-" + fixed(kTargets[k], 0) + "pct", line_chart_svg(chart)) + "\n";
+    figures.push_back(files.add("ecdf-" + fixed(kTargets[k], 0) + "pct", line_chart_svg(chart)));
   }
-  return svg;
+  return figures;
 }
 
 // The mean best-so-far gap of each configuration's measured runs on problem p, against wall time
 // and against walks (log scales, 100 points between the first iteration's end and the last's).
-std::string anytime_charts(const Analysis& a, std::size_t p, Plots& plots) {
+std::vector<Figure> anytime_charts(const Analysis& a, std::size_t p, FigureFiles& files) {
   const double optimal = a.problems[p].optimal_length;
-  if (!(optimal > 0)) return "";
+  if (!(optimal > 0)) return {};
   struct Effort {
     const char* file;
     const char* title;
@@ -672,7 +660,7 @@ std::string anytime_charts(const Analysis& a, std::size_t p, Plots& plots) {
       {"anytime-walks-", "best-so-far gap against walks (mean of the runs): ", "walks: candidate paths built (log scale)",
        [](const TrialRecord& t) { return as_reals(t.walks); }},
   };
-  std::string svg;
+  std::vector<Figure> figures;
   for (const Effort& effort : efforts) {
     std::vector<std::pair<int, std::vector<StepCurve>>> by_config;
     double low = INFINITY, high = 0.0;
@@ -700,238 +688,174 @@ std::string anytime_charts(const Analysis& a, std::size_t p, Plots& plots) {
       chart.series.back().band_low.clear();
       chart.series.back().band_high.clear();
     }
-    svg += plots.add(effort.file + a.problems[p].name, line_chart_svg(chart)) + "\n";
+    figures.push_back(files.add(effort.file + a.problems[p].name, line_chart_svg(chart)));
   }
-  return svg;
+  return figures;
 }
 
-std::string markdown(const Table& t) {
-  std::ostringstream md;
-  md << "## " << t.title << "\n\n" << t.intro << "\n\n|";
-  for (const auto& h : t.header) md << " " << h << " |";
-  md << "\n|";
-  for (std::size_t i = 0; i < t.header.size(); ++i) md << (i < 2 ? "---|" : "---:|");
-  md << "\n";
-  for (const auto& row : t.rows) {
-    md << "|";
-    for (const auto& cell : row) md << " " << cell << " |";
-    md << "\n";
-  }
-  return md.str() + "\n";
+// The problem's map as the configuration's trials planned on it: the file and reader the problem
+// recorded, with the terrain options of the configuration's run (max-slope decides which cells of
+// a height map are blocked, cell-size where a path's points lie).
+std::unique_ptr<aco::Map> load_problem_map(const Analysis& a, const ProblemRecord& problem, const ConfigRecord& config) {
+  const auto setup = nlohmann::json::parse(problem.setup_json);
+  aco::Keys keys{{"map", (a.experiment_dir / setup.at("map").get<std::string>()).string()}};
+  if (setup.contains("map-format")) keys["map-format"] = setup.at("map-format").get<std::string>();
+  for (const auto& [name, value] : setup.value("map-parameters", nlohmann::json::object()).items())
+    keys["map." + name] = value.get<std::string>();
+  const auto run = nlohmann::json::parse(config.settings_json).value("run", nlohmann::json::object());
+  for (const aco::ParamSpec& terrain : aco::problem_parameters())
+    if (run.contains(terrain.name) && run.at(terrain.name).is_number()) keys[terrain.name] = run.at(terrain.name).dump();
+  keys.erase("scen-index");
+  return aco::load_problem_map(aco::resolve_problem(keys, *a.registry), a.registry);
 }
 
-std::string html(const Table& t) {
-  std::ostringstream out;
-  out << "<h2>" << aco::xml_escape(t.title) << "</h2>\n<p>" << aco::xml_escape(t.intro) << "</p>\n<table><tr>";
-  for (const auto& h : t.header) out << "<th>" << aco::xml_escape(h) << "</th>";
-  out << "</tr>\n";
-  for (const auto& row : t.rows) {
-    out << "<tr>";
-    for (const auto& cell : row) out << "<td>" << aco::xml_escape(cell) << "</td>";
-    out << "</tr>\n";
-  }
-  return out.str() + "</table>\n";
+// Whether two maps draw alike: the same cells blocked, the same cell size.
+bool same_picture(const aco::Map& x, const aco::Map& y) {
+  if (x.width() != y.width() || x.height() != y.height() || x.position({1, 0}) != y.position({1, 0})) return false;
+  for (int row = 0; row < x.height(); ++row)
+    for (int column = 0; column < x.width(); ++column)
+      if (x.passable({column, row}) != y.passable({column, row})) return false;
+  return true;
 }
 
-std::string markdown(const Analysis& a, const std::filesystem::path& database) {
-  std::ostringstream md;
-  md << "# acobench report: " << a.name << "\n\n"
-     << "Database `" << database.filename().string() << "`: " << a.trials.size() << " runs, " << a.configs.size()
-     << " configurations, " << a.problems.size() << " problems. Lengths are final path lengths of solved runs (after the smoother: any-angle when it "
-        "shortcuts); gap is the mean excess of the grid path (before smoothing) over the exact A* optimum on the "
-        "baseline's graph, so that both are lengths on the same grid; p is the two-sided Mann-Whitney U test "
-        "against the baseline (`"
-     << (a.configs.empty() ? "" : a.configs[0].second.name)
-     << "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline.\n\n";
-  for (const std::string& warning : build_warnings(a)) md << "> **Warning:** " << warning << "\n\n";
-  for (const Table& t : summary_tables(a)) md << markdown(t);
-  for (const Table& t : anytime_tables(a)) {
-    md << markdown(t);
-    if (!t.rows.empty())
-      md << "report.html plots the share of runs within each target against time (the ECDF) and, per problem, the "
-            "mean best-so-far gap against time and against walks.\n\n";
-  }
-  const auto cols = columns();
-  for (std::size_t p = 0; p < a.problems.size(); ++p) {
-    md << "## " << a.problems[p].name << " (optimal " << fixed(a.problems[p].optimal_length, 4) << ")\n\n| configuration |";
-    for (const auto& c : cols) md << " " << c.title << " |";
-    md << "\n|---|";
-    for (std::size_t i = 0; i < cols.size(); ++i) md << "---:|";
-    md << "\n";
-    for (const auto& r : a.results[p]) {
-      md << "| " << a.configs[r.config].second.name << " |";
-      for (const auto& c : cols) md << " " << c.value(r) << " |";
-      md << "\n";
+// The problem's map with each configuration's best path: one picture per map the configurations
+// planned on (terrain options that block other cells of a height map make another).
+std::vector<Figure> path_pictures(const Analysis& a, std::size_t p, FigureFiles& files) {
+  std::vector<std::pair<std::unique_ptr<aco::Map>, std::vector<MapPath>>> pictures;
+  for (const Result& r : a.results[p]) {
+    if (!r.best) continue;
+    std::unique_ptr<aco::Map> map;
+    try {
+      map = load_problem_map(a, a.problems[p], a.configs[r.config].second);
+    } catch (const std::exception& e) {
+      return {{"", "", "map not drawn: " + std::string(e.what())}};
     }
-    md << "\n";
+    MapPath path{a.configs[r.config].second.name + " " + fixed(r.best->length, 2), static_cast<std::size_t>(r.config), {}};
+    for (const auto& point : nlohmann::json::parse(r.best->path_json))
+      path.points.push_back({point[0].get<double>(), point[1].get<double>()});
+    auto same = std::find_if(pictures.begin(), pictures.end(), [&](const auto& picture) { return same_picture(*picture.first, *map); });
+    if (same == pictures.end()) same = pictures.emplace(pictures.end(), std::move(map), std::vector<MapPath>{});
+    same->second.push_back(std::move(path));
   }
+  // A problem no configuration solved still shows its map.
+  if (pictures.empty() && !a.configs.empty()) {
+    try {
+      pictures.emplace_back(load_problem_map(a, a.problems[p], a.configs.front().second), std::vector<MapPath>{});
+    } catch (const std::exception& e) {
+      return {{"", "", "map not drawn: " + std::string(e.what())}};
+    }
+  }
+  std::vector<Figure> figures;
+  for (const auto& [map, paths] : pictures) figures.push_back(files.add("paths-" + a.problems[p].name, map_paths_svg(*map, paths)));
+  return figures;
+}
+
+// The mean gap over all problems of each step of the ablation path.
+std::vector<double> ablation_gaps(const Analysis& a) {
+  std::vector<double> means;
+  for (const std::string& step : a.ablation_path) {
+    std::vector<double> gaps;
+    for (std::size_t p = 0; p < a.problems.size(); ++p)
+      for (const auto& r : a.results[p])
+        if (a.configs[r.config].second.name == step && std::isfinite(r.gap)) gaps.push_back(r.gap);
+    means.push_back(mean_of(gaps));
+  }
+  return means;
+}
+
+// Per problem: every configuration's summary, then its pictures.
+void add_problem(const Analysis& a, std::size_t p, FigureFiles& files, std::vector<Block>& blocks) {
+  const double optimal = a.problems[p].optimal_length;
+  const std::string& problem = a.problems[p].name;
+  Table t{problem + " (optimal " + fixed(optimal, 4) + ")", "", {"configuration"}, {}, "l"};
+  const auto cols = columns();
+  for (const auto& c : cols) t.header.push_back(c.title);
+  for (const auto& r : a.results[p]) {
+    std::vector<std::string> row{a.configs[r.config].second.name};
+    for (const auto& c : cols) row.push_back(c.value(r));
+    t.rows.push_back(std::move(row));
+  }
+  blocks.emplace_back(std::move(t));
+
+  BoxPlot box{"final path length: " + problem, "path length", {}, optimal > 0 ? std::optional(optimal) : std::nullopt};
+  LineChart chart;
+  chart.title = "best-so-far length (mean, 95 % CI): " + problem;
+  chart.y_label = "path length";
+  if (optimal > 0) chart.reference = optimal;
+  for (const auto& r : a.results[p]) {
+    const std::string& name = a.configs[r.config].second.name;
+    box.samples.push_back({name, r.lengths});
+    std::vector<std::vector<double>> curves;
+    for (const auto* trial : r.runs)
+      if (!trial->best_so_far.empty()) curves.push_back(trial->best_so_far);
+    if (!curves.empty()) {
+      chart.series.push_back(convergence_series(name, curves));
+      chart.series.back().style = static_cast<std::size_t>(r.config);
+    }
+  }
+  blocks.emplace_back(files.add("box-" + problem, box_plot_svg(box)));
+  if (!chart.series.empty()) blocks.emplace_back(files.add("convergence-" + problem, line_chart_svg(chart)));
+  for (Figure& figure : anytime_charts(a, p, files)) blocks.emplace_back(std::move(figure));
+  for (Figure& figure : path_pictures(a, p, files)) blocks.emplace_back(std::move(figure));
+}
+
+// The whole report: what the analysis found, in the order a reader wants it.
+ReportDocument report_document(const Analysis& a, const std::filesystem::path& database) {
+  ReportDocument d{"acobench report: " + a.name, "acobench: " + a.name, {}};
+  std::vector<Block>& blocks = d.blocks;
+  blocks.emplace_back(Paragraph{
+      "Database `" + database.filename().string() + "`: " + std::to_string(a.trials.size()) + " runs, " +
+      std::to_string(a.configs.size()) + " configurations, " + std::to_string(a.problems.size()) +
+      " problems. Lengths are final path lengths of solved runs (after the smoother: any-angle when it shortcuts); gap is "
+      "the mean excess of the grid path (before smoothing) over the exact A* optimum on the baseline's graph, so that both "
+      "are lengths on the same grid; p is the two-sided Mann-Whitney U test against the baseline (`" +
+      (a.configs.empty() ? "" : a.configs[0].second.name) +
+      "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline."});
+  for (std::string& warning : build_warnings(a)) blocks.emplace_back(Warning{std::move(warning)});
+  FigureFiles files;
+  for (Table& t : summary_tables(a)) blocks.emplace_back(std::move(t));
+  for (Table& t : anytime_tables(a)) {
+    const bool reached = !t.rows.empty();
+    blocks.emplace_back(std::move(t));
+    if (reached)
+      blocks.emplace_back(Paragraph{"report.html plots the share of runs within each target against time (the ECDF) and, "
+                                    "per problem, the mean best-so-far gap against time and against walks.",
+                                    true});
+    for (Figure& figure : ecdf_charts(a, files)) blocks.emplace_back(std::move(figure));
+  }
+  for (std::size_t p = 0; p < a.problems.size(); ++p) add_problem(a, p, files, blocks);
   if (!a.average_rank.empty()) {
-    md << "## Ranking across problems\n\nAverage rank of the mean length (1 = best; Friedman/Demšar).\n\n"
-          "| rank | configuration | average rank |\n|---:|---|---:|\n";
+    Table ranking{"Ranking across problems", "Average rank of the mean length (1 = best; Friedman/Demšar).",
+                  {"rank", "configuration", "average rank"}, {}, "rl"};
     std::vector<std::size_t> order(a.configs.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](auto x, auto y) { return a.average_rank[x] < a.average_rank[y]; });
     for (std::size_t i = 0; i < order.size(); ++i)
-      md << "| " << i + 1 << " | " << a.configs[order[i]].second.name << " | " << fixed(a.average_rank[order[i]], 2) << " |\n";
-    md << "\n";
+      ranking.rows.push_back({std::to_string(i + 1), a.configs[order[i]].second.name, fixed(a.average_rank[order[i]], 2)});
+    blocks.emplace_back(std::move(ranking));
   }
   if (!a.ablation_path.empty()) {
-    md << "## Ablation path\n\nFrom the baseline towards the target, one component at a time, keeping the best flip "
-          "(Fawcett and Hoos). Mean gap over all problems:\n\n| step | configuration | mean gap % |\n|---:|---|---:|\n";
-    for (std::size_t s = 0; s < a.ablation_path.size(); ++s) {
-      std::vector<double> gaps;
-      for (std::size_t p = 0; p < a.problems.size(); ++p)
-        for (const auto& r : a.results[p])
-          if (a.configs[r.config].second.name == a.ablation_path[s] && std::isfinite(r.gap)) gaps.push_back(r.gap);
-      md << "| " << s << " | " << a.ablation_path[s] << " | " << fixed(mean_of(gaps), 2) << " |\n";
-    }
-    md << "\n";
-  }
-  for (const Table& t : provenance_tables(a)) md << markdown(t);
-  return md.str();
-}
-
-// The problem's map with each configuration's best path.
-std::string paths_svg(const Analysis& a, std::size_t p) {
-  const auto setup = nlohmann::json::parse(a.problems[p].setup_json);
-  std::unique_ptr<aco::Map> map;
-  try {
-    const std::filesystem::path file = a.experiment_dir / setup.at("map").get<std::string>();
-    if (setup.contains("map-format")) {
-      // A map plugin's format: found in acobench report's --plugin-dir, ACO_PLUGIN_PATH and the bundled folder.
-      aco::PluginRegistry registry(a.plugin_dirs);
-      const std::string format = setup.at("map-format").get<std::string>();
-      aco::Keys keys;
-      const nlohmann::json parameters = setup.value("map-parameters", nlohmann::json::object());
-      for (const auto& [name, value] : parameters.items())
-        keys[name] = value.get<std::string>();
-      const auto reader = aco::resolve_map_format(file, format, keys, registry);
-      map = aco::load_map(file, {}, registry, reader.first, reader.second);
-    } else {
-      map = aco::load_map(file);
-    }
-  } catch (const std::exception& e) {
-    return "<p>map not drawn: " + aco::xml_escape(e.what()) + "</p>";
-  }
-  const int w = map->width(), h = map->height();
-  const double scale = std::max(2.0, std::min(24.0, 480.0 / std::max(w, h)));
-  const double cell = w > 1 ? map->position({1, 0}).x() - map->position({0, 0}).x() : 1.0;
-  // The legend beside the map, one row per configuration with a best path: as wide as its
-  // longest entry and as tall as its rows (by aco::text_width's estimate), so none is cut off.
-  std::vector<std::pair<const Result*, std::string>> shown;  // the result, its legend entry
-  for (const auto& r : a.results[p])
-    if (r.best) shown.emplace_back(&r, a.configs[r.config].second.name + " " + fixed(r.best->length, 2));
-  double longest = 0.0;
-  for (const auto& entry : shown) longest = std::max(longest, aco::text_width(entry.second, 12));
-  const double map_w = w * scale, map_h = h * scale, legend_x = map_w + 8;
-  const double width = legend_x + 28 + longest + 8, height = std::max(map_h, 16.0 * double(shown.size()) + 4);
-  std::ostringstream svg;
-  svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-      << "\" viewBox=\"0 0 " << width << ' ' << height << "\" font-family=\"sans-serif\" font-size=\"12\"><rect width=\"" << map_w
-      << "\" height=\"" << map_h << "\" fill=\"#fff\" stroke=\"#999\"/><g fill=\"#333\" shape-rendering=\"crispEdges\">";
-  // Blocked cells in horizontal runs, with crisp edges: no seams between rows.
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w;) {
-      int end = x;
-      while (end < w && !map->passable({end, y})) ++end;
-      if (end > x)
-        svg << "<rect x=\"" << x * scale << "\" y=\"" << y * scale << "\" width=\"" << (end - x) * scale << "\" height=\"" << scale
-            << "\"/>";
-      x = std::max(end, x + 1);
-    }
-  svg << "</g>";
-  for (std::size_t row = 0; row < shown.size(); ++row) {
-    const Result& r = *shown[row].first;
-    const auto style = static_cast<std::size_t>(r.config);
-    svg << "<polyline fill=\"none\" " << stroke_attributes(style) << " stroke-width=\"" << std::max(1.0, scale / 5)
-        << "\" stroke-opacity=\"0.8\" points=\"";
-    for (const auto& point : nlohmann::json::parse(r.best->path_json))
-      svg << (point[0].get<double>() / cell + 0.5) * scale << "," << (point[1].get<double>() / cell + 0.5) * scale << " ";
-    const double y = 14 + 16 * double(row);
-    svg << "\"/><line x1=\"" << legend_x << "\" x2=\"" << legend_x + 22 << "\" y1=\"" << y - 4 << "\" y2=\"" << y - 4 << "\" "
-        << stroke_attributes(style) << " stroke-width=\"2\"/><text x=\"" << legend_x + 28 << "\" y=\"" << y << "\" fill=\""
-        << series_style(style).colour << "\">" << aco::xml_escape(shown[row].second) << "</text>";
-  }
-  svg << "</svg>";
-  return svg.str();
-}
-
-std::string html(const Analysis& a, const std::string& md_intro, Plots& plots) {
-  std::ostringstream out;
-  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>acobench: " << aco::xml_escape(a.name)
-      << "</title><style>body{font-family:sans-serif;margin:2em;max-width:1400px}table{border-collapse:collapse;"
-         "margin:1em 0}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}td:first-child,th:first-child{"
-         "text-align:left}svg{margin:0.5em}.warning{background:#fff3cd;border:1px solid #e0a800;padding:0.5em}</style>"
-         "</head><body>\n<h1>acobench report: "
-      << aco::xml_escape(a.name) << "</h1>\n<p>" << aco::xml_escape(md_intro) << "</p>\n";
-  for (const std::string& warning : build_warnings(a))
-    out << "<p class=\"warning\"><strong>Warning:</strong> " << aco::xml_escape(warning) << "</p>\n";
-  for (const Table& t : summary_tables(a)) out << html(t);
-  for (const Table& t : anytime_tables(a)) out << html(t) << ecdf_charts(a, plots);
-  const auto cols = columns();
-  for (std::size_t p = 0; p < a.problems.size(); ++p) {
-    const double optimal = a.problems[p].optimal_length;
-    out << "<h2>" << aco::xml_escape(a.problems[p].name) << " (optimal " << fixed(optimal, 4) << ")</h2>\n<table><tr><th>configuration</th>";
-    for (const auto& c : cols) out << "<th>" << aco::xml_escape(c.title) << "</th>";
-    out << "</tr>\n";
-    for (const auto& r : a.results[p]) {
-      out << "<tr><td>" << aco::xml_escape(a.configs[r.config].second.name) << "</td>";
-      for (const auto& c : cols) out << "<td>" << aco::xml_escape(c.value(r)) << "</td>";
-      out << "</tr>\n";
-    }
-    out << "</table>\n";
-    BoxPlot box{"final path length: " + a.problems[p].name, "path length", {}, optimal > 0 ? std::optional(optimal) : std::nullopt};
-    LineChart chart;
-    chart.title = "best-so-far length (mean, 95 % CI): " + a.problems[p].name;
-    chart.y_label = "path length";
-    if (optimal > 0) chart.reference = optimal;
-    for (const auto& r : a.results[p]) {
-      const std::string& name = a.configs[r.config].second.name;
-      box.samples.push_back({name, r.lengths});
-      std::vector<std::vector<double>> curves;
-      for (const auto* t : r.runs)
-        if (!t->best_so_far.empty()) curves.push_back(t->best_so_far);
-      if (!curves.empty()) {
-        chart.series.push_back(convergence_series(name, curves));
-        chart.series.back().style = static_cast<std::size_t>(r.config);
-      }
-    }
-    const std::string& problem = a.problems[p].name;
-    out << plots.add("box-" + problem, box_plot_svg(box)) << "\n";
-    if (!chart.series.empty()) out << plots.add("convergence-" + problem, line_chart_svg(chart)) << "\n";
-    out << anytime_charts(a, p, plots);
-    const std::string paths = paths_svg(a, p);
-    out << (paths.starts_with("<svg") ? plots.add("paths-" + problem, paths) : paths) << "\n";
-  }
-  if (!a.average_rank.empty()) {
-    out << "<h2>Ranking across problems</h2><table><tr><th>configuration</th><th>average rank</th></tr>\n";
-    for (std::size_t c = 0; c < a.configs.size(); ++c)
-      out << "<tr><td>" << aco::xml_escape(a.configs[c].second.name) << "</td><td>" << fixed(a.average_rank[c], 2) << "</td></tr>\n";
-    out << "</table>\n";
-  }
-  if (!a.ablation_path.empty()) {
-    out << "<h2>Ablation path</h2>\n";
+    Table steps{"Ablation path",
+                "From the baseline towards the target, one component at a time, keeping the best flip (Fawcett and Hoos). "
+                "Mean gap over all problems:",
+                {"step", "configuration", "mean gap %"},
+                {},
+                "rl"};
     Series gaps;
     gaps.name = "mean gap %";
-    for (const auto& name : a.ablation_path) {
-      std::vector<double> g;
-      for (std::size_t p = 0; p < a.problems.size(); ++p)
-        for (const auto& r : a.results[p])
-          if (a.configs[r.config].second.name == name && std::isfinite(r.gap)) g.push_back(r.gap);
-      gaps.value.push_back(mean_of(g));
-    }
-    out << "<ol start=\"0\">";
-    for (const auto& name : a.ablation_path) out << "<li>" << aco::xml_escape(name) << "</li>";
+    gaps.value = ablation_gaps(a);
+    for (std::size_t s = 0; s < a.ablation_path.size(); ++s)
+      steps.rows.push_back({std::to_string(s), a.ablation_path[s], fixed(gaps.value[s], 2)});
+    blocks.emplace_back(std::move(steps));
     LineChart chart;
     chart.title = "ablation path: mean gap to the optimum";
     chart.x_label = "step";
     chart.y_label = "gap %";
     chart.series = {gaps};
-    out << "</ol>\n" << plots.add("ablation", line_chart_svg(chart)) << "\n";
+    blocks.emplace_back(files.add("ablation", line_chart_svg(chart)));
   }
-  for (const Table& t : provenance_tables(a)) out << html(t);
-  out << "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>\n</body></html>\n";
-  return out.str();
+  for (Table& t : provenance_tables(a)) blocks.emplace_back(std::move(t));
+  return d;
 }
 
 std::string quoted(const std::string& s) {
@@ -991,19 +915,20 @@ std::vector<std::filesystem::path> write_report(const std::filesystem::path& dat
   if (!std::filesystem::exists(database)) throw aco::Error(database.string() + ": no such results database");
   const ResultsDb db(database);
   Analysis a = analyse(db);
-  a.plugin_dirs = plugin_dirs;
+  aco::PluginRegistry registry(plugin_dirs);
+  a.registry = &registry;
   std::filesystem::create_directories(out);
-  const std::string md = markdown(a, database);
+  const ReportDocument document = report_document(a, database);
   std::vector<std::filesystem::path> files = {out / "report.md", out / "report.html", out / "runs.csv"};
-  Plots plots;
-  write(files[0], md);
-  write(files[1], html(a, md.substr(md.find("\n\n") + 2, md.find("\n\n", md.find("\n\n") + 2) - md.find("\n\n") - 2), plots));
+  write(files[0], render_markdown(document));
+  write(files[1], render_html(document, "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>\n"));
   write(files[2], csv(a));
   std::filesystem::create_directories(out / "plots");
-  for (const auto& [name, svg] : plots.files()) {
-    files.push_back(out / "plots" / name);
-    write(files.back(), svg);
-  }
+  for (const Block& block : document.blocks)
+    if (const auto* figure = std::get_if<Figure>(&block); figure && !figure->svg.empty()) {
+      files.push_back(out / "plots" / figure->file);
+      write(files.back(), figure->svg);
+    }
   if (warnings)
     for (std::string& warning : build_warnings(a)) warnings->push_back(std::move(warning));
   return files;

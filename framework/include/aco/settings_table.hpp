@@ -84,9 +84,15 @@ SettingsField<Settings> choice(const char* name, Member Settings::*member, std::
       if (values[i] == s.*member) return ParamValue(names[i]);
     throw Error("setting has a value that has no name");
   };
-  f.set = [member, names, values](Settings& s, const ParamValue& v) {
+  f.set = [name, member, names, values, range](Settings& s, const ParamValue& v) {
+    const std::string& given = std::get<std::string>(v);
     for (std::size_t i = 0; i < names.size(); ++i)
-      if (names[i] == std::get<std::string>(v)) s.*member = values[i];
+      if (names[i] == given) {
+        s.*member = values[i];
+        return;
+      }
+    // resolve() checks a key's value against its range; a caller that skips it must not get the old value silently.
+    throw Error(std::string(name) + ": '" + given + "' is not one of " + range);
   };
   return f;
 }

@@ -69,6 +69,10 @@ std::span<const ParamSpec> graph_parameters();
 // The planner key, its values from planner_names().
 const ParamSpec& planner_parameter();
 
+// The problem keys alone -> ProblemSpec, checked as resolve_run() checks them; any other key is a
+// KeyError. Start and goal may be missing (a map to look at needs none); load_problem() asks for them.
+ProblemSpec resolve_problem(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix = "");
+
 // Keys -> RunSpec. Every key must be known and every value valid for its table; slots default
 // to default_plugin(), every other key to its table's default. `key_prefix` ("--" for acoplan)
 // goes before a key in messages; a failure throws KeyError naming the key (the nearest valid key
@@ -125,6 +129,11 @@ struct LoadedProblem {
 std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem::path& file, const std::string& format,
                                                            const Keys& keys, PluginRegistry& registry,
                                                            const std::string& key_prefix = "");
+
+// The problem's map (its file, or its scenario's) read by its reader with its terrain options (map
+// plugins from `registry`; without one, built-in formats only). Every loader of a problem's map goes
+// through here: a run, an acobench trial, the report's pictures, Python's Map.load().
+std::unique_ptr<Map> load_problem_map(const ProblemSpec& problem, PluginRegistry* registry = nullptr);
 
 // Loads the map with the terrain options and its reader (map plugins from `registry`; without
 // one, built-in formats only), takes start and goal from the scenario (whose map it is unless

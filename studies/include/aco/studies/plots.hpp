@@ -3,10 +3,15 @@
 // paste inline into the HTML report. The root <svg> element carries class="boxplot" or the line
 // chart's css_class ("convergence" unless set). The same input always gives the same bytes: numbers are written with
 // std::to_chars, never through a locale.
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
+
+namespace aco {
+class Map;
+}
 
 namespace acobench {
 
@@ -93,5 +98,15 @@ struct LineChart {
 };
 
 std::string line_chart_svg(const LineChart& chart);
+
+// A path on a map: the report's picture of each configuration's best path on a problem.
+struct MapPath {
+  std::string label;  // its legend entry
+  std::size_t style;  // its series_style()
+  std::vector<std::array<double, 2>> points;  // where the path went: x and y of the map's positions
+};
+
+// The map (blocked cells dark) with the paths on it and a legend beside it.
+std::string map_paths_svg(const aco::Map& map, const std::vector<MapPath>& paths);
 
 }  // namespace acobench

@@ -13,7 +13,9 @@
 //                   plugins (per slot the binary it last ran: name, version, file, sha256, build;
 //                   JSON, NULL if not known).
 //   enums           OMPL's table of enum descriptions; empty, created for OMPL's tools.
-//   runs            one row per trial: id, experimentid, plannerid, repetition, seed, solved,
+//   runs            one row per trial: id, experimentid, plannerid, then a column per trial field
+//                   of the runs table (trial_fields(), trial_record.hpp; added, NULL for the stored
+//                   rows, to a database made before the field was): repetition, seed, solved,
 //                   length, grid_length, gap, turns, iterations, best_iteration, time (s),
 //                   ant_steps, stopped_by, path (JSON waypoints), and for simulation trials
 //                   (NULL otherwise) outcome, time_to_goal (NULL unless reached), collisions,

@@ -15,6 +15,7 @@
 
 #include "aco/studies/results_db.hpp"
 #include "aco/studies/trial_record.hpp"
+#include "aco/studies/trial_runner.hpp"
 #include "support.hpp"
 #include "trial_messages.hpp"
 
@@ -143,4 +144,18 @@ TEST_CASE("a database made before a field was added gains its column, NULL for i
   const auto trials = resumed.trials();
   REQUIRE(trials.size() == 2);
   CHECK(newest.get(trials[1], -1) == newest.get(next, -1));
+}
+
+TEST_CASE("a process's peak memory rises with what it touches and starts over when reset", "[trialrecord]") {
+  constexpr double kBlockMib = 64;
+  REQUIRE(acobench::reset_peak_memory());
+  const double before = acobench::peak_memory_mib();
+  REQUIRE(before > 0);
+  {
+    std::vector<char> block(static_cast<std::size_t>(kBlockMib * 1024 * 1024), 1);  // touched: resident
+    CHECK(acobench::peak_memory_mib() >= before + kBlockMib - 1);
+    CHECK(block[block.size() / 2] == 1);  // used, so not optimised away
+  }
+  REQUIRE(acobench::reset_peak_memory());  // the block is given back: the peak is what is resident now
+  CHECK(acobench::peak_memory_mib() < before + kBlockMib / 2);
 }

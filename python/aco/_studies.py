@@ -50,7 +50,9 @@ def read_database(database: Union[str, os.PathLike], *, config_columns: bool = T
     order of the report's runs.csv, with the same columns first:
 
     problem, configuration, repetition, seed, solved, length, grid_length, gap_percent, turns,
-    iterations, best_iteration, time_s, ant_steps, stopped_by, one column per further property of
+    iterations, best_iteration, time_s, ant_steps, stopped_by, peak_memory_mib (MiB, NaN where not
+    known: the trial's peak in acobench's worker processes, the process's peak so far in
+    run_experiment()'s, which run in this process), one column per further property of
     the runs (the planners' and the plugins' figures, "update/max_min.restarts": NaN where a run
     has none), as runs.csv has them; then the simulation measures (outcome, time_to_goal,
     collisions, replans, clearance, control_steps: None, NaN or -1 for planning trials), error

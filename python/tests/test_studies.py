@@ -49,6 +49,7 @@ def test_the_dataframe_is_the_reports_csv_row_for_row(database, build):
         rows = list(csv.DictReader(file))
     frame = aco.read_database(database)
     assert len(frame) == len(rows) == 24
+    assert (frame["peak_memory_mib"] > 0).all()  # this process's peak so far: the trials ran in it
     assert list(frame.columns[:len(rows[0])]) == list(rows[0])
     for (_, mine), theirs in zip(frame.iterrows(), rows):
         for column, text in theirs.items():

@@ -142,6 +142,7 @@ const std::vector<TrialField>& trial_fields() {
       simulation_field("control_steps", &SimulationRecord::control_steps),
       text_or_null("error", &TrialRecord::error, kStored | kInPython),
       text_or_null("failure", &TrialRecord::failure, kStored),
+      field("peak_memory_mib", &TrialRecord::peak_memory_mib, kEverywhere),
   };
   return fields;
 }

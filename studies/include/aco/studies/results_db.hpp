@@ -21,7 +21,9 @@
 //                   (NULL otherwise) outcome, time_to_goal (NULL unless reached), collisions,
 //                   replans, clearance, control_steps; error (why a trial failed: what the
 //                   plugin or the host threw; NULL otherwise), failure (why, one of
-//                   kFailureKinds; NULL otherwise); UNIQUE(experimentid, plannerid,
+//                   kFailureKinds; NULL otherwise), peak_memory_mib (the peak resident memory
+//                   of the process that ran the trial, MiB: TrialRecord; NULL if not known,
+//                   and in runs stored before it was recorded); UNIQUE(experimentid, plannerid,
 //                   repetition). A simulation trial's length is the distance driven, its path the
 //                   trajectory, its stopped_by the outcome. length, grid_length and gap are NULL when unsolved; gap is
 //                   grid_length / optimal_length - 1 (the relative excess of the grid path over

@@ -70,6 +70,13 @@ struct TrialRecord {
   // The run's properties (aco::PlanOutcome::properties): the planner's ("ant_steps",
   // "evaluations"...) and the plugins' figures ("update/max_min.restarts").
   std::map<std::string, aco::ParamValue> properties;
+  // The peak resident memory (Linux's VmHWM), MiB, of the process that ran the trial, read as it
+  // ended. A worker process (acobench run) starts its peak over before each trial: the trial's own
+  // peak, the worker's resident memory when it began included. A trial run in the process that
+  // asked for it (acobench run --in-process, Python, MPI ranks without workers) shares it with the
+  // trials before and beside it: the process's peak so far, an upper bound. NaN (NULL) where not
+  // known: a trial that crashed, timed out or ran out of memory, one stored before the field was.
+  double peak_memory_mib = std::nan("");
 };
 
 // One value of a trial's row: NULL, or of its field's type.

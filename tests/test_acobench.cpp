@@ -141,6 +141,7 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   for (const auto& t : acobench::ResultsDb(db).trials()) {
     REQUIRE(t.elapsed_s.size() == static_cast<std::size_t>(t.iterations));
     REQUIRE(t.walks.size() == static_cast<std::size_t>(t.iterations));
+    CHECK(t.peak_memory_mib > 0);  // measured in the worker process that ran it
     for (std::size_t i = 0; i < t.walks.size(); ++i) {
       CHECK(t.walks[i] == 10u * (i + 1));
       if (i > 0) CHECK(t.elapsed_s[i] >= t.elapsed_s[i - 1]);

@@ -50,11 +50,14 @@ def read_database(database: Union[str, os.PathLike], *, config_columns: bool = T
     order of the report's runs.csv, with the same columns first:
 
     problem, configuration, repetition, seed, solved, length, grid_length, gap_percent, turns,
-    iterations, best_iteration, time_s, ant_steps, stopped_by, one column per further property of
+    iterations, best_iteration, time_s, ant_steps, stopped_by, peak_memory_mib (MiB, NaN where not
+    known: the trial's peak in acobench's worker processes, the process's peak so far in
+    run_experiment()'s, which run in this process), one column per further property of
     the runs (the planners' and the plugins' figures, "update/max_min.restarts": NaN where a run
-    has none), as runs.csv has them; then error, optimal_length, the
-    simulation measures (outcome, time_to_goal, collisions, replans, clearance, control_steps:
-    NaN, None or -1 for planning trials), settings (the configuration as stored, JSON) and, with
+    has none), as runs.csv has them; then the simulation measures (outcome, time_to_goal,
+    collisions, replans, clearance, control_steps: None, NaN or -1 for planning trials), error
+    (None unless the trial failed), optimal_length, settings (the configuration as stored, JSON)
+    and, with
     ``config_columns``, one column ``config.<key>`` per resolved run key of the configuration
     (``config.update``, ``config.update.rho``, ...), to group by.
 
@@ -65,10 +68,8 @@ def read_database(database: Union[str, os.PathLike], *, config_columns: bool = T
 
     columns = _aco.read_trials(os.fspath(database))
     properties = columns.pop("properties")
+    order = columns.pop("csv_columns")
     frame = pd.DataFrame(columns)
-    frame.insert(7, "gap_percent", 100.0 * (frame["grid_length"] / frame["optimal_length"] - 1.0))
-    order = ["problem", "configuration", "repetition", "seed", "solved", "length", "grid_length", "gap_percent", "turns",
-             "iterations", "best_iteration", "time_s", "ant_steps", "stopped_by"]
     for name in sorted(properties):
         frame[name] = properties[name]
     order += sorted(properties)

@@ -179,24 +179,52 @@ py::dict run_experiment(const std::filesystem::path& file, const std::filesystem
 
 // A results database as columns (the runs, each with its problem's and configuration's name,
 // the problem's optimum and the configuration's settings JSON), in the report's order.
+// A field's values as a Python column: numbers as a NumPy array (NULL as NaN for reals, -1 for
+// whole numbers), text and booleans as a list (NULL as None).
+py::object python_column(const acobench::TrialField& field, const std::vector<acobench::TrialCell>& cells) {
+  const auto numbers = [&](auto null) {
+    std::vector<decltype(null)> values;
+    for (const auto& cell : cells)
+      values.push_back(std::visit(
+          [null](const auto& v) -> decltype(null) {
+            if constexpr (std::is_arithmetic_v<std::decay_t<decltype(v)>>) return static_cast<decltype(null)>(v);
+            else return null;
+          },
+          cell));
+    return py::object(py::array(py::cast(values)));
+  };
+  switch (field.type) {
+    case acobench::TrialCellType::integer: return numbers(std::int64_t{-1});
+    case acobench::TrialCellType::count: return numbers(std::uint64_t{0});
+    case acobench::TrialCellType::real: return numbers(std::nan(""));
+    default: break;
+  }
+  py::list values;
+  for (const auto& cell : cells)
+    values.append(std::visit([](const auto& v) -> py::object {
+      if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>) return py::none();
+      else return py::cast(v);
+    }, cell));
+  return field.type == acobench::TrialCellType::boolean ? py::object(py::array(values)) : py::object(values);
+}
+
+// The trials of a database as columns: problem, configuration, the trial fields Python shows,
+// optimal_length, settings; "properties": a column per property_columns() (NaN where a run has
+// none); "csv_columns": runs.csv's columns before the properties, which come first in Python.
 py::dict read_trials(const std::filesystem::path& database) {
   if (!std::filesystem::exists(database)) throw aco::Error(database.string() + ": no such results database");
   const acobench::ResultsDb db(database);
   const auto problems = db.problems();
   std::map<int, acobench::ConfigRecord> configs;
   for (const auto& [id, config] : db.configs()) configs[id] = config;
-  py::list problem, configuration, settings, stopped_by, error, outcome;
-  std::vector<double> optimal, length, grid_length, time_s, time_to_goal, clearance;
-  std::vector<std::int64_t> repetition, turns, iterations, best_iteration, ant_steps, collisions, replans, control_steps;
-  std::vector<std::uint64_t> seed;
-  std::vector<bool> solved;
+  py::list problem, configuration, settings;
+  std::vector<double> optimal;
   const double none = std::nan("");
   const auto trials = db.trials();
-  // runs.csv's property columns: every property beyond ant_steps and stopped_by, NaN where a run has none.
   std::map<std::string, py::list> properties;
-  for (const auto& t : trials)
-    for (const auto& [name, value] : t.properties)
-      if (name != "ant_steps" && name != "stopped_by") properties[name];
+  for (const auto& name : acobench::property_columns(trials)) properties[name];
+  const auto& fields = acobench::trial_fields();
+  std::vector<std::vector<acobench::TrialCell>> cells(fields.size());
   for (const auto& t : trials) {
     for (auto& [name, column] : properties) {
       const auto it = t.properties.find(name);
@@ -212,52 +240,19 @@ py::dict read_trials(const std::filesystem::path& database) {
     optimal.push_back(p.optimal_length > 0 ? p.optimal_length : none);
     configuration.append(configs.at(t.config).name);
     settings.append(configs.at(t.config).settings_json);
-    repetition.push_back(t.repetition);
-    seed.push_back(t.seed);
-    solved.push_back(t.solved);
-    length.push_back(t.solved ? t.length : none);
-    grid_length.push_back(t.solved ? t.grid_length : none);
-    turns.push_back(t.turns);
-    iterations.push_back(t.iterations);
-    best_iteration.push_back(t.best_iteration);
-    time_s.push_back(t.time_s);
-    ant_steps.push_back(static_cast<std::int64_t>(t.ant_steps));
-    stopped_by.append(t.stopped_by);
-    error.append(t.error);
-    const auto& s = t.simulation;
-    outcome.append(s ? py::object(py::str(s->outcome)) : py::object(py::none()));
-    time_to_goal.push_back(s ? s->time_to_goal : none);
-    clearance.push_back(s ? s->clearance : none);
-    collisions.push_back(s ? s->collisions : -1);
-    replans.push_back(s ? s->replans : -1);
-    control_steps.push_back(s ? s->control_steps : -1);
+    for (std::size_t i = 0; i < fields.size(); ++i) cells[i].push_back(fields[i].get(t, p.optimal_length));
   }
   py::dict columns;
   columns["problem"] = problem;
   columns["configuration"] = configuration;
-  columns["repetition"] = py::array(py::cast(repetition));
-  columns["seed"] = py::array(py::cast(seed));
-  columns["solved"] = py::array(py::cast(solved));
-  columns["length"] = py::array(py::cast(length));
-  columns["grid_length"] = py::array(py::cast(grid_length));
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (fields[i].use & acobench::kInPython) columns[fields[i].column] = python_column(fields[i], cells[i]);
   columns["optimal_length"] = py::array(py::cast(optimal));
-  columns["turns"] = py::array(py::cast(turns));
-  columns["iterations"] = py::array(py::cast(iterations));
-  columns["best_iteration"] = py::array(py::cast(best_iteration));
-  columns["time_s"] = py::array(py::cast(time_s));
-  columns["ant_steps"] = py::array(py::cast(ant_steps));
-  columns["stopped_by"] = stopped_by;
-  columns["error"] = error;
-  columns["outcome"] = outcome;
-  columns["time_to_goal"] = py::array(py::cast(time_to_goal));
-  columns["collisions"] = py::array(py::cast(collisions));
-  columns["replans"] = py::array(py::cast(replans));
-  columns["clearance"] = py::array(py::cast(clearance));
-  columns["control_steps"] = py::array(py::cast(control_steps));
   columns["settings"] = settings;
   py::dict property_columns;
   for (const auto& [name, column] : properties) property_columns[py::str(name)] = column;
   columns["properties"] = property_columns;
+  columns["csv_columns"] = acobench::runs_csv_columns();
   return columns;
 }
 
@@ -298,6 +293,16 @@ PYBIND11_MODULE(_aco, m) {
   });
   m.def("run_experiment", &run_experiment, py::arg("file"), py::arg("database"), py::arg("threads"), py::arg("progress"));
   m.def("read_trials", &read_trials, py::arg("database"));
+  // The trial fields (aco/studies/trial_record.hpp): where each goes, for the tests.
+  m.def("trial_fields", [] {
+    py::list fields;
+    for (const auto& f : acobench::trial_fields())
+      fields.append(py::dict(py::arg("name") = f.name, py::arg("column") = f.column,
+                             py::arg("in_runs_table") = bool(f.use & acobench::kInRunsTable),
+                             py::arg("in_runs_csv") = bool(f.use & acobench::kInRunsCsv),
+                             py::arg("in_python") = bool(f.use & acobench::kInPython)));
+    return fields;
+  });
 
   // The report's statistics (aco/studies/statistics.hpp), on plain samples.
   m.def("summarize", [](const Sample& s) {

@@ -1,6 +1,7 @@
 """aco.run_experiment(), aco.read_database() and aco.stats against acobench's own run and report."""
 import csv
 import math
+import sqlite3
 import subprocess
 
 import numpy as np
@@ -48,6 +49,7 @@ def test_the_dataframe_is_the_reports_csv_row_for_row(database, build):
         rows = list(csv.DictReader(file))
     frame = aco.read_database(database)
     assert len(frame) == len(rows) == 24
+    assert (frame["peak_memory_mib"] > 0).all()  # this process's peak so far: the trials ran in it
     assert list(frame.columns[:len(rows[0])]) == list(rows[0])
     for (_, mine), theirs in zip(frame.iterrows(), rows):
         for column, text in theirs.items():
@@ -60,6 +62,15 @@ def test_the_dataframe_is_the_reports_csv_row_for_row(database, build):
                 assert bool(value) == (text == "1")
             else:  # the CSV's numbers are rounded (10 or 6 significant digits)
                 assert float(value) == pytest.approx(float(text), rel=1e-5, abs=1e-6), column
+
+
+def test_every_trial_field_python_shows_is_a_column(database):
+    with sqlite3.connect(database) as db:
+        runs_columns = {row[1] for row in db.execute("PRAGMA table_info(runs)")}
+    frame = aco.read_database(database)
+    for field in aco._aco.trial_fields():
+        assert (field["column"] in frame.columns) == field["in_python"], field
+        assert (field["name"] in runs_columns) == field["in_runs_table"], field
 
 
 def test_configuration_columns_group_the_runs(database):

@@ -858,49 +858,6 @@ ReportDocument report_document(const Analysis& a, const std::filesystem::path& d
   return d;
 }
 
-std::string quoted(const std::string& s) {
-  std::string q = "\"";
-  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
-
-// A property in a CSV cell: numbers as they are (reals to 10 significant digits), text quoted.
-std::string csv_cell(const aco::ParamValue& value) {
-  if (const auto* text = std::get_if<std::string>(&value)) return quoted(*text);
-  if (const auto* real = std::get_if<double>(&value)) return number(*real, 10);
-  return aco::to_string(value);
-}
-
-// One row per run; after the fixed columns, one per property any run has (the planners' and the
-// plugins' figures, runs.csv's only columns that vary with the study), empty where a run has none.
-std::string csv(const Analysis& a) {
-  std::set<std::string> properties;
-  for (const auto& t : a.trials)
-    for (const auto& [name, value] : t.properties)
-      if (name != "ant_steps" && name != "stopped_by") properties.insert(name);  // columns of their own already
-  std::ostringstream out;
-  out << "problem,configuration,repetition,seed,solved,length,grid_length,gap_percent,turns,iterations,best_iteration,time_s,"
-         "ant_steps,stopped_by";
-  for (const auto& name : properties) out << "," << name;
-  out << "\n";
-  std::map<int, std::string> names;
-  for (const auto& [id, c] : a.configs) names[id] = c.name;
-  for (const auto& t : a.trials) {
-    const double optimal = a.problems[t.problem].optimal_length;
-    out << quoted(a.problems[t.problem].name) << "," << quoted(names.at(t.config)) << "," << t.repetition << "," << t.seed << ","
-        << (t.solved ? 1 : 0) << "," << (t.solved ? number(t.length, 10) : "") << ","
-        << (t.solved ? number(t.grid_length, 10) : "") << ","
-        << (t.solved && optimal > 0 ? number(gap_percent(t, optimal), 6) : "") << "," << t.turns << "," << t.iterations
-        << "," << t.best_iteration << "," << number(t.time_s, 6) << "," << t.ant_steps << "," << t.stopped_by;
-    for (const auto& name : properties) {
-      const auto it = t.properties.find(name);
-      out << "," << (it == t.properties.end() ? "" : csv_cell(it->second));
-    }
-    out << "\n";
-  }
-  return out.str();
-}
-
 void write(const std::filesystem::path& file, const std::string& text) {
   std::ofstream out(file, std::ios::binary);
   out << text;
@@ -921,8 +878,9 @@ std::vector<std::filesystem::path> write_report(const std::filesystem::path& dat
   const ReportDocument document = report_document(a, database);
   std::vector<std::filesystem::path> files = {out / "report.md", out / "report.html", out / "runs.csv"};
   write(files[0], render_markdown(document));
-  write(files[1], render_html(document, "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>\n"));
-  write(files[2], csv(a));
+  write(files[1], render_html(document, "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>
+"));
+  write(files[2], runs_csv(a.trials, a.problems, a.configs));
   std::filesystem::create_directories(out / "plots");
   for (const Block& block : document.blocks)
     if (const auto* figure = std::get_if<Figure>(&block); figure && !figure->svg.empty()) {

@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <thread>
+#include <utility>
 
 #include "aco/error.hpp"
 #include "aco/studies/growth.hpp"
@@ -33,9 +34,54 @@ bool upgradable(const std::string& version) {
          version == "5";
 }
 
+const char* sql_type(TrialCellType type) {
+  switch (type) {
+    case TrialCellType::boolean: return "BOOLEAN";
+    case TrialCellType::integer:
+    case TrialCellType::count: return "INTEGER";
+    case TrialCellType::real: return "REAL";
+    case TrialCellType::text: break;
+  }
+  return "TEXT";
+}
+
+// The fields that are columns of the runs table; `read_back`: only those a record is read from,
+// not the derived ones.
+std::vector<const TrialField*> run_fields(bool read_back = false) {
+  std::vector<const TrialField*> fields;
+  for (const auto& f : trial_fields())
+    if ((f.use & kInRunsTable) && (f.set || !read_back)) fields.push_back(&f);
+  return fields;
+}
+
+// ", name, name..." of the fields.
+std::string column_names(const std::vector<const TrialField*>& fields) {
+  std::string names;
+  for (const TrialField* f : fields) names += std::string(", ") + f->name;
+  return names;
+}
+
+// The runs table's field columns, "name TYPE" each.
+std::vector<std::string> run_field_columns() {
+  std::vector<std::string> columns;
+  for (const TrialField* f : run_fields()) columns.push_back(std::string(f->name) + " " + sql_type(f->type));
+  return columns;
+}
+
+// The runs table's field columns as lines of schema(): at most 100 characters, indented.
+std::string wrapped(const std::vector<std::string>& columns) {
+  std::string text, line;
+  for (const auto& column : columns) {
+    if (!line.empty() && line.size() + column.size() + 2 > 100) text += std::exchange(line, "") + "\n";
+    line += (line.empty() ? "  " : " ") + column + ",";
+  }
+  return text + line + "\n";
+}
+
 // OMPL's tables (as ompl_benchmark_statistics.py creates them) with our run and progress
 // attributes as columns; see the header for what each holds.
-const char* const kSchema = R"(
+std::string schema() {
+  return R"(
 CREATE TABLE experiments (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512), totaltime REAL,
   timelimit REAL, memorylimit REAL, runcount INTEGER, version VARCHAR(128), hostname VARCHAR(1024),
   cpuinfo TEXT, date DATETIME, seed VARCHAR(24), setup TEXT, optimal_length REAL);
@@ -43,17 +89,15 @@ CREATE TABLE plannerConfigs (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(
   plugins TEXT);
 CREATE TABLE enums (name VARCHAR(512), value INTEGER, description TEXT, PRIMARY KEY (name, value));
 CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, plannerid INTEGER,
-  repetition INTEGER, seed INTEGER, solved BOOLEAN, length REAL, grid_length REAL, gap REAL,
-  turns INTEGER, iterations INTEGER, best_iteration INTEGER, time REAL, ant_steps INTEGER,
-  stopped_by TEXT, path TEXT, outcome TEXT, time_to_goal REAL, collisions INTEGER, replans INTEGER,
-  clearance REAL, control_steps INTEGER, error TEXT, failure TEXT,
-  FOREIGN KEY (experimentid) REFERENCES experiments(id) ON DELETE CASCADE,
+)" + wrapped(run_field_columns()) +
+         R"(  FOREIGN KEY (experimentid) REFERENCES experiments(id) ON DELETE CASCADE,
   FOREIGN KEY (plannerid) REFERENCES plannerConfigs(id) ON DELETE CASCADE,
   UNIQUE (experimentid, plannerid, repetition));
 CREATE TABLE progress (runid INTEGER, time REAL, iteration INTEGER, best_cost REAL, walks INTEGER,
   PRIMARY KEY (runid, iteration), FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
 CREATE TABLE acobench_meta (key TEXT PRIMARY KEY, value TEXT);
 )";
+}
 
 // A generic name/value table per run, as OMPL's run properties but as rows, not columns: the
 // planners' properties and the figures plugins record vary with the configuration. SQLite keeps
@@ -62,6 +106,10 @@ const char* const kPropertiesTable = R"(
 CREATE TABLE properties (runid INTEGER, name TEXT NOT NULL, value, PRIMARY KEY (runid, name),
   FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
 )";
+
+// 64-bit unsigned values keep their bits in SQLite's signed integers.
+std::int64_t to_sql(std::uint64_t v) { return std::bit_cast<std::int64_t>(v); }
+std::uint64_t from_sql(std::int64_t v) { return std::bit_cast<std::uint64_t>(v); }
 
 // One connection; every failure becomes an Error naming the file and SQLite's reason.
 class Connection {
@@ -118,6 +166,11 @@ class Statement {
     db_.check(rc, sql_);
     return rc == SQLITE_ROW;
   }
+  // Binds `cells` to the parameters from `first` on, after those run() bound.
+  Statement& and_cells(int first, const std::vector<TrialCell>& cells) {
+    for (const auto& cell : cells) bind(first++, cell);
+    return *this;
+  }
   void finish() {
     while (next()) {
     }
@@ -138,6 +191,18 @@ class Statement {
       default: return text(column);
     }
   }
+  // A column holding a trial field of `type`.
+  TrialCell cell(int column, TrialCellType type) const {
+    if (null(column)) return {};
+    switch (type) {
+      case TrialCellType::boolean: return integer(column) != 0;
+      case TrialCellType::integer: return integer(column);
+      case TrialCellType::count: return from_sql(integer(column));
+      case TrialCellType::real: return real(column);
+      case TrialCellType::text: break;
+    }
+    return text(column);
+  }
   std::int64_t integer(int column) const { return sqlite3_column_int64(stmt_, column); }
   double real(int column) const { return sqlite3_column_double(stmt_, column); }
   std::string text(int column) const {
@@ -154,6 +219,11 @@ class Statement {
   }
   void bind(int i, const std::string& v) {
     db_.check(sqlite3_bind_text(stmt_, i, v.data(), static_cast<int>(v.size()), SQLITE_TRANSIENT), sql_);
+  }
+  void bind(int i, std::uint64_t v) { bind(i, to_sql(v)); }
+  void bind(int i, std::monostate) { db_.check(sqlite3_bind_null(stmt_, i), sql_); }
+  void bind(int i, const TrialCell& v) {
+    std::visit([&](const auto& value) { bind(i, value); }, v);
   }
   template <class T>
   void bind(int i, const std::optional<T>& v) {
@@ -190,16 +260,6 @@ class Transaction {
 constexpr double kNull = std::numeric_limits<double>::quiet_NaN();
 
 double finite_or_null(double v) { return std::isfinite(v) ? v : kNull; }
-
-// A simulation column's value: NULL for a planning trial.
-template <class T>
-std::optional<T> sim_field(const TrialRecord& t, T SimulationRecord::*field) {
-  return t.simulation ? std::optional<T>((*t.simulation).*field) : std::nullopt;
-}
-
-// 64-bit unsigned values keep their bits in SQLite's signed integers.
-std::int64_t to_sql(std::uint64_t v) { return std::bit_cast<std::int64_t>(v); }
-std::uint64_t from_sql(std::int64_t v) { return std::bit_cast<std::uint64_t>(v); }
 
 nlohmann::json parse_json(const std::string& text, const std::string& what) {
   auto value = nlohmann::json::parse(text, nullptr, false);
@@ -285,8 +345,11 @@ struct ResultsDb::Impl {
   // runs have no properties but ant_steps and stopped_by, which the runs table holds. A failed
   // trial's failure is its stopped_by, or "error" for one that threw: which of the plugin or the
   // engine's checks threw was not recorded.
+  // A trial field's column that a database of any format lacks (one made before the field was
+  // added) is added too, NULL for the stored runs: an older acobench still reads and continues
+  // the database (leaving the column NULL), so the format version stays.
   void upgrade() {
-    if (meta().at("format_version") == kFormatVersion) return;
+    const bool current = meta().at("format_version") == kFormatVersion;
     const auto columns_of = [&](const std::string& table) {
       std::set<std::string> present;
       Statement columns(db, "SELECT name FROM pragma_table_info('" + table + "')");
@@ -294,23 +357,23 @@ struct ResultsDb::Impl {
       while (columns.next()) present.insert(columns.text(0));
       return present;
     };
-    const std::map<std::string, std::set<std::string>> present{{"runs", columns_of("runs")},
-                                                               {"progress", columns_of("progress")},
-                                                               {"plannerConfigs", columns_of("plannerConfigs")}};
+    std::vector<std::pair<std::string, std::string>> missing;
+    const auto present_in_runs = columns_of("runs");
+    for (const auto& column : run_field_columns())
+      if (!present_in_runs.contains(column.substr(0, column.find(' ')))) missing.emplace_back("runs", column);
+    if (!columns_of("progress").contains("walks")) missing.emplace_back("progress", "walks INTEGER");
+    if (!columns_of("plannerConfigs").contains("plugins")) missing.emplace_back("plannerConfigs", "plugins TEXT");
+    if (current && missing.empty()) return;
     const bool has_properties = tables().contains("properties");
     Transaction transaction(db);
-    for (const auto& [table, column] : std::initializer_list<std::pair<std::string, std::string>>{
-             {"runs", "outcome TEXT"}, {"runs", "time_to_goal REAL"}, {"runs", "collisions INTEGER"},
-             {"runs", "replans INTEGER"}, {"runs", "clearance REAL"}, {"runs", "control_steps INTEGER"},
-             {"runs", "error TEXT"}, {"runs", "failure TEXT"}, {"progress", "walks INTEGER"},
-             {"plannerConfigs", "plugins TEXT"}})
-      if (!present.at(table).contains(column.substr(0, column.find(' '))))
-        db.exec("ALTER TABLE " + table + " ADD COLUMN " + column);
-    db.exec("UPDATE runs SET failure = CASE WHEN stopped_by IN ('crashed', 'timed out', 'out of memory') THEN stopped_by "
-            "ELSE 'error' END WHERE error IS NOT NULL AND failure IS NULL");
-    if (!has_properties) db.exec(kPropertiesTable);
-    Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
-    set.run(kFormatVersion).finish();
+    for (const auto& [table, column] : missing) db.exec("ALTER TABLE " + table + " ADD COLUMN " + column);
+    if (!current) {
+      db.exec("UPDATE runs SET failure = CASE WHEN stopped_by IN ('crashed', 'timed out', 'out of memory') THEN "
+              "stopped_by ELSE 'error' END WHERE error IS NOT NULL AND failure IS NULL");
+      if (!has_properties) db.exec(kPropertiesTable);
+      Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
+      set.run(kFormatVersion).finish();
+    }
     transaction.commit();
   }
 
@@ -364,7 +427,7 @@ struct ResultsDb::Impl {
               const std::vector<ProblemRecord>& given) {
     Transaction transaction(db);
     if (!tables().empty()) return false;
-    db.exec(kSchema);
+    db.exec(schema());
     db.exec(kPropertiesTable);
     Statement set(db, "INSERT INTO acobench_meta (key, value) VALUES (?1, ?2)");
     set.run(std::string("format_version"), kFormatVersion).finish();
@@ -468,11 +531,10 @@ void ResultsDb::Impl::load(const std::vector<ProblemRecord>* given) {
   while (names.next()) config_names[static_cast<int>(names.integer(0))] = names.text(1);
 
   find_run.emplace(db, "SELECT id FROM runs WHERE experimentid = ?1 AND plannerid = ?2 AND repetition = ?3");
-  insert_run.emplace(db,
-                       "INSERT INTO runs (experimentid, plannerid, repetition, seed, solved, length, grid_length, gap, "
-                       "turns, iterations, best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, "
-                       "collisions, replans, clearance, control_steps, error, failure) "
-                       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20, ?21, ?22, ?23)");
+  std::string parameters = "?1, ?2";  // experimentid, plannerid
+  for (std::size_t i = 0; i < run_fields().size(); ++i) parameters += ", ?" + std::to_string(3 + i);
+  insert_run.emplace(db, "INSERT INTO runs (experimentid, plannerid" + column_names(run_fields()) + ") VALUES (" +
+                             parameters + ")");
   insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost, walks) VALUES (?1, ?2, ?3, ?4, ?5)");
   insert_property.emplace(db, "INSERT INTO properties (runid, name, value) VALUES (?1, ?2, ?3)");
   add_time.emplace(db, "UPDATE experiments SET totaltime = totaltime + ?2 WHERE id = ?1");
@@ -546,16 +608,9 @@ void ResultsDb::store(const TrialRecord& t) {
     throw Error(d.file() + ": " + d.trial_label(t) + " is already stored");
 
   const double optimum = d.problems[static_cast<std::size_t>(t.problem)].optimal_length;
-  const double gap = t.solved && optimum > 0 ? t.grid_length / optimum - 1.0 : kNull;
-  d.insert_run
-      ->run(experiment, t.config, t.repetition, to_sql(t.seed), t.solved ? 1 : 0, t.solved ? t.length : kNull,
-            t.solved ? t.grid_length : kNull, gap, t.turns, t.iterations, t.best_iteration, t.time_s, to_sql(t.ant_steps),
-            t.stopped_by, t.path_json, sim_field(t, &SimulationRecord::outcome), sim_field(t, &SimulationRecord::time_to_goal),
-            sim_field(t, &SimulationRecord::collisions), sim_field(t, &SimulationRecord::replans),
-            sim_field(t, &SimulationRecord::clearance), sim_field(t, &SimulationRecord::control_steps),
-            t.error.empty() ? std::nullopt : std::optional<std::string>(t.error),
-            t.failure.empty() ? std::nullopt : std::optional<std::string>(t.failure))
-      .finish();
+  std::vector<TrialCell> cells;
+  for (const TrialField* f : run_fields()) cells.push_back(f->get(t, optimum));
+  d.insert_run->run(experiment, t.config).and_cells(3, cells).finish();
   const std::int64_t run = sqlite3_last_insert_rowid(d.db.handle());
   const bool measured = !t.elapsed_s.empty();
   const double seconds_per_iteration = t.iterations > 0 ? t.time_s / t.iterations : 0.0;  // an older trial's estimate
@@ -592,11 +647,9 @@ std::vector<TrialRecord> ResultsDb::trials() const {
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
   std::vector<TrialRecord> all;
-  Statement runs(d.db,
-                 "SELECT id, experimentid, plannerid, repetition, seed, solved, length, grid_length, turns, iterations, "
-                 "best_iteration, time, ant_steps, stopped_by, path, outcome, time_to_goal, collisions, replans, clearance, "
-                 "control_steps, error, failure FROM runs "
-                 "ORDER BY experimentid, plannerid, repetition");
+  const auto fields = run_fields(true);
+  Statement runs(d.db, "SELECT id, experimentid, plannerid" + column_names(fields) +
+                           " FROM runs ORDER BY experimentid, plannerid, repetition");
   Statement progress(d.db, "SELECT best_cost, time, walks FROM progress WHERE runid = ?1 ORDER BY iteration");
   Statement properties(d.db, "SELECT name, value FROM properties WHERE runid = ?1");
   runs.run();
@@ -606,27 +659,7 @@ std::vector<TrialRecord> ResultsDb::trials() const {
     TrialRecord t;
     t.problem = problem->second;
     t.config = static_cast<int>(runs.integer(2));
-    t.repetition = static_cast<int>(runs.integer(3));
-    t.seed = from_sql(runs.integer(4));
-    t.solved = runs.integer(5) != 0;
-    t.length = runs.null(6) ? 0.0 : runs.real(6);
-    t.grid_length = runs.null(7) ? 0.0 : runs.real(7);
-    t.turns = static_cast<int>(runs.integer(8));
-    t.iterations = static_cast<int>(runs.integer(9));
-    t.best_iteration = static_cast<int>(runs.integer(10));
-    t.time_s = runs.real(11);
-    t.ant_steps = from_sql(runs.integer(12));
-    t.stopped_by = runs.text(13);
-    t.path_json = runs.text(14);
-    t.error = runs.text(21);
-    t.failure = runs.text(22);
-    if (!runs.null(15))
-      t.simulation = SimulationRecord{runs.text(15),
-                                      runs.null(16) ? std::nan("") : runs.real(16),
-                                      static_cast<int>(runs.integer(17)),
-                                      static_cast<int>(runs.integer(18)),
-                                      runs.null(19) ? std::nan("") : runs.real(19),
-                                      static_cast<int>(runs.integer(20))};
+    for (std::size_t i = 0; i < fields.size(); ++i) fields[i]->set(t, runs.cell(static_cast<int>(3 + i), fields[i]->type));
     progress.run(runs.integer(0));
     bool measured = true;
     while (progress.next()) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <shared_mutex>
@@ -129,19 +130,23 @@ const aco::Graph& TrialRunner::graph(int problem, const aco::RunSpec& run) {
 }
 
 TrialRecord TrialRunner::run(const TrialOrder& t) {
-  try {
-    return experiment_.problems[t.problem].simulation ? simulate(t) : plan(t);
-  } catch (const aco::OutOfMemoryError& e) {
-    return failed(t, "out of memory", e.what());
-  } catch (const std::bad_alloc&) {
-    return failed(t, "out of memory", "out of memory (std::bad_alloc)");
-  } catch (const aco::InvalidValueError& e) {
-    return failed(t, "invalid value", e.what());
-  } catch (const aco::PluginError& e) {
-    return failed(t, "plugin error", e.what());
-  } catch (...) {
-    return failed(t, "error", aco::describe_current_exception());
-  }
+  TrialRecord r = [&] {
+    try {
+      return experiment_.problems[t.problem].simulation ? simulate(t) : plan(t);
+    } catch (const aco::OutOfMemoryError& e) {
+      return failed(t, "out of memory", e.what());
+    } catch (const std::bad_alloc&) {
+      return failed(t, "out of memory", "out of memory (std::bad_alloc)");
+    } catch (const aco::InvalidValueError& e) {
+      return failed(t, "invalid value", e.what());
+    } catch (const aco::PluginError& e) {
+      return failed(t, "plugin error", e.what());
+    } catch (...) {
+      return failed(t, "error", aco::describe_current_exception());
+    }
+  }();
+  r.peak_memory_mib = peak_memory_mib();
+  return r;
 }
 
 TrialRecord TrialRunner::failed(const TrialOrder& t, const std::string& kind, const std::string& reason) const {
@@ -228,6 +233,19 @@ TrialRecord TrialRunner::simulate(const TrialOrder& t) {
   r.simulation = SimulationRecord{sim.outcome, sim.reached ? sim.time : std::nan(""), sim.collisions, sim.replans,
                                   std::isfinite(sim.min_clearance) ? sim.min_clearance : std::nan(""), sim.steps};
   return r;
+}
+
+double peak_memory_mib() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.starts_with("VmHWM:")) return std::stod(line.substr(6)) / 1024.0;  // kB
+  return std::nan("");
+}
+
+bool reset_peak_memory() {
+  std::ofstream clear("/proc/self/clear_refs");
+  clear << "5" << std::flush;  // 5: reset the peak resident set size
+  return bool(clear);
 }
 
 std::string describe_failure(const std::string& kind) {

@@ -83,6 +83,7 @@ void serve_trials_as_worker(const Experiment& experiment, aco::PluginRegistry& r
                          " (was the experiment file, a map or a plugin binary changed during the run?)");
     }
     for (const json& c : request.at("configs")) add_config_from(c, runner);
+    reset_peak_memory();  // the trial's peak, not that of the trials this worker ran before
     const std::vector<std::uint8_t> reply = json::to_cbor(record_json(runner.run(order_from(request.at("trial")))));
     return std::string(reply.begin(), reply.end());
   });

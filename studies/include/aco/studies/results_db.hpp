@@ -13,13 +13,17 @@
 //                   plugins (per slot the binary it last ran: name, version, file, sha256, build;
 //                   JSON, NULL if not known).
 //   enums           OMPL's table of enum descriptions; empty, created for OMPL's tools.
-//   runs            one row per trial: id, experimentid, plannerid, repetition, seed, solved,
+//   runs            one row per trial: id, experimentid, plannerid, then a column per trial field
+//                   of the runs table (trial_fields(), trial_record.hpp; added, NULL for the stored
+//                   rows, to a database made before the field was): repetition, seed, solved,
 //                   length, grid_length, gap, turns, iterations, best_iteration, time (s),
 //                   ant_steps, stopped_by, path (JSON waypoints), and for simulation trials
 //                   (NULL otherwise) outcome, time_to_goal (NULL unless reached), collisions,
 //                   replans, clearance, control_steps; error (why a trial failed: what the
 //                   plugin or the host threw; NULL otherwise), failure (why, one of
-//                   kFailureKinds; NULL otherwise); UNIQUE(experimentid, plannerid,
+//                   kFailureKinds; NULL otherwise), peak_memory_mib (the peak resident memory
+//                   of the process that ran the trial, MiB: TrialRecord; NULL if not known,
+//                   and in runs stored before it was recorded); UNIQUE(experimentid, plannerid,
 //                   repetition). A simulation trial's length is the distance driven, its path the
 //                   trajectory, its stopped_by the outcome. length, grid_length and gap are NULL when unsolved; gap is
 //                   grid_length / optimal_length - 1 (the relative excess of the grid path over

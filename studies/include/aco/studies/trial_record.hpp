@@ -2,10 +2,18 @@
 // What a trial of a study measured, and the problems and configurations it names: plain records,
 // which the results database stores (results_db.hpp), the trial runner makes (trial_runner.hpp),
 // and worker processes and MPI ranks send (as CBOR) without knowing of the database.
+//
+// A trial's single values are declared once more, in trial_fields(): each field's name, type and
+// where it goes. The messages, the runs table (its columns, INSERT and SELECT, the columns an older
+// database lacks), runs.csv and Python's read_trials() all walk that table, so a new field is a
+// member here and an entry there.
+#include <cmath>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "aco/parameters.hpp"
@@ -30,10 +38,10 @@ struct ConfigRecord {
 // What a simulation trial (an acosim scenario as a problem) measured beyond solved and length.
 struct SimulationRecord {
   std::string outcome;  // reached, collision, timeout, stuck, no path
-  double time_to_goal;  // simulated seconds; NaN unless reached (stored as NULL)
+  double time_to_goal = std::nan("");  // simulated seconds; NaN unless reached (stored as NULL)
   int collisions = 0;
   int replans = 0;
-  double clearance;     // the smallest distance between the robot and an obstacle
+  double clearance = std::nan("");  // the smallest distance between the robot and an obstacle
   int control_steps = 0;
 };
 
@@ -62,7 +70,56 @@ struct TrialRecord {
   // The run's properties (aco::PlanOutcome::properties): the planner's ("ant_steps",
   // "evaluations"...) and the plugins' figures ("update/max_min.restarts").
   std::map<std::string, aco::ParamValue> properties;
+  // The peak resident memory (Linux's VmHWM), MiB, of the process that ran the trial, read as it
+  // ended. A worker process (acobench run) starts its peak over before each trial: the trial's own
+  // peak, the worker's resident memory when it began included. A trial run in the process that
+  // asked for it (acobench run --in-process, Python, MPI ranks without workers) shares it with the
+  // trials before and beside it: the process's peak so far, an upper bound. NaN (NULL) where not
+  // known: a trial that crashed, timed out or ran out of memory, one stored before the field was.
+  double peak_memory_mib = std::nan("");
 };
+
+// One value of a trial's row: NULL, or of its field's type.
+using TrialCell = std::variant<std::monostate, bool, std::int64_t, std::uint64_t, double, std::string>;
+
+enum class TrialCellType { boolean, integer, count, real, text };  // count: 64 bits unsigned
+
+// Where a field goes (a bit set).
+enum TrialFieldUse : unsigned {
+  kInMessage = 1,    // the JSON a worker process or an MPI rank sends (trial_messages.hpp)
+  kInRunsTable = 2,  // a column of the results database's runs table (results_db.hpp)
+  kInRunsCsv = 4,    // a column of the report's runs.csv, after problem and configuration
+  kInPython = 8,     // a column of Python's read_database()
+  kEverywhere = 15,
+};
+
+struct TrialField {
+  const char* name;    // its JSON key and runs column
+  const char* column;  // its runs.csv and Python column
+  TrialCellType type;
+  unsigned use;        // TrialFieldUse bits
+  int csv_digits;      // significant digits of a real in runs.csv
+  // The value of a trial, whose problem's optimal length (< 0: unknown) derived fields need.
+  std::function<TrialCell(const TrialRecord&, double optimal_length)> get;
+  // Sets the member from a value; NULL leaves the record's default. Empty for derived fields,
+  // which are not in messages.
+  std::function<void(TrialRecord&, const TrialCell&)> set;
+};
+
+// Every field, in the order of the runs table's columns (after id, experimentid, plannerid) and
+// of runs.csv's: problem and config, the curves (progress table) and the properties (properties
+// table) are not fields.
+const std::vector<TrialField>& trial_fields();
+
+// The names of runs.csv's columns before the properties: problem, configuration, the fields.
+std::vector<std::string> runs_csv_columns();
+// The properties that get a column of their own in runs.csv and Python: every property some trial
+// has, sorted, but those that are a field already (aco's ant_steps and stopped_by).
+std::vector<std::string> property_columns(const std::vector<TrialRecord>& trials);
+// runs.csv: one row per trial, the fields then one column per property_columns(), empty where a
+// value is NULL or a trial lacks the property.
+std::string runs_csv(const std::vector<TrialRecord>& trials, const std::vector<ProblemRecord>& problems,
+                     const std::vector<std::pair<int, ConfigRecord>>& configs);
 
 // Why trials fail, as runs.failure stores it: a crash (a signal), the trial time limit, the trial
 // memory limit, a plugin that threw, a value a plugin wrote that the engine refused (aco::

@@ -1,0 +1,190 @@
+#include "aco/studies/trial_record.hpp"
+
+#include <cstdio>
+#include <set>
+#include <sstream>
+#include <type_traits>
+#include <utility>
+
+namespace acobench {
+namespace {
+
+template <class Member>
+constexpr TrialCellType type_of() {
+  if constexpr (std::is_same_v<Member, bool>) return TrialCellType::boolean;
+  else if constexpr (std::is_same_v<Member, std::uint64_t>) return TrialCellType::count;
+  else if constexpr (std::is_integral_v<Member>) return TrialCellType::integer;
+  else if constexpr (std::is_floating_point_v<Member>) return TrialCellType::real;
+  else return TrialCellType::text;
+}
+
+// NaN is NULL, as the database stores it.
+template <class Member>
+TrialCell cell(const Member& value) {
+  if constexpr (std::is_same_v<Member, bool> || std::is_same_v<Member, std::uint64_t> ||
+                std::is_same_v<Member, std::string>)
+    return value;
+  else if constexpr (std::is_integral_v<Member>) return static_cast<std::int64_t>(value);
+  else return std::isnan(value) ? TrialCell() : TrialCell(value);
+}
+
+template <class Member>
+void assign(Member& member, const TrialCell& value) {
+  if (std::holds_alternative<std::monostate>(value)) return;
+  if constexpr (std::is_integral_v<Member> && !std::is_same_v<Member, bool> && !std::is_same_v<Member, std::uint64_t>)
+    member = static_cast<Member>(std::get<std::int64_t>(value));
+  else member = std::get<Member>(value);
+}
+
+// A member of the record; `column` names it in runs.csv and Python when not `name`.
+template <class Member>
+TrialField field(const char* name, Member TrialRecord::*member, unsigned use, const char* column = nullptr,
+                 int csv_digits = 10) {
+  return {name, column ? column : name, type_of<Member>(), use, csv_digits,
+          [member](const TrialRecord& t, double) { return cell(t.*member); },
+          [member](TrialRecord& t, const TrialCell& value) { assign(t.*member, value); }};
+}
+
+// A length: NULL unless solved.
+TrialField solved_only(const char* name, double TrialRecord::*member) {
+  TrialField f = field(name, member, kEverywhere);
+  f.get = [member](const TrialRecord& t, double) { return t.solved ? TrialCell(t.*member) : TrialCell(); };
+  return f;
+}
+
+// Text that is NULL when empty.
+TrialField text_or_null(const char* name, std::string TrialRecord::*member, unsigned use) {
+  TrialField f = field(name, member, use);
+  f.get = [member](const TrialRecord& t, double) { return (t.*member).empty() ? TrialCell() : TrialCell(t.*member); };
+  return f;
+}
+
+// A measure of simulation trials: NULL for planning trials.
+template <class Member>
+TrialField simulation_field(const char* name, Member SimulationRecord::*member) {
+  return {name, name, type_of<Member>(), kInMessage | kInRunsTable | kInPython, 10,
+          [member](const TrialRecord& t, double) { return t.simulation ? cell((*t.simulation).*member) : TrialCell(); },
+          [member](TrialRecord& t, const TrialCell& value) {
+            if (std::holds_alternative<std::monostate>(value)) return;
+            if (!t.simulation) t.simulation.emplace();
+            assign((*t.simulation).*member, value);
+          }};
+}
+
+// The excess of a solved trial's grid path over the optimum (exact A* on the same graph) times
+// `scale`: NULL if unsolved or the optimum is unknown.
+TrialField gap(const char* name, unsigned use, double scale, int csv_digits) {
+  return {name, name, TrialCellType::real, use, csv_digits,
+          [scale](const TrialRecord& t, double optimal) {
+            return t.solved && optimal > 0 ? TrialCell(scale * (t.grid_length / optimal - 1.0)) : TrialCell();
+          },
+          {}};
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::string csv_real(double v, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, v);
+  return text;
+}
+
+// Text is quoted where it must be (a comma, a quote, a line break in it).
+std::string csv_cell(const TrialCell& value, int digits) {
+  return std::visit(
+      [digits](const auto& v) -> std::string {
+        using Value = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<Value, std::monostate>) return "";
+        else if constexpr (std::is_same_v<Value, bool>) return v ? "1" : "0";
+        else if constexpr (std::is_same_v<Value, double>) return csv_real(v, digits);
+        else if constexpr (std::is_same_v<Value, std::string>)
+          return v.find_first_of(",\"\r\n") == std::string::npos ? v : quoted(v);
+        else return std::to_string(v);
+      },
+      value);
+}
+
+// A property in a CSV cell: numbers as they are (reals to 10 significant digits), text quoted.
+std::string csv_cell(const aco::ParamValue& value) {
+  if (const auto* text = std::get_if<std::string>(&value)) return quoted(*text);
+  if (const auto* real = std::get_if<double>(&value)) return csv_real(*real, 10);
+  return aco::to_string(value);
+}
+
+}  // namespace
+
+const std::vector<TrialField>& trial_fields() {
+  constexpr unsigned kStored = kInMessage | kInRunsTable;
+  static const std::vector<TrialField> fields = {
+      field("repetition", &TrialRecord::repetition, kEverywhere),
+      field("seed", &TrialRecord::seed, kEverywhere),
+      field("solved", &TrialRecord::solved, kEverywhere),
+      solved_only("length", &TrialRecord::length),
+      solved_only("grid_length", &TrialRecord::grid_length),
+      gap("gap", kInRunsTable, 1.0, 10),
+      gap("gap_percent", kInRunsCsv | kInPython, 100.0, 6),
+      field("turns", &TrialRecord::turns, kEverywhere),
+      field("iterations", &TrialRecord::iterations, kEverywhere),
+      field("best_iteration", &TrialRecord::best_iteration, kEverywhere),
+      field("time", &TrialRecord::time_s, kEverywhere, "time_s", 6),
+      field("ant_steps", &TrialRecord::ant_steps, kEverywhere),
+      field("stopped_by", &TrialRecord::stopped_by, kEverywhere),
+      field("path", &TrialRecord::path_json, kStored),
+      simulation_field("outcome", &SimulationRecord::outcome),
+      simulation_field("time_to_goal", &SimulationRecord::time_to_goal),
+      simulation_field("collisions", &SimulationRecord::collisions),
+      simulation_field("replans", &SimulationRecord::replans),
+      simulation_field("clearance", &SimulationRecord::clearance),
+      simulation_field("control_steps", &SimulationRecord::control_steps),
+      text_or_null("error", &TrialRecord::error, kStored | kInPython),
+      text_or_null("failure", &TrialRecord::failure, kStored),
+      field("peak_memory_mib", &TrialRecord::peak_memory_mib, kEverywhere),
+  };
+  return fields;
+}
+
+std::vector<std::string> runs_csv_columns() {
+  std::vector<std::string> columns = {"problem", "configuration"};
+  for (const auto& f : trial_fields())
+    if (f.use & kInRunsCsv) columns.push_back(f.column);
+  return columns;
+}
+
+std::vector<std::string> property_columns(const std::vector<TrialRecord>& trials) {
+  std::set<std::string> fields, properties;
+  for (const auto& f : trial_fields()) fields.insert(f.name);
+  for (const auto& t : trials)
+    for (const auto& [name, value] : t.properties)
+      if (!fields.contains(name)) properties.insert(name);
+  return {properties.begin(), properties.end()};
+}
+
+std::string runs_csv(const std::vector<TrialRecord>& trials, const std::vector<ProblemRecord>& problems,
+                     const std::vector<std::pair<int, ConfigRecord>>& configs) {
+  const auto properties = property_columns(trials);
+  std::ostringstream out;
+  std::string separator;
+  for (const auto& name : runs_csv_columns()) out << std::exchange(separator, ",") << name;
+  for (const auto& name : properties) out << "," << name;
+  out << "\n";
+  std::map<int, std::string> config_names;
+  for (const auto& [id, c] : configs) config_names[id] = c.name;
+  for (const auto& t : trials) {
+    const ProblemRecord& problem = problems.at(static_cast<std::size_t>(t.problem));
+    out << quoted(problem.name) << "," << quoted(config_names.at(t.config));
+    for (const auto& f : trial_fields())
+      if (f.use & kInRunsCsv) out << "," << csv_cell(f.get(t, problem.optimal_length), f.csv_digits);
+    for (const auto& name : properties) {
+      const auto it = t.properties.find(name);
+      out << "," << (it == t.properties.end() ? "" : csv_cell(it->second));
+    }
+    out << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace acobench

@@ -1,0 +1,161 @@
+// The trial record's field table: every field reaches the messages, the runs table, runs.csv
+// (and Python, python/tests/test_studies.py) from the table alone.
+#include <catch2/catch.hpp>
+
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "aco/studies/results_db.hpp"
+#include "aco/studies/trial_record.hpp"
+#include "aco/studies/trial_runner.hpp"
+#include "support.hpp"
+#include "trial_messages.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::vector<acobench::ProblemRecord> kProblems{{"map1", R"({"map":"map1.txt"})", 28.5}};
+
+// A value of `type` that no field has by default and that tells fields apart.
+acobench::TrialCell sample(acobench::TrialCellType type, int index) {
+  switch (type) {
+    case acobench::TrialCellType::boolean: return true;
+    case acobench::TrialCellType::integer: return std::int64_t{100 + index};
+    case acobench::TrialCellType::count: return std::uint64_t{0x8000'0000'0000'0000ULL} + static_cast<std::uint64_t>(index);
+    case acobench::TrialCellType::real: return 30.25 + index;
+    case acobench::TrialCellType::text: break;
+  }
+  return "[\"field, " + std::to_string(index) + "\"]";  // valid JSON (the path must be), with a comma
+}
+
+// A trial whose every field that can be set holds a sample, set through the table alone.
+acobench::TrialRecord sample_trial(int config) {
+  acobench::TrialRecord t;
+  t.config = config;
+  const auto& fields = acobench::trial_fields();
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    if (fields[i].set) fields[i].set(t, sample(fields[i].type, static_cast<int>(i)));
+  t.best_so_far.assign(static_cast<std::size_t>(t.iterations), 40.0);
+  t.properties = {{"ant_steps", std::int64_t{7}}, {"stopped_by", std::string("time")}, {"update/x.restarts", std::int64_t{2}}};
+  return t;
+}
+
+std::set<std::string> runs_columns(const fs::path& file) {
+  sqlite3* raw = nullptr;
+  REQUIRE(sqlite3_open_v2(file.c_str(), &raw, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
+  std::unique_ptr<sqlite3, decltype(&sqlite3_close)> db(raw, sqlite3_close);
+  sqlite3_stmt* raw_statement = nullptr;
+  REQUIRE(sqlite3_prepare_v2(raw, "SELECT name FROM pragma_table_info('runs')", -1, &raw_statement, nullptr) == SQLITE_OK);
+  std::unique_ptr<sqlite3_stmt, decltype(&sqlite3_finalize)> statement(raw_statement, sqlite3_finalize);
+  std::set<std::string> names;
+  while (sqlite3_step(raw_statement) == SQLITE_ROW) names.insert(reinterpret_cast<const char*>(sqlite3_column_text(raw_statement, 0)));
+  return names;
+}
+
+std::vector<std::string> csv_line(const std::string& line) {
+  std::vector<std::string> cells;
+  std::string cell;
+  bool quoted = false;
+  for (const char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) cells.push_back(std::exchange(cell, ""));
+    else cell += c;
+  }
+  cells.push_back(cell);
+  return cells;
+}
+
+}  // namespace
+
+TEST_CASE("every trial field reaches the messages, the runs table and runs.csv from the table alone", "[trialrecord]") {
+  const fs::path file = test::temp_file("unused", "").parent_path() / "fields.db";
+  acobench::ResultsDb db(file, "fields", "fingerprint", kProblems);
+  const acobench::TrialRecord trial = sample_trial(db.add_config({"mine", "{}"}));
+  db.store(trial);
+  const acobench::TrialRecord sent = acobench::record_from(acobench::record_json(trial));
+  const acobench::TrialRecord stored = db.trials().at(0);
+  const std::set<std::string> columns = runs_columns(file);
+
+  std::istringstream csv(acobench::runs_csv({trial}, kProblems, db.configs()));
+  std::string header_line, row_line;
+  std::getline(csv, header_line);
+  std::getline(csv, row_line);
+  const auto header = csv_line(header_line), row = csv_line(row_line);
+  REQUIRE(header.size() == row.size());
+  CHECK(header.back() == "update/x.restarts");  // ant_steps and stopped_by are fields: no second column
+
+  const double optimal = kProblems[0].optimal_length;
+  for (const auto& f : acobench::trial_fields()) {
+    INFO("field " << f.name);
+    const acobench::TrialCell value = f.get(trial, optimal);
+    CHECK_FALSE(std::holds_alternative<std::monostate>(value));
+    CHECK(bool(f.use & acobench::kInMessage) == bool(f.set));  // a derived field is not sent
+    if (f.use & acobench::kInMessage) CHECK(f.get(sent, optimal) == value);
+    CHECK(columns.contains(f.name) == bool(f.use & acobench::kInRunsTable));
+    if ((f.use & acobench::kInRunsTable) && f.set) CHECK(f.get(stored, optimal) == value);
+    const auto at = std::find(header.begin(), header.end(), f.column);
+    CHECK((at != header.end()) == bool(f.use & acobench::kInRunsCsv));
+    if (at != header.end()) CHECK_FALSE(row[static_cast<std::size_t>(at - header.begin())].empty());
+  }
+  CHECK(header == [] {
+    auto names = acobench::runs_csv_columns();
+    names.push_back("update/x.restarts");
+    return names;
+  }());
+}
+
+TEST_CASE("a database made before a field was added gains its column, NULL for its runs, and resumes", "[trialrecord]") {
+  const fs::path file = test::temp_file("unused", "").parent_path() / "older.db";
+  const auto& newest = acobench::trial_fields().back();
+  REQUIRE((newest.use & acobench::kInRunsTable));
+  int config = 0;
+  {
+    acobench::ResultsDb db(file, "older", "fingerprint", kProblems);
+    config = db.add_config({"mine", "{}"});
+    db.store(sample_trial(config));
+  }
+  {
+    sqlite3* raw = nullptr;
+    REQUIRE(sqlite3_open_v2(file.c_str(), &raw, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK);
+    std::unique_ptr<sqlite3, decltype(&sqlite3_close)> db(raw, sqlite3_close);
+    const std::string drop = std::string("ALTER TABLE runs DROP COLUMN ") + newest.name;
+    REQUIRE(sqlite3_exec(raw, drop.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
+  }
+  REQUIRE_FALSE(runs_columns(file).contains(newest.name));
+
+  const acobench::ResultsDb report(file);  // a report reads it
+  CHECK(runs_columns(file).contains(newest.name));
+  CHECK(report.meta("format_version") == "6");  // an older acobench reads it still
+  CHECK(std::holds_alternative<std::monostate>(newest.get(report.trials().at(0), -1)));
+
+  acobench::ResultsDb resumed(file, "older", "fingerprint", kProblems);
+  auto next = sample_trial(config);
+  next.repetition += 1;
+  resumed.store(next);
+  const auto trials = resumed.trials();
+  REQUIRE(trials.size() == 2);
+  CHECK(newest.get(trials[1], -1) == newest.get(next, -1));
+}
+
+TEST_CASE("a process's peak memory rises with what it touches and starts over when reset", "[trialrecord]") {
+  constexpr double kBlockMib = 64;
+  REQUIRE(acobench::reset_peak_memory());
+  const double before = acobench::peak_memory_mib();
+  REQUIRE(before > 0);
+  {
+    std::vector<char> block(static_cast<std::size_t>(kBlockMib * 1024 * 1024), 1);  // touched: resident
+    CHECK(acobench::peak_memory_mib() >= before + kBlockMib - 1);
+    CHECK(block[block.size() / 2] == 1);  // used, so not optimised away
+  }
+  REQUIRE(acobench::reset_peak_memory());  // the block is given back: the peak is what is resident now
+  CHECK(acobench::peak_memory_mib() < before + kBlockMib / 2);
+}

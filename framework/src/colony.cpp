@@ -698,8 +698,9 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pip
   try {
     return run(settings, false);
   } catch (const PheromoneFoundBad& found) {
-    // Strategies start every run afresh (begin_run(), strategies.hpp), so the repeat makes the same writes and
-    // its check after every hook throws the Error that names the plugin, the hook and the iteration.
+    // Strategies start every run afresh (begin_run(), strategies.hpp), so the repeat makes the
+    // same writes and its check after every hook throws the Error that names the plugin, the hook
+    // and the iteration.
     // Up to the iteration that found the value, with no time limit to stop the repeat earlier.
     ColonySettings repeat = settings;
     repeat.iterations = found.iteration + 1;

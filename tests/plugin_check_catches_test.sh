@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # aco-plugin-check must fail, naming plugin, parameters and check, on plugins that break its
 # rules: tests/fixtures/nonconforming_update.cpp (not deterministic; NaN at q = 10; refuses
-# rho = 0, which its range admits) and
+# rho = 0, which its range admits), lingering_update.cpp (keeps per-run state across runs) and
 # throwing_update.cpp (throws 42 from its factory when asked; throws in iteration 3, as Context::iteration, by default).
 #   tests/plugin_check_catches_test.sh ACO_PLUGIN_CHECK FAULTY_PLUGIN_DIR
 set -euo pipefail
@@ -21,6 +21,9 @@ expect_failures "$dir/aco_update_nonconforming.so" \
   '^FAIL update/nonconforming \[q=10\] values: .*nan' \
   '^PASS update/nonconforming \[q=0\] values$' \
   '^FAIL update/nonconforming \[rho=0\] constructs: refused rho=0, which its declared range 0:1 admits (evaporation must be positive); declare the range (0:1 or accept the value$'
+expect_failures "$dir/aco_update_lingering.so" \
+  '^PASS update/lingering \[defaults\] deterministic$' \
+  '^FAIL update/lingering \[defaults\] reused: a second run of the same object, after runs on other maps, differs from its first: '
 expect_failures "$dir/aco_update_throwing.so" \
   '^FAIL update/throwing \[in_factory=true\] constructs: the factory threw an exception of type int' \
   '^FAIL update/throwing \[defaults\] values: .*failed in update() in iteration 3 (0-based, as Context::iteration): an exception of type int' \

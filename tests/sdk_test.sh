@@ -95,7 +95,7 @@ for plugin in "$prefix"/lib/aco/plugins/aco_*.so; do
   "$bin/aco-plugin-check" "$plugin" >> "$work/check-bundled.log" ||
     { grep -v "^PASS" "$work/check-bundled.log" >&2; exit 1; }
 done
-[ "$(grep -c "^PASS update/ant_system \[defaults\]" "$work/check-bundled.log")" = 3 ]
+[ "$(grep -c "^PASS update/ant_system \[defaults\]" "$work/check-bundled.log")" = 4 ]  # values, deterministic, threads, reused
 
 # Planning with the installed host: the six scaffolds, then the example.
 acoplan="$bin/acoplan"

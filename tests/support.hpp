@@ -94,6 +94,7 @@ struct Baseline {
 class RecordingUpdate final : public aco::PheromoneUpdate {
  public:
   explicit RecordingUpdate(aco::PheromoneUpdate& inner) : inner_(inner) {}
+  void begin_run(const aco::Context& c) override { inner_.begin_run(c); }
   void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
     ants.emplace_back(it.ants.begin(), it.ants.end());
     inner_.update(c, it, tau);

@@ -305,3 +305,33 @@ TEST_CASE("q0: with probability q0 an ant takes its best candidate (q0 = 1: ever
   Baseline b;
   CHECK_THROWS_WITH(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), bad), Contains("q0 must be in [0, 1]"));
 }
+
+TEST_CASE("strategy objects reused for runs on other maps give the runs fresh objects give", "[colony][lifecycle]") {
+  // The bundled plugins that keep state from hook to hook within a run, which begin_run() must
+  // reset (strategies.hpp, the lifecycle): direction's and potential_field's tables, max_min's
+  // bounds and restarts, population's paths, clear_and_tabu's witness.
+  const auto arena_map = aco::load_map(test::data_dir() / "maps/movingai/arena.map");
+  const aco::Graph arena = aco::build_graph(*arena_map, {});
+  const auto classic = test::classic_map(1);
+  const aco::Graph other = aco::build_graph(classic, {aco::Neighbourhood::eight, true});
+  aco::ColonySettings settings;
+  settings.ants = 10;
+  settings.iterations = 25;
+  settings.seed = 3;
+  const std::vector<aco::Keys> pipelines{
+      {{"heuristic", "direction"}, {"update", "max_min"}, {"update.restart_after", "4"}, {"deadlock", "clear_and_tabu"}},
+      {{"init", "potential_field"}, {"heuristic", "potential_field"}, {"update", "population"}, {"deadlock", "backtrack"}}};
+  for (const aco::Keys& keys : pipelines) {
+    INFO(keys.at("heuristic") << ", " << keys.at("update") << ", " << keys.at("deadlock"));
+    const aco::PipelineSpec spec = test::pipeline(keys);
+    const auto on_arena = [&](const aco::LoadedPipeline& p) {
+      return aco::run_colony(arena, arena.node({3, 3}), arena.node({44, 40}), p.colony(), settings);
+    };
+    const aco::LoadedPipeline reused = aco::instantiate(test::plugins(), spec);
+    on_arena(reused);
+    aco::run_colony(other, other.node({0, 0}), other.node({19, 19}), reused.colony(), settings);
+    const aco::ColonyResult again = on_arena(reused);
+    REQUIRE(again.solved);
+    test::check_same_run(again, on_arena(aco::instantiate(test::plugins(), spec)));
+  }
+}

@@ -293,7 +293,8 @@ class WholeTableEachIteration final : public aco::Heuristic {
   explicit WholeTableEachIteration(aco::Heuristic& inner) : inner_(inner) {}
   void compute(const aco::Context& c, std::span<double> eta) override { inner_.compute(c, eta); }
   void compute_powered(const aco::Context& c, std::span<double> eta_beta) override { inner_.compute_powered(c, eta_beta); }
-  bool varies_by_iteration() const override { return inner_.varies_by_iteration(); }
+  void begin_run(const aco::Context& c) override { inner_.begin_run(c); }
+  aco::HeuristicSpecs specs() const override { return {.varies_by_iteration = inner_.specs().varies_by_iteration}; }
 
  private:
   aco::Heuristic& inner_;
@@ -314,7 +315,7 @@ TEST_CASE("heuristics updated node by node give the runs of a whole table per it
     auto run = [&](bool by_node, int threads) {
       test::Baseline b;
       auto heuristic = test::make<aco::Heuristic>("heuristic", name, params);
-      REQUIRE(heuristic->updates_by_node());
+      REQUIRE(heuristic->specs().updates_by_node);
       WholeTableEachIteration whole(*heuristic);
       auto backtrack = test::make<aco::DeadlockPolicy>("deadlock", "backtrack");
       aco::Pipeline p = b.pipeline();

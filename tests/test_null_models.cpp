@@ -18,6 +18,10 @@ namespace {
 class CountingUpdate final : public aco::PheromoneUpdate {
  public:
   explicit CountingUpdate(aco::PheromoneUpdate& inner) : inner_(inner) {}
+  void begin_run(const aco::Context& c) override {
+    ++begun;
+    inner_.begin_run(c);
+  }
   void start(const aco::Context& c, std::span<double> tau) override {
     ++starts;
     inner_.start(c, tau);
@@ -26,6 +30,7 @@ class CountingUpdate final : public aco::PheromoneUpdate {
     ++updates;
     inner_.update(c, it, tau);
   }
+  int begun = 0;
   int starts = 0;
   int updates = 0;
 
@@ -85,6 +90,7 @@ TEST_CASE("the no-learning twin never changes the pheromone: no init, update or 
                                                std::tuple{"fireworks", "wolf_pack", "clear_and_tabu"}}) {
     Strategies p(init, "progress", update, deadlock);
     runs.push_back(aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), settings));
+    CHECK(p.counting.begun == 0);
     CHECK(p.counting.starts == 0);
     CHECK(p.counting.updates == 0);
     const auto& tau = runs.back().pheromone;
@@ -173,6 +179,7 @@ TEST_CASE("the restart twin's walks see the initial pheromone, as the colony's f
   fresh.init->initialize(context, initial);
   fresh.update->start(context, initial);
   CHECK(r.pheromone == initial);
+  CHECK(q.counting.begun == 1);
   CHECK(q.counting.starts == 1);
   CHECK(q.counting.updates == 0);
   CHECK(c.pheromone != initial);

@@ -50,6 +50,7 @@ case "$kind" in
   test='  auto plugin = aco::testing::create<aco::PheromoneUpdate>(PLUGIN_FILE);
   const aco::testing::IterationCase ants = aco::testing::standard_iterations(problem).front();  // ants arrived
   std::vector<double> tau(problem.graph.num_edges(), 1.0);
+  plugin->begin_run(problem.context());  // as every run begins
   plugin->start(problem.context(), tau);
   plugin->update(problem.context(), ants.view(), tau);
   aco::testing::check_values(tau, "tau");
@@ -121,6 +122,12 @@ case "$kind" in
   CHECK(map->passable({0, 0}));' ;;
   *) echo "$me: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother, local, map)" >&2; exit 2 ;;
 esac
+# Where a run's state goes (a map reader has no runs).
+lifecycle=""
+[ "$kind" = map ] || lifecycle='  // One object may serve several runs: what your hooks keep from one call to the next during a
+  // run, set it in begin_run(const aco::Context&), which every run calls first
+  // (docs/writing-plugins.md, "The lifecycle").
+'
 # Never over an existing project: the author's code would be lost.
 if [ -e "$dir/CMakeLists.txt" ] || [ -e "$dir/${name}.cpp" ]; then
   echo "$me: $dir already holds a plugin project (CMakeLists.txt or ${name}.cpp); choose another DIR" >&2
@@ -177,7 +184,7 @@ const aco::SettingsTable<Parameters> kParams({
 class Plugin final : public aco::${interface} {
  public:
   explicit Plugin(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
-${method}
+${lifecycle}${method}
 
  private:
   Parameters p_;
@@ -197,7 +204,8 @@ cat > "$dir/test_${name}.cpp" <<CPP
 
 TEST_CASE("${kind}/${name} passes the conformance checks", "[${kind}][${name}][conformance]") {
   // Defaults and parameter range ends, on tiny maps and edge-case iterations: finite values,
-  // same output for the same seed, same output on 1 and 4 threads (as aco-plugin-check).
+  // same output for the same seed, same output on 1 and 4 threads, a reused object's run the same
+  // as a fresh one's (as aco-plugin-check).
   aco::testing::check_conformance(PLUGIN_FILE);
 }
 

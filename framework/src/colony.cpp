@@ -146,25 +146,34 @@ class Colony {
   }
 
   void begin() {
+    // Every strategy the run asks starts it afresh (the lifecycle, strategies.hpp); a colony that
+    // ignores the pheromone never asks its init and update plugins.
+    const bool learning = s_.null_model != NullModel::no_learning;
+    p_.heuristic->begin_run(context_);
+    p_.deadlock->begin_run(context_);
+    if (learning) {
+      p_.init->begin_run(context_);
+      p_.update->begin_run(context_);
+    }
+    heuristic_ = p_.heuristic->specs();
     // The heuristic first, the pheromone after: the heuristic's double values are converted to
     // float and dropped (unless it changes by iteration) before the pheromone takes its memory.
-    uses_walk_ = p_.heuristic->uses_walk();
     compute_heuristic();
-    by_node_ = p_.heuristic->varies_by_iteration() && p_.heuristic->updates_by_node();
+    by_node_ = heuristic_.varies_by_iteration && heuristic_.updates_by_node;
     if (by_node_) {
       fresh_ = std::make_unique<std::atomic<int>[]>(static_cast<std::size_t>(g_.num_nodes()));
       for (NodeId n = 0; n < g_.num_nodes(); ++n) fresh_[n].store(context_.iteration, std::memory_order_relaxed);
     }
     allocate(tau_, static_cast<std::size_t>(g_.num_edges()));
     trail_ = Trail(tau_);
-    if (s_.null_model == NullModel::no_learning) {
-      // The init and update plugins are never asked: with tau = 1 every candidate's tau^alpha is 1.
-      std::fill(tau_.begin(), tau_.end(), 1.0);
-    } else {
+    if (learning) {
       p_.init->initialize(context_, tau_);
       check_pheromone(*p_.init, "init", "initialize()");
       p_.update->start(context_, tau_);
       check_pheromone(*p_.update, "update", "start()");
+    } else {
+      // With tau = 1 every candidate's tau^alpha is 1.
+      std::fill(tau_.begin(), tau_.end(), 1.0);
     }
     plain_ = trail_.plain();
   }
@@ -176,7 +185,7 @@ class Colony {
     context_.iteration = iteration;
     if (s_.walk_limit > 0.0 && has_best_)
       max_moves_ = static_cast<std::uint64_t>(std::ceil(s_.walk_limit * static_cast<double>(best_.edges.size())));
-    if (iteration > 0 && p_.heuristic->varies_by_iteration() && !by_node_) compute_heuristic();
+    if (iteration > 0 && heuristic_.varies_by_iteration && !by_node_) compute_heuristic();
   }
 
   // Brackets the ants' construction, whose hooks run on several threads (see FigureSink).
@@ -284,7 +293,7 @@ class Colony {
     aco::parallel_for(tbb::blocked_range<NodeId>(0, g_.num_nodes(), 4096), [&](const tbb::blocked_range<NodeId>& r) {
       for (NodeId n = r.begin(); n != r.end(); ++n) store_node_eta(n, eta_double_.data() + g_.offsets[n]);
     });
-    if (!p_.heuristic->varies_by_iteration()) std::vector<double>().swap(eta_double_);
+    if (!heuristic_.varies_by_iteration) std::vector<double>().swap(eta_double_);
   }
 
   void store_node_eta(NodeId n, const double* values) const {
@@ -395,7 +404,7 @@ class Colony {
         ant.edges.resize(ant.edges.size() - back);
         continue;
       }
-      if (uses_walk_) {
+      if (heuristic_.uses_walk) {
         std::span<double> factors(scratch.factors.data(), n);
         p_.heuristic->step_factors(context_, ant, {candidates, std::size_t(n)}, factors);
         total = 0.0;
@@ -466,7 +475,7 @@ class Colony {
   std::unique_ptr<ScratchPool> scratch_;
   WalkShortener shortener_;
   bool local_search_ = false;
-  bool uses_walk_ = false;
+  HeuristicSpecs heuristic_;  // read once per run, after the heuristic's begin_run()
   std::uint64_t max_moves_ = std::numeric_limits<std::uint64_t>::max();
   Ant best_;
   bool has_best_ = false;
@@ -689,8 +698,9 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pip
   try {
     return run(settings, false);
   } catch (const PheromoneFoundBad& found) {
-    // Strategies start every run afresh (strategies.hpp), so the repeat makes the same writes and
-    // its check after every hook throws the Error that names the plugin, the hook and the iteration.
+    // Strategies start every run afresh (begin_run(), strategies.hpp), so the repeat makes the
+    // same writes and its check after every hook throws the Error that names the plugin, the hook
+    // and the iteration.
     // Up to the iteration that found the value, with no time limit to stop the repeat earlier.
     ColonySettings repeat = settings;
     repeat.iterations = found.iteration + 1;

@@ -131,6 +131,10 @@ class Guarded : public Interface, public Identified {
  public:
   Guarded(std::unique_ptr<Interface> plugin, PluginIdentity who) : Identified{std::move(who)}, p_(std::move(plugin)) {}
 
+  void begin_run(const Context& c) override {
+    call("begin_run()", -1, [&] { p_->begin_run(c); });
+  }
+
  protected:
   template <class F>
   auto call(const char* hook, int iteration, F&& f) const -> decltype(f()) {
@@ -146,14 +150,16 @@ class Guarded : public Interface, public Identified {
 };
 
 // Each decorator forwards every virtual of its interface to the plugin, so the plugin's own
-// overrides (or the interface's defaults, run on the plugin) answer.
+// overrides (or the interface's defaults, run on the plugin) answer; Guarded forwards
+// Strategy's. A missed one would run the interface's default on the decorator instead:
+// tests/test_plugin_guard.cpp counts each interface's virtuals and calls every one through the
+// guard.
 class GuardedInit final : public Guarded<PheromoneInit> {
  public:
   using Guarded::Guarded;
   void initialize(const Context& c, std::span<double> tau) override {
     call("initialize()", c.iteration, [&] { p_->initialize(c, tau); });
   }
-
 };
 
 class GuardedHeuristic final : public Guarded<Heuristic> {
@@ -162,26 +168,19 @@ class GuardedHeuristic final : public Guarded<Heuristic> {
   void compute(const Context& c, std::span<double> eta) override {
     call("compute()", c.iteration, [&] { p_->compute(c, eta); });
   }
-  bool varies_by_iteration() const override {
-    return call("varies_by_iteration()", -1, [&] { return p_->varies_by_iteration(); });
+  HeuristicSpecs specs() const override {
+    return call("specs()", -1, [&] { return p_->specs(); });
   }
   void compute_powered(const Context& c, std::span<double> eta_beta) override {
     call("compute_powered()", c.iteration, [&] { p_->compute_powered(c, eta_beta); });
   }
-  bool updates_by_node() const override {
-    return call("updates_by_node()", -1, [&] { return p_->updates_by_node(); });
-  }
   void update_node(const Context& c, NodeId node, int since, std::span<double> eta_beta) const override {
     call("update_node()", c.iteration, [&] { p_->update_node(c, node, since, eta_beta); });
-  }
-  bool uses_walk() const override {
-    return call("uses_walk()", -1, [&] { return p_->uses_walk(); });
   }
   void step_factors(const Context& c, const Ant& ant, std::span<const EdgeId> candidates,
                     std::span<double> factors) const override {
     call("step_factors()", c.iteration, [&] { p_->step_factors(c, ant, candidates, factors); });
   }
-
 };
 
 class GuardedUpdate final : public Guarded<PheromoneUpdate> {
@@ -197,7 +196,6 @@ class GuardedUpdate final : public Guarded<PheromoneUpdate> {
   void update_trail(const Context& c, const Iteration& iteration, Trail& trail) override {
     call("update()", c.iteration, [&] { p_->update_trail(c, iteration, trail); });
   }
-
 };
 
 class GuardedDeadlock final : public Guarded<DeadlockPolicy> {
@@ -210,7 +208,6 @@ class GuardedDeadlock final : public Guarded<DeadlockPolicy> {
                        std::vector<std::uint8_t>& forbidden) override {
     call("after_iteration()", c.iteration, [&] { p_->after_iteration(c, iteration, trail, forbidden); });
   }
-
 };
 
 class GuardedSmoother final : public Guarded<Smoother> {
@@ -219,7 +216,6 @@ class GuardedSmoother final : public Guarded<Smoother> {
   std::vector<Eigen::Vector3d> smooth(const Context& c, std::span<const NodeId> path) const override {
     return call("smooth()", -1, [&] { return p_->smooth(c, path); });
   }
-
 };
 
 class GuardedLocal final : public Guarded<LocalPlanner> {
@@ -228,7 +224,6 @@ class GuardedLocal final : public Guarded<LocalPlanner> {
   VelocityCommand command(const LocalView& view) override {
     return call("command()", -1, [&] { return p_->command(view); });
   }
-
 };
 
 class GuardedMapReader final : public Guarded<MapReader> {

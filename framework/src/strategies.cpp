@@ -22,6 +22,8 @@ Smoother::~Smoother() = default;
 LocalPlanner::~LocalPlanner() = default;
 MapReader::~MapReader() = default;
 
+void Strategy::begin_run(const Context&) {}
+
 void Heuristic::compute_powered(const Context& context, std::span<double> eta_beta) {
   compute(context, eta_beta);
   if (context.beta == 1.0) return;
@@ -33,7 +35,7 @@ void Heuristic::compute_powered(const Context& context, std::span<double> eta_be
 }
 
 void Heuristic::update_node(const Context&, NodeId, int, std::span<double>) const {
-  throw Error("the heuristic plugin says it updates by node but does not implement update_node()");
+  throw Error("the heuristic plugin's specs() say it updates by node but it does not implement update_node()");
 }
 
 void Heuristic::step_factors(const Context&, const Ant&, std::span<const EdgeId>, std::span<double> factors) const {

@@ -125,6 +125,7 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
     context.seed = run.colony.seed;
     context.figures = &figures;
     o.search.length = path_length(graph, o.search.path);
+    pipeline.smoother->begin_run(context);
     o.path = pipeline.smoother->smooth(context, o.search.path);
     if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
       throw InvalidValueError(describe_plugin(*pipeline.smoother, "smoother") + " returned bad waypoints in smooth(): " + problem +

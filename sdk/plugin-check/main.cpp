@@ -17,10 +17,11 @@ int main(int argc, char** argv) {
     const std::string usage =
         "usage: aco-plugin-check [--integer-cap N] [--set NAME=VALUE]... FILE.so|FOLDER...   (or --version)\n"
         "Runs every plugin in each file at its defaults and at the ends of its parameter ranges on tiny maps and\n"
-        "checks that its values are finite and non-negative, that it is deterministic per seed, and that 1 and 4\n"
-        "threads give the same result. Whole-number range ends above N (default 100) are run at N. --set gives a\n"
-        "parameter the value every run starts from (a text parameter, such as the python plugins' class). A FOLDER\n"
-        "checks every plugin library (aco_*.so) in it.\n";
+        "checks that its values are finite and non-negative, that it is deterministic per seed, that 1 and 4\n"
+        "threads give the same result, and that an object reused for another run gives what a fresh one gives.\n"
+        "Whole-number range ends above N (default 100) are run at N. --set gives a parameter the value every run\n"
+        "starts from (a text parameter, such as the python plugins' class). A FOLDER checks every plugin library\n"
+        "(aco_*.so) in it.\n";
     aco::conformance::Options options;
     std::vector<std::string> files;
     for (int i = 1; i < argc; ++i) {

@@ -124,6 +124,10 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
   const aco::RobotLimits limits = scenario.robot.limits();
   World world(*scenario.map, scenario.unknown);
   const aco::LoadedPipeline pipeline = aco::instantiate(registry, run.pipeline);
+  // The simulation is the local planner's run; it sees the world through LocalView, not a graph.
+  aco::Context local_run;
+  local_run.seed = run.colony.seed;
+  pipeline.local->begin_run(local_run);
 
   SimulationResult result;
   aco::RobotState robot;

@@ -7,7 +7,7 @@ TEST_CASE("adaptive: eta = (1 / (d_ij + d_jE))^w with w fading from 2 to 1", "[p
   const auto map = test::grid({".....", "..#..", "....."});
   const aco::Graph g = aco::build_graph(map, {});
   auto h = test::make<aco::Heuristic>("heuristic", "adaptive");
-  REQUIRE(h->varies_by_iteration());
+  REQUIRE(h->specs().varies_by_iteration);
   std::vector<double> eta(g.num_edges());
   const aco::EdgeId e = g.find_edge(g.node({0, 0}), g.node({1, 1}));
   const double base = 1.0 / (std::sqrt(2.0) + std::hypot(3.0, 1.0));  // d_ij + d_jE, goal (4,2)

@@ -17,6 +17,7 @@ TEST_CASE("clear_and_tabu: the dead ant's walk is cleared and its dead end forbi
   const aco::Graph g = aco::build_graph(map, {});
   const auto c = test::context(g, {0, 0}, {5, 4});
   auto policy = test::make<aco::DeadlockPolicy>("deadlock", "clear_and_tabu");
+  policy->begin_run(c);
   // A walk that ended in the pocket (2,2)-(3,2)-(2,3), whose only opening is (2,4) below.
   aco::Ant dead = test::ant(g, {{3, 2}, {2, 2}, {2, 3}});
   dead.arrived = false;
@@ -45,6 +46,7 @@ TEST_CASE("clear_and_tabu never forbids a node the goal depends on", "[plugin][c
   const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::four, false});
   const auto c = test::context(g, {0, 1}, {6, 1});
   auto policy = test::make<aco::DeadlockPolicy>("deadlock", "clear_and_tabu", {{"keep", "0.5"}});
+  policy->begin_run(c);
   aco::Ant dead = test::ant(g, {{0, 1}, {1, 1}, {2, 1}, {3, 1}});
   dead.arrived = false;
   std::vector<double> tau(g.num_edges(), 3.0);
@@ -61,6 +63,7 @@ namespace {
 class Watch final : public aco::DeadlockPolicy {
  public:
   explicit Watch(aco::DeadlockPolicy& inner) : inner_(inner) {}
+  void begin_run(const aco::Context& c) override { inner_.begin_run(c); }
   int on_stuck(const aco::Context& c, std::span<const aco::NodeId> walk) const override { return inner_.on_stuck(c, walk); }
   void after_iteration(const aco::Context& c, const aco::Iteration& it, aco::Trail& trail,
                        std::vector<std::uint8_t>& forbidden) override {
@@ -126,6 +129,7 @@ TEST_CASE("clear_and_tabu forbids exactly the nodes a search per dead ant would"
     if (!aco::reachable(g, start, goal)) continue;
     const auto c = test::context(g, g.cell(start), g.cell(goal));
     auto policy = test::make<aco::DeadlockPolicy>("deadlock", "clear_and_tabu");
+    policy->begin_run(c);
     std::vector<std::uint8_t> forbidden(g.num_nodes(), 0), expected(g.num_nodes(), 0);
     std::vector<double> tau(g.num_edges(), 1.0);
     for (int iteration = 0; iteration < 6; ++iteration) {

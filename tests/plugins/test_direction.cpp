@@ -32,7 +32,7 @@ TEST_CASE("direction: eta = 1 / (d(next, goal) + gamma * |turn| / pi), raised to
   auto context = test::context(g, {0, 2}, {4, 4});
   context.beta = 2.0;
   auto h = test::make<aco::Heuristic>("heuristic", "direction", {{"gamma", "3"}});
-  REQUIRE(h->uses_walk());
+  REQUIRE(h->specs().uses_walk);
   std::vector<double> eta(g.num_edges());
   h->compute(context, eta);
   // The table holds the turn-free part, 1 / d(next, goal).

@@ -9,8 +9,8 @@ TEST_CASE("distance gives eta = 1 / d(next node, goal), floored near the goal", 
   const auto context = test::context(graph, {0, 0}, {3, 2});
   std::vector<double> eta(graph.num_edges());
   auto heuristic = test::make<aco::Heuristic>("heuristic", "distance");
-  CHECK_FALSE(heuristic->varies_by_iteration());
-  CHECK_FALSE(heuristic->uses_walk());
+  CHECK_FALSE(heuristic->specs().varies_by_iteration);
+  CHECK_FALSE(heuristic->specs().uses_walk);
   heuristic->compute(context, eta);
   // (0,0) -> (1,1): the goal (3,2) is sqrt(2^2 + 1^2) away.
   CHECK(eta[graph.find_edge(graph.node({0, 0}), graph.node({1, 1}))] == Approx(1.0 / std::sqrt(5.0)));

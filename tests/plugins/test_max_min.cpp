@@ -28,6 +28,7 @@ TEST_CASE("max_min keeps tau within [tau_min, tau_max] and only the chosen ant d
   auto update = test::make<aco::PheromoneUpdate>("update", "max_min", {{"rho", "0.2"}, {"q", "1"}, {"p_best", "0.05"},
                                                                        {"best_so_far_every", "1000"}});
   std::vector<double> tau(f.graph.num_edges(), 5.0);
+  update->begin_run(f.context);
   update->start(f.context, tau);
   const std::vector<aco::Ant> ants{f.other, f.best};
   const double tau_max = 1.0 / (0.2 * f.best.length);
@@ -55,6 +56,7 @@ TEST_CASE("max_min alternates iteration-best and best-so-far deposits on its sch
   Fixture f;
   auto update = test::make<aco::PheromoneUpdate>("update", "max_min", {{"rho", "0.5"}, {"best_so_far_every", "2"}});
   std::vector<double> tau(f.graph.num_edges(), 1.0);
+  update->begin_run(f.context);
   update->start(f.context, tau);
   // This iteration's best is `other`; the run's best so far is `best`.
   const std::vector<aco::Ant> ants{f.other};
@@ -81,6 +83,7 @@ TEST_CASE("max_min restarts the trail after the set number of iterations without
   Fixture f;
   auto update = test::make<aco::PheromoneUpdate>("update", "max_min", {{"rho", "0.5"}, {"restart_after", "3"}});
   std::vector<double> tau(f.graph.num_edges(), 1.0);
+  update->begin_run(f.context);
   update->start(f.context, tau);
   const std::vector<aco::Ant> ants{f.best};
   const double tau_max = 1.0 / (0.5 * f.best.length);
@@ -101,7 +104,9 @@ TEST_CASE("max_min's lazy trail gives the values of its plain update", "[plugin]
   auto lazy = test::make<aco::PheromoneUpdate>("update", "max_min", {{"rho", "0.3"}, {"best_so_far_every", "3"}});
   auto plain = test::make<aco::PheromoneUpdate>("update", "max_min", {{"rho", "0.3"}, {"best_so_far_every", "3"}});
   std::vector<double> stored(f.graph.num_edges(), 1.0), tau(f.graph.num_edges(), 1.0);
+  lazy->begin_run(f.context);
   lazy->start(f.context, stored);
+  plain->begin_run(f.context);
   plain->start(f.context, tau);
   aco::Trail trail(stored);
   const std::vector<aco::Ant> ants{f.other, f.best};

@@ -65,9 +65,11 @@ TEST_CASE("population: a run restarts with an empty population", "[plugin][popul
   Fixture f;
   auto update = test::make<aco::PheromoneUpdate>("update", "population", {{"size", "1"}});
   std::vector<double> tau(f.graph.num_edges(), 1.0);
+  update->begin_run(f.context);
   update->start(f.context, tau);
   f.offer(*update, f.shortest, tau);
   std::vector<double> fresh(f.graph.num_edges(), 1.0);
+  update->begin_run(f.context);
   update->start(f.context, fresh);
   f.offer(*update, f.longest, fresh);  // would be refused if the first run's population remained
   CHECK(f.edge(fresh, {0, 0}, {0, 1}) == Approx(4.0));

@@ -128,13 +128,14 @@ TEST_CASE("potential_field heuristic: the force term fades as ((it_max - it) / i
   const auto map = test::grid({"......", "......", "......"});
   const aco::Graph g = aco::build_graph(map, {});
   auto h = test::make<aco::Heuristic>("heuristic", "potential_field", {{"a", "2"}});
-  REQUIRE(h->varies_by_iteration());
+  REQUIRE(h->specs().varies_by_iteration);
   std::vector<double> eta(g.num_edges()), plain(g.num_edges());
   test::make<aco::Heuristic>("heuristic", "distance")->compute(test::context(g, {0, 1}, {5, 1}), plain);
   // At (1,1) the force points east, straight at the goal (5,1).
   const aco::EdgeId east = g.find_edge(g.node({1, 1}), g.node({2, 1}));
   const aco::EdgeId north_east = g.find_edge(g.node({1, 1}), g.node({2, 0}));
   const aco::EdgeId west = g.find_edge(g.node({1, 1}), g.node({0, 1}));
+  h->begin_run(test::context(g, {0, 1}, {5, 1}, 0, 100));
   for (int iteration : {0, 49, 99}) {
     INFO("iteration " << iteration + 1);
     h->compute(test::context(g, {0, 1}, {5, 1}, iteration, 100), eta);
@@ -155,6 +156,7 @@ TEST_CASE("potential_field heuristic: fast eta^beta equals pow(eta, beta) in eve
     for (int it = 0; it < 20; ++it) {
       auto c = test::context(g, {0, 0}, {8, 2}, it, 20);
       c.beta = beta;
+      if (it == 0) h->begin_run(c);
       h->compute_powered(c, fast);
       h->compute(c, eta);
       for (std::size_t e = 0; e < eta.size(); ++e) REQUIRE(fast[e] == Approx(std::pow(eta[e], beta)).epsilon(1e-12));

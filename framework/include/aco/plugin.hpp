@@ -45,8 +45,10 @@ namespace aco {
 // 11: Context::figures, record() and add() (a plugin's own figures); the record's build field.
 // 12: Trail (a pheromone with a lazy scale and bounds): PheromoneUpdate::update_trail(), and
 //     DeadlockPolicy::after_iteration() takes a Trail.
+// 13: Strategy::begin_run() (the lifecycle); Heuristic::specs() replaces varies_by_iteration(),
+//     updates_by_node() and uses_walk().
 // A literal, so the record can spell it; kPluginAbiVersion is the one to use in code.
-#define ACO_FRAMEWORK_PLUGIN_ABI 12
+#define ACO_FRAMEWORK_PLUGIN_ABI 13
 inline constexpr std::uint32_t kPluginAbiVersion = ACO_FRAMEWORK_PLUGIN_ABI;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";

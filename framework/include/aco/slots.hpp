@@ -42,7 +42,7 @@ inline constexpr SlotInfo kSlotTable[] = {
     {"init", "PheromoneInit", "init", "uniform", "initialize", "",
      "pheromone > 0 and finite; deterministic; same on 1 and 4 threads; a colony run", true},
     {"heuristic", "Heuristic", "heuristic", "distance", "compute",
-     "varies_by_iteration, compute_powered, updates_by_node, update_node, uses_walk, step_factors",
+     "specs, compute_powered, update_node, step_factors",
      "eta and factors >= 0 and finite; update_node as compute_powered; deterministic; threads; a colony run", true},
     {"update", "PheromoneUpdate", "update", "ant_system", "update", "start, update_trail",
      "pheromone >= 0 and finite after each iteration case; deterministic; threads; a colony run", true},

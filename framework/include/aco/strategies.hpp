@@ -41,10 +41,10 @@ struct Context {
   // add(): a count, summed over every call of the run. Thread-safe, and the sum is the same
   // whatever the thread count: the one to use in hooks that run on construction threads
   // (DeadlockPolicy::on_stuck, Heuristic::update_node and step_factors), and for any count.
-  // record(): sets a value; the last call of the run wins. Only in single-threaded hooks (init,
-  // start, update, compute, compute_powered, after_iteration, smooth): called during the ants'
-  // construction it is an Error, since which thread's call came last would depend on the thread
-  // count. One name is either a count or a value. Add 0 (or record the starting value) in
+  // record(): sets a value; the last call of the run wins. Only in single-threaded hooks
+  // (begin_run, init, start, update, compute, compute_powered, after_iteration, smooth): called
+  // during the ants' construction it is an Error, since which thread's call came last would
+  // depend on the thread count. One name is either a count or a value. Add 0 (or record the starting value) in
   // initialize() or start() to have the figure in every run, the ones where nothing happened too.
   void record(std::string_view name, double value) const;
   void add(std::string_view name, std::int64_t delta = 1) const;
@@ -65,11 +65,26 @@ struct Iteration {
   const Ant* best_so_far = nullptr;  // shortest path of the run so far (this iteration included), or null
 };
 
-// One strategy object may serve several runs in turn (benchmarks, ablation studies): per-run
-// state belongs in initialize(), compute() or start(), which every run calls first.
+// The lifecycle. A strategy object is made once, by its constructor from its parameters (OMPL's
+// setup(), nav2's configure()), and may then serve several runs in turn: studies and benchmarks
+// reuse one, and run_colony() repeats a run on the same objects to name the writer of a bad value.
+// Every run calls begin_run() first, before any other hook of the run: whatever a strategy keeps
+// from one hook to the next (a population, a best length, tables of the map) it sets there, so the
+// previous run leaves no trace. The rule, which aco-plugin-check's "reused" check tests: a run of a
+// reused object gives bit for bit what a run of a fresh one gives. (Fresh objects for every run
+// would need the engine to hold factories rather than the objects callers give it; one hook keeps
+// the interfaces as they are and says where the reset goes.) Keep no pointer into a run's data
+// (the graph, the context) beyond the run: read them from the Context every hook is given.
+//
+// Who calls it: the colony, for init, heuristic, update and deadlock (those it asks: a colony of
+// the no_learning null model never asks init and update), at the start of every colony
+// run; plan() for the smoother before smooth(); acosim for the local planner before a simulation's
+// first command (its context holds the seed only: a local planner sees the world through
+// LocalView). A map reader has no runs: read() is const and reads one file.
 class BOOST_SYMBOL_VISIBLE Strategy {
  public:
   virtual ~Strategy();
+  virtual void begin_run(const Context& context);
 };
 
 // Slot "init": the pheromone of every edge before the first iteration.
@@ -81,36 +96,41 @@ class BOOST_SYMBOL_VISIBLE PheromoneInit : public Strategy {
   virtual void initialize(const Context& context, std::span<double> tau) = 0;
 };
 
+// What a heuristic can do beyond compute(), read once per run by the engine (after begin_run()).
+struct HeuristicSpecs {
+  // compute_powered() is called before every iteration, not once per run.
+  bool varies_by_iteration = false;
+  // A heuristic that changes every iteration costs a pass over every edge per iteration, more
+  // than the ants' work on a large map. With varies_by_iteration, it may set this and implement
+  // update_node(): the engine then calls compute_powered() in the first iteration only and
+  // afterwards brings eta^beta up to date node by node, for the nodes the ants stand on, the
+  // first time they do in an iteration.
+  bool updates_by_node = false;
+  // It depends on the ant's own walk (its heading, say): the engine calls step_factors() once per
+  // step with all candidate edges, never once per candidate.
+  bool uses_walk = false;
+};
+
 // Slot "heuristic": the desirability eta of every edge.
 class BOOST_SYMBOL_VISIBLE Heuristic : public Strategy {
  public:
   ~Heuristic() override;
   // Fills eta (>= 0, finite) for every edge. Called once per run, or before every
-  // iteration when varies_by_iteration() is true. The engine raises it to beta itself.
+  // iteration when specs().varies_by_iteration. The engine raises it to beta itself.
   virtual void compute(const Context& context, std::span<double> eta) = 0;
-  virtual bool varies_by_iteration() const { return false; }
+  virtual HeuristicSpecs specs() const { return {}; }
   // What the engine calls: eta^beta for every edge. The default calls compute() and raises
   // each value to beta; a heuristic that changes every iteration may override it to update
   // eta^beta more cheaply than a pow() per edge (see heuristic/adaptive).
   virtual void compute_powered(const Context& context, std::span<double> eta_beta);
-
-  // A heuristic that changes every iteration costs a pass over every edge per iteration, more
-  // than the ants' work on a large map. It may return true here and implement update_node(): the
-  // engine then calls compute_powered() in the first iteration only and afterwards brings eta^beta
-  // up to date node by node, for the nodes the ants stand on, the first time they do in an
+  // With specs().updates_by_node. eta_beta: the out-edges of `node` (from graph.offsets[node]),
+  // holding eta^beta as it was in iteration `since` (< context.iteration). Sets them to what
+  // compute_powered() gives for context.iteration, bit for bit. Called from construction threads,
+  // never twice at once for one node, and only after compute_powered() ran for the run's first
   // iteration.
-  virtual bool updates_by_node() const { return false; }
-  // eta_beta: the out-edges of `node` (from graph.offsets[node]), holding eta^beta as it was in
-  // iteration `since` (< context.iteration). Sets them to what compute_powered() gives for
-  // context.iteration, bit for bit. Called from construction threads, never twice at once for
-  // one node, and only after compute_powered() ran for the run's first iteration.
   virtual void update_node(const Context& context, NodeId node, int since, std::span<double> eta_beta) const;
-
-  // A heuristic that depends on the ant's own walk (its heading, say) returns true here; the
-  // engine then calls step_factors() once per step with all candidate edges, never once per
-  // candidate. `ant` holds the walk so far (nodes and edges). factors[i] multiplies candidate
-  // i's tau^alpha * eta^beta. Must be thread-safe.
-  virtual bool uses_walk() const { return false; }
+  // With specs().uses_walk: `ant` holds the walk so far (nodes and edges). factors[i] multiplies
+  // candidate i's tau^alpha * eta^beta. Must be thread-safe.
   virtual void step_factors(const Context& context, const Ant& ant, std::span<const EdgeId> candidates,
                             std::span<double> factors) const;
 };

@@ -23,6 +23,12 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
 
   int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }
 
+  // The witness is of this run's map, start and goal.
+  void begin_run(const aco::Context& c) override {
+    witness_.clear();
+    on_witness_.assign(static_cast<std::size_t>(c.graph->num_nodes()), -1);
+  }
+
   void after_iteration(const aco::Context& c, const aco::Iteration& it, aco::Trail& trail,
                        std::vector<std::uint8_t>& forbidden) override {
     std::int64_t newly_forbidden = 0;
@@ -48,11 +54,6 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
   // witness; only if none is found nearby is the whole map searched. The answers are the same as
   // a search per node.
   bool keeps_goal_reachable(const aco::Context& c, const std::vector<std::uint8_t>& forbidden, aco::NodeId node) {
-    if (c.graph != graph_ || on_witness_.size() != forbidden.size()) {  // a new map
-      graph_ = c.graph;
-      witness_.clear();
-      on_witness_.assign(forbidden.size(), -1);
-    }
     if (!witness_valid(c, forbidden)) {
       if (!search_.find(*c.graph, c.start, c.goal, forbidden, -1, kWholeMap)) return false;
       set_witness(search_.path());
@@ -95,7 +96,6 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
 
   static constexpr std::size_t kNearby = 1024;  // nodes a repair search may visit
   static constexpr std::size_t kWholeMap = static_cast<std::size_t>(-1);
-  const aco::Graph* graph_ = nullptr;
   std::vector<aco::NodeId> witness_;         // an open start-goal path, or empty
   std::vector<std::int32_t> on_witness_;     // per node: its position on the witness, or -1
   aco::BreadthFirstSearch search_;          // its path() is that of the last successful search

@@ -21,7 +21,8 @@ class AdaptiveHeuristic final : public aco::Heuristic {
  public:
   explicit AdaptiveHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
-  bool varies_by_iteration() const override { return true; }
+  // The same multiplications, in the same order, for the iterations a node missed (update_node()).
+  aco::HeuristicSpecs specs() const override { return {.varies_by_iteration = true, .updates_by_node = true}; }
 
   void compute(const aco::Context& c, std::span<double> eta) override {
     const double w = weight(c);
@@ -51,8 +52,6 @@ class AdaptiveHeuristic final : public aco::Heuristic {
     advance(c, c.iteration - 1, 0, eta_beta);
   }
 
-  // The same multiplications, in the same order, for the iterations a node missed.
-  bool updates_by_node() const override { return true; }
   void update_node(const aco::Context& c, aco::NodeId node, int since, std::span<double> eta_beta) const override {
     advance(c, since, c.graph->offsets[node], eta_beta);
   }

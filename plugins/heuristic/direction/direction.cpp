@@ -30,13 +30,12 @@ class DirectionHeuristic final : public aco::Heuristic {
  public:
   explicit DirectionHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
-  bool uses_walk() const override { return true; }
+  aco::HeuristicSpecs specs() const override { return {.uses_walk = true}; }
 
   // The table part: eta = 1 / d with no turn. Also prepares the per-step lookups: the engine
   // asks step_factors() once per step, and it must not call pow() there.
   void compute(const aco::Context& c, std::span<double> eta) override {
     const aco::Graph& g = *c.graph;
-    graph_ = &g;
     build_turn_classes();
     move_.resize(g.num_edges());
     const int keys = p_.to_goal ? g.num_nodes() : kMoveKinds;
@@ -45,8 +44,8 @@ class DirectionHeuristic final : public aco::Heuristic {
       const aco::NodeId from = g.source(e), to = g.targets[e];
       move_[e] = static_cast<std::uint8_t>(move_kind(g.cell(from), g.cell(to)));
       const double dist = p_.to_goal ? g.distance(to, c.goal) : g.costs[e];
-      d[key(e)] = std::max(dist, p_.min_distance);
-      eta[e] = 1.0 / d[key(e)];
+      d[key(g, e)] = std::max(dist, p_.min_distance);
+      eta[e] = 1.0 / d[key(g, e)];
     }
     // factor = (eta with the turn / eta without)^beta = (d / (d + gamma * turn))^beta
     factor_.assign(static_cast<std::size_t>(keys) * turn_values_.size(), 1.0);
@@ -55,7 +54,7 @@ class DirectionHeuristic final : public aco::Heuristic {
         factor_[k * turn_values_.size() + t] = std::pow(d[k] / (d[k] + p_.gamma * turn_values_[t]), c.beta);
   }
 
-  void step_factors(const aco::Context&, const aco::Ant& ant, std::span<const aco::EdgeId> candidates,
+  void step_factors(const aco::Context& c, const aco::Ant& ant, std::span<const aco::EdgeId> candidates,
                     std::span<double> factors) const override {
     if (ant.edges.empty()) {  // no heading yet
       std::fill(factors.begin(), factors.end(), 1.0);
@@ -64,7 +63,7 @@ class DirectionHeuristic final : public aco::Heuristic {
     const std::uint8_t* turn = &turn_class_[move_[ant.edges.back()] * kMoveKinds];
     const std::size_t classes = turn_values_.size();
     if (p_.to_goal) {
-      const aco::NodeId* targets = graph_->targets.data();
+      const aco::NodeId* targets = c.graph->targets.data();
       for (std::size_t i = 0; i < candidates.size(); ++i)
         factors[i] = factor_[targets[candidates[i]] * classes + turn[move_[candidates[i]]]];
     } else {
@@ -74,8 +73,8 @@ class DirectionHeuristic final : public aco::Heuristic {
   }
 
  private:
-  std::size_t key(aco::EdgeId e) const {
-    return p_.to_goal ? static_cast<std::size_t>(graph_->targets[e]) : static_cast<std::size_t>(move_[e]);
+  std::size_t key(const aco::Graph& g, aco::EdgeId e) const {
+    return p_.to_goal ? static_cast<std::size_t>(g.targets[e]) : static_cast<std::size_t>(move_[e]);
   }
 
   // |dtheta| / pi for every pair of move kinds, as a small class index: 5 classes on an
@@ -97,7 +96,6 @@ class DirectionHeuristic final : public aco::Heuristic {
   }
 
   Parameters p_;
-  const aco::Graph* graph_ = nullptr;
   std::vector<std::uint8_t> move_;         // per edge: its move kind
   std::vector<double> turn_values_;        // |dtheta| / pi of each turn class
   std::vector<std::uint8_t> turn_class_;   // [previous move kind][move kind] -> turn class

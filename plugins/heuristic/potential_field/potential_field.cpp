@@ -31,27 +31,35 @@ class PotentialFieldHeuristic final : public aco::Heuristic {
  public:
   explicit PotentialFieldHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
-  bool varies_by_iteration() const override { return true; }
+  // Only w changes between iterations, so a node's edges need nothing from earlier iterations.
+  aco::HeuristicSpecs specs() const override { return {.varies_by_iteration = true, .updates_by_node = true}; }
+
+  // Per edge, once per run: the distance heuristic, a * max(0, cos phi) and base^beta.
+  void begin_run(const aco::Context& c) override {
+    const aco::Graph& g = *c.graph;
+    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, p_.gains);
+    base_.resize(g.num_edges());
+    boost_.resize(g.num_edges());
+    base_beta_.resize(g.num_edges());
+    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
+      base_[e] = 1.0 / std::max(g.distance(g.targets[e], c.goal), p_.min_distance);
+      const Eigen::Vector2d& force = forces[g.source(e)];
+      const double strength = force.norm();
+      boost_[e] = strength > 0.0 ? p_.a * std::max(0.0, force.dot(aco::planar_direction(g, e)) / strength) : 0.0;
+      base_beta_[e] = std::pow(base_[e], c.beta);
+    }
+    beta_ = c.beta;
+  }
 
   void compute(const aco::Context& c, std::span<double> eta) override {
-    prepare(c);
     const double w = weight(c);
     for (std::size_t e = 0; e < eta.size(); ++e) eta[e] = base_[e] * (1.0 + w * boost_[e]);
   }
 
-  // eta^beta = base^beta * (1 + w * boost)^beta: base^beta is computed once per run, and the
-  // second factor only on edges with a boost, by multiplications when beta is a whole number.
-  void compute_powered(const aco::Context& c, std::span<double> eta_beta) override {
-    if (prepare(c) || base_beta_.size() != base_.size() || beta_ != c.beta) {
-      beta_ = c.beta;
-      base_beta_.resize(base_.size());
-      for (std::size_t e = 0; e < base_.size(); ++e) base_beta_[e] = std::pow(base_[e], beta_);
-    }
-    powered(weight(c), 0, eta_beta);
-  }
+  // eta^beta = base^beta * (1 + w * boost)^beta: the second factor only on edges with a boost,
+  // by multiplications when beta is a whole number.
+  void compute_powered(const aco::Context& c, std::span<double> eta_beta) override { powered(weight(c), 0, eta_beta); }
 
-  // Only w changes between iterations, so a node's edges need nothing from earlier iterations.
-  bool updates_by_node() const override { return true; }
   void update_node(const aco::Context& c, aco::NodeId node, int, std::span<double> eta_beta) const override {
     powered(weight(c), c.graph->offsets[node], eta_beta);
   }
@@ -85,30 +93,7 @@ class PotentialFieldHeuristic final : public aco::Heuristic {
     return result;
   }
 
-  // Per edge, once per run (a run starts at iteration 0): the distance heuristic and
-  // a * max(0, cos phi). Returns whether it computed them.
-  bool prepare(const aco::Context& c) {
-    const aco::Graph& g = *c.graph;
-    if (c.iteration != 0 && graph_ == &g && start_ == c.start && goal_ == c.goal) return false;
-    graph_ = &g;
-    start_ = c.start;
-    goal_ = c.goal;
-    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, p_.gains);
-    base_.resize(g.num_edges());
-    boost_.resize(g.num_edges());
-    for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
-      base_[e] = 1.0 / std::max(g.distance(g.targets[e], c.goal), p_.min_distance);
-      const Eigen::Vector2d& force = forces[g.source(e)];
-      const double strength = force.norm();
-      boost_[e] = strength > 0.0 ? p_.a * std::max(0.0, force.dot(aco::planar_direction(g, e)) / strength) : 0.0;
-    }
-    return true;
-  }
-
   Parameters p_;
-  const aco::Graph* graph_ = nullptr;
-  aco::NodeId start_ = -1;
-  aco::NodeId goal_ = -1;
   double beta_ = 0.0;
   std::vector<double> base_;       // per edge: 1 / d(j, goal)
   std::vector<double> boost_;      // per edge: a * max(0, cos phi)

@@ -11,7 +11,7 @@ class PythonHeuristic final : public aco::python::Adapter<aco::Heuristic> {
   void compute(const aco::Context& context, std::span<double> eta) override {
     object_->call("compute", context, nullptr, eta);
   }
-  bool varies_by_iteration() const override { return varies_; }
+  aco::HeuristicSpecs specs() const override { return {.varies_by_iteration = varies_}; }
 
  private:
   bool varies_;

@@ -33,8 +33,8 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
  public:
   explicit MaxMinUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
-  void start(const aco::Context& c, std::span<double>) override {
-    bounded_ = false;  // one plugin object may serve several runs
+  void begin_run(const aco::Context& c) override {
+    bounded_ = false;
     best_length_ = std::numeric_limits<double>::infinity();
     last_improvement_ = 0;
     // ACOTSP's "average number of choices" is (candidates + 1) / 2; here the candidates of a
@@ -43,6 +43,9 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
     int nodes = 0;
     for (aco::NodeId n = 0; n < g.num_nodes(); ++n) nodes += g.degree(n) > 0;
     choices_ = 0.5 * (1.0 + double(g.num_edges()) / std::max(nodes, 1));
+  }
+
+  void start(const aco::Context& c, std::span<double>) override {
     c.add("restarts", 0);  // in every run's figures, the runs without a restart too
   }
 

@@ -29,8 +29,9 @@ class PopulationUpdate final : public aco::PheromoneUpdate {
  public:
   explicit PopulationUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
+  void begin_run(const aco::Context&) override { population_.clear(); }
+
   void start(const aco::Context&, std::span<double> tau) override {
-    population_.clear();  // one plugin object may serve several runs
     // With the field's mean at 1 the deposit is a fraction of it, independent of the map's scale.
     aco::rescale_mean(tau, 1.0);
     delta_ = (p_.ratio - 1.0) / static_cast<double>(p_.size);

@@ -2,13 +2,15 @@
 // The plugin conformance checks, in one place for aco-plugin-check and for Catch2 tests
 // (aco/testing.hpp). Every plugin of a library file is run at its defaults and at each end of
 // each parameter's range (one parameter at a time), on the standard tiny maps and edge-case
-// iterations below, and three checks are made for every parameter set:
+// iterations below, and these checks are made for every parameter set:
 //   values         every value it produces is finite and in range (pheromone > 0 after init,
 //                  >= 0 after update; eta, factors, path lengths, waypoints, commands), and it
 //                  keeps its interface's contract (see check_slot in conformance.cpp)
-//   deterministic  two runs with the same seed give identical output, bit for bit, and one
-//                  object serving a second run gives what it gave the first time
+//   deterministic  two runs of fresh objects with the same seed give identical output, bit for bit
 //   threads        a run on 4 threads gives what the run on 1 thread gave
+//   reused         the lifecycle (aco/strategies.hpp): one object serving a second run, after runs
+//                  on the other maps, gives what it gave as a fresh object (begin_run() leaves no
+//                  trace of earlier runs); not for map readers, which have no runs
 // (The run on 4 threads is the second run when it agrees with the first; when it does not,
 // another run on 1 thread tells nondeterminism from thread dependence.)
 // A value the plugin's factory refuses with aco::Error (a combination it rejects, like a > b)

@@ -23,7 +23,7 @@
 #include "aco/studies/results_db.hpp"
 #include "aco/studies/statistics.hpp"
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 std::string number(double v, int digits = 4) {
@@ -878,8 +878,7 @@ std::vector<std::filesystem::path> write_report(const std::filesystem::path& dat
   const ReportDocument document = report_document(a, database);
   std::vector<std::filesystem::path> files = {out / "report.md", out / "report.html", out / "runs.csv"};
   write(files[0], render_markdown(document));
-  write(files[1], render_html(document, "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>
-"));
+  write(files[1], render_html(document, "<p>All runs: <a href=\"runs.csv\">runs.csv</a></p>\n"));
   write(files[2], runs_csv(a.trials, a.problems, a.configs));
   std::filesystem::create_directories(out / "plots");
   for (const Block& block : document.blocks)
@@ -892,4 +891,4 @@ std::vector<std::filesystem::path> write_report(const std::filesystem::path& dat
   return files;
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

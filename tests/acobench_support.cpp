@@ -23,7 +23,7 @@ std::filesystem::path experiment(const std::string& text) {
   return test::temp_file("experiment.yaml", yaml);
 }
 
-acobench::Experiment load(const std::string& text) { return acobench::load_experiment(experiment(text), test::plugins()); }
+aco::studies::Experiment load(const std::string& text) { return aco::studies::load_experiment(experiment(text), test::plugins()); }
 
 const char* const kSmall = R"(name: small
 seed: 7
@@ -79,7 +79,7 @@ std::string file_bytes(const std::filesystem::path& file) {
 
 std::vector<std::string> trial_rows(const std::filesystem::path& db) {
   std::vector<std::string> rows;
-  for (const auto& t : acobench::ResultsDb(db).trials()) {
+  for (const auto& t : aco::studies::ResultsDb(db).trials()) {
     std::ostringstream row;
     row.precision(17);
     row << t.problem << " " << t.config << " " << t.repetition << " " << t.seed << " " << t.solved << " " << t.length << " "

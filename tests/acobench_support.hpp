@@ -14,7 +14,7 @@ std::string map1();  // data/maps/classic20/map1.txt
 
 // An experiment file in a fresh folder; {MAP1} and {ARENA} stand for absolute paths.
 std::filesystem::path experiment(const std::string& text);
-acobench::Experiment load(const std::string& text);
+aco::studies::Experiment load(const std::string& text);
 
 // Four configurations (AS, ACS, beta=3, beta=7) of 4 repetitions on map1: 16 quick trials.
 extern const char* const kSmall;

@@ -56,7 +56,7 @@ TEST_CASE("an experiment file expands into named, factorial and baseline configu
   CHECK(e.configurations[1].keys.at("update") == "acs");
   CHECK(e.configurations[1].keys.count("update.rho") == 0);
   CHECK(e.configurations[2].keys.at("update.rho") == "0.3");
-  const auto s = acobench::resolve(e.configurations[1], test::plugins());
+  const auto s = aco::studies::resolve(e.configurations[1], test::plugins());
   CHECK(s.graph.corner_cutting);
   CHECK(s.pipeline.at("update").parameters.real("xi") == 0.2);
   CHECK(s.colony.q0 == 0.7);
@@ -94,23 +94,23 @@ TEST_CASE("experiment file mistakes name the file, the line and the key", "[acob
 }
 
 TEST_CASE("a trial's seed depends on the master seed, the problem and the repetition only", "[acobench]") {
-  const auto a = acobench::trial_seed(1, "map1", 0);
-  CHECK(a == acobench::trial_seed(1, "map1", 0));
-  CHECK(a != acobench::trial_seed(2, "map1", 0));
-  CHECK(a != acobench::trial_seed(1, "map2", 0));
-  CHECK(a != acobench::trial_seed(1, "map1", 1));
+  const auto a = aco::studies::trial_seed(1, "map1", 0);
+  CHECK(a == aco::studies::trial_seed(1, "map1", 0));
+  CHECK(a != aco::studies::trial_seed(2, "map1", 0));
+  CHECK(a != aco::studies::trial_seed(1, "map2", 0));
+  CHECK(a != aco::studies::trial_seed(1, "map1", 1));
   CHECK(a < (std::uint64_t{1} << 63));  // within the colony's seed range
 }
 
 TEST_CASE("the ablation path flips one component at a time, and a slot's plugin carries its parameters", "[acobench]") {
-  acobench::Configuration from{{{{"update", "ant_system"}, {"update.rho", "0.3"}, {"beta", "7"}}, {}}, "from", {}};
-  acobench::Configuration to{{{{"update", "acs"}, {"update.xi", "0.2"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}}, "to", {}};
-  const auto components = acobench::ablation_components(from, to);
+  aco::studies::Configuration from{{{{"update", "ant_system"}, {"update.rho", "0.3"}, {"beta", "7"}}, {}}, "from", {}};
+  aco::studies::Configuration to{{{{"update", "acs"}, {"update.xi", "0.2"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}}, "to", {}};
+  const auto components = aco::studies::ablation_components(from, to);
   REQUIRE(components.size() == 3);  // beta, init, update (+ update.xi, update.rho)
   const auto update = std::find_if(components.begin(), components.end(), [](const auto& c) { return c.front() == "update"; });
   REQUIRE(update != components.end());
   CHECK(update->size() == 3);
-  const auto flipped = acobench::flip(from, to, *update);
+  const auto flipped = aco::studies::flip(from, to, *update);
   CHECK(flipped.keys.at("update") == "acs");
   CHECK(flipped.keys.at("update.xi") == "0.2");
   CHECK(flipped.keys.count("update.rho") == 0);
@@ -138,7 +138,7 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   REQUIRE(run_acobench({"run", file.string(), "--db", db2.string(), "--threads", "2"}).exit_code == 0);
   CHECK(trial_rows(db) == trial_rows(db2));
   // Each trial's anytime curves: a time per iteration, never decreasing, and its ants' walks.
-  for (const auto& t : acobench::ResultsDb(db).trials()) {
+  for (const auto& t : aco::studies::ResultsDb(db).trials()) {
     REQUIRE(t.elapsed_s.size() == static_cast<std::size_t>(t.iterations));
     REQUIRE(t.walks.size() == static_cast<std::size_t>(t.iterations));
     CHECK(t.peak_memory_mib > 0);  // measured in the worker process that ran it
@@ -264,7 +264,7 @@ TEST_CASE("a configuration starts from an acoplan config file with 'config', its
       "  - {name: from the preset again, config: preset.ini, update.rho: 0.4}\n");
   std::ofstream(file.parent_path() / "preset.ini") << "ants = 12   # a comment\nheuristic = progress\nupdate = acs\nq0 = 0.7\n"
                                                        "[heuristic]\nfloor = 0.5\n[update]\nrho = 0.2\n";
-  const auto e = acobench::load_experiment(file, test::plugins());
+  const auto e = aco::studies::load_experiment(file, test::plugins());
   REQUIRE(e.configurations.size() == 4);
   const auto& preset = *e.configurations[0].run;
   CHECK(preset.colony.ants == 12);
@@ -283,17 +283,17 @@ TEST_CASE("a configuration starts from an acoplan config file with 'config', its
 
   SECTION("a missing config file is named with the line that asks for it") {
     std::filesystem::remove(file.parent_path() / "preset.ini");
-    CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()),
+    CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()),
                       Contains("experiment.yaml:5") && Contains("preset.ini: cannot open the config file"));
   }
   SECTION("a bad key in the config file is named with the file") {
     std::ofstream(file.parent_path() / "preset.ini") << "antz = 12\n";
-    CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()),
+    CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()),
                       Contains("preset.ini: configuration 'preset'") && Contains("antz") && Contains("ants"));
   }
   SECTION("a bad line in the config file is named with its file and line") {
     std::ofstream(file.parent_path() / "preset.ini") << "ants = 12\n%invalid_line%x\n";
-    CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()),
+    CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()),
                       Contains("experiment.yaml:5") && Contains("preset.ini:2: '%invalid_line%x' is not a 'key = value' line"));
   }
 }
@@ -316,16 +316,16 @@ TEST_CASE("an experiment sets terrain keys per configuration: max-slope limits t
                                                       ", count: 1}\nsettings: {ants: 20, iterations: 20}\n"
                                                       "configurations:\n  - {name: slope60, max-slope: 60}\n"
                                                       "  - {name: slope50, max-slope: 50}\n");
-  const auto e = acobench::load_experiment(file, test::plugins());
+  const auto e = aco::studies::load_experiment(file, test::plugins());
   REQUIRE(e.configurations.size() == 3);
-  CHECK(acobench::resolve(e.configurations[1], test::plugins()).problem.terrain.max_slope_deg == 60.0);
+  CHECK(aco::studies::resolve(e.configurations[1], test::plugins()).problem.terrain.max_slope_deg == 60.0);
   const auto db_file = file.parent_path() / "slopes.db";
-  acobench::RunOptions options;
+  aco::studies::RunOptions options;
   options.database = db_file;
   options.threads = 2;
-  const auto summary = acobench::run_experiment(e, test::plugins(), options);
+  const auto summary = aco::studies::run_experiment(e, test::plugins(), options);
   CHECK(summary.ran == 6);
-  const acobench::ResultsDb db(db_file);
+  const aco::studies::ResultsDb db(db_file);
   const auto configs = db.configs();
   REQUIRE(configs.size() == 3);
   CHECK_THAT(configs[1].second.settings_json, Contains("\"max-slope\":60.0"));
@@ -366,7 +366,7 @@ TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per co
                          "  - {simulation: scenario.yaml, variations: true, name: varied}\n"
                          "baseline: {name: dwa}\n"
                          "configurations:\n  - {name: follow, local.follow: 0.5}\n  - {name: blind, local: track}\n";
-  const auto e = acobench::load_experiment(file, test::plugins());
+  const auto e = aco::studies::load_experiment(file, test::plugins());
   REQUIRE(e.problems.size() == 2);
   CHECK(e.problems[0].start == aco::Cell{0, 2});
   CHECK(e.problems[1].variations);
@@ -375,15 +375,15 @@ TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per co
 
   const auto run = [&](const std::string& name, int threads) {
     const auto db_file = file.parent_path() / name;
-    acobench::RunOptions options;
+    aco::studies::RunOptions options;
     options.database = db_file;
     options.threads = threads;
-    acobench::run_experiment(e, test::plugins(), options);
-    return acobench::ResultsDb(db_file).trials();
+    aco::studies::run_experiment(e, test::plugins(), options);
+    return aco::studies::ResultsDb(db_file).trials();
   };
   const auto trials = run("sim1.db", 1);
   REQUIRE(trials.size() == 18);
-  const auto configs = acobench::ResultsDb(file.parent_path() / "sim1.db").configs();
+  const auto configs = aco::studies::ResultsDb(file.parent_path() / "sim1.db").configs();
   for (const auto& t : trials) {
     INFO("problem " << t.problem << ", config " << t.config << ", repetition " << t.repetition);
     REQUIRE(t.simulation);
@@ -416,14 +416,14 @@ TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per co
   }
   // A key the scenario's plugins do not have is an error naming the configuration.
   std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: scenario.yaml}\nconfigurations:\n  - {name: bad, local.folow: 1}\n";
-  CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()), Contains("configuration 'bad'") && Contains("local.follow"));
+  CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()), Contains("configuration 'bad'") && Contains("local.follow"));
   std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: missing.yaml}\n";
-  CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("cannot open the scenario file"));
+  CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("cannot open the scenario file"));
   // Found by the experiment fuzz harness: a folder given as the scenario escaped as the stream
   // library's std::ios_base::failure (acobench printed "basic_filebuf::underflow error").
   std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: ../}\n";
-  CHECK_THROWS_WITH(acobench::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("is a directory, not a scenario file"));
-  CHECK_THROWS_WITH(acobench::load_experiment(file.parent_path(), test::plugins()), Contains("is a directory, not an experiment file"));
+  CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("is a directory, not a scenario file"));
+  CHECK_THROWS_WITH(aco::studies::load_experiment(file.parent_path(), test::plugins()), Contains("is a directory, not an experiment file"));
 }
 
 TEST_CASE("failed trials are stored named and counted by reason and acobench exits 3 now and on a rerun",
@@ -450,7 +450,7 @@ TEST_CASE("failed trials are stored named and counted by reason and acobench exi
   CHECK_THAT(r.err, Contains("acobench: exit 3: trials failed") && Contains("--allow-failures accepts them"));
   int solved = 0;
   std::map<std::string, int> failures;
-  for (const auto& t : acobench::ResultsDb(db).trials()) {
+  for (const auto& t : aco::studies::ResultsDb(db).trials()) {
     if (!t.error.empty()) {
       ++failures[t.failure];
       CHECK_FALSE(t.solved);
@@ -488,7 +488,7 @@ TEST_CASE("an experiment given by a relative path, with absolute map paths, stor
   std::filesystem::current_path(before);
   REQUIRE(run.exit_code == 0);
   REQUIRE(report.exit_code == 0);
-  const acobench::ResultsDb db(file.parent_path() / "rel.db");
+  const aco::studies::ResultsDb db(file.parent_path() / "rel.db");
   const auto map = nlohmann::json::parse(db.problems().at(0).setup_json).at("map").get<std::string>();
   CHECK(std::filesystem::equivalent(file.parent_path() / map, map1()));
   const std::string html = file_bytes(file.parent_path() / "report/report.html");
@@ -541,7 +541,7 @@ configurations:
   REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
   CHECK_THAT(file_bytes(out / "report.md"), Contains("gap is the mean excess of the grid path (before smoothing)"));
 
-  const double optimal = acobench::ResultsDb(db).problems().at(0).optimal_length;
+  const double optimal = aco::studies::ResultsDb(db).problems().at(0).optimal_length;
   std::istringstream csv(file_bytes(out / "runs.csv"));
   std::string line;
   std::getline(csv, line);
@@ -587,7 +587,7 @@ TEST_CASE("a report of a database from before the measured times leaves its runs
   CHECK(count_of(html, "class=\"ecdf\"") == 0);
   CHECK_THAT(html, Contains("class=\"convergence\""));  // the per-iteration view is still there
   // Reading it for the report brought it to the current format.
-  CHECK(acobench::ResultsDb(db).meta("format_version") == "6");
+  CHECK(aco::studies::ResultsDb(db).meta("format_version") == "6");
 }
 
 TEST_CASE("a problem written as a single value is refused with the problem format, not yaml-cpp's exception",
@@ -606,7 +606,7 @@ TEST_CASE("every bundled experiment file loads and resolves each configuration o
     if (entry.path().extension() != ".yaml") continue;
     INFO(entry.path().string());
     ++files;
-    const auto e = acobench::load_experiment(entry.path(), test::plugins());
+    const auto e = aco::studies::load_experiment(entry.path(), test::plugins());
     CHECK(e.configurations.size() >= 1);
     // No configuration of ours compares a run with itself (acobench would warn).
     CHECK(e.same_runs().empty());
@@ -621,8 +621,8 @@ TEST_CASE("a simulation experiment has one fingerprint whichever path names it",
   const auto file = test::data_dir() / "experiments" / "dwa.yaml";
   const auto before = std::filesystem::current_path();
   std::filesystem::current_path(test::data_dir().parent_path());
-  const auto relative = acobench::load_experiment("data/experiments/dwa.yaml", test::plugins());
+  const auto relative = aco::studies::load_experiment("data/experiments/dwa.yaml", test::plugins());
   std::filesystem::current_path(before);
-  const auto absolute = acobench::load_experiment(std::filesystem::absolute(file), test::plugins());
+  const auto absolute = aco::studies::load_experiment(std::filesystem::absolute(file), test::plugins());
   CHECK(relative.fingerprint(test::plugins()) == absolute.fingerprint(test::plugins()));
 }

@@ -33,19 +33,19 @@ std::filesystem::path sibling(const std::filesystem::path& file, const std::stri
 }  // namespace
 
 TEST_CASE("a shard K/N is checked: 1 <= K <= N", "[acobench][shards]") {
-  const auto shard = acobench::parse_shard("2/3");
+  const auto shard = aco::studies::parse_shard("2/3");
   CHECK(shard.index == 2);
   CHECK(shard.count == 3);
-  CHECK(acobench::to_string(shard) == "2/3");
+  CHECK(aco::studies::to_string(shard) == "2/3");
   for (const char* bad : {"0/3", "4/3", "3", "a/b", "1/0", "1/3x", "-1/3", ""})
-    CHECK_THROWS_WITH(acobench::parse_shard(bad), Contains("expected K/N"));
+    CHECK_THROWS_WITH(aco::studies::parse_shard(bad), Contains("expected K/N"));
   // Every trial number is in exactly one shard, and the shards' sizes add up.
   std::size_t total = 0;
   for (int k = 1; k <= 3; ++k) {
-    const acobench::Shard s{k, 3};
+    const aco::studies::Shard s{k, 3};
     std::size_t owned = 0;
     for (std::size_t i = 0; i < 32; ++i) owned += s.owns(i) ? 1 : 0;
-    CHECK(owned == acobench::shard_size(s, 32));
+    CHECK(owned == aco::studies::shard_size(s, 32));
     total += owned;
   }
   CHECK(total == 32);

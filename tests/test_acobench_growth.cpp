@@ -54,7 +54,7 @@ std::vector<std::string> raw_rows(const std::filesystem::path& db) {
 // trial_rows() with the problem's and the configuration's names for their positions: databases
 // that list their problems in another order compare equal when they hold the same trials.
 std::vector<std::string> named_trial_rows(const std::filesystem::path& db) {
-  const acobench::ResultsDb read(db);
+  const aco::studies::ResultsDb read(db);
   std::map<int, std::string> configs;
   for (const auto& [id, config] : read.configs()) configs[id] = config.name;
   const auto problems = read.problems();

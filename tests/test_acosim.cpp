@@ -28,10 +28,10 @@ std::filesystem::path scenario(const std::string& yaml) {
 }
 
 // The scenario of `file`, driven with `changes` over its run keys.
-acosim::SimulationResult simulate(const std::filesystem::path& file, const aco::Keys& changes = {}) {
-  acosim::Scenario s = acosim::load_scenario(file, test::plugins());
-  if (!changes.empty()) s = acosim::with_run_keys(s, {changes, {}}, test::plugins());
-  return acosim::simulate(s, test::plugins());
+aco::simulation::SimulationResult simulate(const std::filesystem::path& file, const aco::Keys& changes = {}) {
+  aco::simulation::Scenario s = aco::simulation::load_scenario(file, test::plugins());
+  if (!changes.empty()) s = aco::simulation::with_run_keys(s, {changes, {}}, test::plugins());
+  return aco::simulation::simulate(s, test::plugins());
 }
 
 }  // namespace
@@ -132,9 +132,9 @@ TEST_CASE("acosim's picture has start and goal marked and a legend beside the ma
   const auto file = scenario(
       "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa}\nunknown: [[6, 2]]\n"
       "moving:\n  - {position: [11, 0.5], velocity: [-0.2, 0], radius: 0.3}\n");
-  const acosim::Scenario s = acosim::load_scenario(file, test::plugins());
-  const acosim::SimulationResult r = acosim::simulate(s, test::plugins());
-  const std::string svg = acosim::render_svg(s, r);
+  const aco::simulation::Scenario s = aco::simulation::load_scenario(file, test::plugins());
+  const aco::simulation::SimulationResult r = aco::simulation::simulate(s, test::plugins());
+  const std::string svg = aco::simulation::render_svg(s, r);
   // Start and goal: a marker at the cell's centre (24 pixels per cell, 12 margin) and a word.
   CHECK(attribute_of(svg, "<g id=\"start\"", "cx") == 12 + 0.5 * 24);
   CHECK(attribute_of(svg, "<g id=\"start\"", "cy") == 12 + 2.5 * 24);
@@ -158,10 +158,10 @@ TEST_CASE("acosim's picture has start and goal marked and a legend beside the ma
   CHECK_THAT(svg, Contains("viewBox=\"0 0 "));
 
   SECTION("a collision is marked where the robot stopped, and the legend says so") {
-    const acosim::Scenario blind = acosim::with_run_keys(s, {{{"local", "track"}}, {}}, test::plugins());
-    const acosim::SimulationResult hit = acosim::simulate(blind, test::plugins());
+    const aco::simulation::Scenario blind = aco::simulation::with_run_keys(s, {{{"local", "track"}}, {}}, test::plugins());
+    const aco::simulation::SimulationResult hit = aco::simulation::simulate(blind, test::plugins());
     REQUIRE(hit.collisions == 1);
-    const std::string picture = acosim::render_svg(blind, hit);
+    const std::string picture = aco::simulation::render_svg(blind, hit);
     CHECK_THAT(picture, Contains("<g id=\"collision\">") && Contains(">collision</text>"));
   }
 }
@@ -169,7 +169,7 @@ TEST_CASE("acosim's picture has start and goal marked and a legend beside the ma
 TEST_CASE("acosim: bad scenarios are errors naming the file, the line and the key", "[acosim][bad-input]") {
   const auto error = [](const std::string& yaml) {
     try {
-      acosim::load_scenario(scenario(yaml), test::plugins());
+      aco::simulation::load_scenario(scenario(yaml), test::plugins());
     } catch (const aco::Error& e) {
       return std::string(e.what());
     }
@@ -189,9 +189,9 @@ TEST_CASE("acosim: bad scenarios are errors naming the file, the line and the ke
   CHECK_THAT(error("run: {map: open.txt, start: [0, 2]}\n"), Contains("'run' needs 'goal'"));
   CHECK_THAT(error(run + "obstacles: []\n"), Contains("unknown key 'obstacles'"));
   CHECK_THAT(error(run + "moving:\n  - {route: [[3, 3]], speed: 1}\n"), Contains("at least two points"));
-  CHECK_THROWS_WITH(acosim::load_scenario(std::filesystem::temp_directory_path(), test::plugins()),
+  CHECK_THROWS_WITH(aco::simulation::load_scenario(std::filesystem::temp_directory_path(), test::plugins()),
                     Contains("is a directory, not a scenario file"));
-  CHECK_THROWS_WITH(acosim::load_scenario("/dev/zero", test::plugins()), Contains("/dev/zero: not a regular file"));
+  CHECK_THROWS_WITH(aco::simulation::load_scenario("/dev/zero", test::plugins()), Contains("/dev/zero: not a regular file"));
 }
 
 // Boost.ProgramOptions' message for these never came back (aco/program_options_error.hpp).
@@ -229,10 +229,10 @@ TEST_CASE("acosim: every bundled scenario reaches the goal without a collision",
 
 TEST_CASE("acosim batch: variations depend on the seed only, results not on the thread count", "[acosim][slow]") {
   const auto file = scenario("run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa, local.predict: true}\n");
-  const acosim::Scenario base = acosim::load_scenario(file, test::plugins());
-  const auto a = acosim::variations(base, 6, 5, test::plugins());
-  const auto b = acosim::variations(base, 6, 5, test::plugins());
-  const auto other = acosim::variations(base, 6, 6, test::plugins());
+  const aco::simulation::Scenario base = aco::simulation::load_scenario(file, test::plugins());
+  const auto a = aco::simulation::variations(base, 6, 5, test::plugins());
+  const auto b = aco::simulation::variations(base, 6, 5, test::plugins());
+  const auto other = aco::simulation::variations(base, 6, 6, test::plugins());
   REQUIRE(a.size() == 6);
   bool differs = false;
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -244,7 +244,7 @@ TEST_CASE("acosim batch: variations depend on the seed only, results not on the 
   CHECK(differs);
   const auto run = [&](int threads) {
     const aco::ThreadLimit limit(threads);
-    return acosim::run_batch(a, test::plugins());
+    return aco::simulation::run_batch(a, test::plugins());
   };
   const auto one = run(1), two = run(2);
   CHECK(one.runs == 6);
@@ -261,8 +261,8 @@ TEST_CASE("acosim batch: no variation seals the goal off", "[acosim]") {
   const auto file = scenario("run: {map: corridor.txt, start: [0, 1], goal: [11, 1], local: dwa}\n");
   std::ofstream(file.parent_path() / "corridor.txt") << "1 1 1 1 1 1 1 1 1 1 1 1\n0 0 0 0 0 0 0 0 0 0 0 0\n"
                                                           "1 1 1 1 1 1 1 1 1 1 1 1\n";
-  const acosim::Scenario base = acosim::load_scenario(file, test::plugins());
-  for (const auto& v : acosim::variations(base, 10, 3, test::plugins())) {
+  const aco::simulation::Scenario base = aco::simulation::load_scenario(file, test::plugins());
+  for (const auto& v : aco::simulation::variations(base, 10, 3, test::plugins())) {
     CHECK(v.unknown.empty());
     CHECK(!v.moving.empty());
   }
@@ -281,12 +281,12 @@ test::CommandResult acosim_run(const std::vector<std::string>& args) {
 
 TEST_CASE("acosim --batch: worker processes give the in-process results, whatever the thread count", "[acosim][contain]") {
   const auto file = scenario("run: {map: two.txt, start: [0, 1], goal: [9, 1], local: dwa, local.predict: true}\n");
-  const acosim::Scenario base = acosim::load_scenario(file, test::plugins());
-  const auto in_process = acosim::run_batch(acosim::variations(base, 6, 5, test::plugins()), test::plugins());
+  const aco::simulation::Scenario base = aco::simulation::load_scenario(file, test::plugins());
+  const auto in_process = aco::simulation::run_batch(aco::simulation::variations(base, 6, 5, test::plugins()), test::plugins());
   const std::vector<std::string> command{ACO_TEST_ACOSIM, "--variation-worker", file.string(), "--batch", "6", "--seed", "5"};
   for (const int lanes : {1, 2}) {
     INFO(lanes << " worker processes");
-    const auto workers = acosim::run_batch_in_workers(6, command, lanes, {}, [](int k, const acosim::SimulationResult& r) {
+    const auto workers = aco::simulation::run_batch_in_workers(6, command, lanes, {}, [](int k, const aco::simulation::SimulationResult& r) {
       FAIL("variation " << k << " failed: " << r.reason);
     });
     REQUIRE(workers.results.size() == in_process.results.size());

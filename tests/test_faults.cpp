@@ -132,7 +132,7 @@ TEST_CASE("acobench stores a trial whose plugin writes NaN in its last iteration
     REQUIRE(r.exit_code == 3);
     CHECK_THAT(r.err, Contains("2 of 4 trials failed") && Contains("a plugin wrote an invalid value: 2"));
     int failed = 0;
-    for (const auto& t : acobench::ResultsDb(db).trials()) {
+    for (const auto& t : aco::studies::ResultsDb(db).trials()) {
       if (t.error.empty()) continue;
       ++failed;
       CHECK(t.stopped_by == "error");

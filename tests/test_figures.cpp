@@ -176,7 +176,7 @@ TEST_CASE("acobench keeps the figures and the planners' properties per trial: da
   std::string header, line;
   std::getline(csv, header);
   std::string fixed_columns;
-  for (const auto& name : acobench::runs_csv_columns()) fixed_columns += (fixed_columns.empty() ? "" : ",") + name;
+  for (const auto& name : aco::studies::runs_csv_columns()) fixed_columns += (fixed_columns.empty() ? "" : ",") + name;
   CHECK(header == fixed_columns + ",deadlock/backtrack.backoffs,deadlock/figures.last_iteration,deadlock/figures.stuck,evaluations");
   int counted_rows = 0;
   while (std::getline(csv, line)) {
@@ -206,20 +206,20 @@ TEST_CASE("acobench keeps the figures and the planners' properties per trial: da
 
 TEST_CASE("40 series get 40 distinct colour and line style pairs, the same for a configuration in every chart", "[figures][plots]") {
   std::set<std::pair<std::string, std::string>> styles;
-  for (std::size_t k = 0; k < acobench::kDistinctStyles; ++k)
-    styles.emplace(acobench::series_style(k).colour, acobench::series_style(k).dash);
-  CHECK(styles.size() == acobench::kDistinctStyles);
+  for (std::size_t k = 0; k < aco::studies::kDistinctStyles; ++k)
+    styles.emplace(aco::studies::series_style(k).colour, aco::studies::series_style(k).dash);
+  CHECK(styles.size() == aco::studies::kDistinctStyles);
   // A chart of 20 series: 20 distinct strokes, each legend entry drawn as its line.
-  acobench::LineChart chart;
+  aco::studies::LineChart chart;
   for (int k = 0; k < 20; ++k) chart.series.push_back({"config " + std::to_string(k), {1.0 + k, 2.0}, {}, {}, {}, {}});
   chart.series[3].style = 17;  // a series keeps the style it is given
-  const std::string svg = acobench::line_chart_svg(chart);
+  const std::string svg = aco::studies::line_chart_svg(chart);
   std::set<std::string> strokes;
   for (std::size_t at = svg.find("class=\"series\""); at != std::string::npos; at = svg.find("class=\"series\"", at + 1)) {
     const auto begin = svg.find("stroke=", at), end = svg.find(" stroke-width", at);
     strokes.insert(svg.substr(begin, end - begin));
   }
   CHECK(strokes.size() == 19);  // series 3 and 17 share style 17
-  CHECK_THAT(svg, Contains(acobench::stroke_attributes(17) + " stroke-width=\"2\"/><text x=\"") && Contains(">config 3</text>"));
-  CHECK(acobench::stroke_attributes(12) == "stroke=\"#2ca02c\" stroke-dasharray=\"7,3\"");
+  CHECK_THAT(svg, Contains(aco::studies::stroke_attributes(17) + " stroke-width=\"2\"/><text x=\"") && Contains(">config 3</text>"));
+  CHECK(aco::studies::stroke_attributes(12) == "stroke=\"#2ca02c\" stroke-dasharray=\"7,3\"");
 }

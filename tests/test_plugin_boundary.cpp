@@ -193,7 +193,7 @@ TEST_CASE("acobench records plugin hashes and refuses to resume with a changed p
                                       "--plugin-dir", plugin.parent_path().string()};
   const auto first = test::run(args);
   REQUIRE(first.exit_code == 0);
-  const auto configs = acobench::ResultsDb(db).configs();
+  const auto configs = aco::studies::ResultsDb(db).configs();
   REQUIRE(configs.size() == 1);
   const auto stored = nlohmann::json::parse(configs[0].second.settings_json)["plugins"]["update"];
   CHECK(stored["name"] == "acs");

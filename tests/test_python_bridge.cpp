@@ -176,10 +176,10 @@ TEST_CASE("acobench runs a python update in its worker processes with the result
   const auto r = test::acobench_helpers::run_acobench({"run", file.string(), "--db", db.string(), "--threads", "2"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  const acobench::ResultsDb stored(db);
+  const aco::studies::ResultsDb stored(db);
   std::map<int, std::string> config_names;
   for (const auto& [id, config] : stored.configs()) config_names[id] = config.name;
-  std::map<std::pair<int, int>, std::map<std::string, acobench::TrialRecord>> trials;
+  std::map<std::pair<int, int>, std::map<std::string, aco::studies::TrialRecord>> trials;
   for (const auto& t : stored.trials()) trials[{t.problem, t.repetition}][config_names[t.config]] = t;
   REQUIRE(trials.size() == 6);
   for (const auto& [key, by_config] : trials) {

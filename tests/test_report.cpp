@@ -71,15 +71,15 @@ std::filesystem::path reported_study(const std::string& configurations) {
                          ", start: [0, 0], goal: [19, 19], name: map1}\n  - {scen: " +
                          (test::data_dir() / "terrain/epf30.asc.scen").string() +
                          ", count: 1}\nsettings: {preset: ant-system, ants: 8, iterations: 10}\n" + configurations);
-  const auto e = acobench::load_experiment(file, test::plugins());
-  acobench::RunOptions options;
+  const auto e = aco::studies::load_experiment(file, test::plugins());
+  aco::studies::RunOptions options;
   options.database = file.parent_path() / "report.db";
   std::filesystem::remove(options.database);
   options.threads = 2;
-  acobench::run_experiment(e, test::plugins(), options);
+  aco::studies::run_experiment(e, test::plugins(), options);
   const auto out = file.parent_path() / "report";
   std::filesystem::remove_all(out);
-  acobench::write_report(options.database, out);
+  aco::studies::write_report(options.database, out);
   return out;
 }
 

@@ -34,23 +34,23 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 const std::string kName = "ablation";
 const std::string kFingerprint = "experiment ablation\nants = 50\nmaps = map1, arena\n";
-const std::vector<acobench::ProblemRecord> kProblems{
+const std::vector<aco::studies::ProblemRecord> kProblems{
     {"map1", R"({"map":"data/maps/classic20/map1.txt","start":[0,0],"goal":[19,19],"neighbourhood":8})", 28.38},
     {"arena", R"({"map":"arena.map","start":[1,2],"goal":[40,41],"neighbourhood":8})", -1.0}};
 
 fs::path fresh_db() { return test::temp_file("unused", "").parent_path() / "results.db"; }
 
-acobench::ResultsDb open(const fs::path& file, const std::string& fingerprint = kFingerprint) {
-  return acobench::ResultsDb(file, kName, fingerprint, kProblems);
+aco::studies::ResultsDb open(const fs::path& file, const std::string& fingerprint = kFingerprint) {
+  return aco::studies::ResultsDb(file, kName, fingerprint, kProblems);
 }
 
-acobench::ConfigRecord config(const std::string& name, double rho) {
+aco::studies::ConfigRecord config(const std::string& name, double rho) {
   return {name, R"({"update":")" + name + R"(","update.rho":)" + std::to_string(rho) + "}"};
 }
 
 // A trial whose values all depend on its key, solved from iteration 3 on unless `solved` is false.
-acobench::TrialRecord trial(int problem, int config_id, int repetition, bool solved = true, int iterations = 6) {
-  acobench::TrialRecord t;
+aco::studies::TrialRecord trial(int problem, int config_id, int repetition, bool solved = true, int iterations = 6) {
+  aco::studies::TrialRecord t;
   t.problem = problem;
   t.config = config_id;
   t.repetition = repetition;
@@ -77,7 +77,7 @@ acobench::TrialRecord trial(int problem, int config_id, int repetition, bool sol
   return t;
 }
 
-void check_equal(const acobench::TrialRecord& a, const acobench::TrialRecord& b) {
+void check_equal(const aco::studies::TrialRecord& a, const aco::studies::TrialRecord& b) {
   CHECK(a.problem == b.problem);
   CHECK(a.config == b.config);
   CHECK(a.repetition == b.repetition);
@@ -141,7 +141,7 @@ void sql_exec(const fs::path& file, const std::string& sql) {
 
 TEST_CASE("a results database reads back every stored trial after reopening", "[resultsdb]") {
   const fs::path file = fresh_db();
-  std::vector<acobench::TrialRecord> stored;
+  std::vector<aco::studies::TrialRecord> stored;
   int as = 0, mmas = 0;
   {
     auto db = open(file);
@@ -259,13 +259,13 @@ TEST_CASE("a database of another experiment is refused and left as it was", "[re
                             Contains("nothing in it was changed"));
   }
   SECTION("another experiment") {
-    REQUIRE_THROWS_WITH(acobench::ResultsDb(file, "other", kFingerprint, kProblems),
+    REQUIRE_THROWS_WITH(aco::studies::ResultsDb(file, "other", kFingerprint, kProblems),
                         Contains("holds the results of experiment 'ablation', not of 'other'"));
   }
   SECTION("the same fingerprint with a problem set up otherwise") {
     auto problems = kProblems;
     problems[1].setup_json = R"({"map":"arena.map","start":[1,2],"goal":[40,40],"neighbourhood":8})";
-    REQUIRE_THROWS_WITH(acobench::ResultsDb(file, kName, kFingerprint, problems),
+    REQUIRE_THROWS_WITH(aco::studies::ResultsDb(file, kName, kFingerprint, problems),
                         Contains("that the experiment file now runs otherwise:\n  problem 'arena': goal [40,41] -> [40,40]\n"));
   }
   CHECK(bytes(file) == before);
@@ -283,7 +283,7 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   const fs::path missing = fresh_db();
   auto problems = kProblems;
   problems[0].setup_json = R"({"map": "map1.txt",)";
-  REQUIRE_THROWS_WITH(acobench::ResultsDb(missing, kName, kFingerprint, problems),
+  REQUIRE_THROWS_WITH(aco::studies::ResultsDb(missing, kName, kFingerprint, problems),
                       Contains("the setup of problem 'map1' is not valid JSON"));
   CHECK_FALSE(fs::exists(missing));
 }
@@ -302,15 +302,15 @@ TEST_CASE("simulation and failed trials store their measures, and a format-1 dat
     sql_exec(file, "UPDATE acobench_meta SET value = '1' WHERE key = 'format_version'");
   };
   make_format_1();
-  CHECK(acobench::ResultsDb(file).meta("format_version") == "6");  // a report upgrades it too
+  CHECK(aco::studies::ResultsDb(file).meta("format_version") == "6");  // a report upgrades it too
   make_format_1();
 
   auto db = open(file);
   CHECK(db.meta("format_version") == "6");
   auto reached = trial(0, id, 1, true, 0);
-  reached.simulation = acobench::SimulationRecord{"reached", 87.5, 0, 1, 0.047, 875};
+  reached.simulation = aco::studies::SimulationRecord{"reached", 87.5, 0, 1, 0.047, 875};
   auto hit = trial(1, id, 0, false, 0);
-  hit.simulation = acobench::SimulationRecord{"collision", std::nan(""), 1, 0, -0.02, 120};
+  hit.simulation = aco::studies::SimulationRecord{"collision", std::nan(""), 1, 0, -0.02, 120};
   db.store(reached);
   db.store(hit);
   auto failed = trial(1, id, 1, false, 0);
@@ -360,9 +360,9 @@ TEST_CASE("a format-4 database gains runs.failure from how its failed trials sto
 TEST_CASE("a database grows by the problems an experiment adds, and leaves out those it no longer names", "[resultsdb]") {
   const fs::path file = fresh_db();
   with_one_trial(file);  // problem map1
-  const acobench::ProblemRecord extra{"extra", R"({"map":"extra.map","start":[0,0],"goal":[5,5]})", 7.0};
+  const aco::studies::ProblemRecord extra{"extra", R"({"map":"extra.map","start":[0,0],"goal":[5,5]})", 7.0};
   {
-    auto grown = acobench::ResultsDb(file, kName, kFingerprint, {kProblems[1], extra, kProblems[0]});
+    auto grown = aco::studies::ResultsDb(file, kName, kFingerprint, {kProblems[1], extra, kProblems[0]});
     CHECK(grown.problems().size() == 3);
     const auto trials = grown.trials();
     REQUIRE(trials.size() == 1);
@@ -370,10 +370,10 @@ TEST_CASE("a database grows by the problems an experiment adds, and leaves out t
     CHECK(grown.finished() == std::set<std::tuple<int, int, int>>{{2, trials[0].config, 0}});
   }
   CHECK(sql_value(file, "SELECT group_concat(name) FROM experiments") == "map1,arena,extra");
-  auto without_map1 = acobench::ResultsDb(file, kName, kFingerprint, {extra});
+  auto without_map1 = aco::studies::ResultsDb(file, kName, kFingerprint, {extra});
   CHECK(without_map1.trials().empty());
   CHECK(without_map1.finished().empty());
-  CHECK(acobench::ResultsDb(file).trials().size() == 1);  // a report reads every stored problem
+  CHECK(aco::studies::ResultsDb(file).trials().size() == 1);  // a report reads every stored problem
 }
 
 TEST_CASE("a format-3 database gains progress.walks: its runs read back without anytime curves, and resume",
@@ -510,7 +510,7 @@ TEST_CASE("a trial's properties are rows of their own with their types, and a fo
 
   auto db = open(file);
   CHECK(db.meta("format_version") == "6");
-  acobench::ConfigRecord same = config("ant_system", 0.1);
+  aco::studies::ConfigRecord same = config("ant_system", 0.1);
   same.plugins_json = R"({"update":{"name":"ant_system","build":"optimised"}})";
   CHECK(db.add_config(same) == id);  // the same configuration, now with its plugins
   CHECK(db.configs().front().second.plugins_json == same.plugins_json);

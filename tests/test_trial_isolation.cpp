@@ -40,7 +40,7 @@ std::vector<std::string> with(std::vector<std::string> first, const std::vector<
 // Rows of trial_rows() of the configurations with ids 1 and 2 (the healthy ones, added first).
 std::vector<std::string> healthy_rows(const std::filesystem::path& db) {
   std::vector<std::string> rows;
-  for (const auto& t : acobench::ResultsDb(db).trials())
+  for (const auto& t : aco::studies::ResultsDb(db).trials())
     if (t.config <= 2) rows.push_back(std::to_string(t.problem) + " " + std::to_string(t.config) + " " +
                                       std::to_string(t.repetition) + " " + std::to_string(t.length) + " " + t.path_json);
   return rows;
@@ -56,7 +56,7 @@ std::map<std::string, int> check_failures(const std::filesystem::path& db) {
                                 "/aco_update_hogging.so) in update() in iteration 3"}},
       {6, {"plugin error", "plugin update/throwing ("}}};
   std::map<std::string, int> kinds;
-  for (const auto& t : acobench::ResultsDb(db).trials()) {
+  for (const auto& t : aco::studies::ResultsDb(db).trials()) {
     INFO("config " << t.config << ": " << t.error);
     if (t.config <= 2) {
       CHECK(t.error.empty());

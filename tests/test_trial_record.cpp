@@ -23,25 +23,25 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::vector<acobench::ProblemRecord> kProblems{{"map1", R"({"map":"map1.txt"})", 28.5}};
+const std::vector<aco::studies::ProblemRecord> kProblems{{"map1", R"({"map":"map1.txt"})", 28.5}};
 
 // A value of `type` that no field has by default and that tells fields apart.
-acobench::TrialCell sample(acobench::TrialCellType type, int index) {
+aco::studies::TrialCell sample(aco::studies::TrialCellType type, int index) {
   switch (type) {
-    case acobench::TrialCellType::boolean: return true;
-    case acobench::TrialCellType::integer: return std::int64_t{100 + index};
-    case acobench::TrialCellType::count: return std::uint64_t{0x8000'0000'0000'0000ULL} + static_cast<std::uint64_t>(index);
-    case acobench::TrialCellType::real: return 30.25 + index;
-    case acobench::TrialCellType::text: break;
+    case aco::studies::TrialCellType::boolean: return true;
+    case aco::studies::TrialCellType::integer: return std::int64_t{100 + index};
+    case aco::studies::TrialCellType::count: return std::uint64_t{0x8000'0000'0000'0000ULL} + static_cast<std::uint64_t>(index);
+    case aco::studies::TrialCellType::real: return 30.25 + index;
+    case aco::studies::TrialCellType::text: break;
   }
   return "[\"field, " + std::to_string(index) + "\"]";  // valid JSON (the path must be), with a comma
 }
 
 // A trial whose every field that can be set holds a sample, set through the table alone.
-acobench::TrialRecord sample_trial(int config) {
-  acobench::TrialRecord t;
+aco::studies::TrialRecord sample_trial(int config) {
+  aco::studies::TrialRecord t;
   t.config = config;
-  const auto& fields = acobench::trial_fields();
+  const auto& fields = aco::studies::trial_fields();
   for (std::size_t i = 0; i < fields.size(); ++i)
     if (fields[i].set) fields[i].set(t, sample(fields[i].type, static_cast<int>(i)));
   t.best_so_far.assign(static_cast<std::size_t>(t.iterations), 40.0);
@@ -78,14 +78,14 @@ std::vector<std::string> csv_line(const std::string& line) {
 
 TEST_CASE("every trial field reaches the messages, the runs table and runs.csv from the table alone", "[trialrecord]") {
   const fs::path file = test::temp_file("unused", "").parent_path() / "fields.db";
-  acobench::ResultsDb db(file, "fields", "fingerprint", kProblems);
-  const acobench::TrialRecord trial = sample_trial(db.add_config({"mine", "{}"}));
+  aco::studies::ResultsDb db(file, "fields", "fingerprint", kProblems);
+  const aco::studies::TrialRecord trial = sample_trial(db.add_config({"mine", "{}"}));
   db.store(trial);
-  const acobench::TrialRecord sent = acobench::record_from(acobench::record_json(trial));
-  const acobench::TrialRecord stored = db.trials().at(0);
+  const aco::studies::TrialRecord sent = aco::studies::record_from(aco::studies::record_json(trial));
+  const aco::studies::TrialRecord stored = db.trials().at(0);
   const std::set<std::string> columns = runs_columns(file);
 
-  std::istringstream csv(acobench::runs_csv({trial}, kProblems, db.configs()));
+  std::istringstream csv(aco::studies::runs_csv({trial}, kProblems, db.configs()));
   std::string header_line, row_line;
   std::getline(csv, header_line);
   std::getline(csv, row_line);
@@ -94,20 +94,20 @@ TEST_CASE("every trial field reaches the messages, the runs table and runs.csv f
   CHECK(header.back() == "update/x.restarts");  // ant_steps and stopped_by are fields: no second column
 
   const double optimal = kProblems[0].optimal_length;
-  for (const auto& f : acobench::trial_fields()) {
+  for (const auto& f : aco::studies::trial_fields()) {
     INFO("field " << f.name);
-    const acobench::TrialCell value = f.get(trial, optimal);
+    const aco::studies::TrialCell value = f.get(trial, optimal);
     CHECK_FALSE(std::holds_alternative<std::monostate>(value));
-    CHECK(bool(f.use & acobench::kInMessage) == bool(f.set));  // a derived field is not sent
-    if (f.use & acobench::kInMessage) CHECK(f.get(sent, optimal) == value);
-    CHECK(columns.contains(f.name) == bool(f.use & acobench::kInRunsTable));
-    if ((f.use & acobench::kInRunsTable) && f.set) CHECK(f.get(stored, optimal) == value);
+    CHECK(bool(f.use & aco::studies::kInMessage) == bool(f.set));  // a derived field is not sent
+    if (f.use & aco::studies::kInMessage) CHECK(f.get(sent, optimal) == value);
+    CHECK(columns.contains(f.name) == bool(f.use & aco::studies::kInRunsTable));
+    if ((f.use & aco::studies::kInRunsTable) && f.set) CHECK(f.get(stored, optimal) == value);
     const auto at = std::find(header.begin(), header.end(), f.column);
-    CHECK((at != header.end()) == bool(f.use & acobench::kInRunsCsv));
+    CHECK((at != header.end()) == bool(f.use & aco::studies::kInRunsCsv));
     if (at != header.end()) CHECK_FALSE(row[static_cast<std::size_t>(at - header.begin())].empty());
   }
   CHECK(header == [] {
-    auto names = acobench::runs_csv_columns();
+    auto names = aco::studies::runs_csv_columns();
     names.push_back("update/x.restarts");
     return names;
   }());
@@ -115,11 +115,11 @@ TEST_CASE("every trial field reaches the messages, the runs table and runs.csv f
 
 TEST_CASE("a database made before a field was added gains its column, NULL for its runs, and resumes", "[trialrecord]") {
   const fs::path file = test::temp_file("unused", "").parent_path() / "older.db";
-  const auto& newest = acobench::trial_fields().back();
-  REQUIRE((newest.use & acobench::kInRunsTable));
+  const auto& newest = aco::studies::trial_fields().back();
+  REQUIRE((newest.use & aco::studies::kInRunsTable));
   int config = 0;
   {
-    acobench::ResultsDb db(file, "older", "fingerprint", kProblems);
+    aco::studies::ResultsDb db(file, "older", "fingerprint", kProblems);
     config = db.add_config({"mine", "{}"});
     db.store(sample_trial(config));
   }
@@ -132,12 +132,12 @@ TEST_CASE("a database made before a field was added gains its column, NULL for i
   }
   REQUIRE_FALSE(runs_columns(file).contains(newest.name));
 
-  const acobench::ResultsDb report(file);  // a report reads it
+  const aco::studies::ResultsDb report(file);  // a report reads it
   CHECK(runs_columns(file).contains(newest.name));
   CHECK(report.meta("format_version") == "6");  // an older acobench reads it still
   CHECK(std::holds_alternative<std::monostate>(newest.get(report.trials().at(0), -1)));
 
-  acobench::ResultsDb resumed(file, "older", "fingerprint", kProblems);
+  aco::studies::ResultsDb resumed(file, "older", "fingerprint", kProblems);
   auto next = sample_trial(config);
   next.repetition += 1;
   resumed.store(next);
@@ -148,14 +148,14 @@ TEST_CASE("a database made before a field was added gains its column, NULL for i
 
 TEST_CASE("a process's peak memory rises with what it touches and starts over when reset", "[trialrecord]") {
   constexpr double kBlockMib = 64;
-  REQUIRE(acobench::reset_peak_memory());
-  const double before = acobench::peak_memory_mib();
+  REQUIRE(aco::studies::reset_peak_memory());
+  const double before = aco::studies::peak_memory_mib();
   REQUIRE(before > 0);
   {
     std::vector<char> block(static_cast<std::size_t>(kBlockMib * 1024 * 1024), 1);  // touched: resident
-    CHECK(acobench::peak_memory_mib() >= before + kBlockMib - 1);
+    CHECK(aco::studies::peak_memory_mib() >= before + kBlockMib - 1);
     CHECK(block[block.size() / 2] == 1);  // used, so not optimised away
   }
-  REQUIRE(acobench::reset_peak_memory());  // the block is given back: the peak is what is resident now
-  CHECK(acobench::peak_memory_mib() < before + kBlockMib / 2);
+  REQUIRE(aco::studies::reset_peak_memory());  // the block is given back: the peak is what is resident now
+  CHECK(aco::studies::peak_memory_mib() < before + kBlockMib / 2);
 }

@@ -127,7 +127,7 @@ std::string command_line(const std::vector<std::string>& args) {
 }
 
 // Two configurations that are one run compare it with itself: told before any trial runs.
-void warn_same_runs(const acobench::Experiment& experiment) {
+void warn_same_runs(const aco::studies::Experiment& experiment) {
   for (const auto& [first, second] : experiment.same_runs())
     std::cerr << "acobench: warning: configurations '" << first << "' and '" << second
               << "' resolve to the same run (the same plugins and parameters), so comparing them compares a run with "
@@ -149,13 +149,13 @@ std::string counted(std::size_t count, const std::string& noun) {
 // Before the first trial: how many trials the experiment has and how many are stored already,
 // so that a user knows what was started ("4320 trials: 18 configurations x 24 problems x 10
 // repetitions; 0 already in paper003.db, 4320 to run").
-std::function<void(const acobench::TrialPlan&)> announce_trials(const acobench::Experiment& experiment,
-                                                                const acobench::RunOptions& run) {
-  return [&experiment, &run](const acobench::TrialPlan& plan) {
+std::function<void(const aco::studies::TrialPlan&)> announce_trials(const aco::studies::Experiment& experiment,
+                                                                const aco::studies::RunOptions& run) {
+  return [&experiment, &run](const aco::studies::TrialPlan& plan) {
     const std::size_t configurations = plan.configurations + plan.ablation_configurations;
     const std::size_t all = configurations * plan.problems * static_cast<std::size_t>(plan.repetitions);
     std::cout << "acobench: " << experiment.name << ": ";
-    if (run.shard) std::cout << "shard " << acobench::to_string(*run.shard) << ": " << plan.trials << " of the ";
+    if (run.shard) std::cout << "shard " << aco::studies::to_string(*run.shard) << ": " << plan.trials << " of the ";
     std::cout << all << " trials: ";
     if (plan.ablation_configurations)
       std::cout << "(" << plan.configurations << " + " << plan.ablation_configurations << " on the ablation path) configurations";
@@ -172,7 +172,7 @@ std::function<void(const acobench::TrialPlan&)> announce_trials(const acobench::
 }
 
 // The run's verdict: 0, or aco::kExitTrialsFailed when a trial failed and failures are not allowed.
-int print_summary(const acobench::RunSummary& s, const acobench::Experiment& experiment, const acobench::RunOptions& run,
+int print_summary(const aco::studies::RunSummary& s, const aco::studies::Experiment& experiment, const aco::studies::RunOptions& run,
                   bool allow_failures) {
   const auto& g = s.growth;
   if (g.grew()) {
@@ -189,7 +189,7 @@ int print_summary(const acobench::RunSummary& s, const acobench::Experiment& exp
               << quoted_list(g.dropped_configurations.empty() ? g.dropped_problems : g.dropped_configurations)
               << (g.dropped_configurations.empty() || g.dropped_problems.empty() ? "" : " and " + quoted_list(g.dropped_problems))
               << ", which the experiment file no longer names: their trials are kept (and reported), not run\n";
-  std::cout << "acobench: " << experiment.name << (run.shard ? " shard " + acobench::to_string(*run.shard) : "") << ": "
+  std::cout << "acobench: " << experiment.name << (run.shard ? " shard " + aco::studies::to_string(*run.shard) : "") << ": "
             << s.trials << " trials, " << s.skipped << " already in " << run.database.string() << ", " << s.ran
             << " run in " << s.seconds << " s (" << (s.seconds > 0 ? s.ran / s.seconds : 0.0) << " trials/s)\n";
   if (s.ablation_left)
@@ -202,7 +202,7 @@ int print_summary(const acobench::RunSummary& s, const acobench::Experiment& exp
   std::cerr << "acobench: " << s.failures.size() << " of " << s.trials << " trials failed";
   if (earlier) std::cerr << " (" << earlier << " stored as failed by an earlier run)";
   std::cerr << ", by reason and configuration:\n";
-  for (const auto& line : acobench::describe_failures(s.failures)) std::cerr << "  " << line << "\n";
+  for (const auto& line : aco::studies::describe_failures(s.failures)) std::cerr << "  " << line << "\n";
   if (allow_failures) {
     std::cerr << "acobench: --allow-failures: exit 0 all the same\n";
     return 0;
@@ -215,23 +215,23 @@ int print_summary(const acobench::RunSummary& s, const acobench::Experiment& exp
 #ifdef ACOBENCH_WITH_MPI
 // Rank 0 coordinates and writes the database, the others run trials. A rank that fails ends the
 // job (the others would wait for it forever); mpirun reports which.
-int run_with_ranks(const acobench::mpi::Session& session, const acobench::Experiment& experiment,
-                   aco::PluginRegistry& registry, acobench::RunOptions run, const std::vector<std::string>& args,
+int run_with_ranks(const aco::studies::mpi::Session& session, const aco::studies::Experiment& experiment,
+                   aco::PluginRegistry& registry, aco::studies::RunOptions run, const std::vector<std::string>& args,
                    bool allow_failures,
-                   const std::function<std::unique_ptr<acobench::TrialWorkers>(int lanes)>& make_workers) {
+                   const std::function<std::unique_ptr<aco::studies::TrialWorkers>(int lanes)>& make_workers) {
   try {
     if (session.rank() > 0) {
       const auto workers = make_workers(aco::lane_count(run.threads));
-      acobench::mpi::serve_trials(session, experiment, registry, run.threads, workers.get());
+      aco::studies::mpi::serve_trials(session, experiment, registry, run.threads, workers.get());
       return 0;
     }
     warn_same_runs(experiment);
-    acobench::mpi::Coordinator coordinator(session, experiment.fingerprint(registry));
+    aco::studies::mpi::Coordinator coordinator(session, experiment.fingerprint(registry));
     run.executor = &coordinator;
     run.progress = Progress();
     run.starting = announce_trials(experiment, run);
     on_stop_tell(run.database.string(), command_line(args));
-    const auto s = acobench::run_experiment(experiment, registry, run);
+    const auto s = aco::studies::run_experiment(experiment, registry, run);
     coordinator.finish();
     const int verdict = print_summary(s, experiment, run, allow_failures);
     const auto per_trial = [&](double seconds) { return s.ran ? 1e6 * seconds / static_cast<double>(s.ran) : 0.0; };
@@ -267,8 +267,8 @@ int run(const std::vector<std::string>& args) {
   const std::optional<std::uint64_t> max_memory = host.max_memory_bytes();
   const aco::MemoryLimit memory(max_memory);
   const std::filesystem::path file = vm["experiment"].as<std::string>();
-  acobench::RunOptions run;
-  if (!shard.empty()) run.shard = acobench::parse_shard(shard);
+  aco::studies::RunOptions run;
+  if (!shard.empty()) run.shard = aco::studies::parse_shard(shard);
   const std::string stem = file.stem().string();
   run.database = !db.empty() ? std::filesystem::path(db)
                  : run.shard ? std::filesystem::path(stem + ".shard-" + std::to_string(run.shard->index) + "-of-" +
@@ -277,16 +277,16 @@ int run(const std::vector<std::string>& args) {
   run.threads = threads;
   aco::PluginRegistry registry(host.plugin_search_dirs());
 #ifndef ACOBENCH_WITH_MPI
-  if (acobench::mpi::launched_ranks() > 1)
+  if (aco::studies::mpi::launched_ranks() > 1)
     throw aco::Error("this acobench was built without MPI but was started as one of " +
-                     std::to_string(acobench::mpi::launched_ranks()) +
+                     std::to_string(aco::studies::mpi::launched_ranks()) +
                      " MPI processes, which would each run every trial: build it with MPI (libopenmpi-dev installed, "
                      "cmake -DACO_WITH_MPI=ON) or run one process");
 #endif
   // Before MPI starts: loading probes each plugin in a forked child, and some MPI transports
   // (InfiniBand's) object to fork().
-  const acobench::Experiment experiment = acobench::load_experiment(file, registry);
-  acobench::TrialLimits limits;
+  const aco::studies::Experiment experiment = aco::studies::load_experiment(file, registry);
+  aco::studies::TrialLimits limits;
   if (experiment.trial_timeout_s) limits.timeout_s = *experiment.trial_timeout_s;
   if (experiment.trial_memory_bytes) limits.memory_bytes = *experiment.trial_memory_bytes;
   if (vm.count("trial-timeout")) limits.timeout_s = aco::parse_seconds(vm["trial-timeout"].as<std::string>(), "--trial-timeout");
@@ -299,28 +299,28 @@ int run(const std::vector<std::string>& args) {
   // Workers are started by the process that runs trials: this one, or each MPI worker rank.
   // Without a memory limit, each lane's share of 3/4 of the memory available: a plugin filling
   // memory stops its trial before the machine swaps.
-  const auto make_workers = [&](int lanes) -> std::unique_ptr<acobench::TrialWorkers> {
+  const auto make_workers = [&](int lanes) -> std::unique_ptr<aco::studies::TrialWorkers> {
     if (in_process) return nullptr;
-    acobench::TrialLimits lane_limits = limits;
+    aco::studies::TrialLimits lane_limits = limits;
     if (!lane_limits.memory_bytes) lane_limits.memory_bytes = aco::default_memory_limit() / static_cast<std::uint64_t>(lanes);
-    return std::make_unique<acobench::TrialWorkers>(lanes, acobench::worker_command(experiment, host.plugin_dirs, max_memory), lane_limits,
+    return std::make_unique<aco::studies::TrialWorkers>(lanes, aco::studies::worker_command(experiment, host.plugin_dirs, max_memory), lane_limits,
                                                     experiment.fingerprint(registry));
   };
 #ifdef ACOBENCH_WITH_MPI
-  std::optional<acobench::mpi::Session> session;
-  if (acobench::mpi::started_by_launcher()) session.emplace();
+  std::optional<aco::studies::mpi::Session> session;
+  if (aco::studies::mpi::started_by_launcher()) session.emplace();
   if (session && session->size() > 1)
     return run_with_ranks(*session, experiment, registry, run, args, allow_failures, make_workers);
-  if (session) acobench::mpi::warn_if_bound(*session, threads);
+  if (session) aco::studies::mpi::warn_if_bound(*session, threads);
 #endif
   const auto workers = make_workers(aco::lane_count(threads));
-  std::optional<acobench::WorkerExecutor> executor;
+  std::optional<aco::studies::WorkerExecutor> executor;
   if (workers) run.executor = &executor.emplace(*workers);
   warn_same_runs(experiment);
   run.progress = Progress();
   run.starting = announce_trials(experiment, run);
   on_stop_tell(run.database.string(), command_line(args));
-  return print_summary(acobench::run_experiment(experiment, registry, run), experiment, run, allow_failures);
+  return print_summary(aco::studies::run_experiment(experiment, registry, run), experiment, run, allow_failures);
 }
 
 // `acobench worker EXPERIMENT [--plugin-dir DIR]...`: a worker process of `acobench run` (not
@@ -334,8 +334,8 @@ int worker(const std::vector<std::string>& args) {
     const po::variables_map vm = aco::parse_arguments(args, options, "experiment", 1);
     const aco::MemoryLimit memory(host.max_memory_bytes());
     aco::PluginRegistry registry(host.plugin_search_dirs());
-    const acobench::Experiment experiment = acobench::load_experiment(vm["experiment"].as<std::string>(), registry);
-    acobench::serve_trials_as_worker(experiment, registry);
+    const aco::studies::Experiment experiment = aco::studies::load_experiment(vm["experiment"].as<std::string>(), registry);
+    aco::studies::serve_trials_as_worker(experiment, registry);
     return 0;
   } catch (...) {
     if (!aco::is_worker_process()) throw;
@@ -353,11 +353,11 @@ int merge(const std::vector<std::string>& args) {
   const auto names = vm["databases"].as<std::vector<std::string>>();
   const std::vector<std::filesystem::path> inputs(names.begin(), names.end());
   std::string experiment_file = "EXPERIMENT.yaml";
-  if (const auto stored = acobench::ResultsDb(inputs.front()).find_meta("experiment_file")) experiment_file = *stored;
+  if (const auto stored = aco::studies::ResultsDb(inputs.front()).find_meta("experiment_file")) experiment_file = *stored;
   const std::filesystem::path output =
       db.empty() ? std::filesystem::path(std::filesystem::path(experiment_file).stem().string() + ".db")
                  : std::filesystem::path(db);
-  const auto s = acobench::merge_databases(inputs, output);
+  const auto s = aco::studies::merge_databases(inputs, output);
   std::cout << "acobench: merged " << inputs.size() << " databases into " << output.string() << ": " << s.copied
             << " trials copied, " << s.duplicates << " held twice (identical, kept once), "
             << s.expected - s.missing << " of the configurations' " << s.expected << " trials now stored\n";
@@ -381,7 +381,7 @@ int report(const std::vector<std::string>& args) {
   host.add_plugin_dir(options);  // map plugins, to draw the maps of their formats
   const po::variables_map vm = aco::parse_arguments(args, options, "database", 1);
   std::vector<std::string> warnings;
-  const auto files = acobench::write_report(vm["database"].as<std::string>(), out, &warnings, host.plugin_search_dirs());
+  const auto files = aco::studies::write_report(vm["database"].as<std::string>(), out, &warnings, host.plugin_search_dirs());
   // The plots, one file each, are many on a large study: their folder is named once.
   std::size_t plots = 0;
   for (const auto& f : files) {

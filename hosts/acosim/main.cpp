@@ -19,7 +19,7 @@ namespace po = boost::program_options;
 namespace {
 
 // A run key given as an option: "--key value", "--key=value", or "--flag" alone for true. The
-// scenario's own keys (map, start, goal) are refused by acosim::with_run_keys.
+// scenario's own keys (map, start, goal) are refused by aco::simulation::with_run_keys.
 void add_run_key(const std::string& token, const char* next, aco::KeyedValues& keys) {
   std::string key = token.substr(2), value = next ? next : "true";
   if (const auto equals = key.find('='); equals != std::string::npos) {
@@ -89,21 +89,21 @@ int main(int argc, char** argv) {
     if (scenario_file.empty()) throw aco::Error("no scenario file (acosim SCENARIO.yaml; --help for options)");
     const aco::MemoryLimit memory(host.max_memory_bytes());
     aco::PluginRegistry registry(host.plugin_search_dirs());
-    acosim::Scenario scenario = acosim::load_scenario(scenario_file, registry);
+    aco::simulation::Scenario scenario = aco::simulation::load_scenario(scenario_file, registry);
     {
       aco::KeyedValues changes;
       if (vm.count("preset") && vm.count("config")) throw aco::Error("--config and --preset: give one of them");
       if (vm.count("preset")) changes = aco::preset_keys(vm["preset"].as<std::string>());
       if (vm.count("config")) changes = aco::config_file_keys(vm["config"].as<std::string>());
       changes = aco::overlay(changes, command_line_keys);
-      if (!changes.keys.empty()) scenario = acosim::with_run_keys(scenario, changes, registry);
+      if (!changes.keys.empty()) scenario = aco::simulation::with_run_keys(scenario, changes, registry);
     }
     if (vm.count("batch")) {
       const int n = vm["batch"].as<int>(), threads = host.threads;
       if (n < 1) throw aco::Error("--batch: N must be at least 1");
       const std::uint64_t seed = vm["seed"].as<std::uint64_t>();
       if (vm.count("variation-worker")) {
-        acosim::serve_variations(scenario, n, seed, registry);
+        aco::simulation::serve_variations(scenario, n, seed, registry);
         return aco::kExitOk;
       }
       aco::WorkerLimits limits;
@@ -111,19 +111,19 @@ int main(int argc, char** argv) {
         limits.timeout_s = aco::parse_seconds(vm["variation-timeout"].as<std::string>(), "--variation-timeout");
       if (vm.count("variation-memory"))
         limits.memory_bytes = aco::parse_memory_size(vm["variation-memory"].as<std::string>(), "--variation-memory");
-      acosim::BatchSummary b;
+      aco::simulation::BatchSummary b;
       if (vm.count("in-process")) {
         if (limits.timeout_s > 0 || limits.memory_bytes > 0)
           std::cerr << "acosim: warning: --in-process: the variation time and memory limits are not enforced (they need "
                        "worker processes)\n";
         const aco::ThreadLimit limit(threads);
-        b = acosim::run_batch(acosim::variations(scenario, n, seed, registry), registry);
+        b = aco::simulation::run_batch(aco::simulation::variations(scenario, n, seed, registry), registry);
       } else {
         // Each variation in a worker process: this acosim started again with the same arguments.
         std::vector<std::string> command{aco::this_program(), "--variation-worker"};
         command.insert(command.end(), argv + 1, argv + argc);
-        b = acosim::run_batch_in_workers(n, command, aco::lane_count(threads), limits,
-                                         [](int k, const acosim::SimulationResult& r) {
+        b = aco::simulation::run_batch_in_workers(n, command, aco::lane_count(threads), limits,
+                                         [](int k, const aco::simulation::SimulationResult& r) {
                                            std::cerr << "acosim: variation " << k << ": " << r.reason << "\n";
                                          });
       }
@@ -143,14 +143,14 @@ int main(int argc, char** argv) {
     if (vm.count("variation")) {
       const int k = vm["variation"].as<int>();
       if (k < 0) throw aco::Error("--variation: K must be 0 or more");
-      scenario = acosim::variations(scenario, k + 1, vm["seed"].as<std::uint64_t>(), registry)[k];
+      scenario = aco::simulation::variations(scenario, k + 1, vm["seed"].as<std::uint64_t>(), registry)[k];
     }
-    const acosim::SimulationResult result = acosim::simulate(scenario, registry);
-    if (!csv.empty()) aco::write_output_file(csv, acosim::trajectory_csv(result), "trajectory CSV");
-    if (!svg.empty()) aco::write_output_file(svg, acosim::render_svg(scenario, result), "SVG");
-    if (!html.empty()) aco::write_output_file(html, acosim::render_html(scenario, result), "HTML player");
+    const aco::simulation::SimulationResult result = aco::simulation::simulate(scenario, registry);
+    if (!csv.empty()) aco::write_output_file(csv, aco::simulation::trajectory_csv(result), "trajectory CSV");
+    if (!svg.empty()) aco::write_output_file(svg, aco::simulation::render_svg(scenario, result), "SVG");
+    if (!html.empty()) aco::write_output_file(html, aco::simulation::render_html(scenario, result), "HTML player");
     if (vm["json"].as<bool>()) {
-      std::cout << acosim::summary_json(scenario, result, registry) << "\n";
+      std::cout << aco::simulation::summary_json(scenario, result, registry) << "\n";
     } else {
       std::cout << "scenario:  " << scenario_file << " (local planner " << scenario.run.pipeline.at("local").plugin << ")\n"
                 << "outcome:   " << result.outcome << (result.reason.empty() ? "" : " (" + result.reason + ")") << "\n"

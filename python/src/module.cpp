@@ -151,7 +151,7 @@ py::list plugins() {
 
 py::dict run_experiment(const std::filesystem::path& file, const std::filesystem::path& database, int threads,
                         const std::function<void(std::size_t, std::size_t)>& progress) {
-  acobench::RunOptions options;
+  aco::studies::RunOptions options;
   options.database = database;
   options.threads = threads;
   if (progress)
@@ -159,11 +159,11 @@ py::dict run_experiment(const std::filesystem::path& file, const std::filesystem
       py::gil_scoped_acquire locked;
       progress(done, total);
     };
-  const acobench::Experiment experiment = acobench::load_experiment(file, registry());
-  acobench::RunSummary summary;
+  const aco::studies::Experiment experiment = aco::studies::load_experiment(file, registry());
+  aco::studies::RunSummary summary;
   {
     py::gil_scoped_release unlocked;
-    summary = acobench::run_experiment(experiment, registry(), options);
+    summary = aco::studies::run_experiment(experiment, registry(), options);
   }
   py::list failures;
   py::dict by_reason;
@@ -181,7 +181,7 @@ py::dict run_experiment(const std::filesystem::path& file, const std::filesystem
 // the problem's optimum and the configuration's settings JSON), in the report's order.
 // A field's values as a Python column: numbers as a NumPy array (NULL as NaN for reals, -1 for
 // whole numbers), text and booleans as a list (NULL as None).
-py::object python_column(const acobench::TrialField& field, const std::vector<acobench::TrialCell>& cells) {
+py::object python_column(const aco::studies::TrialField& field, const std::vector<aco::studies::TrialCell>& cells) {
   const auto numbers = [&](auto null) {
     std::vector<decltype(null)> values;
     for (const auto& cell : cells)
@@ -194,9 +194,9 @@ py::object python_column(const acobench::TrialField& field, const std::vector<ac
     return py::object(py::array(py::cast(values)));
   };
   switch (field.type) {
-    case acobench::TrialCellType::integer: return numbers(std::int64_t{-1});
-    case acobench::TrialCellType::count: return numbers(std::uint64_t{0});
-    case acobench::TrialCellType::real: return numbers(std::nan(""));
+    case aco::studies::TrialCellType::integer: return numbers(std::int64_t{-1});
+    case aco::studies::TrialCellType::count: return numbers(std::uint64_t{0});
+    case aco::studies::TrialCellType::real: return numbers(std::nan(""));
     default: break;
   }
   py::list values;
@@ -205,7 +205,7 @@ py::object python_column(const acobench::TrialField& field, const std::vector<ac
       if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>) return py::none();
       else return py::cast(v);
     }, cell));
-  return field.type == acobench::TrialCellType::boolean ? py::object(py::array(values)) : py::object(values);
+  return field.type == aco::studies::TrialCellType::boolean ? py::object(py::array(values)) : py::object(values);
 }
 
 // The trials of a database as columns: problem, configuration, the trial fields Python shows,
@@ -213,18 +213,18 @@ py::object python_column(const acobench::TrialField& field, const std::vector<ac
 // none); "csv_columns": runs.csv's columns before the properties, which come first in Python.
 py::dict read_trials(const std::filesystem::path& database) {
   if (!std::filesystem::exists(database)) throw aco::Error(database.string() + ": no such results database");
-  const acobench::ResultsDb db(database);
+  const aco::studies::ResultsDb db(database);
   const auto problems = db.problems();
-  std::map<int, acobench::ConfigRecord> configs;
+  std::map<int, aco::studies::ConfigRecord> configs;
   for (const auto& [id, config] : db.configs()) configs[id] = config;
   py::list problem, configuration, settings;
   std::vector<double> optimal;
   const double none = std::nan("");
   const auto trials = db.trials();
   std::map<std::string, py::list> properties;
-  for (const auto& name : acobench::property_columns(trials)) properties[name];
-  const auto& fields = acobench::trial_fields();
-  std::vector<std::vector<acobench::TrialCell>> cells(fields.size());
+  for (const auto& name : aco::studies::property_columns(trials)) properties[name];
+  const auto& fields = aco::studies::trial_fields();
+  std::vector<std::vector<aco::studies::TrialCell>> cells(fields.size());
   for (const auto& t : trials) {
     for (auto& [name, column] : properties) {
       const auto it = t.properties.find(name);
@@ -246,13 +246,13 @@ py::dict read_trials(const std::filesystem::path& database) {
   columns["problem"] = problem;
   columns["configuration"] = configuration;
   for (std::size_t i = 0; i < fields.size(); ++i)
-    if (fields[i].use & acobench::kInPython) columns[fields[i].column] = python_column(fields[i], cells[i]);
+    if (fields[i].use & aco::studies::kInPython) columns[fields[i].column] = python_column(fields[i], cells[i]);
   columns["optimal_length"] = py::array(py::cast(optimal));
   columns["settings"] = settings;
   py::dict property_columns;
   for (const auto& [name, column] : properties) property_columns[py::str(name)] = column;
   columns["properties"] = property_columns;
-  columns["csv_columns"] = acobench::runs_csv_columns();
+  columns["csv_columns"] = aco::studies::runs_csv_columns();
   return columns;
 }
 
@@ -296,31 +296,31 @@ PYBIND11_MODULE(_aco, m) {
   // The trial fields (aco/studies/trial_record.hpp): where each goes, for the tests.
   m.def("trial_fields", [] {
     py::list fields;
-    for (const auto& f : acobench::trial_fields())
+    for (const auto& f : aco::studies::trial_fields())
       fields.append(py::dict(py::arg("name") = f.name, py::arg("column") = f.column,
-                             py::arg("in_runs_table") = bool(f.use & acobench::kInRunsTable),
-                             py::arg("in_runs_csv") = bool(f.use & acobench::kInRunsCsv),
-                             py::arg("in_python") = bool(f.use & acobench::kInPython)));
+                             py::arg("in_runs_table") = bool(f.use & aco::studies::kInRunsTable),
+                             py::arg("in_runs_csv") = bool(f.use & aco::studies::kInRunsCsv),
+                             py::arg("in_python") = bool(f.use & aco::studies::kInPython)));
     return fields;
   });
 
   // The report's statistics (aco/studies/statistics.hpp), on plain samples.
   m.def("summarize", [](const Sample& s) {
-    const auto r = acobench::summarize(s);
+    const auto r = aco::studies::summarize(s);
     return py::dict(py::arg("n") = r.n, py::arg("mean") = r.mean, py::arg("sd") = r.stddev, py::arg("median") = r.median,
                     py::arg("q1") = r.q1, py::arg("q3") = r.q3, py::arg("iqr") = r.iqr, py::arg("ci_low") = r.ci_low,
                     py::arg("ci_high") = r.ci_high, py::arg("min") = r.min, py::arg("max") = r.max);
   });
   m.def("mann_whitney_u", [](const Sample& a, const Sample& b) {
-    const auto r = acobench::mann_whitney_u(a, b);
+    const auto r = aco::studies::mann_whitney_u(a, b);
     return py::dict(py::arg("u") = r.u, py::arg("p") = r.p, py::arg("exact") = r.exact);
   });
-  m.def("holm_adjust", [](const Sample& p) { return acobench::holm_adjust(p); });
-  m.def("vargha_delaney_a12", [](const Sample& a, const Sample& b) { return acobench::vargha_delaney_a12(a, b); });
-  m.def("effect_size", [](double a12) { return std::string(acobench::to_string(acobench::effect_size(a12))); });
-  m.def("average_ranks", [](const std::vector<Sample>& scores) { return acobench::average_ranks(scores); });
-  m.def("ecdf", [](Sample hitting_times, const Sample& at) { return acobench::ecdf(hitting_times, at); });
+  m.def("holm_adjust", [](const Sample& p) { return aco::studies::holm_adjust(p); });
+  m.def("vargha_delaney_a12", [](const Sample& a, const Sample& b) { return aco::studies::vargha_delaney_a12(a, b); });
+  m.def("effect_size", [](double a12) { return std::string(aco::studies::to_string(aco::studies::effect_size(a12))); });
+  m.def("average_ranks", [](const std::vector<Sample>& scores) { return aco::studies::average_ranks(scores); });
+  m.def("ecdf", [](Sample hitting_times, const Sample& at) { return aco::studies::ecdf(hitting_times, at); });
   m.def("expected_running_time", [](const Sample& hitting_times, const Sample& efforts) {
-    return acobench::expected_running_time(hitting_times, efforts);
+    return aco::studies::expected_running_time(hitting_times, efforts);
   });
 }

@@ -14,7 +14,7 @@
 #include "aco/thread_limit.hpp"
 #include "aco/simulation/batch.hpp"
 
-namespace acosim {
+namespace aco::simulation {
 namespace {
 
 using nlohmann::json;
@@ -185,4 +185,4 @@ void serve_variations(const Scenario& base, int count, std::uint64_t seed, aco::
   });
 }
 
-}  // namespace acosim
+}  // namespace aco::simulation

@@ -8,7 +8,7 @@
 #include "aco/svg.hpp"
 #include "aco/simulation/simulation.hpp"
 
-namespace acosim {
+namespace aco::simulation {
 
 std::string summary_json(const Scenario& scenario, const SimulationResult& r, const aco::PluginRegistry& registry) {
   nlohmann::json j;
@@ -271,4 +271,4 @@ show(location.hash === '#final' ? frames.length - 1 : 0);
   return html.str();
 }
 
-}  // namespace acosim
+}  // namespace aco::simulation

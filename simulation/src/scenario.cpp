@@ -8,7 +8,7 @@
 #include "aco/yaml_keys.hpp"
 #include "aco/simulation/simulation.hpp"
 
-namespace acosim {
+namespace aco::simulation {
 namespace {
 
 using aco::yaml::fail;
@@ -190,4 +190,4 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
   return s;
 }
 
-}  // namespace acosim
+}  // namespace aco::simulation

@@ -11,7 +11,7 @@
 #include "aco/planning.hpp"
 #include "aco/plugin_guard.hpp"
 
-namespace acosim {
+namespace aco::simulation {
 
 Eigen::Vector2d MovingObstacle::position(double t) const {
   if (route.size() < 2) return route.front() + t * velocity;
@@ -239,4 +239,4 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
   return result;
 }
 
-}  // namespace acosim
+}  // namespace aco::simulation

@@ -20,7 +20,7 @@
 #include "aco/worker_process.hpp"
 #include "aco/yaml_keys.hpp"
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 using aco::yaml::cell;
@@ -75,7 +75,7 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
       const std::string scenario = scalar(file, entry["simulation"], "simulation");
       Problem p;
       try {
-        p.simulation = std::make_shared<const acosim::Scenario>(acosim::load_scenario(dir / scenario, registry));
+        p.simulation = std::make_shared<const aco::simulation::Scenario>(aco::simulation::load_scenario(dir / scenario, registry));
       } catch (const aco::Error& e) {
         fail(file, entry["simulation"], e.what());
       }
@@ -235,7 +235,7 @@ aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& pr
       !problems.empty() && std::all_of(problems.begin(), problems.end(), [](const Problem& p) { return p.simulation != nullptr; });
   if (!all_simulations) return resolve(config, registry);
   try {
-    return acosim::with_run_keys(*problems.front().simulation, config, registry).run;
+    return aco::simulation::with_run_keys(*problems.front().simulation, config, registry).run;
   } catch (const aco::Error& e) {
     throw aco::Error("configuration '" + config.name + "' over " + problems.front().simulation->file.string() + ": " + e.what());
   }
@@ -419,4 +419,4 @@ Configuration flip(const Configuration& config, const Configuration& target, con
   return c;
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -7,7 +7,7 @@
 
 #include "aco/studies/provenance.hpp"
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 using nlohmann::json;
@@ -221,4 +221,4 @@ std::string conflicts_message(const std::string& file, const std::string& experi
                 "problems and repetitions: only the new trials run.";
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

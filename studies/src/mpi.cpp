@@ -16,7 +16,7 @@
 #include "aco/studies/provenance.hpp"
 #include "trial_messages.hpp"
 
-namespace acobench::mpi {
+namespace aco::studies::mpi {
 namespace {
 
 using nlohmann::json;
@@ -294,4 +294,4 @@ void serve_trials(const Session& session, const Experiment& experiment, aco::Plu
   finish();
 }
 
-}  // namespace acobench::mpi
+}  // namespace aco::studies::mpi

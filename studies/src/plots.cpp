@@ -12,7 +12,7 @@
 #include "aco/svg.hpp"
 #include "aco/studies/statistics.hpp"
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 constexpr double kWidth = 640.0;
@@ -578,4 +578,4 @@ std::string map_paths_svg(const aco::Map& map, const std::vector<MapPath>& paths
   return svg.str();
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

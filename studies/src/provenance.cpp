@@ -5,7 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
@@ -59,4 +59,4 @@ std::string fingerprint_change(const std::string& stored, const std::string& now
   return "the experiment file changed since (" + first_difference(stored, now) + ")";
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

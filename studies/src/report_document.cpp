@@ -4,7 +4,7 @@
 
 #include "aco/svg.hpp"
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 template <class... F>
@@ -84,4 +84,4 @@ std::string render_html(const ReportDocument& document, const std::string& foote
   return out.str();
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -18,7 +18,7 @@
 #include "aco/error.hpp"
 #include "aco/studies/growth.hpp"
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 using aco::Error;
@@ -403,7 +403,7 @@ struct ResultsDb::Impl {
   void grow(const std::string& fingerprint, const std::vector<ProblemRecord>& given) {
     Transaction transaction(db);
     const std::string stored = meta().at("fingerprint");
-    growth = acobench::growth(stored, fingerprint);
+    growth = aco::studies::growth(stored, fingerprint);
     std::set<std::string> names;
     for (const auto& p : stored_problems()) names.insert(p.name);
     for (const auto& p : given)
@@ -701,4 +701,4 @@ void ResultsDb::set_meta(const std::string& key, const std::string& value) {
   set.run(key, value).finish();
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

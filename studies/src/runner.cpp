@@ -17,7 +17,7 @@
 #include "aco/version.hpp"
 #include "aco/studies/results_db.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 void ThreadExecutor::run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
                          const std::function<void(const TrialRecord&)>& finished) {
@@ -278,4 +278,4 @@ RunSummary run_experiment(const Experiment& experiment, aco::PluginRegistry& reg
   return Runner(experiment, registry, options).run();
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

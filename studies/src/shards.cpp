@@ -12,7 +12,7 @@
 #include "aco/studies/growth.hpp"
 #include "aco/studies/results_db.hpp"
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 using aco::Error;
@@ -223,4 +223,4 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
   return summary;
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

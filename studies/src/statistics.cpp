@@ -9,7 +9,7 @@
 
 #include "aco/error.hpp"
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 std::string text(double value) {
@@ -258,4 +258,4 @@ double expected_running_time(std::span<const double> hitting_times, std::span<co
   return hits == 0 ? std::numeric_limits<double>::infinity() : spent / double(hits);
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

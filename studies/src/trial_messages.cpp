@@ -1,6 +1,6 @@
 #include "trial_messages.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 using nlohmann::json;
 
@@ -70,4 +70,4 @@ void add_config_from(const nlohmann::json& j, TrialRunner& runner) {
   runner.add_config(j.at("id"), config);
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

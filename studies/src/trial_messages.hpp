@@ -7,7 +7,7 @@
 #include "aco/studies/trial_record.hpp"
 #include "aco/studies/trial_runner.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 nlohmann::json record_json(const TrialRecord& record);
 TrialRecord record_from(const nlohmann::json& message);
@@ -21,4 +21,4 @@ nlohmann::json config_json(int id, const Configuration& config);
 // Prepares the configuration of `message` in `runner`.
 void add_config_from(const nlohmann::json& message, TrialRunner& runner);
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -6,7 +6,7 @@
 #include <type_traits>
 #include <utility>
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 template <class Member>
@@ -187,4 +187,4 @@ std::string runs_csv(const std::vector<TrialRecord>& trials, const std::vector<P
   return out.str();
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

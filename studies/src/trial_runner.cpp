@@ -14,7 +14,7 @@
 #include "aco/plugin_guard.hpp"
 #include "aco/simulation/batch.hpp"
 
-namespace acobench {
+namespace aco::studies {
 namespace {
 
 std::string path_json(const aco::Waypoints& path) {
@@ -75,7 +75,7 @@ struct TrialRunner::Problems {
 struct TrialRunner::Prepared {
   Configuration config;
   aco::RunSpec run;
-  std::map<int, acosim::Scenario> scenarios;  // per simulation problem: its scenario with this configuration's keys
+  std::map<int, aco::simulation::Scenario> scenarios;  // per simulation problem: its scenario with this configuration's keys
 };
 
 TrialRunner::TrialRunner(const Experiment& experiment, aco::PluginRegistry& registry)
@@ -105,7 +105,7 @@ void TrialRunner::add_config(int id, const Configuration& c) {
     for (std::size_t p = 0; p < problems_->list.size(); ++p) {
       if (const auto& scenario = experiment_.problems[p].simulation) {
         try {
-          prepared->scenarios.emplace(static_cast<int>(p), acosim::with_run_keys(*scenario, c, registry_));
+          prepared->scenarios.emplace(static_cast<int>(p), aco::simulation::with_run_keys(*scenario, c, registry_));
         } catch (const aco::Error& error) {
           throw aco::Error("problem '" + problems_->list[p].name + "': " + error.what());
         }
@@ -206,16 +206,16 @@ TrialRecord TrialRunner::simulate(const TrialOrder& t) {
   const std::uint64_t seed = trial_seed(experiment_.seed, problem.name, t.repetition);
   const auto began = std::chrono::steady_clock::now();
   // Variations are drawn on the scenario as written, so every configuration meets the same ones.
-  acosim::Scenario scenario = problem.variations ? acosim::variations(*problem.simulation, 1, seed, registry_).front()
+  aco::simulation::Scenario scenario = problem.variations ? aco::simulation::variations(*problem.simulation, 1, seed, registry_).front()
                                                  : *problem.simulation;
   {
     const std::shared_lock lock(problems_->mutex);
-    const acosim::Scenario& configured = configs_.at(t.config)->scenarios.at(t.problem);
+    const aco::simulation::Scenario& configured = configs_.at(t.config)->scenarios.at(t.problem);
     scenario.keys = configured.keys;
     scenario.run = configured.run;
   }
   scenario.run.colony.seed = seed;
-  const acosim::SimulationResult sim = acosim::simulate(scenario, registry_);
+  const aco::simulation::SimulationResult sim = aco::simulation::simulate(scenario, registry_);
   TrialRecord r;
   r.problem = t.problem;
   r.config = t.config;
@@ -268,4 +268,4 @@ std::string settings_json(const Configuration& config, const aco::RunSpec& run, 
   return j.dump();
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -10,7 +10,7 @@
 #include "aco/studies/provenance.hpp"
 #include "trial_messages.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 using nlohmann::json;
 
@@ -89,4 +89,4 @@ void serve_trials_as_worker(const Experiment& experiment, aco::PluginRegistry& r
   });
 }
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -19,7 +19,7 @@ void ini_config(std::string_view input) {
 
 void experiment(std::string_view input) {
   const auto file = write_scratch_file("experiments/fuzz.yaml", input);
-  expect_no_crash([&] { acobench::load_experiment(file, registry()); });
+  expect_no_crash([&] { aco::studies::load_experiment(file, registry()); });
 }
 
 constexpr Target kTargets[] = {{"ini_config", ini_config}, {"experiment", experiment}};

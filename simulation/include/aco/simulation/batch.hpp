@@ -9,7 +9,7 @@
 #include "aco/worker_process.hpp"
 #include "aco/simulation/simulation.hpp"
 
-namespace acosim {
+namespace aco::simulation {
 
 // `count` variations of `base` (its own unknown and moving obstacles replaced): one to three
 // unknown cells on or beside the global path (planned once on the map, as the robot would),
@@ -51,4 +51,4 @@ BatchSummary run_batch_in_workers(int count, const std::vector<std::string>& com
 // the global path is planned is reported as that request's failure.
 void serve_variations(const Scenario& base, int count, std::uint64_t seed, aco::PluginRegistry& registry);
 
-}  // namespace acosim
+}  // namespace aco::simulation

@@ -17,7 +17,7 @@
 #include "aco/robot.hpp"
 #include "aco/run_spec.hpp"
 
-namespace acosim {
+namespace aco::simulation {
 
 // The robot's limits as a scenario writes them: turn limits in degrees.
 struct RobotSettings {
@@ -113,4 +113,4 @@ std::string render_svg(const Scenario& scenario, const SimulationResult& result)
 // A self-contained page that plays the run (play/pause, time slider); #final shows the last frame.
 std::string render_html(const Scenario& scenario, const SimulationResult& result);
 
-}  // namespace acosim
+}  // namespace aco::simulation

@@ -17,7 +17,7 @@
 #include "aco/plugin_registry.hpp"
 #include "aco/simulation/simulation.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 struct Problem {
   std::string name;             // unique within the experiment
@@ -31,7 +31,7 @@ struct Problem {
   int bucket = -1;  // Moving AI difficulty bucket (scenario column 1) for scenario problems, else -1
   // A simulation problem: an acosim scenario file (map, start and goal are its). A trial drives
   // the robot through it with the configuration's keys over the scenario's run keys.
-  std::shared_ptr<const acosim::Scenario> simulation;
+  std::shared_ptr<const aco::simulation::Scenario> simulation;
   // With a simulation: each repetition drives through a generated variation of the scenario
   // (acosim --batch's unknown cells and crossing discs, drawn from the trial's seed, so every
   // configuration meets the same variations); without, through the scenario as written.
@@ -105,4 +105,4 @@ std::vector<std::vector<std::string>> ablation_components(const Configuration& f
 // `config` with one component set as in `target` (keys absent from the target are removed).
 Configuration flip(const Configuration& config, const Configuration& target, const std::vector<std::string>& component);
 
-}  // namespace acobench
+}  // namespace aco::studies

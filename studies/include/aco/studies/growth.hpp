@@ -10,7 +10,7 @@
 
 #include "aco/studies/trial_record.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 // The conflicts between the fingerprint a database holds and the experiment's now, one line
 // each ("configuration 'elite': update.rho 0.1 -> 0.2"); empty when the stored trials are all
@@ -45,4 +45,4 @@ Growth growth(const std::string& stored, const std::string& now);
 // How to read a refusal: the database file, the lines, what to do.
 std::string conflicts_message(const std::string& file, const std::string& experiment, const std::vector<std::string>& lines);
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -13,7 +13,7 @@
 #include "aco/studies/runner.hpp"
 #include "aco/studies/trial_workers.hpp"
 
-namespace acobench::mpi {
+namespace aco::studies::mpi {
 
 // Whether an MPI launcher started this process (mpirun of Open MPI or MPICH, Slurm's srun with
 // PMI-2 or PMIx), from the variables it sets; known before MPI is initialised.
@@ -82,4 +82,4 @@ void serve_trials(const Session& session, const Experiment& experiment, aco::Plu
                   TrialWorkers* workers);
 #endif
 
-}  // namespace acobench::mpi
+}  // namespace aco::studies::mpi

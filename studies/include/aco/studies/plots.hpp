@@ -13,7 +13,7 @@ namespace aco {
 class Map;
 }
 
-namespace acobench {
+namespace aco::studies {
 
 struct NamedSample {
   std::string name;
@@ -109,4 +109,4 @@ struct MapPath {
 // The map (blocked cells dark) with the paths on it and a legend beside it.
 std::string map_paths_svg(const aco::Map& map, const std::vector<MapPath>& paths);
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -3,7 +3,7 @@
 // processes, MPI ranks): this machine's name, and what changed between two fingerprints.
 #include <string>
 
-namespace acobench {
+namespace aco::studies {
 
 // This machine's name, as the experiments table records it ("" if unknown).
 std::string hostname();
@@ -12,4 +12,4 @@ std::string hostname();
 // the plugin binary or the part of the experiment that changed.
 std::string fingerprint_change(const std::string& stored, const std::string& now);
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -8,7 +8,7 @@
 
 #include "aco/plugin_registry.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 // Writes report.md, report.html and runs.csv into `out` (created if missing), and each of the
 // HTML page's plots alone as plots/<kind>-<problem>.svg (box, convergence, anytime-time,
@@ -20,4 +20,4 @@ std::vector<std::filesystem::path> write_report(
     const std::filesystem::path& database, const std::filesystem::path& out, std::vector<std::string>* warnings = nullptr,
     const std::vector<std::filesystem::path>& plugin_dirs = aco::PluginRegistry::default_search_dirs());
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -7,7 +7,7 @@
 #include <variant>
 #include <vector>
 
-namespace acobench {
+namespace aco::studies {
 
 struct Paragraph {
   std::string text;  // plain text; Markdown's inline code (`name`) is kept as typed
@@ -49,4 +49,4 @@ std::string render_markdown(const ReportDocument& document);
 // A self-contained page; `footer_html` goes last in its body.
 std::string render_html(const ReportDocument& document, const std::string& footer_html = "");
 
-}  // namespace acobench
+}  // namespace aco::studies

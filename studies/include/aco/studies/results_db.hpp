@@ -69,7 +69,7 @@
 #include "aco/studies/provenance.hpp"
 #include "aco/studies/trial_record.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 class ResultsDb {
  public:
@@ -121,4 +121,4 @@ class ResultsDb {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -14,7 +14,7 @@
 #include "aco/studies/shards.hpp"
 #include "aco/studies/trial_runner.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 // Runs batches of trials and hands back each record.
 class TrialExecutor {
@@ -88,4 +88,4 @@ std::vector<std::string> describe_failures(const std::vector<TrialFailure>& fail
 
 RunSummary run_experiment(const Experiment& experiment, aco::PluginRegistry& registry, const RunOptions& options);
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace acobench {
+namespace aco::studies {
 
 // Shard `index` of `count` (1-based, as `--shard 2/3` is written). The configurations' trials
 // are numbered configuration by configuration, problem by problem, repetition by repetition
@@ -44,4 +44,4 @@ struct MergeSummary {
 // or other plugin binaries) or when two inputs hold the same trial with different results.
 MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, const std::filesystem::path& output);
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-namespace acobench {
+namespace aco::studies {
 
 // Descriptive statistics of one sample. Quantiles use linear interpolation between order
 // statistics (Hyndman & Fan type 7, the default of R and numpy): the p-quantile of the sorted
@@ -92,4 +92,4 @@ std::vector<double> ecdf(std::span<const double> hitting_times, std::span<const 
 // one per run), divided by the runs that hit; infinity if none did.
 double expected_running_time(std::span<const double> hitting_times, std::span<const double> run_efforts);
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -18,7 +18,7 @@
 
 #include "aco/parameters.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 struct ProblemRecord {
   std::string name;
@@ -130,4 +130,4 @@ inline constexpr const char* kFailureKinds[] = {"crashed", "timed out", "out of 
 // What a failure kind means, for the summary at the end of a run.
 std::string describe_failure(const std::string& kind);
 
-}  // namespace acobench
+}  // namespace aco::studies

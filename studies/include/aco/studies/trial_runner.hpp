@@ -14,7 +14,7 @@
 #include "aco/studies/experiment.hpp"
 #include "aco/studies/trial_record.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 // A trial: a problem (index into the experiment's), a configuration (its database id) and a
 // repetition.
@@ -70,4 +70,4 @@ bool reset_peak_memory();
 // key, the same names as acoplan's --json) and each slot's plugin binary.
 std::string settings_json(const Configuration& config, const aco::RunSpec& run, const aco::PluginRegistry& registry);
 
-}  // namespace acobench
+}  // namespace aco::studies

@@ -12,7 +12,7 @@
 #include "aco/worker_process.hpp"
 #include "aco/studies/runner.hpp"
 
-namespace acobench {
+namespace aco::studies {
 
 struct TrialLimits {
   double timeout_s = 0.0;          // 0: none
@@ -57,4 +57,4 @@ class WorkerExecutor : public TrialExecutor {
 // `acobench worker`: serves the trials a TrialWorkers sends until it closes the socket.
 void serve_trials_as_worker(const Experiment& experiment, aco::PluginRegistry& registry);
 
-}  // namespace acobench
+}  // namespace aco::studies

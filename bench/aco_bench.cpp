@@ -52,7 +52,9 @@ Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::
     const auto pipeline = aco::instantiate(registry, spec);
     settings.seed = same_seed ? 1 : static_cast<std::uint64_t>(i + 1);
     const auto began = std::chrono::steady_clock::now();
-    arena.execute([&] { t.last = aco::run_colony(registry, spec, pipeline, graph, graph.node(start), graph.node(goal), settings); });
+    arena.execute([&] {
+      t.last = aco::run_colony(registry, spec, pipeline, graph, graph.node(start), graph.node(goal), settings);
+    });
     const double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
     ms.push_back(elapsed);
     t.total_ms += elapsed;
@@ -111,7 +113,8 @@ PruneTiming time_prune(aco::PluginRegistry& registry, const aco::Graph& graph, c
 }
 
 std::unique_ptr<aco::Map> load(const std::filesystem::path& file) {
-  if (!std::filesystem::exists(file)) throw aco::Error(file.string() + " not found (give --maps DIR or --large-map FILE)");
+  if (!std::filesystem::exists(file))
+    throw aco::Error(file.string() + " not found (give --maps DIR or --large-map FILE)");
   return aco::load_map(file);
 }
 
@@ -134,14 +137,16 @@ void time_fireworks(int repeats) {
     evaluations += r.evaluations;
   }
   std::sort(ms.begin(), ms.end());
-  std::printf("\n== fireworks seeding (IFWA, paper 004 settings) on data/terrain/paper004.map, corner cutting, 1 thread ==\n");
-  std::printf("median %.2f ms, min %.2f ms, %.1f us per evaluation, mean best length %.4f\n", ms[ms.size() / 2], ms.front(),
-              1000.0 * std::accumulate(ms.begin(), ms.end(), 0.0) / double(evaluations), mean_length);
+  std::printf(
+      "\n== fireworks seeding (IFWA, paper 004 settings) on data/terrain/paper004.map, corner cutting, 1 thread ==\n");
+  std::printf("median %.2f ms, min %.2f ms, %.1f us per evaluation, mean best length %.4f\n", ms[ms.size() / 2],
+              ms.front(), 1000.0 * std::accumulate(ms.begin(), ms.end(), 0.0) / double(evaluations), mean_length);
 }
 
 // Classic map1 with each update rule, then each plugin swapped into the baseline pipeline.
 void time_classic(aco::PluginRegistry& registry, int repeats) {
-  std::printf("== classic map1, corner cutting, 8-neighbourhood, 50 ants x 100 iterations, alpha 1, beta 7, 1 thread ==\n");
+  std::printf(
+      "== classic map1, corner cutting, 8-neighbourhood, 50 ants x 100 iterations, alpha 1, beta 7, 1 thread ==\n");
   std::printf("%-12s %10s %10s %12s %12s\n", "update", "median ms", "min ms", "ns/ant step", "mean length");
   const auto map1 = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/classic20/map1.txt");
   const aco::Graph classic = aco::build_graph(*map1, {aco::Neighbourhood::eight, true});
@@ -153,7 +158,8 @@ void time_classic(aco::PluginRegistry& registry, int repeats) {
   }
 
   // Each plugin swapped into the baseline pipeline (the other slots stay at their defaults).
-  std::printf("\n== plugins on classic map1 (same setting, 1 thread): ns per ant step against the ant_system baseline ==\n");
+  std::printf(
+      "\n== plugins on classic map1 (same setting, 1 thread): ns per ant step against the ant_system baseline ==\n");
   std::printf("%-28s %12s %8s %12s\n", "slot/plugin", "ns/ant step", "ratio", "mean length");
   const aco::Keys baseline{{"update.rho", "0.3"}, {"update.q", "1"}};
   const Timing base = time_runs(classic, {0, 0}, {19, 19}, registry, baseline, {}, repeats, 1);
@@ -186,7 +192,9 @@ struct TerrainPipeline {
 const std::vector<TerrainPipeline>& terrain_pipelines() {
   static const std::vector<TerrainPipeline> pipelines = {
       {"plain", aco::Neighbourhood::eight, false, {}},
-      {"EPF", aco::Neighbourhood::sixteen, true,
+      {"EPF",
+       aco::Neighbourhood::sixteen,
+       true,
        {{"init", "potential_field"}, {"heuristic", "potential_field"}, {"update", "elite"}}},
   };
   return pipelines;
@@ -196,10 +204,12 @@ const std::vector<TerrainPipeline>& terrain_pipelines() {
 // whether every pair of runs gave identical results.
 bool time_terrain(aco::PluginRegistry& registry, int repeats) {
   const int all_threads = tbb::info::default_concurrency();
-  std::printf("\n== paper 000 look-alike terrains (data/terrain/*.asc.scen), no corner cutting, 50 ants x 100 iterations, "
-              "alpha 1, beta 7 ==\n");
-  std::printf("plain = uniform/distance/ant_system, 8-neighbourhood; EPF = 16-neighbourhood, bidirectional, "
-              "potential_field/potential_field/elite, q0 0.8\n");
+  std::printf(
+      "\n== paper 000 look-alike terrains (data/terrain/*.asc.scen), no corner cutting, 50 ants x 100 iterations, "
+      "alpha 1, beta 7 ==\n");
+  std::printf(
+      "plain = uniform/distance/ant_system, 8-neighbourhood; EPF = 16-neighbourhood, bidirectional, "
+      "potential_field/potential_field/elite, q0 0.8\n");
   std::printf("%-6s %9s %-8s %8s %10s %10s %12s %12s\n", "map", "optimum", "pipeline", "threads", "median ms", "min ms",
               "ns/ant step", "mean length");
   bool identical = true;
@@ -223,8 +233,10 @@ bool time_terrain(aco::PluginRegistry& registry, int repeats) {
         const Timing t = time_runs(graph, s.start, s.goal, registry, spec, settings, repeats, threads);
         std::printf("%-6s %9.2f %-8s %8d %10.2f %10.2f %12.1f %12.2f\n", name, s.optimal_length, p.name, threads,
                     t.median_ms, t.min_ms, t.ns_per_step, t.mean_length);
-        if (threads == 1) one_thread = t.last;
-        else identical = identical && same_result(one_thread, t.last);
+        if (threads == 1)
+          one_thread = t.last;
+        else
+          identical = identical && same_result(one_thread, t.last);
       }
     }
   }
@@ -240,7 +252,8 @@ struct LargeProblem {
   aco::Graph graph;
 };
 
-std::unique_ptr<LargeProblem> load_large(const std::filesystem::path& shared, const std::string& large, int large_index) {
+std::unique_ptr<LargeProblem> load_large(const std::filesystem::path& shared, const std::string& large,
+                                         int large_index) {
   const std::filesystem::path large_file = shared / large;
   const auto scenarios = aco::load_scenarios(large_file.string() + ".scen");
   if (large_index < 0 || large_index >= int(scenarios.size())) throw aco::Error("--large-scen-index out of range");
@@ -265,17 +278,19 @@ bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shar
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 2);
   const Timing one = time_runs(graph, s.start, s.goal, registry, defaults, {}, large_repeats, 1, true);
   const Timing two = time_runs(graph, s.start, s.goal, registry, defaults, {}, large_repeats, 2, true);
-  std::printf("%-8d %10.1f %10.1f %12.1f %10.2f %8s\n", 1, one.median_ms, one.min_ms, one.ns_per_step, one.last.length, "1.00");
-  std::printf("%-8d %10.1f %10.1f %12.1f %10.2f %8.2f\n", 2, two.median_ms, two.min_ms, two.ns_per_step, two.last.length,
-              one.median_ms / two.median_ms);
+  std::printf("%-8d %10.1f %10.1f %12.1f %10.2f %8s\n", 1, one.median_ms, one.min_ms, one.ns_per_step, one.last.length,
+              "1.00");
+  std::printf("%-8d %10.1f %10.1f %12.1f %10.2f %8.2f\n", 2, two.median_ms, two.min_ms, two.ns_per_step,
+              two.last.length, one.median_ms / two.median_ms);
   const bool identical = same_result(one.last, two.last);
   if (one.last.solved) {
     const PruneTiming prune = time_prune(registry, graph, one.last.path, 1);
     std::printf("smoother/prune on this path: %.2f ms (%zu cells -> %zu waypoints)\n", prune.us_per_call / 1000,
                 one.last.path.size(), prune.waypoints);
   }
-  std::printf("results with 1 and 2 threads identical (path, length, steps, curve, pheromone): %s; solved: %s, %d iterations\n",
-              identical ? "yes" : "NO", one.last.solved ? "yes" : "no", one.last.iterations);
+  std::printf(
+      "results with 1 and 2 threads identical (path, length, steps, curve, pheromone): %s; solved: %s, %d iterations\n",
+      identical ? "yes" : "NO", one.last.solved ? "yes" : "no", one.last.iterations);
   return identical;
 }
 
@@ -293,11 +308,13 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
   const auto problem = load_large(shared, large, large_index);
   const aco::Scenario& s = problem->scenario;
   const aco::Graph& graph = problem->graph;
-  std::printf("\n== plugins on %s, scenario %d (optimum %.2f), 50 ants x 100 iterations, beta 7, 1 thread, %d runs each ==\n",
-              large.c_str(), large_index, s.optimal_length, repeats);
-  std::printf("per ant step = (time of 100 iterations - time of the first) / (steps of 100 - steps of the first), same\n"
-              "seeds: the per-run set-up (per-edge fields, heuristic table, fireworks search, dead-end filling) is\n"
-              "the first iteration's time, shown apart; \"all\" divides the whole run time by all steps\n");
+  std::printf(
+      "\n== plugins on %s, scenario %d (optimum %.2f), 50 ants x 100 iterations, beta 7, 1 thread, %d runs each ==\n",
+      large.c_str(), large_index, s.optimal_length, repeats);
+  std::printf(
+      "per ant step = (time of 100 iterations - time of the first) / (steps of 100 - steps of the first), same\n"
+      "seeds: the per-run set-up (per-edge fields, heuristic table, fireworks search, dead-end filling) is\n"
+      "the first iteration's time, shown apart; \"all\" divides the whole run time by all steps\n");
   std::printf("%-32s %12s %8s %12s %12s %12s %12s %12s %8s\n", "slot/plugin or option", "ns/ant step", "ratio",
               "ns/step all", "1st it. ms", "ms per run", "ant steps", "mean length", "solved");
   struct Row {
@@ -313,7 +330,8 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
       if (std::string(slot) == "smoother") continue;  // once per plan, timed in the large section
       for (const auto& name : registry.names(slot)) {
         const auto chosen = baseline.find(slot);
-        if (name == (chosen != baseline.end() ? chosen->second : aco::default_plugin(slot)) || needs_a_class(name)) continue;
+        if (name == (chosen != baseline.end() ? chosen->second : aco::default_plugin(slot)) || needs_a_class(name))
+          continue;
         rows.push_back({std::string(slot) + "/" + name, swapped(baseline, slot, name), {}});
       }
     }
@@ -344,10 +362,11 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
   const Timing one = time_runs(graph, s.start, s.goal, registry, robust, settings, repeats, 1, true);
   const Timing two = time_runs(graph, s.start, s.goal, registry, robust, settings, repeats, 2, true);
   const bool identical = same_result(one.last, two.last);
-  std::printf("recommended pipeline (data/presets/robust.ini): 1 thread %.1f ms, 2 threads %.1f ms (median), speedup %.2f, "
-              "length %.2f (optimum %.2f); results with 1 and 2 threads identical: %s\n",
-              one.median_ms, two.median_ms, one.median_ms / two.median_ms, one.last.length, s.optimal_length,
-              identical ? "yes" : "NO");
+  std::printf(
+      "recommended pipeline (data/presets/robust.ini): 1 thread %.1f ms, 2 threads %.1f ms (median), speedup %.2f, "
+      "length %.2f (optimum %.2f); results with 1 and 2 threads identical: %s\n",
+      one.median_ms, two.median_ms, one.median_ms / two.median_ms, one.last.length, s.optimal_length,
+      identical ? "yes" : "NO");
   return identical;
 }
 
@@ -388,8 +407,8 @@ void time_scale(aco::PluginRegistry& registry, const std::filesystem::path& shar
   row(large + " #" + std::to_string(large_index), problem->graph, s.start, s.goal, large_repeats);
   constexpr int kFactor = 4;
   const aco::OccupancyGrid big = upsampled(*problem->map, kFactor);
-  row(large + " x4 #" + std::to_string(large_index), aco::build_graph(big, {}), {s.start.x * kFactor, s.start.y * kFactor},
-      {s.goal.x * kFactor, s.goal.y * kFactor}, scale_repeats);
+  row(large + " x4 #" + std::to_string(large_index), aco::build_graph(big, {}),
+      {s.start.x * kFactor, s.start.y * kFactor}, {s.goal.x * kFactor, s.goal.y * kFactor}, scale_repeats);
 }
 
 // Paper 003's DWA (local/dwa) at one control step on its 20x20 map: the robot at (5, 6) heading
@@ -407,7 +426,8 @@ void time_dwa(aco::PluginRegistry& registry, int repeats) {
   std::vector<Eigen::Vector2d> cells;
   for (int y = -1; y <= map->height(); ++y)
     for (int x = -1; x <= map->width(); ++x)
-      if (!map->passable({x, y}) && (Eigen::Vector2d(x, y) - view.robot.position()).norm() <= 7.0) cells.emplace_back(x, y);
+      if (!map->passable({x, y}) && (Eigen::Vector2d(x, y) - view.robot.position()).norm() <= 7.0)
+        cells.emplace_back(x, y);
   const std::vector<aco::MovingObstacle> moving = {{{9.0, 9.0}, {-0.3, 0.0}, 0.3}};
   view.cells = cells;
   view.moving = moving;
@@ -423,10 +443,12 @@ void time_dwa(aco::PluginRegistry& registry, int repeats) {
     aco::VelocityCommand c;
     const auto began = std::chrono::steady_clock::now();
     for (int i = 0; i < calls; ++i) c = dwa->command(view);
-    const double us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - began).count() / calls;
-    std::printf("follow %-3s: %.1f us per control step, about %d sampled velocities each: %.0f rollouts per second "
-                "(command v %.2f, w %.3f)\n",
-                follow, us, samples, samples * 1e6 / us, c.v, c.w);
+    const double us =
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - began).count() / calls;
+    std::printf(
+        "follow %-3s: %.1f us per control step, about %d sampled velocities each: %.0f rollouts per second "
+        "(command v %.2f, w %.3f)\n",
+        follow, us, samples, samples * 1e6 / us, c.v, c.w);
   }
 }
 
@@ -439,7 +461,8 @@ std::set<std::string> parse_sections(const std::string& text) {
   std::istringstream in(text);
   for (std::string name; std::getline(in, name, ',');) {
     if (!kSections.count(name))
-      throw aco::Error("--only: unknown section '" + name + "' (sections: classic, fireworks, terrain, large, large-plugins, scale, dwa)");
+      throw aco::Error("--only: unknown section '" + name +
+                       "' (sections: classic, fireworks, terrain, large, large-plugins, scale, dwa)");
     sections.insert(name);
   }
   return sections;
@@ -457,15 +480,16 @@ int main(int argc, char** argv) try {
   int scale_repeats = 3;
   std::string only;
   po::options_description options("aco_bench options");
-  options.add_options()("help,h", "print this help")
-      ("repeats", po::value(&repeats), "runs per small-map measurement (seeds 1..N)")
-      ("only", po::value(&only), "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins, scale, dwa (default: all)")
-      ("maps", po::value(&maps), "folder the large map is in (default: the project's data/maps)")
-      ("large-map", po::value(&large), "512x512 map for the large-map sections, relative to --maps")
-      ("large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")
-      ("large-repeats", po::value(&large_repeats), "runs per thread count on the large map")
-      ("large-plugin-repeats", po::value(&large_plugin_repeats), "runs per plugin in the large-plugins section")
-      ("scale-repeats", po::value(&scale_repeats), "runs on the 2048x2048 map in the scale section");
+  options.add_options()("help,h", "print this help")("repeats", po::value(&repeats),
+                                                     "runs per small-map measurement (seeds 1..N)")(
+      "only", po::value(&only),
+      "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins, scale, dwa (default: all)")(
+      "maps", po::value(&maps), "folder the large map is in (default: the project's data/maps)")(
+      "large-map", po::value(&large), "512x512 map for the large-map sections, relative to --maps")(
+      "large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")(
+      "large-repeats", po::value(&large_repeats), "runs per thread count on the large map")(
+      "large-plugin-repeats", po::value(&large_plugin_repeats), "runs per plugin in the large-plugins section")(
+      "scale-repeats", po::value(&scale_repeats), "runs on the 2048x2048 map in the scale section");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, options), vm);
   po::notify(vm);
@@ -473,7 +497,8 @@ int main(int argc, char** argv) try {
     std::cout << options;
     return 0;
   }
-  if (repeats < 1 || large_repeats < 1 || large_plugin_repeats < 1 || scale_repeats < 1) throw aco::Error("repeats must be >= 1");
+  if (repeats < 1 || large_repeats < 1 || large_plugin_repeats < 1 || scale_repeats < 1)
+    throw aco::Error("repeats must be >= 1");
   const std::set<std::string> sections = parse_sections(only);
   aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
 

@@ -23,7 +23,9 @@ std::filesystem::path experiment(const std::string& text) {
   return test::temp_file("experiment.yaml", yaml);
 }
 
-aco::studies::Experiment load(const std::string& text) { return aco::studies::load_experiment(experiment(text), test::plugins()); }
+aco::studies::Experiment load(const std::string& text) {
+  return aco::studies::load_experiment(experiment(text), test::plugins());
+}
 
 const char* const kSmall = R"(name: small
 seed: 7
@@ -82,8 +84,8 @@ std::vector<std::string> trial_rows(const std::filesystem::path& db) {
   for (const auto& t : aco::studies::ResultsDb(db).trials()) {
     std::ostringstream row;
     row.precision(17);
-    row << t.problem << " " << t.config << " " << t.repetition << " " << t.seed << " " << t.solved << " " << t.length << " "
-        << t.best_iteration << " " << t.ant_steps << " " << t.path_json;
+    row << t.problem << " " << t.config << " " << t.repetition << " " << t.seed << " " << t.solved << " " << t.length
+        << " " << t.best_iteration << " " << t.ant_steps << " " << t.path_json;
     for (double b : t.best_so_far) row << " " << b;
     row << " walks";
     for (auto w : t.walks) row << " " << w;
@@ -105,10 +107,17 @@ std::vector<std::string> query_rows(sqlite3* handle, const std::string& sql) {
     row.precision(17);
     for (int c = 0; c < sqlite3_column_count(statement); ++c) {
       switch (sqlite3_column_type(statement, c)) {
-        case SQLITE_NULL: row << "NULL"; break;
-        case SQLITE_INTEGER: row << sqlite3_column_int64(statement, c); break;
-        case SQLITE_FLOAT: row << sqlite3_column_double(statement, c); break;
-        default: row << '"' << reinterpret_cast<const char*>(sqlite3_column_text(statement, c)) << '"';
+        case SQLITE_NULL:
+          row << "NULL";
+          break;
+        case SQLITE_INTEGER:
+          row << sqlite3_column_int64(statement, c);
+          break;
+        case SQLITE_FLOAT:
+          row << sqlite3_column_double(statement, c);
+          break;
+        default:
+          row << '"' << reinterpret_cast<const char*>(sqlite3_column_text(statement, c)) << '"';
       }
       row << '|';
     }
@@ -131,16 +140,20 @@ std::vector<std::string> database_rows(const std::filesystem::path& db) {
   std::vector<std::string> all;
   for (const std::string& sql : std::vector<std::string>{
            "SELECT 'problem', name, version, setup, optimal_length FROM experiments",
-        "SELECT 'config', id, name, settings FROM plannerConfigs",
-        "SELECT 'run', " + trial + ", r.seed, r.solved, r.length, r.grid_length, r.gap, r.turns, r.iterations, "
-        "r.best_iteration, r.ant_steps, r.stopped_by, r.path, r.outcome, r.time_to_goal, r.collisions, r.replans, "
-        "r.clearance, r.control_steps, r.error FROM runs r JOIN experiments e ON e.id = r.experimentid "
-        "JOIN plannerConfigs c ON c.id = r.plannerid",
-        "SELECT 'progress', " + trial + ", p.iteration, p.best_cost, p.walks FROM progress p JOIN runs r ON r.id = p.runid "
-        "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
-        "SELECT 'property', " + trial + ", p.name, p.value, typeof(p.value) FROM properties p JOIN runs r ON r.id = p.runid "
-        "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
-        "SELECT 'meta', key, value FROM acobench_meta WHERE key NOT IN ('experiment_file', 'shard')"}) {
+           "SELECT 'config', id, name, settings FROM plannerConfigs",
+           "SELECT 'run', " + trial +
+               ", r.seed, r.solved, r.length, r.grid_length, r.gap, r.turns, r.iterations, "
+               "r.best_iteration, r.ant_steps, r.stopped_by, r.path, r.outcome, r.time_to_goal, r.collisions, "
+               "r.replans, "
+               "r.clearance, r.control_steps, r.error FROM runs r JOIN experiments e ON e.id = r.experimentid "
+               "JOIN plannerConfigs c ON c.id = r.plannerid",
+           "SELECT 'progress', " + trial +
+               ", p.iteration, p.best_cost, p.walks FROM progress p JOIN runs r ON r.id = p.runid "
+               "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
+           "SELECT 'property', " + trial +
+               ", p.name, p.value, typeof(p.value) FROM properties p JOIN runs r ON r.id = p.runid "
+               "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
+           "SELECT 'meta', key, value FROM acobench_meta WHERE key NOT IN ('experiment_file', 'shard')"}) {
     const auto rows = query_rows(handle, sql);
     all.insert(all.end(), rows.begin(), rows.end());
   }
@@ -161,7 +174,6 @@ int count_runs(const std::filesystem::path& db) {
   sqlite3_close(handle);
   return count;
 }
-
 
 #ifdef ACO_TEST_MPIEXEC
 const std::vector<std::string> kMpiEnvironment{"OMPI_ALLOW_RUN_AS_ROOT=1", "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1",

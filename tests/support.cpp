@@ -109,7 +109,8 @@ namespace {
 
 // Starts argv[0] with argv and the environment plus `env`, its files as `actions` set them; -1 if
 // it cannot be started.
-pid_t spawn(const std::vector<std::string>& argv, const std::vector<std::string>& env, const posix_spawn_file_actions_t& actions) {
+pid_t spawn(const std::vector<std::string>& argv, const std::vector<std::string>& env,
+            const posix_spawn_file_actions_t& actions) {
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
@@ -145,7 +146,8 @@ CommandResult run(const std::vector<std::string>& argv, const std::vector<std::s
   return result;
 }
 
-pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& log, const std::vector<std::string>& env) {
+pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& log,
+            const std::vector<std::string>& env) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
@@ -253,14 +255,16 @@ bool reference_segment_clear(const aco::Map& map, aco::Cell a, aco::Cell b, bool
 
 std::string walk_problem(const aco::Graph& graph, const aco::Ant& ant, aco::NodeId start, aco::NodeId goal) {
   if (ant.nodes.empty() || ant.nodes.front() != start) return "the walk does not begin at the start";
-  if (ant.edges.size() + 1 != ant.nodes.size()) return "the walk has " + std::to_string(ant.edges.size()) + " edges for " +
-                                                        std::to_string(ant.nodes.size()) + " nodes";
+  if (ant.edges.size() + 1 != ant.nodes.size())
+    return "the walk has " + std::to_string(ant.edges.size()) + " edges for " + std::to_string(ant.nodes.size()) +
+           " nodes";
   if (std::set<aco::NodeId>(ant.nodes.begin(), ant.nodes.end()).size() != ant.nodes.size()) return "a node repeats";
   for (std::size_t i = 0; i < ant.edges.size(); ++i)
     if (graph.source(ant.edges[i]) != ant.nodes[i] || graph.targets[ant.edges[i]] != ant.nodes[i + 1])
       return "edge " + std::to_string(i) + " does not lead from node " + std::to_string(i) + " to the next";
-  if (ant.arrived != (ant.nodes.back() == goal)) return "arrived is " + std::string(ant.arrived ? "true" : "false") +
-                                                         " but the walk ends at " + aco::to_string(graph.cell(ant.nodes.back()));
+  if (ant.arrived != (ant.nodes.back() == goal))
+    return "arrived is " + std::string(ant.arrived ? "true" : "false") + " but the walk ends at " +
+           aco::to_string(graph.cell(ant.nodes.back()));
   if (ant.arrived && std::abs(ant.length - aco::path_length(graph, ant.nodes)) > 1e-9 * (1 + ant.length))
     return "length " + std::to_string(ant.length) + " is not the walk's length";
   return "";
@@ -312,7 +316,8 @@ std::vector<double> transform_arguments(const std::string& transform, const std:
 
 std::string unescape_xml(std::string text) {
   for (const auto& [entity, character] : {std::pair{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&amp;", "&"}})
-    for (auto at = text.find(entity); at != std::string::npos; at = text.find(entity, at + 1)) text.replace(at, std::strlen(entity), character);
+    for (auto at = text.find(entity); at != std::string::npos; at = text.find(entity, at + 1))
+      text.replace(at, std::strlen(entity), character);
   return text;
 }
 
@@ -322,7 +327,8 @@ std::vector<std::string> texts_outside_view_box(const std::string& svg) {
   const auto root_end = svg.find('>', svg.find("<svg"));
   const std::string root = svg.substr(svg.find("<svg"), root_end - svg.find("<svg"));
   double width = number_or(svg_attribute(root, "width"), 0), height = number_or(svg_attribute(root, "height"), 0);
-  if (const auto box = transform_arguments("viewBox(" + svg_attribute(root, "viewBox") + ")", "viewBox"); box.size() == 4)
+  if (const auto box = transform_arguments("viewBox(" + svg_attribute(root, "viewBox") + ")", "viewBox");
+      box.size() == 4)
     width = box[2], height = box[3];
   const double root_font = number_or(svg_attribute(root, "font-size"), 12);
   std::vector<std::string> outside;
@@ -332,14 +338,16 @@ std::vector<std::string> texts_outside_view_box(const std::string& svg) {
     const std::string tag = svg.substr(at, end - at + 1);
     if (tag.rfind("<g", 0) == 0 && (tag.size() < 3 || tag[2] == ' ' || tag[2] == '>') && tag[tag.size() - 2] != '/') {
       const auto move = transform_arguments(svg_attribute(tag, "transform"), "translate");
-      offsets.emplace_back(offsets.back().first + (move.empty() ? 0 : move[0]), offsets.back().second + (move.size() < 2 ? 0 : move[1]));
+      offsets.emplace_back(offsets.back().first + (move.empty() ? 0 : move[0]),
+                           offsets.back().second + (move.size() < 2 ? 0 : move[1]));
     } else if (tag == "</g>") {
       offsets.pop_back();
     } else if (tag.rfind("<text", 0) == 0) {
       const auto close = svg.find("</text>", end);
       const std::string content = unescape_xml(svg.substr(end + 1, close - end - 1));
       const double font = number_or(svg_attribute(tag, "font-size"), root_font);
-      const double x = number_or(svg_attribute(tag, "x"), 0), y = number_or(svg_attribute(tag, "y"), 0) + number_or(svg_attribute(tag, "dy"), 0);
+      const double x = number_or(svg_attribute(tag, "x"), 0),
+                   y = number_or(svg_attribute(tag, "y"), 0) + number_or(svg_attribute(tag, "dy"), 0);
       const double w = aco::text_width(content, font);
       const std::string anchor = svg_attribute(tag, "text-anchor");
       const double left = anchor == "end" ? x - w : anchor == "middle" ? x - w / 2 : x;
@@ -348,11 +356,13 @@ std::vector<std::string> texts_outside_view_box(const std::string& svg) {
       const double cx = rotation.size() == 3 ? rotation[1] : 0, cy = rotation.size() == 3 ? rotation[2] : 0;
       for (const double corner_x : {left, left + w})
         for (const double corner_y : {y - 0.8 * font, y + 0.25 * font}) {
-          const double px = cx + (corner_x - cx) * std::cos(angle) - (corner_y - cy) * std::sin(angle) + offsets.back().first;
-          const double py = cy + (corner_x - cx) * std::sin(angle) + (corner_y - cy) * std::cos(angle) + offsets.back().second;
+          const double px =
+              cx + (corner_x - cx) * std::cos(angle) - (corner_y - cy) * std::sin(angle) + offsets.back().first;
+          const double py =
+              cy + (corner_x - cx) * std::sin(angle) + (corner_y - cy) * std::cos(angle) + offsets.back().second;
           if (px < -0.5 || px > width + 0.5 || py < -0.5 || py > height + 0.5) {
-            outside.push_back("\"" + content + "\" reaches (" + std::to_string(px) + ", " + std::to_string(py) + ") in a picture of " +
-                              std::to_string(width) + " x " + std::to_string(height));
+            outside.push_back("\"" + content + "\" reaches (" + std::to_string(px) + ", " + std::to_string(py) +
+                              ") in a picture of " + std::to_string(width) + " x " + std::to_string(height));
             break;
           }
         }
@@ -363,4 +373,3 @@ std::vector<std::string> texts_outside_view_box(const std::string& svg) {
 }
 
 }  // namespace test
-

@@ -20,7 +20,7 @@
 
 namespace test {
 
-std::filesystem::path data_dir();         // the project's data/
+std::filesystem::path data_dir();  // the project's data/
 
 // data/maps/classic20/map<n>.txt, the 20x20 maps of the papers' MATLAB code.
 aco::OccupancyGrid classic_map(int n);
@@ -34,7 +34,7 @@ aco::PluginRegistry& plugins();
 // One plugin instantiated with its defaults overridden by `params`.
 template <class Interface>
 std::unique_ptr<Interface> make(const std::string& kind, const std::string& name,
-                                 const std::map<std::string, std::string>& params = {}) {
+                                const std::map<std::string, std::string>& params = {}) {
   const auto& descriptor = plugins().load(kind, name);
   return plugins().create<Interface>(kind, name, aco::resolve(descriptor.parameters(), params, kind + "."));
 }
@@ -119,7 +119,8 @@ struct CommandResult {
 CommandResult run(const std::vector<std::string>& argv, const std::vector<std::string>& env = {});
 CommandResult acoplan(const std::vector<std::string>& args, const std::vector<std::string>& env = {});
 // Starts a program in the background, its stdout and stderr into `log`; its pid (waitpid it).
-pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& log, const std::vector<std::string>& env = {});
+pid_t start(const std::vector<std::string>& argv, const std::filesystem::path& log,
+            const std::vector<std::string>& env = {});
 
 // A file in a fresh temporary folder, with the given content.
 std::filesystem::path temp_file(const std::string& name, const std::string& content);

@@ -104,10 +104,12 @@ TEST_CASE("a trial's seed depends on the master seed, the problem and the repeti
 
 TEST_CASE("the ablation path flips one component at a time, and a slot's plugin carries its parameters", "[acobench]") {
   aco::studies::Configuration from{{{{"update", "ant_system"}, {"update.rho", "0.3"}, {"beta", "7"}}, {}}, "from", {}};
-  aco::studies::Configuration to{{{{"update", "acs"}, {"update.xi", "0.2"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}}, "to", {}};
+  aco::studies::Configuration to{
+      {{{"update", "acs"}, {"update.xi", "0.2"}, {"beta", "3"}, {"init", "obstacle_density"}}, {}}, "to", {}};
   const auto components = aco::studies::ablation_components(from, to);
   REQUIRE(components.size() == 3);  // beta, init, update (+ update.xi, update.rho)
-  const auto update = std::find_if(components.begin(), components.end(), [](const auto& c) { return c.front() == "update"; });
+  const auto update =
+      std::find_if(components.begin(), components.end(), [](const auto& c) { return c.front() == "update"; });
   REQUIRE(update != components.end());
   CHECK(update->size() == 3);
   const auto flipped = aco::studies::flip(from, to, *update);
@@ -122,10 +124,13 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   const auto db = file.parent_path() / "small.db";
   const auto first = run_acobench({"run", file.string(), "--db", db.string(), "--threads", "1"});
   REQUIRE(first.exit_code == 0);
-  CHECK_THAT(first.out, Contains("28 trials, 0 already in"));  // 4 configs + 2 + 1 ablation candidates (update, q0), 4 repetitions
+  CHECK_THAT(first.out,
+             Contains("28 trials, 0 already in"));  // 4 configs + 2 + 1 ablation candidates (update, q0), 4 repetitions
   // Said before the first trial too, with what makes the count.
-  CHECK_THAT(first.out, StartsWith("acobench: small: 28 trials: (4 + 3 on the ablation path) configurations x 1 problem "
-                                   "x 4 repetitions; 0 already in " + db.string() + ", 28 to run\n"));
+  CHECK_THAT(first.out,
+             StartsWith("acobench: small: 28 trials: (4 + 3 on the ablation path) configurations x 1 problem "
+                        "x 4 repetitions; 0 already in " +
+                        db.string() + ", 28 to run\n"));
   const auto again = run_acobench({"run", file.string(), "--db", db.string()});
   REQUIRE(again.exit_code == 0);
   CHECK_THAT(again.out, Contains("28 trials, 28 already in"));
@@ -151,7 +156,8 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   // Another experiment (more repetitions) must not touch this database.
   std::string other = kSmall;
   other.replace(other.find("repetitions: 4"), 14, "repetitions: 5");
-  const auto other_file = test::temp_file("experiment.yaml", std::string(other).replace(other.find("{MAP1}"), 6, map1()));
+  const auto other_file =
+      test::temp_file("experiment.yaml", std::string(other).replace(other.find("{MAP1}"), 6, map1()));
   const std::string before = file_bytes(db);
   const auto refused = run_acobench({"run", other_file.string(), "--db", db.string()});
   CHECK(refused.exit_code == 1);
@@ -171,7 +177,8 @@ TEST_CASE("acobench runs an experiment, resumes it, refuses another one's databa
   CHECK(count_of(html, "class=\"ecdf\"") == 2);
   CHECK_THAT(html, Contains("best-so-far gap against time") && Contains("best-so-far gap against walks") &&
                        Contains("runs within 1 % of the optimum, by time (ECDF)") &&
-                       Contains("runs within 5 % of the optimum, by time (ECDF)") && Contains("<h2>Anytime: fixed targets</h2>"));
+                       Contains("runs within 5 % of the optimum, by time (ECDF)") &&
+                       Contains("<h2>Anytime: fixed targets</h2>"));
   CHECK(html.find("http://") == html.find("http://www.w3.org/2000/svg"));  // no link but the SVG namespace
   const std::string md = file_bytes(out / "report.md");
   CHECK_THAT(md, Contains("## Anytime: fixed targets") && Contains("| ACS | gap <= 1 % | 4 |") &&
@@ -205,7 +212,8 @@ TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly
   const auto killed = file.parent_path() / "killed.db", whole = file.parent_path() / "whole.db";
   REQUIRE(run_acobench({"run", file.string(), "--db", whole.string()}).exit_code == 0);
 
-  const pid_t child = test::start({ACO_TEST_ACOBENCH, "run", file.string(), "--db", killed.string(), "--threads", "1"}, "/dev/null");
+  const pid_t child =
+      test::start({ACO_TEST_ACOBENCH, "run", file.string(), "--db", killed.string(), "--threads", "1"}, "/dev/null");
   // Kill once some trials are committed.
   wait_for_trials(killed, 10);
   kill(child, SIGKILL);
@@ -227,7 +235,8 @@ TEST_CASE("a run killed with SIGKILL continues on rerun with every trial exactly
 TEST_CASE("a run stopped with SIGTERM says what is stored and the command that goes on", "[acobench][slow]") {
   const auto file = experiment(kill_me_text());
   const auto db = file.parent_path() / "stopped.db", log = file.parent_path() / "stopped.log";
-  const pid_t child = test::start({ACO_TEST_ACOBENCH, "run", file.string(), "--db", db.string(), "--threads", "1"}, log);
+  const pid_t child =
+      test::start({ACO_TEST_ACOBENCH, "run", file.string(), "--db", db.string(), "--threads", "1"}, log);
   wait_for_trials(db, 10);
   kill(child, SIGTERM);
   int status = 0;
@@ -262,8 +271,9 @@ TEST_CASE("a configuration starts from an acoplan config file with 'config', its
       "  - {name: fewer ants, ants: 6}\n"
       "  - {name: other heuristic, heuristic: distance}\n"
       "  - {name: from the preset again, config: preset.ini, update.rho: 0.4}\n");
-  std::ofstream(file.parent_path() / "preset.ini") << "ants = 12   # a comment\nheuristic = progress\nupdate = acs\nq0 = 0.7\n"
-                                                       "[heuristic]\nfloor = 0.5\n[update]\nrho = 0.2\n";
+  std::ofstream(file.parent_path() / "preset.ini")
+      << "ants = 12   # a comment\nheuristic = progress\nupdate = acs\nq0 = 0.7\n"
+         "[heuristic]\nfloor = 0.5\n[update]\nrho = 0.2\n";
   const auto e = aco::studies::load_experiment(file, test::plugins());
   REQUIRE(e.configurations.size() == 4);
   const auto& preset = *e.configurations[0].run;
@@ -293,8 +303,9 @@ TEST_CASE("a configuration starts from an acoplan config file with 'config', its
   }
   SECTION("a bad line in the config file is named with its file and line") {
     std::ofstream(file.parent_path() / "preset.ini") << "ants = 12\n%invalid_line%x\n";
-    CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()),
-                      Contains("experiment.yaml:5") && Contains("preset.ini:2: '%invalid_line%x' is not a 'key = value' line"));
+    CHECK_THROWS_WITH(
+        aco::studies::load_experiment(file, test::plugins()),
+        Contains("experiment.yaml:5") && Contains("preset.ini:2: '%invalid_line%x' is not a 'key = value' line"));
   }
 }
 
@@ -307,15 +318,16 @@ TEST_CASE("acobench shows '%' placeholders in its options as typed", "[acobench]
   };
   CHECK(error({"run", "x.yaml", "--threads", "%value%"}) ==
         "acobench: error: the argument ('%value%') for option '--threads' is invalid\n");
-  CHECK(error({"run", "x.yaml", "--%canonical_option%"}) == "acobench: error: unrecognised option '--%canonical_option%'\n");
+  CHECK(error({"run", "x.yaml", "--%canonical_option%"}) ==
+        "acobench: error: unrecognised option '--%canonical_option%'\n");
 }
 
 TEST_CASE("an experiment sets terrain keys per configuration: max-slope limits the paths", "[acobench][terrain]") {
   const auto file = test::temp_file("terrain.yaml", "name: slopes\nseed: 3\nrepetitions: 2\nproblems:\n  - {scen: " +
-                                                      (test::data_dir() / "terrain/epf30.asc.scen").string() +
-                                                      ", count: 1}\nsettings: {ants: 20, iterations: 20}\n"
-                                                      "configurations:\n  - {name: slope60, max-slope: 60}\n"
-                                                      "  - {name: slope50, max-slope: 50}\n");
+                                                        (test::data_dir() / "terrain/epf30.asc.scen").string() +
+                                                        ", count: 1}\nsettings: {ants: 20, iterations: 20}\n"
+                                                        "configurations:\n  - {name: slope60, max-slope: 60}\n"
+                                                        "  - {name: slope50, max-slope: 50}\n");
   const auto e = aco::studies::load_experiment(file, test::plugins());
   REQUIRE(e.configurations.size() == 3);
   CHECK(aco::studies::resolve(e.configurations[1], test::plugins()).problem.terrain.max_slope_deg == 60.0);
@@ -387,7 +399,8 @@ TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per co
   for (const auto& t : trials) {
     INFO("problem " << t.problem << ", config " << t.config << ", repetition " << t.repetition);
     REQUIRE(t.simulation);
-    const std::string config = std::find_if(configs.begin(), configs.end(), [&](auto& c) { return c.first == t.config; })->second.name;
+    const std::string config =
+        std::find_if(configs.begin(), configs.end(), [&](auto& c) { return c.first == t.config; })->second.name;
     if (config == "blind" && t.problem == 0) {
       CHECK(t.simulation->outcome == "collision");  // the unknown cell is on its line
       CHECK(t.simulation->collisions == 1);
@@ -415,15 +428,20 @@ TEST_CASE("acobench runs acosim scenarios as problems: local-planner keys per co
     CHECK(two[i].path_json == trials[i].path_json);
   }
   // A key the scenario's plugins do not have is an error naming the configuration.
-  std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: scenario.yaml}\nconfigurations:\n  - {name: bad, local.folow: 1}\n";
-  CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()), Contains("configuration 'bad'") && Contains("local.follow"));
+  std::ofstream(file)
+      << "name: sim\nproblems:\n  - {simulation: scenario.yaml}\nconfigurations:\n  - {name: bad, local.folow: 1}\n";
+  CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()),
+                    Contains("configuration 'bad'") && Contains("local.follow"));
   std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: missing.yaml}\n";
-  CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("cannot open the scenario file"));
+  CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()),
+                    Contains("sim.yaml:3") && Contains("cannot open the scenario file"));
   // Found by the experiment fuzz harness: a folder given as the scenario escaped as the stream
   // library's std::ios_base::failure (acobench printed "basic_filebuf::underflow error").
   std::ofstream(file) << "name: sim\nproblems:\n  - {simulation: ../}\n";
-  CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()), Contains("sim.yaml:3") && Contains("is a directory, not a scenario file"));
-  CHECK_THROWS_WITH(aco::studies::load_experiment(file.parent_path(), test::plugins()), Contains("is a directory, not an experiment file"));
+  CHECK_THROWS_WITH(aco::studies::load_experiment(file, test::plugins()),
+                    Contains("sim.yaml:3") && Contains("is a directory, not a scenario file"));
+  CHECK_THROWS_WITH(aco::studies::load_experiment(file.parent_path(), test::plugins()),
+                    Contains("is a directory, not an experiment file"));
 }
 
 TEST_CASE("failed trials are stored named and counted by reason and acobench exits 3 now and on a rerun",
@@ -434,17 +452,21 @@ TEST_CASE("failed trials are stored named and counted by reason and acobench exi
       "configurations:\n  - {name: thrower, update: throwing, update.at_iteration: 2}\n"
       "  - {name: nan, update: bad_value, update.at_iteration: 4}\n");
   const auto db = file.parent_path() / "throws.db";
-  const std::vector<std::string> args{"run", file.string(), "--db", db.string(), "--plugin-dir", ACO_TEST_FAULTY_PLUGIN_DIR};
+  const std::vector<std::string> args{"run",       file.string(),  "--db",
+                                      db.string(), "--plugin-dir", ACO_TEST_FAULTY_PLUGIN_DIR};
   const auto r = run_acobench(args);
   INFO(r.out << r.err);
   CHECK(r.exit_code == 3);
   CHECK_THAT(r.out, Contains("9 trials, 0 already in"));
-  CHECK_THAT(r.out, StartsWith("acobench: throws: 9 trials: 3 configurations x 1 problem x 3 repetitions; 0 already in " +
-                               db.string() + ", 9 to run\n"));
+  CHECK_THAT(r.out,
+             StartsWith("acobench: throws: 9 trials: 3 configurations x 1 problem x 3 repetitions; 0 already in " +
+                        db.string() + ", 9 to run\n"));
   CHECK_THAT(r.err, Contains("6 of 9 trials failed, by reason and configuration:\n"));
-  CHECK_THAT(r.err, Contains("  a plugin threw: 3\n    'thrower': 3, e.g. problem 'map1', "
-                             "repetition 0: plugin update/throwing (") &&
-                        Contains("failed in update() in iteration 2 (0-based, as Context::iteration): an exception of type int"));
+  CHECK_THAT(
+      r.err,
+      Contains("  a plugin threw: 3\n    'thrower': 3, e.g. problem 'map1', "
+               "repetition 0: plugin update/throwing (") &&
+          Contains("failed in update() in iteration 2 (0-based, as Context::iteration): an exception of type int"));
   CHECK_THAT(r.err, Contains("  a plugin wrote an invalid value: 3\n    'nan': 3, e.g. problem "
                              "'map1', repetition 0: plugin update/bad_value ("));
   CHECK_THAT(r.err, Contains("acobench: exit 3: trials failed") && Contains("--allow-failures accepts them"));
@@ -475,12 +497,14 @@ TEST_CASE("failed trials are stored named and counted by reason and acobench exi
   const auto out = file.parent_path() / "report";
   REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
   const std::string md = file_bytes(out / "report.md");
-  CHECK_THAT(md, Contains("## Failed trials") && Contains("| thrower | 3 | 3 | 3 | 0 | 0 | 0 | configuration 'thrower'"));
+  CHECK_THAT(md,
+             Contains("## Failed trials") && Contains("| thrower | 3 | 3 | 3 | 0 | 0 | 0 | configuration 'thrower'"));
 }
 
 TEST_CASE("an experiment given by a relative path, with absolute map paths, stores and draws its maps", "[acobench]") {
-  const auto file = experiment("name: rel\nrepetitions: 1\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
-                               "settings: {ants: 5, iterations: 3}\n");
+  const auto file = experiment(
+      "name: rel\nrepetitions: 1\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
+      "settings: {ants: 5, iterations: 3}\n");
   const auto before = std::filesystem::current_path();
   std::filesystem::current_path(file.parent_path());
   const auto run = run_acobench({"run", file.filename().string(), "--db", "rel.db"});
@@ -496,11 +520,13 @@ TEST_CASE("an experiment given by a relative path, with absolute map paths, stor
   CHECK_THAT(html, Contains("class=\"paths\""));
 }
 
-TEST_CASE("every plot of a report of many long-named configurations holds its text inside its picture", "[acobench][report][svg]") {
+TEST_CASE("every plot of a report of many long-named configurations holds its text inside its picture",
+          "[acobench][report][svg]") {
   // Twenty configurations with long names, an ablation path, a map drawn with every best path:
   // box plot, convergence, anytime and ECDF charts, paths and the ablation chart.
-  std::string yaml = "name: long-names\nseed: 3\nrepetitions: 2\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
-                     "settings: {ants: 5, iterations: 4}\nbaseline: {name: ant_system}\nconfigurations:\n";
+  std::string yaml =
+      "name: long-names\nseed: 3\nrepetitions: 2\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
+      "settings: {ants: 5, iterations: 4}\nbaseline: {name: ant_system}\nconfigurations:\n";
   for (int k = 1; k <= 20; ++k)
     yaml += "  - {name: \"configuration " + std::to_string(k) + " with alpha " + std::to_string(k) +
             " and a rather long descriptive name (MMAS)\", alpha: " + std::to_string(k) + "}\n";
@@ -521,7 +547,8 @@ TEST_CASE("every plot of a report of many long-named configurations holds its te
   CHECK(kinds == std::set<std::string>{"boxplot", "convergence", "anytime", "ecdf", "paths"});
 }
 
-TEST_CASE("acobench measures the gap of a smoothed run on its grid path against the grid optimum", "[acobench][report]") {
+TEST_CASE("acobench measures the gap of a smoothed run on its grid path against the grid optimum",
+          "[acobench][report]") {
   const auto file = experiment(R"(name: smoothed
 seed: 5
 repetitions: 3
@@ -566,15 +593,18 @@ configurations:
 
 TEST_CASE("a report of a database from before the measured times leaves its runs out of the anytime view",
           "[acobench][report]") {
-  const auto file = experiment("name: old\nrepetitions: 2\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
-                               "settings: {ants: 5, iterations: 4}\n");
+  const auto file = experiment(
+      "name: old\nrepetitions: 2\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
+      "settings: {ants: 5, iterations: 4}\n");
   const auto db = file.parent_path() / "old.db";
   REQUIRE(run_acobench({"run", file.string(), "--db", db.string()}).exit_code == 0);
   // What an acobench of format 3 wrote: no walks column (and estimated times).
   sqlite3* handle = nullptr;
   REQUIRE(sqlite3_open(db.c_str(), &handle) == SQLITE_OK);
-  CHECK(sqlite3_exec(handle, "ALTER TABLE progress DROP COLUMN walks; UPDATE acobench_meta SET value = '3' WHERE key = "
-                             "'format_version'", nullptr, nullptr, nullptr) == SQLITE_OK);
+  CHECK(sqlite3_exec(handle,
+                     "ALTER TABLE progress DROP COLUMN walks; UPDATE acobench_meta SET value = '3' WHERE key = "
+                     "'format_version'",
+                     nullptr, nullptr, nullptr) == SQLITE_OK);
   sqlite3_close(handle);
   const auto out = file.parent_path() / "report";
   const auto report = run_acobench({"report", db.string(), "--out", out.string()});
@@ -593,7 +623,8 @@ TEST_CASE("a report of a database from before the measured times leaves its runs
 TEST_CASE("a problem written as a single value is refused with the problem format, not yaml-cpp's exception",
           "[acobench][bad-input]") {
   // Found by the experiment fuzz harness (tests/fuzz/regressions/experiment/scalar_problem_found).
-  REQUIRE_THROWS_AS(load("name: x\nproblems:\n  - 'scen: map1.txt.scen, name: map1}'\nbaseline: {name: b}\n"), aco::Error);
+  REQUIRE_THROWS_AS(load("name: x\nproblems:\n  - 'scen: map1.txt.scen, name: map1}'\nbaseline: {name: b}\n"),
+                    aco::Error);
   REQUIRE_THROWS_WITH(load("name: x\nproblems:\n  - 'scen: map1.txt.scen, name: map1}'\nbaseline: {name: b}\n"),
                       Contains("experiment.yaml:3: a problem is a mapping"));
 }

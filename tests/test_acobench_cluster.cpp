@@ -28,7 +28,9 @@ std::string two_problems() {
   return text;
 }
 
-std::filesystem::path sibling(const std::filesystem::path& file, const std::string& name) { return file.parent_path() / name; }
+std::filesystem::path sibling(const std::filesystem::path& file, const std::string& name) {
+  return file.parent_path() / name;
+}
 
 }  // namespace
 
@@ -151,7 +153,8 @@ TEST_CASE("a shard's database takes only that shard", "[acobench][shards][errors
   CHECK(into_whole.exit_code == 1);
   CHECK_THAT(into_whole.err, Contains("holds trials of a run without --shard"));
   // The same shard again resumes: nothing left.
-  CHECK_THAT(run_acobench({"run", file.string(), "--shard", "1/3", "--db", one.string()}).out, Contains("6 already in"));
+  CHECK_THAT(run_acobench({"run", file.string(), "--shard", "1/3", "--db", one.string()}).out,
+             Contains("6 already in"));
 }
 
 #ifdef ACO_TEST_MPIEXEC
@@ -184,7 +187,8 @@ TEST_CASE("under mpirun -n 3 the database is the single-process one, the ablatio
   const auto file = experiment(two_problems() + "ablation: {target: ACS}\n");
   const auto whole = sibling(file, "whole.db"), ranks = sibling(file, "ranks.db");
   REQUIRE(run_acobench({"run", file.string(), "--db", whole.string()}).exit_code == 0);
-  const auto r = test::run(mpirun(3, {"run", file.string(), "--db", ranks.string(), "--threads", "1"}), kMpiEnvironment);
+  const auto r =
+      test::run(mpirun(3, {"run", file.string(), "--db", ranks.string(), "--threads", "1"}), kMpiEnvironment);
   INFO(r.out << r.err);
   REQUIRE(r.exit_code == 0);
   CHECK_THAT(r.out, Contains("56 trials, 0 already in"));
@@ -195,8 +199,9 @@ TEST_CASE("under mpirun -n 3 the database is the single-process one, the ablatio
   CHECK_THAT(again.out, Contains("56 already in"));
 }
 
-TEST_CASE("under mpirun a worker killed mid-run ends the run with a message, and the rerun runs the missing trials only",
-          "[acobench][mpi][slow]") {
+TEST_CASE(
+    "under mpirun a worker killed mid-run ends the run with a message, and the rerun runs the missing trials only",
+    "[acobench][mpi][slow]") {
   // Three times the single-process test's trials: two workers are faster than one process.
   std::string text = kill_me_text();
   text.replace(text.find("iterations: 60"), 14, "iterations: 180");
@@ -205,7 +210,8 @@ TEST_CASE("under mpirun a worker killed mid-run ends the run with a message, and
   REQUIRE(run_acobench({"run", file.string(), "--db", whole.string()}).exit_code == 0);
 
   const auto log = sibling(file, "mpirun.log");
-  const pid_t launcher = test::start(mpirun(3, {"run", file.string(), "--db", killed.string(), "--threads", "1"}), log, kMpiEnvironment);
+  const pid_t launcher =
+      test::start(mpirun(3, {"run", file.string(), "--db", killed.string(), "--threads", "1"}), log, kMpiEnvironment);
   // Kill rank 2 once some trials are stored.
   wait_for_trials(killed, 10);
   const pid_t worker = rank_pid(2, killed);
@@ -244,7 +250,8 @@ TEST_CASE("under mpirun an error of rank 0 ends the job with its message, the wo
 #else
 TEST_CASE("an acobench built without MPI refuses to be one of several MPI processes", "[acobench][mpi][errors]") {
   const auto file = experiment(kSmall);
-  const auto r = run_acobench({"run", file.string(), "--db", sibling(file, "x.db").string()}, {"OMPI_COMM_WORLD_SIZE=3"});
+  const auto r =
+      run_acobench({"run", file.string(), "--db", sibling(file, "x.db").string()}, {"OMPI_COMM_WORLD_SIZE=3"});
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.err, Contains("built without MPI but was started as one of 3 MPI processes"));
   CHECK_FALSE(std::filesystem::exists(sibling(file, "x.db")));

@@ -29,10 +29,11 @@ std::vector<std::string> raw_rows(const std::filesystem::path& db) {
   sqlite3* handle = nullptr;
   std::vector<std::string> rows;
   REQUIRE(sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
-  for (const char* sql : {"SELECT * FROM runs ORDER BY id", "SELECT * FROM progress ORDER BY runid, iteration",
-                          "SELECT * FROM plannerConfigs ORDER BY id",
-                          // Not totaltime: the sum of the problem's trials' times grows with them.
-                          "SELECT id, name, version, hostname, cpuinfo, date, setup, optimal_length FROM experiments"}) {
+  for (const char* sql :
+       {"SELECT * FROM runs ORDER BY id", "SELECT * FROM progress ORDER BY runid, iteration",
+        "SELECT * FROM plannerConfigs ORDER BY id",
+        // Not totaltime: the sum of the problem's trials' times grows with them.
+        "SELECT id, name, version, hostname, cpuinfo, date, setup, optimal_length FROM experiments"}) {
     sqlite3_stmt* statement = nullptr;
     REQUIRE(sqlite3_prepare_v2(handle, sql, -1, &statement, nullptr) == SQLITE_OK);
     while (sqlite3_step(statement) == SQLITE_ROW) {
@@ -63,7 +64,8 @@ std::vector<std::string> named_trial_rows(const std::filesystem::path& db) {
     std::ostringstream row;
     row.precision(17);
     row << problems[static_cast<std::size_t>(t.problem)].name << " " << configs[t.config] << " " << t.repetition << " "
-        << t.seed << " " << t.solved << " " << t.length << " " << t.best_iteration << " " << t.ant_steps << " " << t.path_json;
+        << t.seed << " " << t.solved << " " << t.length << " " << t.best_iteration << " " << t.ant_steps << " "
+        << t.path_json;
     for (double b : t.best_so_far) row << " " << b;
     rows.push_back(row.str());
   }
@@ -98,7 +100,8 @@ configurations:
 )";
 
 const std::string kMoreConfig = kGrowing + "  - {name: MMAS, update: max_min}\n";
-const std::string kMoreProblem = replaced(kMoreConfig, "problems:\n", "problems:\n  - {map: {MAP1}, start: [0, 19], goal: [19, 0], name: across}\n");
+const std::string kMoreProblem =
+    replaced(kMoreConfig, "problems:\n", "problems:\n  - {map: {MAP1}, start: [0, 19], goal: [19, 0], name: across}\n");
 const std::string kMoreRepetitions = replaced(kMoreProblem, "repetitions: 2", "repetitions: 3");
 
 // An experiment file written in place of another (the database's experiment_file stays valid).
@@ -128,15 +131,18 @@ TEST_CASE("two configurations that resolve to the same run are named before any 
   const auto file = experiment(text);
   const auto r = run_acobench({"run", file.string(), "--db", (file.parent_path() / "twins.db").string()});
   CHECK(r.exit_code == 0);
-  CHECK_THAT(r.err, Contains("acobench: warning: configurations 'AS' and 'MMAS' resolve to the same run (the same "
-                             "plugins and parameters), so comparing them compares a run with itself: did 'MMAS' forget a "
-                             "key (its plugin, say)?"));
+  CHECK_THAT(r.err,
+             Contains("acobench: warning: configurations 'AS' and 'MMAS' resolve to the same run (the same "
+                      "plugins and parameters), so comparing them compares a run with itself: did 'MMAS' forget a "
+                      "key (its plugin, say)?"));
   CHECK(r.err.find("'ACS' resolve") == std::string::npos);
   CHECK(load(replaced(text, "{name: MMAS}", "{name: MMAS, update: max_min}")).same_runs().empty());
 }
 
-TEST_CASE("an experiment grown by a configuration a problem and repetitions runs only the new trials and keeps the stored rows",
-          "[acobench][growth][slow]") {
+TEST_CASE(
+    "an experiment grown by a configuration a problem and repetitions runs only the new trials and keeps the stored "
+    "rows",
+    "[acobench][growth][slow]") {
   const auto [file, db, args] = run_growing();
   auto before = raw_rows(db);
   REQUIRE(count_runs(db) == 4);
@@ -193,19 +199,23 @@ TEST_CASE("an experiment whose stored trials would run otherwise is refused one 
     CHECK(file_bytes(db) == before);
     return r.err;
   };
-  CHECK_THAT(refused(replaced(kGrowing, "xi: 0.2", "xi: 0.25")), Contains("\n  configuration 'ACS': update.xi 0.2 -> 0.25\n"));
+  CHECK_THAT(refused(replaced(kGrowing, "xi: 0.2", "xi: 0.25")),
+             Contains("\n  configuration 'ACS': update.xi 0.2 -> 0.25\n"));
   CHECK_THAT(refused(replaced(kGrowing, "iterations: 15", "iterations: 20")),
              Contains("\n  every configuration: iterations 15 -> 20\n"));
-  CHECK_THAT(refused(replaced(kGrowing, "seed: 7", "seed: 8")), Contains("\n  seed 7 -> 8 (every trial's seed derives from it)\n"));
-  CHECK_THAT(refused(replaced(kGrowing, "goal: [19, 19]", "goal: [19, 18]")), Contains("\n  problem 'map1': goal [19,19] -> [19,18]\n"));
+  CHECK_THAT(refused(replaced(kGrowing, "seed: 7", "seed: 8")),
+             Contains("\n  seed 7 -> 8 (every trial's seed derives from it)\n"));
+  CHECK_THAT(refused(replaced(kGrowing, "goal: [19, 19]", "goal: [19, 18]")),
+             Contains("\n  problem 'map1': goal [19,19] -> [19,18]\n"));
   // Two differences, two lines; a configuration renamed is another one, which the database takes.
   const std::string two = refused(replaced(replaced(kGrowing, "xi: 0.2", "xi: 0.25"), "q0: 0.7", "q0: 0.8"));
   CHECK_THAT(two, Contains("\n  configuration 'ACS': q0 0.7 -> 0.8\n  configuration 'ACS': update.xi 0.2 -> 0.25\n"));
   rewrite(file, replaced(replaced(kGrowing, "xi: 0.2", "xi: 0.25"), "name: ACS", "name: ACS-0.25"));
   const auto renamed = run_acobench(args);
   CHECK(renamed.exit_code == 0);
-  CHECK_THAT(renamed.out, Contains("4 trials, 2 already in") && Contains("also holds 'ACS', which the experiment file no "
-                                                                         "longer names: their trials are kept (and reported), not run"));
+  CHECK_THAT(renamed.out, Contains("4 trials, 2 already in") &&
+                              Contains("also holds 'ACS', which the experiment file no "
+                                       "longer names: their trials are kept (and reported), not run"));
 }
 
 TEST_CASE("shards of a grown experiment merge into the database of one run of it", "[acobench][growth][shards][slow]") {
@@ -237,7 +247,9 @@ TEST_CASE("shards of a grown experiment merge into the database of one run of it
   rewrite(file, replaced(kMoreConfig, "xi: 0.2", "xi: 0.25"));
   const auto other = file.parent_path() / "other.db";
   REQUIRE(run_acobench({"run", file.string(), "--db", other.string()}).exit_code == 0);
-  const auto refused = run_acobench({"merge", merged.string(), other.string(), "--db", (file.parent_path() / "m2.db").string()});
+  const auto refused =
+      run_acobench({"merge", merged.string(), other.string(), "--db", (file.parent_path() / "m2.db").string()});
   CHECK(refused.exit_code == 1);
-  CHECK_THAT(refused.err, Contains("cannot merge " + other.string()) && Contains("configuration 'ACS': update.xi 0.2 -> 0.25"));
+  CHECK_THAT(refused.err,
+             Contains("cannot merge " + other.string()) && Contains("configuration 'ACS': update.xi 0.2 -> 0.25"));
 }

@@ -51,7 +51,8 @@ void expect_error(const std::vector<std::string>& args, const std::string& expec
 TEST_CASE("acoplan --json reports every documented field", "[acoplan]") {
   const json j = run_json({"--map", map1, "--start", "0,0", "--goal", "19,19", "--corner-cutting", "--seed", "3"});
   REQUIRE(j.at("solved").get<bool>());
-  for (const char* field : {"length", "path", "grid_length", "grid_path", "turns", "iterations", "best_iteration", "time_ms", "seed"})
+  for (const char* field :
+       {"length", "path", "grid_length", "grid_path", "turns", "iterations", "best_iteration", "time_ms", "seed"})
     CHECK(j.contains(field));
   CHECK(j["seed"] == 3);
   CHECK(j["iterations"] == 100);
@@ -121,14 +122,17 @@ TEST_CASE("acoplan plans Moving AI scenarios and the exact reference", "[acoplan
 }
 
 TEST_CASE("acoplan composes plugins and parameters from the command line and a config file", "[acoplan]") {
-  const json mmas = run_json({"--update", "max_min", "--update.rho", "0.2", "--update.p_best", "0.1", "--iterations", "30"});
+  const json mmas =
+      run_json({"--update", "max_min", "--update.rho", "0.2", "--update.p_best", "0.1", "--iterations", "30"});
   CHECK(mmas["config"]["update"] == "max_min");
   CHECK(mmas["config"]["update.rho"] == 0.2);
   CHECK(mmas["iterations"] == 30);
 
-  const auto printed = test::acoplan({"--update", "acs", "--q0", "0.5", "--update.xi", "0.3", "--ants", "20", "--print-config"});
+  const auto printed =
+      test::acoplan({"--update", "acs", "--q0", "0.5", "--update.xi", "0.3", "--ants", "20", "--print-config"});
   REQUIRE(printed.exit_code == 0);
-  CHECK_THAT(printed.out, Contains("update = acs") && Contains("[update]") && Contains("xi = 0.3") && Contains("q0 = 0.5") && Contains("ants = 20"));
+  CHECK_THAT(printed.out, Contains("update = acs") && Contains("[update]") && Contains("xi = 0.3") &&
+                              Contains("q0 = 0.5") && Contains("ants = 20"));
   const auto config = test::temp_file("run.ini", printed.out);
   json from_file = run_json({"--config", config.string()});
   json direct = run_json({"--update", "acs", "--q0", "0.5", "--update.xi", "0.3", "--ants", "20"});
@@ -182,16 +186,18 @@ TEST_CASE("acoplan's summary shows every setting changed from the defaults and n
         "settings: the engine defaults, as --help and --describe SLOT/NAME list them");
 
   auto changed = base;
-  changed.insert(changed.end(), {"--q0", "0.7", "--search", "bidirectional", "--update.rho", "0.2", "--walk-limit",
-                                 "3", "--stagnation", "0", "--update.q", "1", "--repeat", "2"});
+  changed.insert(changed.end(), {"--q0", "0.7", "--search", "bidirectional", "--update.rho", "0.2", "--walk-limit", "3",
+                                 "--stagnation", "0", "--update.q", "1", "--repeat", "2"});
   const auto r = test::acoplan(changed);
   REQUIRE(r.exit_code == 0);
   const std::string line = summary_line(r.out, "settings: ");
-  CHECK(line == "settings: q0=0.7 search=bidirectional walk-limit=3 update.rho=0.2 (changed from the engine defaults), "
-                "as --help and --describe SLOT/NAME list them");
+  CHECK(line ==
+        "settings: q0=0.7 search=bidirectional walk-limit=3 update.rho=0.2 (changed from the engine defaults), "
+        "as --help and --describe SLOT/NAME list them");
   // Given but equal to the default: stagnation 0 and acs's q 1 are not changes. Neither is what
   // another line shows (the colony line's iterations, the pipeline line's update=acs).
-  for (const char* unchanged : {"stagnation", "update.q", "iterations", "update="}) CHECK_THAT(line, !Contains(unchanged));
+  for (const char* unchanged : {"stagnation", "update.q", "iterations", "update="})
+    CHECK_THAT(line, !Contains(unchanged));
   // The recommended preset's settings are changes too: a bare acoplan shows what robust sets.
   CHECK_THAT(summary_line(test::acoplan({"--iterations", "5"}).out, "settings: "),
              Contains("fill-dead-ends=true") && Contains("q0=0.7") && Contains("heuristic.floor=0.5"));
@@ -213,10 +219,14 @@ TEST_CASE("acoplan loads and solves the bundled ROS and PGM height samples", "[a
       {{"--map", dir + "/ros/office.yaml", "--start", "8,8", "--goal", "90,60"}, 111.7401, 0, 0},
       {{"--map", dir + "/heights/hills.pgm", "--height-scale", "0.05", "--cell-size", "1", "--max-slope", "25",
         "--start", "0,40", "--goal", "60,44"},
-       72.2692, 0, 12},
+       72.2692,
+       0,
+       12},
       {{"--map", dir + "/heights/hills16.pgm", "--height-scale", "0.001", "--cell-size", "5", "--max-slope", "25",
         "--start", "0,32", "--goal", "95,32"},
-       524.0169, 20, 60},
+       524.0169,
+       20,
+       60},
   };
   for (const auto& sample : samples) {
     INFO(sample.args[1]);
@@ -233,7 +243,8 @@ TEST_CASE("acoplan loads and solves the bundled ROS and PGM height samples", "[a
   }
   // The 16-bit image keeps millimetres: heights along the route are not all whole metres.
   const json route = run_json(samples[2].args)["path"];
-  CHECK(std::any_of(route.begin(), route.end(), [](const json& p) { return p[2].get<double>() != std::round(p[2].get<double>()); }));
+  CHECK(std::any_of(route.begin(), route.end(),
+                    [](const json& p) { return p[2].get<double>() != std::round(p[2].get<double>()); }));
   // The slope limit is what makes the height sample's route longer than the unlimited one.
   auto unlimited = samples[1].args;
   unlimited[7] = "90";
@@ -269,7 +280,8 @@ std::size_t occurrences(const std::string& text, const std::string& what) {
 // The y coordinates of the points of every polyline and dot of class `css_class`.
 std::vector<double> curve_heights(const std::string& svg, const std::string& css_class) {
   std::vector<double> heights;
-  for (auto at = svg.find("class=\"" + css_class + "\""); at != std::string::npos; at = svg.find("class=\"" + css_class + "\"", at + 1)) {
+  for (auto at = svg.find("class=\"" + css_class + "\""); at != std::string::npos;
+       at = svg.find("class=\"" + css_class + "\"", at + 1)) {
     const auto element = svg.rfind('<', at), end = svg.find('>', at);
     const std::string tag = svg.substr(element, end - element);
     if (tag.rfind("<circle", 0) == 0) {
@@ -279,7 +291,8 @@ std::vector<double> curve_heights(const std::string& svg, const std::string& css
     }
     std::istringstream points(tag.substr(tag.find("points=\"") + 8));
     std::string point;
-    while (points >> point && point.find(',') != std::string::npos) heights.push_back(std::stod(point.substr(point.find(',') + 1)));
+    while (points >> point && point.find(',') != std::string::npos)
+      heights.push_back(std::stod(point.substr(point.find(',') + 1)));
   }
   return heights;
 }
@@ -315,7 +328,8 @@ TEST_CASE("acoplan's SVG has a legend for what its map shows, inside the picture
   picture.goal = graph.node({3, 2});
   const std::string plain = aco::render_svg(graph, picture);
   const std::string legend = svg_group(plain, "map-legend");
-  for (const char* entry : {">start<", ">goal<", ">grid path (cell to cell)<", ">path after the smoother<", ">blocked cell<"})
+  for (const char* entry :
+       {">start<", ">goal<", ">grid path (cell to cell)<", ">path after the smoother<", ">blocked cell<"})
     CHECK_THAT(legend, Contains(entry));
   CHECK_THAT(legend, !Contains("pheromone"));  // not drawn, so not named
   CHECK(test::texts_outside_view_box(plain).empty());
@@ -350,19 +364,24 @@ TEST_CASE("acoplan's convergence chart keeps every iteration best inside its fra
 
 TEST_CASE("acoplan rejects malformed map files with the file, line and problem", "[acoplan][bad-input]") {
   const std::string ok_rows = "....\n....\n";
-  expect_error({"--map", test::temp_file("a.map", "typo octile\nheight 2\nwidth 4\nmap\n" + ok_rows).string(), "--start", "0,0", "--goal", "1,1"},
+  expect_error({"--map", test::temp_file("a.map", "typo octile\nheight 2\nwidth 4\nmap\n" + ok_rows).string(),
+                "--start", "0,0", "--goal", "1,1"},
                "a.map:1: bad header line 'typo octile'");
-  expect_error({"--map", test::temp_file("b.map", "type octile\nheight 2\nwidth 4\nmap\n....\n...\n").string(), "--start", "0,0", "--goal", "1,1"},
+  expect_error({"--map", test::temp_file("b.map", "type octile\nheight 2\nwidth 4\nmap\n....\n...\n").string(),
+                "--start", "0,0", "--goal", "1,1"},
                "b.map:6: row 1 has 3 characters, expected 4");
-  expect_error({"--map", test::temp_file("c.map", "type octile\nheight 2\nwidth 4\nmap\n..x.\n....\n").string(), "--start", "0,0", "--goal", "1,1"},
+  expect_error({"--map", test::temp_file("c.map", "type octile\nheight 2\nwidth 4\nmap\n..x.\n....\n").string(),
+                "--start", "0,0", "--goal", "1,1"},
                "unknown character 'x' at column 2");
-  expect_error({"--map", test::temp_file("d.map", "type octile\nheight 3\nwidth 4\nmap\n" + ok_rows).string(), "--start", "0,0", "--goal", "1,1"},
+  expect_error({"--map", test::temp_file("d.map", "type octile\nheight 3\nwidth 4\nmap\n" + ok_rows).string(),
+                "--start", "0,0", "--goal", "1,1"},
                "truncated map: expected 3 rows, found 2");
   expect_error({"--map", test::temp_file("e.txt", "0 0 1\n0 a 0\n").string(), "--start", "0,0", "--goal", "1,0"},
                "e.txt:2: 'a' is not a number");
   expect_error({"--map", test::temp_file("f.txt", "0 0 1\n0 0\n").string(), "--start", "0,0", "--goal", "1,0"},
                "row has 2 values, the first row has 3");
-  expect_error({"--map", "/nonexistent/map.map", "--start", "0,0", "--goal", "1,0"}, "/nonexistent/map.map: cannot open file");
+  expect_error({"--map", "/nonexistent/map.map", "--start", "0,0", "--goal", "1,0"},
+               "/nonexistent/map.map: cannot open file");
   expect_error({"--map", "/dev/zero", "--start", "0,0", "--goal", "1,0"}, "/dev/zero: not a regular file");
   expect_error({"--map", "/tmp", "--start", "0,0", "--goal", "1,0"}, "/tmp: is a directory, not a file");
 }
@@ -386,13 +405,15 @@ TEST_CASE("acoplan names a bad config line, and shows '%' placeholders in any in
   expect_error({"--config", json}, json + ": the argument ('%value%') for option 'json' is invalid");
   expect_error({"--config", test::temp_file("key.ini", "[%x%]\n%canonical_option% = 1\n").string()},
                "unknown option '--%x%.%canonical_option%'");
-  expect_error({"--config", test::temp_file("value.ini", "beta = %value%\n").string()}, "--beta: '%value%' is not a finite number");
+  expect_error({"--config", test::temp_file("value.ini", "beta = %value%\n").string()},
+               "--beta: '%value%' is not a finite number");
   expect_error({"--%value%", "1"}, "unknown option '--%value%'");
   expect_error({"--beta", "%x%"}, "--beta: '%x%' is not a finite number");
 }
 
 TEST_CASE("acoplan rejects blocked, out-of-range and malformed start and goal cells", "[acoplan][bad-input]") {
-  expect_error({"--map", map1, "--start", "6,0", "--goal", "19,19"}, "start (6,0) is blocked: an obstacle (" + map1 + ")");
+  expect_error({"--map", map1, "--start", "6,0", "--goal", "19,19"},
+               "start (6,0) is blocked: an obstacle (" + map1 + ")");
   expect_error({"--map", map1, "--start", "0,0", "--goal", "25,3"}, "goal (25,3) is outside the 20x20 map");
   expect_error({"--map", map1, "--start", "-1,0", "--goal", "19,19"}, "start (-1,0) is outside");
   expect_error({"--map", map1, "--start", "3", "--goal", "19,19"}, "--start: '3' is not a cell");
@@ -431,7 +452,8 @@ TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range val
   expect_error({"--config", "/nonexistent.ini"}, "/nonexistent.ini: cannot open the config file");
 }
 
-TEST_CASE("a plugin folder that is missing or is a file is refused by every host naming which", "[acoplan][bad-input]") {
+TEST_CASE("a plugin folder that is missing or is a file is refused by every host naming which",
+          "[acoplan][bad-input]") {
   const std::string plugin = std::string(ACO_TEST_BAD_PLUGIN_DIR) + "/aco_update_wrong_abi.so";
   expect_error({"--plugin-dir", "/no/such/dir"}, "--plugin-dir /no/such/dir: no such folder");
   expect_error({"--plugin-dir", plugin, "--list-plugins"},
@@ -457,23 +479,30 @@ TEST_CASE("acoplan refuses a plugin built for another ABI version", "[acoplan][b
 TEST_CASE("a plugin that throws anything, from its factory, a hook or a worker thread, is reported, not an abort",
           "[acoplan][bad-input][boundary]") {
   const std::string dir = ACO_TEST_FAULTY_PLUGIN_DIR;
-  expect_error({"--plugin-dir", dir, "--update", "throwing", "--update.in_factory", "true"},
-               "plugin update/throwing (" + dir + "/aco_update_throwing.so) failed in its factory: an exception of type int");
+  expect_error(
+      {"--plugin-dir", dir, "--update", "throwing", "--update.in_factory", "true"},
+      "plugin update/throwing (" + dir + "/aco_update_throwing.so) failed in its factory: an exception of type int");
   expect_error({"--plugin-dir", dir, "--update", "throwing", "--update.at_iteration", "3"},
-               "plugin update/throwing (" + dir + "/aco_update_throwing.so) failed in update() in iteration 3 (0-based, as Context::iteration): an exception of type int");
+               "plugin update/throwing (" + dir +
+                   "/aco_update_throwing.so) failed in update() in iteration 3 (0-based, as Context::iteration): an "
+                   "exception of type int");
   for (const char* threads : {"1", "2"}) {
     INFO(threads << " threads");
-    expect_error({"--plugin-dir", dir, "--heuristic", "throwing", "--threads", threads},
-                 "plugin heuristic/throwing (" + dir + "/aco_heuristic_throwing.so) failed in step_factors() in iteration 0 (0-based, as Context::iteration): "
-                 "an exception of type int");
+    expect_error(
+        {"--plugin-dir", dir, "--heuristic", "throwing", "--threads", threads},
+        "plugin heuristic/throwing (" + dir +
+            "/aco_heuristic_throwing.so) failed in step_factors() in iteration 0 (0-based, as Context::iteration): "
+            "an exception of type int");
   }
 }
 
-TEST_CASE("a plugin with an undefined symbol is refused when it loads, the symbol named", "[acoplan][bad-input][boundary]") {
+TEST_CASE("a plugin with an undefined symbol is refused when it loads, the symbol named",
+          "[acoplan][bad-input][boundary]") {
   const std::string dir = ACO_TEST_FAULTY_PLUGIN_DIR;
   expect_error({"--plugin-dir", dir, "--update", "incomplete"},
                "plugin update/incomplete (" + dir + "/aco_update_incomplete.so): cannot be loaded: ");
-  expect_error({"--plugin-dir", dir, "--update", "incomplete"}, "undefined symbol: aco_fixture_function_nobody_defines");
+  expect_error({"--plugin-dir", dir, "--update", "incomplete"},
+               "undefined symbol: aco_fixture_function_nobody_defines");
 }
 
 TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acoplan]") {
@@ -507,8 +536,8 @@ TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acopl
 // and planning; what they are worth is measured in docs/results.md, not here.
 TEST_CASE("the shipped presets load and plan with the pipeline they document", "[acoplan][presets]") {
   const std::string room = (test::data_dir() / "maps/generated/room64-8-s2.map.scen").string();
-  const json robust = run_json({"--config", (test::data_dir() / "presets/robust.ini").string(), "--scen", room,
-                                "--scen-index", "19"});
+  const json robust =
+      run_json({"--config", (test::data_dir() / "presets/robust.ini").string(), "--scen", room, "--scen-index", "19"});
   CHECK(robust["solved"].get<bool>());
   CHECK(robust["length"].get<double>() >= robust["optimal_length"].get<double>() - 1e-9);
   CHECK(robust["config"]["heuristic"] == "progress");
@@ -527,9 +556,9 @@ TEST_CASE("the shipped presets load and plan with the pipeline they document", "
 }
 
 TEST_CASE("acoplan in-process: the command line resolves into one RunSpec, run() writes the result", "[acoplan]") {
-  const std::vector<std::string> args = {"acoplan", "--map", map1, "--start", "0,0", "--goal", "19,19", "--update", "max_min",
-                                         "--update.rho", "0.05", "--ants", "12", "--iterations", "8", "--seed", "5",
-                                         "--threads", "1", "--json"};
+  const std::vector<std::string> args = {
+      "acoplan", "--map",  map1, "--start",      "0,0", "--goal", "19,19", "--update",  "max_min", "--update.rho",
+      "0.05",    "--ants", "12", "--iterations", "8",   "--seed", "5",     "--threads", "1",       "--json"};
   std::vector<const char*> argv;
   for (const auto& a : args) argv.push_back(a.c_str());
   acoplan::Request request = acoplan::parse_command_line(static_cast<int>(argv.size()), argv.data());
@@ -583,11 +612,13 @@ TEST_CASE("output files are written whole into folders made for them and errors 
   CHECK_NOTHROW(aco::write_output_file("/dev/null", "text"));
   CHECK(std::filesystem::is_character_file("/dev/null"));
 
-  CHECK_THROWS_WITH(aco::write_output_file(folder, "x", "SVG"), folder.string() + ": cannot write the SVG file: it is a folder");
+  CHECK_THROWS_WITH(aco::write_output_file(folder, "x", "SVG"),
+                    folder.string() + ": cannot write the SVG file: it is a folder");
   const auto under_file = svg / "x.csv";
-  CHECK_THROWS_WITH(aco::write_output_file(under_file, "x", "trajectory CSV"),
-                    Catch::StartsWith(under_file.string() + ": cannot write the trajectory CSV file: cannot make its folder " +
-                                      svg.string() + ": "));
+  CHECK_THROWS_WITH(
+      aco::write_output_file(under_file, "x", "trajectory CSV"),
+      Catch::StartsWith(under_file.string() + ": cannot write the trajectory CSV file: cannot make its folder " +
+                        svg.string() + ": "));
   const auto refused = test::acoplan({"--iterations", "3", "--svg", folder.string()});
   CHECK(refused.exit_code == 1);
   CHECK_THAT(refused.err, Contains(folder.string() + ": cannot write the SVG file: it is a folder"));

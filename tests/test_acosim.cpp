@@ -82,7 +82,8 @@ TEST_CASE("acosim: a blocked corridor makes the robot replan round the block", "
   CHECK_FALSE(through_closed_cell(r.plans.back()));
 }
 
-TEST_CASE("acosim: following the path (dwa follow) gets through a one-cell door the paper's heading term stalls at", "[acosim]") {
+TEST_CASE("acosim: following the path (dwa follow) gets through a one-cell door the paper's heading term stalls at",
+          "[acosim]") {
   // A wall at x = 5 with one free cell at its top; the path runs along the bottom, up to the door
   // and back down. Heading for the turning points, the robot arrives beside the door and stalls.
   const auto file = test::temp_file("door.yaml", "");
@@ -92,7 +93,8 @@ TEST_CASE("acosim: following the path (dwa follow) gets through a one-cell door 
   map.close();
   const auto run = [&](const std::string& follow) {
     std::ofstream(file) << "run: {map: door.txt, start: [0, 8], goal: [11, 8], corner-cutting: false, smoother: prune, "
-                           "smoother.clearance: 0.4, local: dwa, local.follow: " << follow << "}\n";
+                           "smoother.clearance: 0.4, local: dwa, local.follow: "
+                        << follow << "}\n";
     return simulate(file);
   };
   const auto paper = run("0");
@@ -128,7 +130,8 @@ double attribute_of(const std::string& svg, const std::string& marker, const std
 
 }  // namespace
 
-TEST_CASE("acosim's picture has start and goal marked and a legend beside the map for every line and mark", "[acosim][svg]") {
+TEST_CASE("acosim's picture has start and goal marked and a legend beside the map for every line and mark",
+          "[acosim][svg]") {
   const auto file = scenario(
       "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa}\nunknown: [[6, 2]]\n"
       "moving:\n  - {position: [11, 0.5], velocity: [-0.2, 0], radius: 0.3}\n");
@@ -144,9 +147,9 @@ TEST_CASE("acosim's picture has start and goal marked and a legend beside the ma
   // path), no collision.
   REQUIRE(r.plans.size() == 2);
   const std::string legend = svg.substr(svg.find("<g id=\"legend\""));
-  for (const char* entry : {">start<", ">goal<", ">obstacle on the map<", ">obstacle the map did not show<", ">planned path<",
-                            ">replanned path (1)<", ">moving obstacle's track<", ">moving obstacle at the end<",
-                            ">driven trajectory<"})
+  for (const char* entry :
+       {">start<", ">goal<", ">obstacle on the map<", ">obstacle the map did not show<", ">planned path<",
+        ">replanned path (1)<", ">moving obstacle's track<", ">moving obstacle at the end<", ">driven trajectory<"})
     CHECK_THAT(legend, Contains(entry));
   CHECK_THAT(legend, !Contains("collision"));
   // Beside the map (12 wide), not over it, and inside the picture by the text width estimate.
@@ -158,7 +161,8 @@ TEST_CASE("acosim's picture has start and goal marked and a legend beside the ma
   CHECK_THAT(svg, Contains("viewBox=\"0 0 "));
 
   SECTION("a collision is marked where the robot stopped, and the legend says so") {
-    const aco::simulation::Scenario blind = aco::simulation::with_run_keys(s, {{{"local", "track"}}, {}}, test::plugins());
+    const aco::simulation::Scenario blind =
+        aco::simulation::with_run_keys(s, {{{"local", "track"}}, {}}, test::plugins());
     const aco::simulation::SimulationResult hit = aco::simulation::simulate(blind, test::plugins());
     REQUIRE(hit.collisions == 1);
     const std::string picture = aco::simulation::render_svg(blind, hit);
@@ -177,9 +181,11 @@ TEST_CASE("acosim: bad scenarios are errors naming the file, the line and the ke
   };
   const std::string run = "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa}\n";
   CHECK_THAT(error("run: [unclosed\n"), Contains("scenario.yaml:") && Contains("malformed YAML"));
-  CHECK_THAT(error(run + "unknown: [[0, 2]]\n"), Contains("scenario.yaml:2") && Contains("overlaps the robot at the start (0,2)"));
+  CHECK_THAT(error(run + "unknown: [[0, 2]]\n"),
+             Contains("scenario.yaml:2") && Contains("overlaps the robot at the start (0,2)"));
   CHECK_THAT(error(run + "unknown: [[40, 2]]\n"), Contains("outside the map"));
-  CHECK_THAT(error(run + "moving:\n  - {position: [0.2, 2], radius: 0.3}\n"), Contains("scenario.yaml:3") && Contains("overlaps"));
+  CHECK_THAT(error(run + "moving:\n  - {position: [0.2, 2], radius: 0.3}\n"),
+             Contains("scenario.yaml:3") && Contains("overlaps"));
   CHECK_THAT(error(run + "robot: {max-speed: 0}\n"), Contains("scenario.yaml:2") && Contains("max-speed"));
   CHECK_THAT(error(run + "robot: {max-accel: -1}\n"), Contains("max-accel"));
   CHECK_THAT(error(run + "robot: {max-sped: 1}\n"), Contains("max-speed"));  // the nearest key
@@ -191,7 +197,8 @@ TEST_CASE("acosim: bad scenarios are errors naming the file, the line and the ke
   CHECK_THAT(error(run + "moving:\n  - {route: [[3, 3]], speed: 1}\n"), Contains("at least two points"));
   CHECK_THROWS_WITH(aco::simulation::load_scenario(std::filesystem::temp_directory_path(), test::plugins()),
                     Contains("is a directory, not a scenario file"));
-  CHECK_THROWS_WITH(aco::simulation::load_scenario("/dev/zero", test::plugins()), Contains("/dev/zero: not a regular file"));
+  CHECK_THROWS_WITH(aco::simulation::load_scenario("/dev/zero", test::plugins()),
+                    Contains("/dev/zero: not a regular file"));
 }
 
 // Boost.ProgramOptions' message for these never came back (aco/program_options_error.hpp).
@@ -207,12 +214,13 @@ TEST_CASE("acosim: '%' placeholders in its options are shown as typed", "[acosim
   CHECK(error({"--thr=%value%x"}) == "acosim: error: the argument ('%value%x') for option '--threads' is invalid\n");
   // Other options are run keys, checked once the scenario is read.
   const std::string scenario = (test::data_dir() / "scenarios" / "paper003_static.yaml").string();
-  CHECK_THAT(error({scenario, "--%canonical_option%"}), Contains("acosim: error: --%canonical_option%: unknown key '%canonical_option%'"));
+  CHECK_THAT(error({scenario, "--%canonical_option%"}),
+             Contains("acosim: error: --%canonical_option%: unknown key '%canonical_option%'"));
 }
 
 TEST_CASE("acosim: every bundled scenario reaches the goal without a collision", "[acosim][slow]") {
-  for (const char* name : {"paper003_static", "paper003_moving", "paper003_replan", "generated_room32", "generated_random32",
-                           "generated_maze32"}) {
+  for (const char* name : {"paper003_static", "paper003_moving", "paper003_replan", "generated_room32",
+                           "generated_random32", "generated_maze32"}) {
     INFO(name);
     const auto r = simulate(test::data_dir() / "scenarios" / (std::string(name) + ".yaml"));
     CHECK(r.reached);
@@ -221,10 +229,12 @@ TEST_CASE("acosim: every bundled scenario reaches the goal without a collision",
   }
   // The replan scenario needs its replan; the moving one needs the prediction its file sets.
   CHECK(simulate(test::data_dir() / "scenarios/paper003_replan.yaml").replans >= 1);
-  CHECK(simulate(test::data_dir() / "scenarios/paper003_moving.yaml", {{"local.predict", "false"}}).outcome == "collision");
+  CHECK(simulate(test::data_dir() / "scenarios/paper003_moving.yaml", {{"local.predict", "false"}}).outcome ==
+        "collision");
   // The DWA's defaults (follow 0.5, predict) get through a door where the paper's reading stops.
-  CHECK(simulate(test::data_dir() / "scenarios/generated_room32.yaml", {{"local.follow", "0"}, {"local.predict", "false"}}).outcome ==
-        "stuck");
+  CHECK(simulate(test::data_dir() / "scenarios/generated_room32.yaml",
+                 {{"local.follow", "0"}, {"local.predict", "false"}})
+            .outcome == "stuck");
 }
 
 TEST_CASE("acosim batch: variations depend on the seed only, results not on the thread count", "[acosim][slow]") {
@@ -260,7 +270,7 @@ TEST_CASE("acosim batch: no variation seals the goal off", "[acosim]") {
   // A one-cell corridor: any unknown cell on it would leave no way to the goal.
   const auto file = scenario("run: {map: corridor.txt, start: [0, 1], goal: [11, 1], local: dwa}\n");
   std::ofstream(file.parent_path() / "corridor.txt") << "1 1 1 1 1 1 1 1 1 1 1 1\n0 0 0 0 0 0 0 0 0 0 0 0\n"
-                                                          "1 1 1 1 1 1 1 1 1 1 1 1\n";
+                                                        "1 1 1 1 1 1 1 1 1 1 1 1\n";
   const aco::simulation::Scenario base = aco::simulation::load_scenario(file, test::plugins());
   for (const auto& v : aco::simulation::variations(base, 10, 3, test::plugins())) {
     CHECK(v.unknown.empty());
@@ -279,16 +289,19 @@ test::CommandResult acosim_run(const std::vector<std::string>& args) {
 
 }  // namespace
 
-TEST_CASE("acosim --batch: worker processes give the in-process results, whatever the thread count", "[acosim][contain]") {
+TEST_CASE("acosim --batch: worker processes give the in-process results, whatever the thread count",
+          "[acosim][contain]") {
   const auto file = scenario("run: {map: two.txt, start: [0, 1], goal: [9, 1], local: dwa, local.predict: true}\n");
   const aco::simulation::Scenario base = aco::simulation::load_scenario(file, test::plugins());
-  const auto in_process = aco::simulation::run_batch(aco::simulation::variations(base, 6, 5, test::plugins()), test::plugins());
-  const std::vector<std::string> command{ACO_TEST_ACOSIM, "--variation-worker", file.string(), "--batch", "6", "--seed", "5"};
+  const auto in_process =
+      aco::simulation::run_batch(aco::simulation::variations(base, 6, 5, test::plugins()), test::plugins());
+  const std::vector<std::string> command{
+      ACO_TEST_ACOSIM, "--variation-worker", file.string(), "--batch", "6", "--seed", "5"};
   for (const int lanes : {1, 2}) {
     INFO(lanes << " worker processes");
-    const auto workers = aco::simulation::run_batch_in_workers(6, command, lanes, {}, [](int k, const aco::simulation::SimulationResult& r) {
-      FAIL("variation " << k << " failed: " << r.reason);
-    });
+    const auto workers = aco::simulation::run_batch_in_workers(
+        6, command, lanes, {},
+        [](int k, const aco::simulation::SimulationResult& r) { FAIL("variation " << k << " failed: " << r.reason); });
     REQUIRE(workers.results.size() == in_process.results.size());
     for (std::size_t k = 0; k < workers.results.size(); ++k) {
       const auto &a = workers.results[k], &b = in_process.results[k];
@@ -314,7 +327,8 @@ TEST_CASE("acosim --batch: worker processes give the in-process results, whateve
   // The command line: the same summary in worker processes on 1 or 2 lanes and in-process.
   const std::vector<std::string> batch{file.string(), "--batch", "6", "--seed", "5"};
   std::vector<std::string> outputs;
-  for (const auto& more : std::vector<std::vector<std::string>>{{"--threads", "1"}, {"--threads", "2"}, {"--in-process"}}) {
+  for (const auto& more :
+       std::vector<std::vector<std::string>>{{"--threads", "1"}, {"--threads", "2"}, {"--in-process"}}) {
     auto args = batch;
     args.insert(args.end(), more.begin(), more.end());
     const auto r = acosim_run(args);
@@ -331,7 +345,8 @@ TEST_CASE("acosim --batch: worker processes give the in-process results, whateve
 TEST_CASE("acosim --batch: a variation whose plugin crashes or hangs costs only itself, and says which plugin hook",
           "[acosim][contain]") {
   const auto file = [](const std::string& update) {
-    return scenario("run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa, update: " + update + "}\n").string();
+    return scenario("run: {map: open.txt, start: [0, 2], goal: [11, 2], local: dwa, update: " + update + "}\n")
+        .string();
   };
   const std::string hostile = ACO_TEST_HOSTILE_PLUGIN_DIR;
   // One lane: the worker that crashed is started again for the next variation.
@@ -342,36 +357,43 @@ TEST_CASE("acosim --batch: a variation whose plugin crashes or hangs costs only 
   CHECK_THAT(crashed.out, Contains("reached:    0 (0 %)"));
   const std::string where = " in update() in iteration 3 (0-based, as Context::iteration)";
   for (const char* k : {"0", "1", "2"}) {
-    CHECK_THAT(crashed.out, Contains(std::string("variation ") + k + ": crashed (crashed: SIGSEGV in plugin update/crashing ("));
-    CHECK_THAT(crashed.err, Contains(std::string("acosim: variation ") + k + ": crashed: SIGSEGV in plugin update/crashing ("));
+    CHECK_THAT(crashed.out,
+               Contains(std::string("variation ") + k + ": crashed (crashed: SIGSEGV in plugin update/crashing ("));
+    CHECK_THAT(crashed.err,
+               Contains(std::string("acosim: variation ") + k + ": crashed: SIGSEGV in plugin update/crashing ("));
   }
   CHECK_THAT(crashed.err, Contains("aco_update_crashing.so)" + where + "\n"));
 
   // abort(), as a failed assert does, on two lanes.
-  const auto aborted = acosim_run({file("crashing, update.abort: true"), "--batch", "2", "--threads", "2", "--plugin-dir", hostile});
+  const auto aborted =
+      acosim_run({file("crashing, update.abort: true"), "--batch", "2", "--threads", "2", "--plugin-dir", hostile});
   CHECK(aborted.exit_code == 0);
   CHECK_THAT(aborted.out, Contains("outcomes:   crashed 2;"));
   CHECK_THAT(aborted.err, Contains("crashed: SIGABRT in plugin update/crashing (") && Contains(where));
 
   // An endless loop: stopped at the time limit, which says where the worker was.
-  const auto hung = acosim_run({file("hanging"), "--batch", "2", "--variation-timeout", "0.5", "--plugin-dir", hostile});
+  const auto hung =
+      acosim_run({file("hanging"), "--batch", "2", "--variation-timeout", "0.5", "--plugin-dir", hostile});
   CHECK(hung.exit_code == 0);
   CHECK_THAT(hung.out, Contains("outcomes:   timed out 2;"));
-  CHECK_THAT(hung.out, Contains("variation 1: timed out (timed out after 0.5 s in plugin update/hanging (") && Contains(where));
+  CHECK_THAT(hung.out,
+             Contains("variation 1: timed out (timed out after 0.5 s in plugin update/hanging (") && Contains(where));
   CHECK_THAT(hung.err, Contains("acosim: variation 0: timed out after 0.5 s in plugin update/hanging ("));
 
   // Filling memory: stopped at the limit.
-  const auto hogged = acosim_run({file("hogging, update.megabytes: 1024"), "--batch", "1", "--variation-memory", "128M",
-                                  "--plugin-dir", hostile});
+  const auto hogged = acosim_run(
+      {file("hogging, update.megabytes: 1024"), "--batch", "1", "--variation-memory", "128M", "--plugin-dir", hostile});
   CHECK(hogged.exit_code == 0);
   CHECK_THAT(hogged.out, Contains("outcomes:   out of memory 1;"));
-  CHECK_THAT(hogged.err, Contains("acosim: variation 0: out of memory (over 128 MiB) in plugin update/hogging (") && Contains(where));
+  CHECK_THAT(hogged.err, Contains("acosim: variation 0: out of memory (over 128 MiB) in plugin update/hogging (") &&
+                             Contains(where));
 
   // --in-process is the old way: the crash ends the batch (and is named).
   const auto in_process = acosim_run({file("crashing"), "--batch", "2", "--in-process", "--plugin-dir", hostile});
   CHECK(in_process.exit_code == 128 + SIGSEGV);
   CHECK(in_process.out.empty());
-  CHECK_THAT(in_process.err, Contains("acosim: error: crashed: SIGSEGV in plugin update/crashing (") && Contains(where));
+  CHECK_THAT(in_process.err,
+             Contains("acosim: error: crashed: SIGSEGV in plugin update/crashing (") && Contains(where));
 
   // An error is still an error, in a worker process too.
   const auto walled = scenario("run: {map: walled.txt, start: [0, 0], goal: [2, 0], local: dwa}\n");
@@ -383,7 +405,8 @@ TEST_CASE("acosim --batch: a variation whose plugin crashes or hangs costs only 
     CHECK(r.exit_code == 1);
     CHECK_THAT(r.err, Contains("acosim: error: batch: the scenario's map has no path from start to goal"));
   }
-  const auto bad = acosim_run({file("crashing"), "--batch", "2", "--variation-timeout", "soon", "--plugin-dir", hostile});
+  const auto bad =
+      acosim_run({file("crashing"), "--batch", "2", "--variation-timeout", "soon", "--plugin-dir", hostile});
   CHECK(bad.exit_code == 1);
   CHECK_THAT(bad.err, Contains("acosim: error: --variation-timeout: 'soon' is not a time in seconds"));
 }

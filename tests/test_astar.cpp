@@ -64,9 +64,8 @@ TEST_CASE("A* matches the classic20 table of optimal lengths", "[astar]") {
     double cutting, no_cutting, four;
   };
   // data/maps/classic20/README.md
-  const Row table[] = {{"map1.txt", 34.3848, 37.8995, 42.0},
-                       {"map2.txt", 28.6274, 29.7990, 38.0},
-                       {"map3.txt", 30.9706, 33.3137, 38.0}};
+  const Row table[] = {
+      {"map1.txt", 34.3848, 37.8995, 42.0}, {"map2.txt", 28.6274, 29.7990, 38.0}, {"map3.txt", 30.9706, 33.3137, 38.0}};
   for (const Row& row : table) {
     INFO(row.file);
     const auto map = aco::load_map(test::data_dir() / "maps/classic20" / row.file);
@@ -77,9 +76,9 @@ TEST_CASE("A* matches the classic20 table of optimal lengths", "[astar]") {
       bool cc;
       double expected;
     };
-    for (const Case& c : {Case{aco::Neighbourhood::eight, true, row.cutting},
-                          Case{aco::Neighbourhood::eight, false, row.no_cutting},
-                          Case{aco::Neighbourhood::four, false, row.four}}) {
+    for (const Case& c :
+         {Case{aco::Neighbourhood::eight, true, row.cutting}, Case{aco::Neighbourhood::eight, false, row.no_cutting},
+          Case{aco::Neighbourhood::four, false, row.four}}) {
       const aco::Graph g = aco::build_graph(*map, {c.n, c.cc});
       INFO(aco::describe(g.options));
       const aco::NodeId start = g.node({0, 0}), goal = g.node({19, 19});
@@ -93,9 +92,14 @@ TEST_CASE("A* matches the classic20 table of optimal lengths", "[astar]") {
 
 TEST_CASE("A* matches Moving AI optimal lengths (8-neighbourhood, no corner cutting)", "[astar][slow]") {
   const fs::path root = test::data_dir() / "maps/movingai";
-  const char* files[] = {"arena.map.scen",          "dao/arena2.map.scen",         "dao/lak304d.map.scen",
-                         "room/64room_000.map.scen",    "room/8room_000.map.scen",     "maze/maze512-1-0.map.scen",
-                         "random/random512-10-0.map.scen", "street/Berlin_0_512.map.scen"};
+  const char* files[] = {"arena.map.scen",
+                         "dao/arena2.map.scen",
+                         "dao/lak304d.map.scen",
+                         "room/64room_000.map.scen",
+                         "room/8room_000.map.scen",
+                         "maze/maze512-1-0.map.scen",
+                         "random/random512-10-0.map.scen",
+                         "street/Berlin_0_512.map.scen"};
   for (const char* name : files) {
     const fs::path scen = root / name;
     INFO(scen.string());

@@ -47,7 +47,8 @@ TEST_CASE("every joined bidirectional path is a valid start-to-goal path", "[bid
   int maps = 0, joined = 0;
   for (int trial = 0; trial < 40; ++trial) {
     const aco::OccupancyGrid map = test::random_grid(rng, 6 + trial % 15, 5 + trial % 11);
-    const aco::Graph graph = aco::build_graph(map, {trial % 3 == 0 ? aco::Neighbourhood::sixteen : aco::Neighbourhood::eight, trial % 2 == 0});
+    const aco::Graph graph = aco::build_graph(
+        map, {trial % 3 == 0 ? aco::Neighbourhood::sixteen : aco::Neighbourhood::eight, trial % 2 == 0});
     std::vector<aco::NodeId> free;
     for (aco::NodeId n = 0; n < graph.num_nodes(); ++n)
       if (graph.passable(n)) free.push_back(n);

@@ -52,7 +52,9 @@ TEST_CASE("results are bit-identical for any thread count", "[colony][determinis
   for (int threads : {1, 2, 4}) {
     Baseline b;
     tbb::task_arena arena(threads);
-    arena.execute([&] { results.push_back(aco::run_colony(graph, graph.node({3, 3}), graph.node({44, 40}), b.pipeline(), settings)); });
+    arena.execute([&] {
+      results.push_back(aco::run_colony(graph, graph.node({3, 3}), graph.node({44, 40}), b.pipeline(), settings));
+    });
   }
   for (std::size_t i = 1; i < results.size(); ++i) test::check_same_run(results[i], results[0]);
   REQUIRE(results[0].solved);
@@ -221,7 +223,8 @@ TEST_CASE("nodes a deadlock policy forbids are never entered again", "[colony][d
   s.iterations = 10;
   aco::run_colony(graph, graph.node({0, 1}), graph.node({5, 1}), p, s);
   bool visited_before = false;
-  for (const aco::Ant& ant : recorder.ants[0]) visited_before |= std::count(ant.nodes.begin(), ant.nodes.end(), banned) > 0;
+  for (const aco::Ant& ant : recorder.ants[0])
+    visited_before |= std::count(ant.nodes.begin(), ant.nodes.end(), banned) > 0;
   CHECK(visited_before);  // the straight line runs through it, so the first iteration uses it
   for (std::size_t it = 1; it < recorder.ants.size(); ++it)
     for (const aco::Ant& ant : recorder.ants[it]) REQUIRE(std::count(ant.nodes.begin(), ant.nodes.end(), banned) == 0);
@@ -239,7 +242,8 @@ TEST_CASE("bad inputs and bad strategy output are reported, not run", "[colony]"
   const aco::Graph graph = aco::build_graph(map, {});
   Baseline b;
   aco::ColonySettings s;
-  REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, graph.node({2, 0}), b.pipeline(), s), Contains("goal (2,0) is a blocked cell"));
+  REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, graph.node({2, 0}), b.pipeline(), s),
+                      Contains("goal (2,0) is a blocked cell"));
   REQUIRE_THROWS_WITH(aco::run_colony(graph, -1, 2, b.pipeline(), s), Contains("start node is outside the map"));
   s.ants = 0;
   REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, 8, b.pipeline(), s), Contains("ants must be at least 1"));
@@ -247,7 +251,9 @@ TEST_CASE("bad inputs and bad strategy output are reported, not run", "[colony]"
   PoisonUpdate poison;
   aco::Pipeline p = b.pipeline();
   p.update = &poison;
-  REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, 8, p, s), Contains("the update plugin wrote nan to the pheromone of edge") && Contains("in update() in iteration 0 (0-based"));
+  REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, 8, p, s),
+                      Contains("the update plugin wrote nan to the pheromone of edge") &&
+                          Contains("in update() in iteration 0 (0-based"));
   const auto trivial = aco::run_colony(graph, 4, 4, b.pipeline(), s);
   CHECK(trivial.solved);
   CHECK(trivial.length == 0.0);
@@ -303,7 +309,8 @@ TEST_CASE("q0: with probability q0 an ant takes its best candidate (q0 = 1: ever
   aco::ColonySettings bad;
   bad.q0 = 1.5;
   Baseline b;
-  CHECK_THROWS_WITH(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), bad), Contains("q0 must be in [0, 1]"));
+  CHECK_THROWS_WITH(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), bad),
+                    Contains("q0 must be in [0, 1]"));
 }
 
 TEST_CASE("strategy objects reused for runs on other maps give the runs fresh objects give", "[colony][lifecycle]") {
@@ -318,9 +325,14 @@ TEST_CASE("strategy objects reused for runs on other maps give the runs fresh ob
   settings.ants = 10;
   settings.iterations = 25;
   settings.seed = 3;
-  const std::vector<aco::Keys> pipelines{
-      {{"heuristic", "direction"}, {"update", "max_min"}, {"update.restart_after", "4"}, {"deadlock", "clear_and_tabu"}},
-      {{"init", "potential_field"}, {"heuristic", "potential_field"}, {"update", "population"}, {"deadlock", "backtrack"}}};
+  const std::vector<aco::Keys> pipelines{{{"heuristic", "direction"},
+                                          {"update", "max_min"},
+                                          {"update.restart_after", "4"},
+                                          {"deadlock", "clear_and_tabu"}},
+                                         {{"init", "potential_field"},
+                                          {"heuristic", "potential_field"},
+                                          {"update", "population"},
+                                          {"deadlock", "backtrack"}}};
   for (const aco::Keys& keys : pipelines) {
     INFO(keys.at("heuristic") << ", " << keys.at("update") << ", " << keys.at("deadlock"));
     const aco::PipelineSpec spec = test::pipeline(keys);

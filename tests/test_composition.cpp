@@ -66,17 +66,17 @@ TEST_CASE("plugins of papers 001, 002 and 003 compose in any slot", "[compositio
     const aco::Graph g = aco::build_graph(*problem.map, problem.options);
     for (const auto& combination : combinations) {
       const auto p = aco::instantiate(test::plugins(), test::pipeline({{"init", combination.init},
-                                                                        {"heuristic", combination.heuristic},
-                                                                        {"update", combination.update},
-                                                                        {"deadlock", combination.deadlock},
-                                                                        {"smoother", combination.smoother}}));
+                                                                       {"heuristic", combination.heuristic},
+                                                                       {"update", combination.update},
+                                                                       {"deadlock", combination.deadlock},
+                                                                       {"smoother", combination.smoother}}));
       aco::ColonySettings s;
       s.iterations = 40;
       const aco::NodeId start = g.node(problem.start), goal = g.node(problem.goal);
       const auto r = aco::run_colony(g, start, goal, p.colony(), s);
       auto context = test::context(g, problem.start, problem.goal);
-      INFO(combination.init << " " << combination.heuristic << " " << combination.update << " "
-                            << combination.deadlock << " " << combination.smoother << " on " << problem.map->name() << ", "
+      INFO(combination.init << " " << combination.heuristic << " " << combination.update << " " << combination.deadlock
+                            << " " << combination.smoother << " on " << problem.map->name() << ", "
                             << aco::describe(problem.options));
       check_result(g, start, goal, r, p.smoother->smooth(context, r.path));
     }
@@ -89,5 +89,6 @@ TEST_CASE("acoplan runs a cross-paper pipeline from the command line", "[composi
                                 "--smoother", "prune", "--corner-cutting", "--same-path-stop", "--json"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
-  CHECK_THAT(r.out, Contains("\"solved\":true") && Contains("\"smoother\":\"prune\"") && Contains("\"heuristic.gamma\":3.0"));
+  CHECK_THAT(r.out,
+             Contains("\"solved\":true") && Contains("\"smoother\":\"prune\"") && Contains("\"heuristic.gamma\":3.0"));
 }

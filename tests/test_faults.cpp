@@ -26,8 +26,12 @@ std::string plugin(const std::string& slot, const std::string& name) {
 }
 
 std::vector<std::string> map1_run(const std::vector<std::string>& more) {
-  std::vector<std::string> args{"--map", (test::data_dir() / "maps/classic20/map1.txt").string(), "--start", "0,0", "--goal",
-                                "19,19", "--ants", "10", "--iterations", "6", "--plugin-dir", kFaulty};
+  std::vector<std::string> args{"--map",        (test::data_dir() / "maps/classic20/map1.txt").string(),
+                                "--start",      "0,0",
+                                "--goal",       "19,19",
+                                "--ants",       "10",
+                                "--iterations", "6",
+                                "--plugin-dir", kFaulty};
   args.insert(args.end(), more.begin(), more.end());
   return args;
 }
@@ -61,37 +65,82 @@ TEST_CASE("a bad pheromone or heuristic value is named with the plugin, the hook
   const std::string pheromone = "pheromone", heuristic = "heuristic (eta^beta)";
   const std::vector<BadValue> cases{
       {{"--update", "bad_value"}, "update", "nan", pheromone, "update()", 3},
-      {{"--update", "bad_value", "--update.value", "negative", "--update.at_iteration", "0"}, "update", "-1", pheromone, "update()", 0},
-      {{"--update", "bad_value", "--update.in_start", "true", "--update.value", "inf"}, "update", "inf", pheromone, "start()", 0},
+      {{"--update", "bad_value", "--update.value", "negative", "--update.at_iteration", "0"},
+       "update",
+       "-1",
+       pheromone,
+       "update()",
+       0},
+      {{"--update", "bad_value", "--update.in_start", "true", "--update.value", "inf"},
+       "update",
+       "inf",
+       pheromone,
+       "start()",
+       0},
       {{"--init", "bad_value"}, "init", "nan", pheromone, "initialize()", 0},
       {{"--init", "bad_value", "--init.value", "negative"}, "init", "-1", pheromone, "initialize()", 0},
-      {{"--deadlock", "bad_value", "--deadlock.at_iteration", "2"}, "deadlock", "nan", pheromone, "after_iteration()", 2},
-      {{"--deadlock", "bad_value", "--deadlock.value", "negative"}, "deadlock", "-1", pheromone, "after_iteration()", 3},
+      {{"--deadlock", "bad_value", "--deadlock.at_iteration", "2"},
+       "deadlock",
+       "nan",
+       pheromone,
+       "after_iteration()",
+       2},
+      {{"--deadlock", "bad_value", "--deadlock.value", "negative"},
+       "deadlock",
+       "-1",
+       pheromone,
+       "after_iteration()",
+       3},
       {{"--heuristic", "bad_value"}, "heuristic", "nan", heuristic, "compute_powered()", 3},
-      {{"--heuristic", "bad_value", "--heuristic.at_iteration", "0", "--heuristic.value", "negative"}, "heuristic", "-1", heuristic,
-       "compute_powered()", 0},
-      {{"--heuristic", "bad_value", "--heuristic.by_node", "true", "--heuristic.value", "inf", "--threads", "1"}, "heuristic", "inf",
-       heuristic, "update_node()", 3},
-      {{"--heuristic", "bad_value", "--heuristic.by_node", "true", "--threads", "2"}, "heuristic", "nan", heuristic, "update_node()", 3},
-      {{"--heuristic", "bad_value", "--heuristic.by_step", "true", "--heuristic.value", "negative"}, "heuristic", "-1",
-       "step factor", "step_factors()", 3},
-      {{"--heuristic", "bad_value", "--heuristic.by_step", "true", "--heuristic.value", "inf"}, "heuristic", "inf", "step factor",
-       "step_factors()", 3},
+      {{"--heuristic", "bad_value", "--heuristic.at_iteration", "0", "--heuristic.value", "negative"},
+       "heuristic",
+       "-1",
+       heuristic,
+       "compute_powered()",
+       0},
+      {{"--heuristic", "bad_value", "--heuristic.by_node", "true", "--heuristic.value", "inf", "--threads", "1"},
+       "heuristic",
+       "inf",
+       heuristic,
+       "update_node()",
+       3},
+      {{"--heuristic", "bad_value", "--heuristic.by_node", "true", "--threads", "2"},
+       "heuristic",
+       "nan",
+       heuristic,
+       "update_node()",
+       3},
+      {{"--heuristic", "bad_value", "--heuristic.by_step", "true", "--heuristic.value", "negative"},
+       "heuristic",
+       "-1",
+       "step factor",
+       "step_factors()",
+       3},
+      {{"--heuristic", "bad_value", "--heuristic.by_step", "true", "--heuristic.value", "inf"},
+       "heuristic",
+       "inf",
+       "step factor",
+       "step_factors()",
+       3},
   };
   for (const BadValue& c : cases) {
-    expect_error(c.args, plugin(c.slot, "bad_value") + " wrote " + c.value + " to the " + c.field + " of edge (0,0) -> (1,0) in " +
-                             c.hook + " in iteration " + std::to_string(c.iteration) + kIteration + "; the " + c.field +
-                             " must be finite and >= 0");
+    expect_error(c.args, plugin(c.slot, "bad_value") + " wrote " + c.value + " to the " + c.field +
+                             " of edge (0,0) -> (1,0) in " + c.hook + " in iteration " + std::to_string(c.iteration) +
+                             kIteration + "; the " + c.field + " must be finite and >= 0");
   }
 }
 
-TEST_CASE("a bad pheromone value that a repeat of the run does not make again is blamed on a plugin that is not deterministic",
-          "[faults][acoplan]") {
+TEST_CASE(
+    "a bad pheromone value that a repeat of the run does not make again is blamed on a plugin that is not "
+    "deterministic",
+    "[faults][acoplan]") {
   // The engine checks the pheromone where the ants read it and at the run's end, and finds the
   // hook that wrote it by repeating the run with a check after every hook.
   const auto not_deterministic = [](const std::string& where, int iteration) {
-    return "the pheromone of edge (0,0) -> (1,0) was nan " + where + " in iteration " + std::to_string(iteration) + kIteration +
-           ", but not when the run was repeated with a check after every hook: the init, update or deadlock plugin is not "
+    return "the pheromone of edge (0,0) -> (1,0) was nan " + where + " in iteration " + std::to_string(iteration) +
+           kIteration +
+           ", but not when the run was repeated with a check after every hook: the init, update or deadlock plugin is "
+           "not "
            "deterministic (aco-plugin-check tells which); it must be finite and >= 0";
   };
   expect_error({"--update", "bad_value", "--update.once", "true"}, not_deterministic("where an ant read it", 4));
@@ -101,16 +150,16 @@ TEST_CASE("a bad pheromone value that a repeat of the run does not make again is
 
 TEST_CASE("NaN written in the run's last iteration fails the run and reaches no output", "[faults][acoplan]") {
   const auto svg = test::temp_file("last.svg", "").parent_path() / "picture.svg";
-  const auto r = test::acoplan(map1_run({"--update", "bad_value", "--update.at_iteration", "5", "--json", "--svg", svg.string(),
-                                         "--svg-pheromone"}));
+  const auto r = test::acoplan(map1_run(
+      {"--update", "bad_value", "--update.at_iteration", "5", "--json", "--svg", svg.string(), "--svg-pheromone"}));
   CHECK(r.exit_code == 1);
   CHECK_THAT(r.err, Contains(plugin("update", "bad_value") + " wrote nan to the pheromone") &&
                         Contains("in update() in iteration 5" + kIteration));
   CHECK_THAT(r.out, !Contains("nan"));
   CHECK((!std::filesystem::exists(svg) || read(svg).find("nan") == std::string::npos));
   // Never reached: the same run without the fault.
-  const auto healthy = test::acoplan(map1_run({"--update", "bad_value", "--update.at_iteration", "-1", "--svg", svg.string(),
-                                               "--svg-pheromone"}));
+  const auto healthy = test::acoplan(
+      map1_run({"--update", "bad_value", "--update.at_iteration", "-1", "--svg", svg.string(), "--svg-pheromone"}));
   CHECK(healthy.exit_code == 0);
   CHECK(read(svg).find("nan") == std::string::npos);
 }
@@ -138,8 +187,8 @@ TEST_CASE("acobench stores a trial whose plugin writes NaN in its last iteration
       CHECK(t.stopped_by == "error");
       CHECK_FALSE(t.solved);
       CHECK_THAT(t.error, EndsWith(": " + plugin("update", "bad_value") +
-                                   " wrote nan to the pheromone of edge (0,0) -> (1,0) in update() in iteration 4" + kIteration +
-                                   "; the pheromone must be finite and >= 0"));
+                                   " wrote nan to the pheromone of edge (0,0) -> (1,0) in update() in iteration 4" +
+                                   kIteration + "; the pheromone must be finite and >= 0"));
     }
     CHECK(failed == 2);
   }
@@ -152,7 +201,8 @@ TEST_CASE("a smoother's waypoints must be finite, on free cells, from the start 
   expect_error({"--smoother", "bad"}, bad + "waypoint 1 (0-based) of 37, (6, 0, 0), lies on no free cell" + rule);
   const auto dropped = test::acoplan(map1_run({"--smoother", "bad", "--smoother.fault", "drop_goal"}));
   CHECK(dropped.exit_code == 1);
-  CHECK_THAT(dropped.err, Contains(bad + "the last waypoint, (") && Contains("is not the goal (19,19) at (19, 19, 0)" + rule));
+  CHECK_THAT(dropped.err,
+             Contains(bad + "the last waypoint, (") && Contains("is not the goal (19,19) at (19, 19, 0)" + rule));
   const auto nan = test::acoplan(map1_run({"--smoother", "bad", "--smoother.fault", "nan"}));
   CHECK(nan.exit_code == 1);
   CHECK_THAT(nan.err, Contains(bad + "waypoint ") && Contains(", nan, 0), is not finite" + rule));
@@ -167,10 +217,10 @@ TEST_CASE("a waypoint is on a free cell when a free cell's closed square holds i
   CHECK(on(0, 0));
   CHECK_FALSE(on(1, 0));
   CHECK_FALSE(on(1.2, -0.3));
-  CHECK(on(0.5, 0));      // the border of a free and a blocked cell
-  CHECK(on(1.5, 0.5));    // the corner of two blocked and two free cells
+  CHECK(on(0.5, 0));  // the border of a free and a blocked cell
+  CHECK(on(1.5, 0.5));  // the corner of two blocked and two free cells
   CHECK_FALSE(on(2, 1));
-  CHECK(on(2, 0.5));      // between the free (2,0) and the blocked (2,1)
+  CHECK(on(2, 0.5));  // between the free (2,0) and the blocked (2,1)
   CHECK_FALSE(on(-0.6, 0));  // outside the map
   CHECK_FALSE(on(3.5, 1.5));
   // On terrain, positions are in the cell size's units.
@@ -183,14 +233,17 @@ TEST_CASE("a waypoint is on a free cell when a free cell's closed square holds i
 
 TEST_CASE("acosim stops on a local planner's NaN command or one far outside the dynamic window", "[faults][acosim]") {
   const auto scenario = [](const std::string& fault) {
-    const auto file = test::temp_file("bad_local.yaml", "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: bad, "
-                                                        "local.fault: " + fault + "}\n");
+    const auto file = test::temp_file("bad_local.yaml",
+                                      "run: {map: open.txt, start: [0, 2], goal: [11, 2], local: bad, "
+                                      "local.fault: " +
+                                          fault + "}\n");
     std::ofstream open(file.parent_path() / "open.txt");
     for (int y = 0; y < 5; ++y) open << "0 0 0 0 0 0 0 0 0 0 0 0\n";
     return file.string();
   };
-  const std::string window = ", outside the dynamic window v in [0, 0.02], w in [-0.0872665, 0.0872665] "
-                             "(a command must be finite and inside it)\n";
+  const std::string window =
+      ", outside the dynamic window v in [0, 0.02], w in [-0.0872665, 0.0872665] "
+      "(a command must be finite and inside it)\n";
   for (const auto& [fault, command] : {std::pair{"nan", "v = nan, w = 0"}, std::pair{"outside", "v = 15, w = 0"}}) {
     INFO(fault);
     const auto r = test::run({ACO_TEST_ACOSIM, scenario(fault), "--plugin-dir", kFaulty, "--json"});

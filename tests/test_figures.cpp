@@ -28,8 +28,12 @@ const std::string kFixtureFile = kFigures + "/aco_deadlock_figures.so";
 const std::string kIteration = " (0-based, as Context::iteration)";
 
 std::vector<std::string> map1_run(const std::vector<std::string>& more) {
-  std::vector<std::string> args{"--map", (test::data_dir() / "maps/classic20/map1.txt").string(), "--start", "0,0", "--goal",
-                                "19,19", "--ants", "10", "--iterations", "6", "--plugin-dir", kFigures};
+  std::vector<std::string> args{"--map",        (test::data_dir() / "maps/classic20/map1.txt").string(),
+                                "--start",      "0,0",
+                                "--goal",       "19,19",
+                                "--ants",       "10",
+                                "--iterations", "6",
+                                "--plugin-dir", kFigures};
   args.insert(args.end(), more.begin(), more.end());
   return args;
 }
@@ -54,8 +58,10 @@ std::string sql_value(const std::filesystem::path& db, const std::string& sql) {
   std::string value = "(no row)";
   if (sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
     sqlite3_stmt* statement = nullptr;
-    if (sqlite3_prepare_v2(handle, sql.c_str(), -1, &statement, nullptr) == SQLITE_OK && sqlite3_step(statement) == SQLITE_ROW)
-      value = sqlite3_column_text(statement, 0) ? reinterpret_cast<const char*>(sqlite3_column_text(statement, 0)) : "NULL";
+    if (sqlite3_prepare_v2(handle, sql.c_str(), -1, &statement, nullptr) == SQLITE_OK &&
+        sqlite3_step(statement) == SQLITE_ROW)
+      value =
+          sqlite3_column_text(statement, 0) ? reinterpret_cast<const char*>(sqlite3_column_text(statement, 0)) : "NULL";
     sqlite3_finalize(statement);
   }
   sqlite3_close(handle);
@@ -68,9 +74,10 @@ TEST_CASE("Context::record() and add() check the name and the value with or with
   aco::Context context;  // as a plugin's own unit test has it: no sink
   context.add("restarts");
   context.record("share", 0.5);
-  const std::string rule = "a figure's name is lower-case letters, digits and '_', starting with a letter, at most 64 characters";
-  CHECK_THROWS_WITH(context.add("Restarts"),
-                    "a strategy called Context::add() with the figure name 'Restarts'; " + rule + " (as 'restarts' or 'nodes_forbidden')");
+  const std::string rule =
+      "a figure's name is lower-case letters, digits and '_', starting with a letter, at most 64 characters";
+  CHECK_THROWS_WITH(context.add("Restarts"), "a strategy called Context::add() with the figure name 'Restarts'; " +
+                                                 rule + " (as 'restarts' or 'nodes_forbidden')");
   CHECK_THROWS_AS(context.record("", 1.0), aco::PluginFault);
   CHECK_THROWS_AS(context.add(std::string(65, 'a')), aco::PluginFault);
   CHECK_THROWS_WITH(context.record("share", std::numeric_limits<double>::infinity()),
@@ -85,25 +92,29 @@ TEST_CASE("Context::record() and add() check the name and the value with or with
     context.add("restarts");
     context.record("share", 0.25);
     context.record("share", 0.75);  // the last value stays
-    CHECK_THROWS_WITH(context.record("share", std::nan("")),
-                      "plugin update/mine (/x/aco_update_mine.so) recorded nan as the figure 'share' in update() in iteration 4" +
-                          kIteration + "; a figure must be finite");
+    CHECK_THROWS_WITH(
+        context.record("share", std::nan("")),
+        "plugin update/mine (/x/aco_update_mine.so) recorded nan as the figure 'share' in update() in iteration 4" +
+            kIteration + "; a figure must be finite");
   }
   context.add("unguarded", 5);  // a strategy the registry did not make
   const auto figures = sink.figures();
   CHECK(figures == std::map<std::string, aco::ParamValue>{{"update/mine.restarts", std::int64_t{3}},
-                                                         {"update/mine.share", 0.75},
-                                                         {"plugin.unguarded", std::int64_t{5}}});
+                                                          {"update/mine.share", 0.75},
+                                                          {"plugin.unguarded", std::int64_t{5}}});
   sink.set_parallel(true);
   const aco::PluginIdentity deadlock{"deadlock", "mine", ""};
   const aco::PluginCallScope scope(deadlock, "on_stuck()", 1);
-  CHECK_THROWS_WITH(context.record("at", 1.0), Contains("plugin deadlock/mine called Context::record() for the figure 'at' in "
-                                                        "on_stuck() in iteration 1" + kIteration) &&
-                                                   Contains("count with Context::add()"));
+  CHECK_THROWS_WITH(context.record("at", 1.0),
+                    Contains("plugin deadlock/mine called Context::record() for the figure 'at' in "
+                             "on_stuck() in iteration 1" +
+                             kIteration) &&
+                        Contains("count with Context::add()"));
   context.add("stuck");  // counts are fine on construction threads
 }
 
-TEST_CASE("a plugin's figures reach acoplan's --json and summary, the same for every thread count", "[figures][acoplan]") {
+TEST_CASE("a plugin's figures reach acoplan's --json and summary, the same for every thread count",
+          "[figures][acoplan]") {
   const auto one = acoplan_json({"--deadlock", "figures", "--threads", "1", "--json"});
   CHECK(one.at("deadlock/figures.last_iteration") == 5.0);  // recorded in after_iteration(): the last iteration's
   const auto stuck = one.at("deadlock/figures.stuck").get<std::int64_t>();
@@ -114,18 +125,21 @@ TEST_CASE("a plugin's figures reach acoplan's --json and summary, the same for e
   }
   CHECK(one.at("ant_steps").get<std::int64_t>() > 0);  // the planner's own properties, where they always were
   // Bundled plugins' figures: MAX-MIN's restarts (0 when none), deadlock/backtrack's back-offs.
-  const auto bundled = acoplan_json({"--update", "max_min", "--update.restart_after", "1", "--deadlock", "backtrack", "--json"});
+  const auto bundled =
+      acoplan_json({"--update", "max_min", "--update.restart_after", "1", "--deadlock", "backtrack", "--json"});
   CHECK(bundled.at("update/max_min.restarts").get<std::int64_t>() >= 1);
   CHECK(bundled.at("deadlock/backtrack.backoffs").get<std::int64_t>() > 0);
   CHECK(acoplan_json({"--update", "max_min", "--json"}).at("update/max_min.restarts") == 0);
 
   const auto text = test::acoplan(map1_run({"--deadlock", "figures"}));
-  CHECK_THAT(text.out, Contains("figures:  deadlock/figures.last_iteration 5, deadlock/figures.stuck " + std::to_string(stuck) + "\n"));
+  CHECK_THAT(text.out, Contains("figures:  deadlock/figures.last_iteration 5, deadlock/figures.stuck " +
+                                std::to_string(stuck) + "\n"));
   const auto runs = test::acoplan(map1_run({"--deadlock", "figures", "--repeat", "3"}));
   CHECK_THAT(runs.out, Contains("  deadlock/figures.stuck mean "));
 }
 
-TEST_CASE("a figure's bad name, NaN value or record() on a construction thread stops the run naming the plugin", "[figures][acoplan]") {
+TEST_CASE("a figure's bad name, NaN value or record() on a construction thread stops the run naming the plugin",
+          "[figures][acoplan]") {
   const std::string plugin = "plugin deadlock/figures (" + kFixtureFile + ")";
   const auto expect = [&](const std::string& mistake, const std::string& message) {
     const auto r = test::acoplan(map1_run({"--deadlock", "figures", "--deadlock.mistake", mistake}));
@@ -133,12 +147,17 @@ TEST_CASE("a figure's bad name, NaN value or record() on a construction thread s
     CHECK(r.exit_code == 1);
     CHECK_THAT(r.err, Contains(message));
   };
-  expect("nan", "acoplan: error: " + plugin + " recorded nan as the figure 'ratio' in after_iteration() in iteration 2" +
-                    kIteration + "; a figure must be finite\n");
-  expect("bad_name", "acoplan: error: " + plugin + " called Context::add() with the figure name 'Bad Name' in after_iteration() in "
-                         "iteration 0" + kIteration + "; a figure's name is lower-case letters");
-  expect("record_on_stuck", plugin + " called Context::record() for the figure 'stuck_at' in on_stuck() in iteration 0" + kIteration);
-  expect("record_and_add", "acoplan: error: " + plugin + " gave the figure 'stuck' to both Context::record() and Context::add()");
+  expect("nan", "acoplan: error: " + plugin +
+                    " recorded nan as the figure 'ratio' in after_iteration() in iteration 2" + kIteration +
+                    "; a figure must be finite\n");
+  expect("bad_name", "acoplan: error: " + plugin +
+                         " called Context::add() with the figure name 'Bad Name' in after_iteration() in "
+                         "iteration 0" +
+                         kIteration + "; a figure's name is lower-case letters");
+  expect("record_on_stuck",
+         plugin + " called Context::record() for the figure 'stuck_at' in on_stuck() in iteration 0" + kIteration);
+  expect("record_and_add",
+         "acoplan: error: " + plugin + " gave the figure 'stuck' to both Context::record() and Context::add()");
 }
 
 TEST_CASE("acobench keeps the figures and the planners' properties per trial: database, workers, runs.csv, report",
@@ -147,7 +166,8 @@ TEST_CASE("acobench keeps the figures and the planners' properties per trial: da
   const auto file = experiment(
       "name: figures\nseed: 5\nrepetitions: 3\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n"
       "settings: {ants: 10, iterations: 6}\nbaseline: {name: AS}\n"
-      "configurations:\n  - {name: counted, deadlock: figures}\n  - {name: fireworks, planner: ifwa, ifwa.iterations: 5}\n");
+      "configurations:\n  - {name: counted, deadlock: figures}\n  - {name: fireworks, planner: ifwa, ifwa.iterations: "
+      "5}\n");
   std::vector<std::filesystem::path> dbs;
   for (const bool in_process : {false, true}) {
     const auto db = file.parent_path() / (in_process ? "in-process.db" : "workers.db");
@@ -161,12 +181,17 @@ TEST_CASE("acobench keeps the figures and the planners' properties per trial: da
   // The worker processes send the properties back with the trial: the same rows as in process.
   CHECK(database_rows(dbs[0]) == database_rows(dbs[1]));
   const auto& db = dbs[0];
-  const std::string of = " FROM properties p JOIN runs r ON r.id = p.runid JOIN plannerConfigs c ON c.id = r.plannerid WHERE ";
-  CHECK(sql_value(db, "SELECT count(*)" + of + "c.name = 'counted' AND p.name = 'deadlock/figures.stuck' AND p.value > 0") == "3");
-  CHECK(sql_value(db, "SELECT min(p.value)" + of + "c.name = 'counted' AND p.name = 'deadlock/figures.last_iteration'") == "5.0");
-  CHECK(sql_value(db, "SELECT count(*)" + of + "c.name = 'fireworks' AND p.name = 'evaluations' AND typeof(p.value) = 'integer' "
-                      "AND p.value > 0") == "3");
-  CHECK(sql_value(db, "SELECT count(*)" + of + "c.name = 'AS' AND p.name = 'ant_steps' AND p.value = r.ant_steps") == "3");
+  const std::string of =
+      " FROM properties p JOIN runs r ON r.id = p.runid JOIN plannerConfigs c ON c.id = r.plannerid WHERE ";
+  CHECK(sql_value(db, "SELECT count(*)" + of +
+                          "c.name = 'counted' AND p.name = 'deadlock/figures.stuck' AND p.value > 0") == "3");
+  CHECK(sql_value(db, "SELECT min(p.value)" + of +
+                          "c.name = 'counted' AND p.name = 'deadlock/figures.last_iteration'") == "5.0");
+  CHECK(sql_value(db, "SELECT count(*)" + of +
+                          "c.name = 'fireworks' AND p.name = 'evaluations' AND typeof(p.value) = 'integer' "
+                          "AND p.value > 0") == "3");
+  CHECK(sql_value(db, "SELECT count(*)" + of + "c.name = 'AS' AND p.name = 'ant_steps' AND p.value = r.ant_steps") ==
+        "3");
 
   const auto out = file.parent_path() / "report";
   const auto report = run_acobench({"report", db.string(), "--out", out.string()});
@@ -177,13 +202,15 @@ TEST_CASE("acobench keeps the figures and the planners' properties per trial: da
   std::getline(csv, header);
   std::string fixed_columns;
   for (const auto& name : aco::studies::runs_csv_columns()) fixed_columns += (fixed_columns.empty() ? "" : ",") + name;
-  CHECK(header == fixed_columns + ",deadlock/backtrack.backoffs,deadlock/figures.last_iteration,deadlock/figures.stuck,evaluations");
+  CHECK(header ==
+        fixed_columns +
+            ",deadlock/backtrack.backoffs,deadlock/figures.last_iteration,deadlock/figures.stuck,evaluations");
   int counted_rows = 0;
   while (std::getline(csv, line)) {
     if (line.find("\"counted\"") == std::string::npos) continue;
     ++counted_rows;
     CHECK_THAT(line, Contains(",,5,"));  // no backoffs (the baseline's robust preset backtracks), last_iteration, stuck
-    CHECK(line.back() == ',');          // no evaluations for the colony
+    CHECK(line.back() == ',');  // no evaluations for the colony
   }
   CHECK(counted_rows == 3);
   // The report: a table of each configuration's figures, the plugins it ran, and a warning of the
@@ -204,7 +231,8 @@ TEST_CASE("acobench keeps the figures and the planners' properties per trial: da
   CHECK(md.find("plugin update/ant_system") == std::string::npos);
 }
 
-TEST_CASE("40 series get 40 distinct colour and line style pairs, the same for a configuration in every chart", "[figures][plots]") {
+TEST_CASE("40 series get 40 distinct colour and line style pairs, the same for a configuration in every chart",
+          "[figures][plots]") {
   std::set<std::pair<std::string, std::string>> styles;
   for (std::size_t k = 0; k < aco::studies::kDistinctStyles; ++k)
     styles.emplace(aco::studies::series_style(k).colour, aco::studies::series_style(k).dash);
@@ -215,11 +243,13 @@ TEST_CASE("40 series get 40 distinct colour and line style pairs, the same for a
   chart.series[3].style = 17;  // a series keeps the style it is given
   const std::string svg = aco::studies::line_chart_svg(chart);
   std::set<std::string> strokes;
-  for (std::size_t at = svg.find("class=\"series\""); at != std::string::npos; at = svg.find("class=\"series\"", at + 1)) {
+  for (std::size_t at = svg.find("class=\"series\""); at != std::string::npos;
+       at = svg.find("class=\"series\"", at + 1)) {
     const auto begin = svg.find("stroke=", at), end = svg.find(" stroke-width", at);
     strokes.insert(svg.substr(begin, end - begin));
   }
   CHECK(strokes.size() == 19);  // series 3 and 17 share style 17
-  CHECK_THAT(svg, Contains(aco::studies::stroke_attributes(17) + " stroke-width=\"2\"/><text x=\"") && Contains(">config 3</text>"));
+  CHECK_THAT(svg, Contains(aco::studies::stroke_attributes(17) + " stroke-width=\"2\"/><text x=\"") &&
+                      Contains(">config 3</text>"));
   CHECK(aco::studies::stroke_attributes(12) == "stroke=\"#2ca02c\" stroke-dasharray=\"7,3\"");
 }

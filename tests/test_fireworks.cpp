@@ -14,7 +14,9 @@
 
 namespace {
 
-aco::FireworksSettings defaults() { return aco::fireworks_settings(aco::resolve(aco::fireworks_parameters(), {}, "ifwa.")); }
+aco::FireworksSettings defaults() {
+  return aco::fireworks_settings(aco::resolve(aco::fireworks_parameters(), {}, "ifwa."));
+}
 
 // Every step an edge, start to goal, length = the sum of the steps.
 void check_path(const aco::Graph& g, const aco::PlannerResult& r, aco::Cell start, aco::Cell goal) {
@@ -67,7 +69,8 @@ TEST_CASE("fireworks finds a valid start-goal path and its curve tells when", "[
   }
 }
 
-TEST_CASE("fireworks: same seed, same result on 1, 2 and 4 threads, and another seed differs", "[fireworks][determinism]") {
+TEST_CASE("fireworks: same seed, same result on 1, 2 and 4 threads, and another seed differs",
+          "[fireworks][determinism]") {
   const auto map = test::classic_map(2);
   const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::eight, false});
   aco::FireworksSettings s = defaults();
@@ -151,7 +154,8 @@ TEST_CASE("fireworks: bad settings and endpoints are errors", "[fireworks]") {
   CHECK_THROWS_WITH(aco::resolve(table, {{"a", "1.5"}}, "--ifwa."), Catch::Contains("--ifwa.a"));
   CHECK_THROWS_WITH(aco::resolve(table, {{"fireworks", "0"}}, "--ifwa."), Catch::Contains("--ifwa.fireworks"));
   CHECK_THROWS_WITH(aco::resolve(table, {{"radus", "2"}}, "--ifwa."), Catch::Contains("radius"));
-  CHECK_THROWS_WITH(aco::fireworks_settings(aco::resolve(table, {{"a", "0.6"}}, "--ifwa.")), Catch::Contains("a = 0.6"));
+  CHECK_THROWS_WITH(aco::fireworks_settings(aco::resolve(table, {{"a", "0.6"}}, "--ifwa.")),
+                    Catch::Contains("a = 0.6"));
   CHECK_THROWS_WITH(aco::fireworks_settings(aco::resolve(table, {{"weight_min", "2"}}, "--ifwa.")),
                     Catch::Contains("weight_min"));
   const auto map = test::grid({"..#", "...", "..."});
@@ -164,7 +168,8 @@ TEST_CASE("fireworks: bad settings and endpoints are errors", "[fireworks]") {
 
 TEST_CASE("acoplan --planner ifwa on the paper004 map", "[fireworks][acoplan]") {
   const std::string scen = (test::data_dir() / "terrain/paper004.map.scen").string();
-  const auto r = test::acoplan({"--scen", scen, "--planner", "ifwa", "--ifwa.iterations", "10", "--seed", "4", "--json"});
+  const auto r =
+      test::acoplan({"--scen", scen, "--planner", "ifwa", "--ifwa.iterations", "10", "--seed", "4", "--json"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);
@@ -179,7 +184,8 @@ TEST_CASE("acoplan --planner ifwa on the paper004 map", "[fireworks][acoplan]") 
   CHECK(j.at("grid_path").front() == nlohmann::json::array({0, 0}));
   CHECK(j.at("grid_path").back() == nlohmann::json::array({19, 19}));
   // The same run again: bit-identical.
-  const auto again = test::acoplan({"--scen", scen, "--planner", "ifwa", "--ifwa.iterations", "10", "--seed", "4", "--json"});
+  const auto again =
+      test::acoplan({"--scen", scen, "--planner", "ifwa", "--ifwa.iterations", "10", "--seed", "4", "--json"});
   CHECK(nlohmann::json::parse(again.out).at("grid_path") == j.at("grid_path"));
 
   const auto bad = test::acoplan({"--scen", scen, "--planner", "ifwa", "--ifwa.sprks", "4"});
@@ -190,7 +196,8 @@ TEST_CASE("acoplan --planner ifwa on the paper004 map", "[fireworks][acoplan]") 
   CHECK_THAT(out_of_range.err, Catch::Contains("--ifwa.b"));
 }
 
-TEST_CASE("fireworks on a large map: block weights and the walk limit, still deterministic", "[fireworks][large][slow]") {
+TEST_CASE("fireworks on a large map: block weights and the walk limit, still deterministic",
+          "[fireworks][large][slow]") {
   // The classic map with max_weights 16: cells share weights in 4 x 4 blocks of 5 x 5 cells.
   const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
@@ -207,7 +214,8 @@ TEST_CASE("fireworks on a large map: block weights and the walk limit, still det
   const auto per_cell = aco::run_fireworks(graph, 0, graph.node({19, 19}), settings({{"iterations", "10"}}));
   CHECK(per_cell.best_so_far != a.best_so_far);
   // The walk limit never cuts a walk on a map of at most 4096 cells...
-  const auto unlimited = aco::run_fireworks(graph, 0, graph.node({19, 19}), settings({{"iterations", "10"}, {"walk_limit", "0"}}));
+  const auto unlimited =
+      aco::run_fireworks(graph, 0, graph.node({19, 19}), settings({{"iterations", "10"}, {"walk_limit", "0"}}));
   CHECK(unlimited.best_so_far == per_cell.best_so_far);
   // ...but does on a 193x194 map, where walks wander: the search then differs, still valid.
   const auto file = test::data_dir() / "maps/movingai/dao/lak304d.map";

@@ -41,8 +41,8 @@ std::vector<GoldenRun> golden_runs() {
 // The measures of a run, without its configuration and times.
 json results_only(const json& run) {
   static const std::vector<std::string> kResultKeys = {
-      "solved", "length", "path", "grid_length", "grid_path", "turns", "iterations", "best_iteration", "seed",
-      "reason", "ant_steps", "evaluations", "stopped_by", "optimal_length", "convergence"};
+      "solved", "length", "path",      "grid_length", "grid_path",  "turns",          "iterations", "best_iteration",
+      "seed",   "reason", "ant_steps", "evaluations", "stopped_by", "optimal_length", "convergence"};
   json kept = json::object();
   for (const auto& key : kResultKeys)
     if (run.contains(key)) kept[key] = run[key];

@@ -70,7 +70,7 @@ std::set<std::pair<int, int>> crossed_cells(aco::Cell from, aco::Cell to) {
   return cells;
 }
 
-const std::vector<std::pair<int, int>> kKnightMoves = {{1, 2}, {2, 1}, {-1, 2}, {-2, 1},
+const std::vector<std::pair<int, int>> kKnightMoves = {{1, 2},  {2, 1},  {-1, 2},  {-2, 1},
                                                        {1, -2}, {2, -1}, {-1, -2}, {-2, -1}};
 
 Eigen::Vector3d p(double x, double y) { return {x, y, 0.0}; }
@@ -85,8 +85,9 @@ TEST_CASE("Open 5x5 grid: edge counts, degrees and costs per neighbourhood", "[g
   };
   // Directed edges: 4-conn 2*(5*4 + 5*4) = 80; diagonals add 2*2*4*4 = 64;
   // knight moves add 2*4*(3*4) = 96. Side cell (2,0): 3 / 5 / 5+4.
-  for (const Expect& x : {Expect{aco::Neighbourhood::four, 80, 4, 2, 3}, Expect{aco::Neighbourhood::eight, 144, 8, 3, 5},
-                          Expect{aco::Neighbourhood::sixteen, 240, 16, 5, 9}}) {
+  for (const Expect& x :
+       {Expect{aco::Neighbourhood::four, 80, 4, 2, 3}, Expect{aco::Neighbourhood::eight, 144, 8, 3, 5},
+        Expect{aco::Neighbourhood::sixteen, 240, 16, 5, 9}}) {
     for (bool cc : {false, true}) {
       INFO("neighbourhood " << static_cast<int>(x.n) << ", corner cutting " << cc);
       const aco::Graph g = build(map, x.n, cc);
@@ -456,14 +457,14 @@ TEST_CASE("line_of_sight: diagonals through vertices and the corner rule", "[gra
   };
   const Case cases[] = {
       {{}, true, true},
-      {{{1, 0}}, false, true},           // one side cell blocked
+      {{{1, 0}}, false, true},  // one side cell blocked
       {{{0, 1}}, false, true},
-      {{{1, 2}}, false, true},           // at the second vertex
+      {{{1, 2}}, false, true},  // at the second vertex
       {{{1, 0}, {0, 1}}, false, false},  // squeezing between two
       {{{2, 1}, {1, 2}}, false, false},
-      {{{1, 0}, {1, 2}}, false, true},   // one side at each vertex
-      {{{1, 1}}, false, false},          // a cell on the diagonal
-      {{{2, 0}, {0, 2}}, true, true},    // cells the segment does not touch
+      {{{1, 0}, {1, 2}}, false, true},  // one side at each vertex
+      {{{1, 1}}, false, false},  // a cell on the diagonal
+      {{{2, 0}, {0, 2}}, true, true},  // cells the segment does not touch
   };
   for (const Case& c : cases) {
     auto rows3 = open_grid(3, 3);
@@ -612,9 +613,11 @@ TEST_CASE("line_of_sight on random maps: symmetric and equal to the reference", 
       vertex_cases += !test::reference_vertex_sides(a, b).empty();
       for (bool cc : {false, true}) {
         const bool los = aco::line_of_sight(map, a, b, cc);
-        INFO(w << "x" << h << " map, " << aco::to_string(a) << " -> " << aco::to_string(b) << ", corner cutting " << cc);
+        INFO(w << "x" << h << " map, " << aco::to_string(a) << " -> " << aco::to_string(b) << ", corner cutting "
+               << cc);
         // One CHECK per comparison would be 24000 assertions; count failures instead.
-        const bool ok = los == aco::line_of_sight(map, b, a, cc) && los == test::reference_segment_clear(map, a, b, cc) &&
+        const bool ok = los == aco::line_of_sight(map, b, a, cc) &&
+                        los == test::reference_segment_clear(map, a, b, cc) &&
                         test::reference_segment_clear(map, b, a, cc) == los;
         if (!ok) CHECK(los == test::reference_segment_clear(map, a, b, cc));
         if (!ok) CHECK(los == aco::line_of_sight(map, b, a, cc));

@@ -62,7 +62,8 @@ struct IraceParameter {
 
 // Parses the file, checking every line against irace's syntax and every name for uniqueness.
 std::vector<IraceParameter> parse_irace_parameters(const std::string& text) {
-  static const std::regex line_syntax(R"re(^([A-Za-z][A-Za-z0-9_]*) "(--[A-Za-z0-9_.-]+[ =])" ([icr]) \(([^()]+)\)(?: \| (.+))?$)re");
+  static const std::regex line_syntax(
+      R"re(^([A-Za-z][A-Za-z0-9_]*) "(--[A-Za-z0-9_.-]+[ =])" ([icr]) \(([^()]+)\)(?: \| (.+))?$)re");
   std::vector<IraceParameter> parameters;
   std::set<std::string> names;
   for (const auto& line : lines(text)) {
@@ -115,11 +116,17 @@ TEST_CASE("acoplan --irace prints only the final length, the same as --json's", 
   CHECK(irace_cost(repeated) == Approx(json::parse(r.out)["summary"]["length"]["mean"].get<double>()).epsilon(1e-12));
 }
 
-TEST_CASE("acoplan --irace-cost gap and gap-penalised are the grid path's gap to A*'s optimum in %", "[acoplan][irace]") {
+TEST_CASE("acoplan --irace-cost gap and gap-penalised are the grid path's gap to A*'s optimum in %",
+          "[acoplan][irace]") {
   // A short run that stays above the optimum: one ant, one iteration, no local search.
-  const std::vector<std::string> args{"--scen", (test::data_dir() / "maps/movingai/dao/arena2.map.scen").string(),
-                                      "--scen-index", "900", "--ants", "2", "--iterations", "2", "--local-search",
-                                      "none", "--q0", "0", "--seed", "3"};
+  const std::vector<std::string> args{
+      "--scen",         (test::data_dir() / "maps/movingai/dao/arena2.map.scen").string(),
+      "--scen-index",   "900",
+      "--ants",         "2",
+      "--iterations",   "2",
+      "--local-search", "none",
+      "--q0",           "0",
+      "--seed",         "3"};
   const auto r = test::acoplan(with(args, {"--json"}));
   REQUIRE(r.exit_code == 0);
   const json run = json::parse(r.out);
@@ -137,7 +144,8 @@ TEST_CASE("acoplan --irace-cost gap and gap-penalised are the grid path's gap to
   const double effort = run["ant_steps"].get<double>() / run["convergence_walks"].back().get<double>() /
                         run["optimal_length"].get<double>();
   REQUIRE(effort > 1.0);
-  CHECK(irace_cost(with(args, {"--irace-cost", "gap", "--irace-effort", "0.5"})) == Approx(gap + 0.5 * effort).epsilon(1e-12));
+  CHECK(irace_cost(with(args, {"--irace-cost", "gap", "--irace-effort", "0.5"})) ==
+        Approx(gap + 0.5 * effort).epsilon(1e-12));
   const auto negative = test::acoplan(with(quick, {"--irace", "--irace-effort", "-1"}));
   CHECK(negative.exit_code == 1);
   CHECK_THAT(negative.err, Contains("--irace-effort must be finite and >= 0"));
@@ -149,7 +157,8 @@ TEST_CASE("acoplan --irace gives an unsolved run the penalty cost and exit statu
   const std::vector<std::string> unsolved{"--map", walled.string(), "--start", "0,0", "--goal", "2,2"};
   CHECK(irace_cost(unsolved) == 1e9);
   CHECK(irace_cost(with(unsolved, {"--repeat", "2"})) == 1e9);
-  for (const auto& bad : {std::vector<std::string>{"--irace", "--ants", "0"}, {"--irace", "--update", "nope"},
+  for (const auto& bad : {std::vector<std::string>{"--irace", "--ants", "0"},
+                          {"--irace", "--update", "nope"},
                           {"--irace", "--map", "/nonexistent.map", "--start", "0,0", "--goal", "1,1"}}) {
     const auto r = test::acoplan(bad);
     CHECK(r.exit_code == 1);
@@ -158,7 +167,8 @@ TEST_CASE("acoplan --irace gives an unsolved run the penalty cost and exit statu
   }
 }
 
-TEST_CASE("acoplan --dump-irace-params lists the colony and every plugin of every slot with conditions", "[acoplan][irace]") {
+TEST_CASE("acoplan --dump-irace-params lists the colony and every plugin of every slot with conditions",
+          "[acoplan][irace]") {
   const auto r = test::acoplan({"--dump-irace-params", "-"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
@@ -173,7 +183,8 @@ TEST_CASE("acoplan --dump-irace-params lists the colony and every plugin of ever
   CHECK(by_name.count("time_limit") == 0);
   for (const auto& p : parameters) CHECK(p.flag != "--seed ");
   for (const auto& spec : aco::colony_parameters())
-    if (std::string(spec.name) != "seed" && std::string(spec.name) != "null-model" && std::string(spec.name) != "time-limit") {
+    if (std::string(spec.name) != "seed" && std::string(spec.name) != "null-model" &&
+        std::string(spec.name) != "time-limit") {
       std::string name = spec.name;
       std::replace(name.begin(), name.end(), '-', '_');
       REQUIRE(by_name.count(name));
@@ -247,11 +258,13 @@ TEST_CASE("every value at the ends of a dumped range is finite and accepted by a
     // The parameter's own table checks each end (or each choice) as acoplan would.
     const std::string option = p.flag.substr(2, p.flag.size() - 3);
     const auto dot = option.find('.');
-    if (dot == std::string::npos && std::find(aco::kSlots.begin(), aco::kSlots.end(), option) != aco::kSlots.end()) continue;
+    if (dot == std::string::npos && std::find(aco::kSlots.begin(), aco::kSlots.end(), option) != aco::kSlots.end())
+      continue;
     std::span<const aco::ParamSpec> table = aco::colony_parameters();
     if (dot != std::string::npos) {
       const std::string slot = option.substr(0, dot);
-      const std::string plugin = p.condition.substr(p.condition.find('"') + 1, p.condition.rfind('"') - p.condition.find('"') - 1);
+      const std::string plugin =
+          p.condition.substr(p.condition.find('"') + 1, p.condition.rfind('"') - p.condition.find('"') - 1);
       table = test::plugins().load(slot, plugin).parameters();
     }
     const auto& spec = spec_named(table, dot == std::string::npos ? option : option.substr(dot + 1));
@@ -261,7 +274,8 @@ TEST_CASE("every value at the ends of a dumped range is finite and accepted by a
   CHECK_THAT(r.out, Contains("update_rho_max_min \"--update.rho \" r (0.0001, 1) | update == \"max_min\""));
   CHECK_THAT(r.out, Contains("update_p_best \"--update.p_best \" r (0.0001, 0.9999) | update == \"max_min\""));
   CHECK_THAT(r.out, Contains("ants \"--ants \" i (1, 5000)"));
-  CHECK_THAT(r.out, Contains("# skipped --update.tau_min: range (0:1e12] capped at 100 x default 1e-06 leaves no interval"));
+  CHECK_THAT(r.out,
+             Contains("# skipped --update.tau_min: range (0:1e12] capped at 100 x default 1e-06 leaves no interval"));
 }
 
 TEST_CASE("acoplan runs the lowest value of every dumped parameter, passed as irace passes it", "[acoplan][irace]") {
@@ -296,7 +310,8 @@ TEST_CASE("tools/irace/forbidden.txt names parameters of the dumped file", "[aco
     if (line.empty() || line[0] == '#') continue;
     ++expressions;
     const std::string code = std::regex_replace(line, std::regex("\"[^\"]*\""), "");  // drop quoted values
-    for (std::sregex_iterator it(code.begin(), code.end(), identifier), end; it != end; ++it) CHECK(names.count(it->str()));
+    for (std::sregex_iterator it(code.begin(), code.end(), identifier), end; it != end; ++it)
+      CHECK(names.count(it->str()));
   }
   CHECK(expressions == 2);
 }
@@ -342,7 +357,8 @@ TEST_CASE("acoplan --irace-slots limits the tuned slots and --dump-irace-params 
   }
 }
 
-TEST_CASE("acoplan --irace-plugin dumps one plugin's parameters with its slot fixed to it", "[acoplan][irace][bad-input]") {
+TEST_CASE("acoplan --irace-plugin dumps one plugin's parameters with its slot fixed to it",
+          "[acoplan][irace][bad-input]") {
   const auto one = test::acoplan({"--dump-irace-params", "-", "--irace-plugin", "update/max_min"});
   REQUIRE(one.exit_code == 0);
   const auto parameters = parse_irace_parameters(one.out);
@@ -356,19 +372,22 @@ TEST_CASE("acoplan --irace-plugin dumps one plugin's parameters with its slot fi
   }
   CHECK(parameters[3].name == "update_p_best");
   // A plugin of --plugin-dir's is found, as the target runner's acoplan finds it.
-  const auto faulty = test::acoplan({"--dump-irace-params", "-", "--irace-plugin", "update/throwing", "--plugin-dir",
-                                     ACO_TEST_FAULTY_PLUGIN_DIR});
+  const auto faulty = test::acoplan(
+      {"--dump-irace-params", "-", "--irace-plugin", "update/throwing", "--plugin-dir", ACO_TEST_FAULTY_PLUGIN_DIR});
   CHECK(faulty.exit_code == 0);
   CHECK_THAT(faulty.out, Contains("update \"--update \" c (throwing)\n"));
 
   for (const auto& [args, expected] : std::vector<std::pair<std::vector<std::string>, std::string>>{
            {{"--irace-plugin", "update/acs"}, "--irace-plugin needs --dump-irace-params"},
-           {{"--dump-irace-params", "-", "--irace-plugin", "acs"}, "--irace-plugin: 'acs' is not SLOT/NAME (e.g. update/acs)"},
-           {{"--dump-irace-params", "-", "--irace-plugin", "updat/acs"}, "--irace-plugin updat/acs: 'updat' is not a slot"},
+           {{"--dump-irace-params", "-", "--irace-plugin", "acs"},
+            "--irace-plugin: 'acs' is not SLOT/NAME (e.g. update/acs)"},
+           {{"--dump-irace-params", "-", "--irace-plugin", "updat/acs"},
+            "--irace-plugin updat/acs: 'updat' is not a slot"},
            {{"--dump-irace-params", "-", "--irace-plugin", "update/nope"}, "unknown update plugin 'nope'"},
            {{"--dump-irace-params", "-", "--irace-plugin", "update/acs", "--irace-slots", "update"},
             "--irace-plugin and --irace-slots: give one of them"},
-           {{"--dump-irace-params", "-", "--irace-plugin", "smoother/none"}, "--irace-plugin smoother/none: no parameter irace can tune"}}) {
+           {{"--dump-irace-params", "-", "--irace-plugin", "smoother/none"},
+            "--irace-plugin smoother/none: no parameter irace can tune"}}) {
     const auto r = test::acoplan(args);
     CHECK(r.exit_code == 1);
     CHECK_THAT(r.err, Contains(expected));
@@ -377,9 +396,9 @@ TEST_CASE("acoplan --irace-plugin dumps one plugin's parameters with its slot fi
 
 TEST_CASE("tools/irace/target-runner calls acoplan as irace would and prints the cost last", "[acoplan][irace]") {
   const auto runner = (test::data_dir().parent_path() / "tools/irace/target-runner").string();
-  const auto r = test::run({"/bin/bash", runner, "3", "1", "42", map1_scen, "--ants", "20", "--update", "max_min",
-                            "--update.rho", "0.2"},
-                           {std::string("ACOPLAN=") + ACO_TEST_ACOPLAN, "ACOPLAN_OPTIONS=--iterations 20 --corner-cutting"});
+  const auto r = test::run(
+      {"/bin/bash", runner, "3", "1", "42", map1_scen, "--ants", "20", "--update", "max_min", "--update.rho", "0.2"},
+      {std::string("ACOPLAN=") + ACO_TEST_ACOPLAN, "ACOPLAN_OPTIONS=--iterations 20 --corner-cutting"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto direct = test::acoplan({"--scen", map1_scen, "--seed", "42", "--ants", "20", "--update", "max_min",
@@ -410,43 +429,52 @@ TEST_CASE("tools/irace/target-runner gives a crashed or timed-out evaluation the
     CHECK(std::stod(r.out) == cost);
   };
 
-  const auto crashed = test::run({"/bin/bash", runner, "3", "1", "42", map1_scen, "--update", "crashing", "--plugin-dir", hostile},
-                                 {acoplan, options, to_log});
+  const auto crashed =
+      test::run({"/bin/bash", runner, "3", "1", "42", map1_scen, "--update", "crashing", "--plugin-dir", hostile},
+                {acoplan, options, to_log});
   check_failure_cost(crashed, 1e10);
-  CHECK_THAT(read_log(), Contains("configuration 3, instance 1, seed 42: crashed: SIGSEGV (acoplan: error: crashed: SIGSEGV "
-                                  "in plugin update/crashing (") &&
-                             Contains("aco_update_crashing.so) in update() in iteration 3 (0-based, as Context::iteration))\n") &&
-                             Contains(" --seed 42 --irace --threads 1 --iterations 20 --corner-cutting --update crashing "));
+  CHECK_THAT(read_log(),
+             Contains("configuration 3, instance 1, seed 42: crashed: SIGSEGV (acoplan: error: crashed: SIGSEGV "
+                      "in plugin update/crashing (") &&
+                 Contains("aco_update_crashing.so) in update() in iteration 3 (0-based, as Context::iteration))\n") &&
+                 Contains(" --seed 42 --irace --threads 1 --iterations 20 --corner-cutting --update crashing "));
 
   // A hang, stopped at ACOPLAN_TIMEOUT: acoplan says where it was.
   std::filesystem::remove(log);
-  const auto hung = test::run({"/bin/bash", runner, "4", "2", "7", map1_scen, "--update", "hanging", "--plugin-dir", hostile},
-                              {acoplan, options, to_log, "ACOPLAN_TIMEOUT=0.5", "ACOPLAN_FAILURE_COST=5e9"});
+  const auto hung =
+      test::run({"/bin/bash", runner, "4", "2", "7", map1_scen, "--update", "hanging", "--plugin-dir", hostile},
+                {acoplan, options, to_log, "ACOPLAN_TIMEOUT=0.5", "ACOPLAN_FAILURE_COST=5e9"});
   check_failure_cost(hung, 5e9);
-  CHECK_THAT(read_log(), StartsWith("configuration 4, instance 2, seed 7: timed out after 0.5 s (acoplan: error: stopped: "
-                                    "SIGUSR1 in plugin update/hanging (") &&
-                             Contains("aco_update_hanging.so) in update() in iteration 3 (0-based, as Context::iteration))\n  timeout -s USR1 -k 2 0.5 "));
+  CHECK_THAT(read_log(),
+             StartsWith("configuration 4, instance 2, seed 7: timed out after 0.5 s (acoplan: error: stopped: "
+                        "SIGUSR1 in plugin update/hanging (") &&
+                 Contains("aco_update_hanging.so) in update() in iteration 3 (0-based, as Context::iteration))\n  "
+                          "timeout -s USR1 -k 2 0.5 "));
 
   // By default the log is in the current folder: irace's execution directory.
   const auto dir = log.parent_path() / "exec-dir";
   std::filesystem::create_directories(dir);
-  const auto aborted = test::run({"/bin/sh", "-c", "cd \"$0\" && exec /bin/bash \"$@\"", dir.string(), runner, "5", "1", "9",
-                                  map1_scen, "--update", "crashing", "--update.abort=true", "--plugin-dir", hostile},
-                                 {acoplan, options});
+  const auto aborted =
+      test::run({"/bin/sh", "-c", "cd \"$0\" && exec /bin/bash \"$@\"", dir.string(), runner, "5", "1", "9", map1_scen,
+                 "--update", "crashing", "--update.abort=true", "--plugin-dir", hostile},
+                {acoplan, options});
   check_failure_cost(aborted, 1e10);
   std::ifstream in(dir / "target-runner-failures.log");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  CHECK_THAT(text, StartsWith("configuration 5, instance 1, seed 9: crashed: SIGABRT (acoplan: error: crashed: SIGABRT in "
-                              "plugin update/crashing ("));
+  CHECK_THAT(text,
+             StartsWith("configuration 5, instance 1, seed 9: crashed: SIGABRT (acoplan: error: crashed: SIGABRT in "
+                        "plugin update/crashing ("));
 
   // An error is not a failure of the configuration: it stops irace, with acoplan's message.
   std::filesystem::remove(log);
-  const auto wrong = test::run({"/bin/bash", runner, "6", "1", "1", map1_scen, "--update", "nope"}, {acoplan, options, to_log});
+  const auto wrong =
+      test::run({"/bin/bash", runner, "6", "1", "1", map1_scen, "--update", "nope"}, {acoplan, options, to_log});
   CHECK(wrong.exit_code == 1);
   CHECK(wrong.out.empty());
   CHECK_THAT(wrong.err, Contains("acoplan: error: unknown update plugin 'nope'"));
   CHECK_FALSE(std::filesystem::exists(log));
-  const auto bad_limit = test::run({"/bin/bash", runner, "6", "1", "1", map1_scen}, {acoplan, options, to_log, "ACOPLAN_TIMEOUT=soon"});
+  const auto bad_limit =
+      test::run({"/bin/bash", runner, "6", "1", "1", map1_scen}, {acoplan, options, to_log, "ACOPLAN_TIMEOUT=soon"});
   CHECK(bad_limit.exit_code != 0);
   CHECK_THAT(bad_limit.err, Contains("invalid time interval"));
   CHECK_FALSE(std::filesystem::exists(log));

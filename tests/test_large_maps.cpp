@@ -65,14 +65,14 @@ TEST_CASE("dead ends: pockets, a room behind one door and the rest of the compon
   // at the top right and the corridor along the bottom, which reaches the goal from below, are
   // both ways to the goal, so they stay.
   CHECK(picture(graph, dead) == std::vector<std::string>{
-      "......#....",
-      "####..#.##.",
-      "#xx#.......",
-      "#xx#.####.#",
-      "#xxx..xx#.#",
-      "#####.###.#",
-      "#####.....#",
-  });
+                                    "......#....",
+                                    "####..#.##.",
+                                    "#xx#.......",
+                                    "#xx#.####.#",
+                                    "#xxx..xx#.#",
+                                    "#####.###.#",
+                                    "#####.....#",
+                                });
 }
 
 TEST_CASE("dead ends: in a tree-shaped maze only the solution path is left", "[large][dead_ends]") {
@@ -115,8 +115,10 @@ TEST_CASE("dead ends agree with enumerating every simple path on small random ma
       const auto dead = aco::dead_ends(graph, start, goal);
       for (aco::NodeId n = 0; n < graph.num_nodes(); ++n) {
         INFO("trial " << trial << " node " << aco::to_string(graph.cell(n)));
-        if (n == start || n == goal) CHECK(dead[n] == 0);
-        else CHECK(dead[n] == !expected[n]);
+        if (n == start || n == goal)
+          CHECK(dead[n] == 0);
+        else
+          CHECK(dead[n] == !expected[n]);
       }
       ++checked;
     }
@@ -159,7 +161,8 @@ TEST_CASE("local search never enters a blocked or forbidden cell and keeps the w
   const aco::Graph graph = aco::build_graph(map, {});
   std::vector<std::uint8_t> forbidden(graph.num_nodes(), 0);
   aco::WalkScratch scratch;
-  const aco::Ant over_the_top = test::ant(graph, {{0, 2}, {0, 1}, {0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {4, 1}, {4, 2}});
+  const aco::Ant over_the_top =
+      test::ant(graph, {{0, 2}, {0, 1}, {0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {4, 1}, {4, 2}});
   const aco::WalkShortener shortener(graph, forbidden, 64);
   // Free: the optimum round the block, (0,2) (0,1) (1,1) (2,1) (3,2) (4,2), 4 + sqrt 2.
   aco::Ant free_run = over_the_top;
@@ -184,8 +187,9 @@ TEST_CASE("local search: every shortened walk on random maps is valid and never 
   int shortened = 0, walks = 0;
   for (int trial = 0; trial < 40; ++trial) {
     const auto map = test::random_grid(rng, 30, 30);
-    const aco::Neighbourhood nbhd = trial % 3 == 0 ? aco::Neighbourhood::sixteen
-                                    : trial % 3 == 1 ? aco::Neighbourhood::eight : aco::Neighbourhood::four;
+    const aco::Neighbourhood nbhd = trial % 3 == 0   ? aco::Neighbourhood::sixteen
+                                    : trial % 3 == 1 ? aco::Neighbourhood::eight
+                                                     : aco::Neighbourhood::four;
     const aco::Graph graph = aco::build_graph(map, {nbhd, trial % 2 == 0});
     std::vector<aco::NodeId> free;
     for (aco::NodeId n = 0; n < graph.num_nodes(); ++n)
@@ -262,7 +266,8 @@ TEST_CASE("the large-map options give bit-identical results for any thread count
   const aco::Graph graph = aco::build_graph(*map, {});
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
   for (const bool bidirectional : {false, true}) {
-    const aco::PipelineSpec spec = test::pipeline({{"heuristic", "progress"}, {"update", "acs"}, {"deadlock", "backtrack"}});
+    const aco::PipelineSpec spec =
+        test::pipeline({{"heuristic", "progress"}, {"update", "acs"}, {"deadlock", "backtrack"}});
     aco::ColonySettings s;
     s.ants = 30;
     s.iterations = 15;
@@ -277,7 +282,8 @@ TEST_CASE("the large-map options give bit-identical results for any thread count
       const auto pipeline = aco::instantiate(test::plugins(), spec);
       tbb::task_arena arena(threads);
       arena.execute([&] {
-        results.push_back(aco::run_colony(test::plugins(), spec, pipeline, graph, graph.node({1, 10}), graph.node({46, 30}), s));
+        results.push_back(
+            aco::run_colony(test::plugins(), spec, pipeline, graph, graph.node({1, 10}), graph.node({46, 30}), s));
       });
     }
     REQUIRE(results[0].solved);
@@ -292,7 +298,9 @@ class WholeTableEachIteration final : public aco::Heuristic {
  public:
   explicit WholeTableEachIteration(aco::Heuristic& inner) : inner_(inner) {}
   void compute(const aco::Context& c, std::span<double> eta) override { inner_.compute(c, eta); }
-  void compute_powered(const aco::Context& c, std::span<double> eta_beta) override { inner_.compute_powered(c, eta_beta); }
+  void compute_powered(const aco::Context& c, std::span<double> eta_beta) override {
+    inner_.compute_powered(c, eta_beta);
+  }
   void begin_run(const aco::Context& c) override { inner_.begin_run(c); }
   aco::HeuristicSpecs specs() const override { return {.varies_by_iteration = inner_.specs().varies_by_iteration}; }
 

@@ -108,10 +108,10 @@ TEST_CASE("Moving AI passable and blocked characters", "[map_io]") {
   CHECK(g.passable({0, 0}));  // .
   CHECK(g.passable({1, 0}));  // G
   CHECK(g.passable({2, 0}));  // S
-  CHECK(g.blocked({3, 0}));   // @
-  CHECK(g.blocked({0, 1}));   // O
-  CHECK(g.blocked({1, 1}));   // T
-  CHECK(g.blocked({2, 1}));   // W
+  CHECK(g.blocked({3, 0}));  // @
+  CHECK(g.blocked({0, 1}));  // O
+  CHECK(g.blocked({1, 1}));  // T
+  CHECK(g.blocked({2, 1}));  // W
   CHECK(g.passable({3, 1}));  // .
 }
 
@@ -156,9 +156,9 @@ TEST_CASE("Malformed Moving AI maps are rejected with a precise message", "[map_
                         Catch::Contains("lacks a 'type', 'height' or 'width'"));
   }
   SECTION("non-numeric height") {
-    REQUIRE_THROWS_WITH(movingai("type octile\nheight two\nwidth 4\nmap\n....\n....\n", "bad.map"),
-                        Catch::Contains("bad.map:2:") && Catch::Contains("height 'two'") &&
-                            Catch::Contains("not a whole number"));
+    REQUIRE_THROWS_WITH(
+        movingai("type octile\nheight two\nwidth 4\nmap\n....\n....\n", "bad.map"),
+        Catch::Contains("bad.map:2:") && Catch::Contains("height 'two'") && Catch::Contains("not a whole number"));
   }
   SECTION("zero or negative width") {
     REQUIRE_THROWS_WITH(movingai("type octile\nheight 2\nwidth 0\nmap\n"), Catch::Contains("width '0'"));
@@ -170,9 +170,9 @@ TEST_CASE("Malformed Moving AI maps are rejected with a precise message", "[map_
     REQUIRE_THROWS_WITH(movingai(kMovingAiHeader + ".....\n....\n"), Catch::Contains("row 0 has 5 characters"));
   }
   SECTION("unknown character") {
-    REQUIRE_THROWS_WITH(movingai(kMovingAiHeader + "....\n..x.\n", "bad.map"),
-                        Catch::Contains("bad.map:6:") && Catch::Contains("unknown character 'x'") &&
-                            Catch::Contains("column 2"));
+    REQUIRE_THROWS_WITH(
+        movingai(kMovingAiHeader + "....\n..x.\n", "bad.map"),
+        Catch::Contains("bad.map:6:") && Catch::Contains("unknown character 'x'") && Catch::Contains("column 2"));
   }
   SECTION("truncated map") {
     REQUIRE_THROWS_WITH(movingai("type octile\nheight 3\nwidth 4\nmap\n....\n....\n"),
@@ -184,8 +184,7 @@ TEST_CASE("Malformed Moving AI maps are rejected with a precise message", "[map_
   }
   SECTION("empty input") {
     REQUIRE_THROWS_AS(movingai(""), aco::Error);
-    REQUIRE_THROWS_WITH(movingai("", "empty.map"),
-                        Catch::Contains("empty.map") && Catch::Contains("truncated header"));
+    REQUIRE_THROWS_WITH(movingai("", "empty.map"), Catch::Contains("empty.map") && Catch::Contains("truncated header"));
   }
   SECTION("header without 'map' line") {
     REQUIRE_THROWS_WITH(movingai("type octile\nheight 2\nwidth 4\n"), Catch::Contains("truncated header"));
@@ -317,12 +316,13 @@ TEST_CASE("Malformed scenario files are rejected with a precise message", "[map_
     CHECK(scenarios("version 1.0\n" + good, "ok.scen").size() == 1);
   }
   SECTION("empty file") {
-    REQUIRE_THROWS_WITH(scenarios("", "bad.scen"), Catch::Contains("bad.scen") && Catch::Contains("empty scenario file"));
+    REQUIRE_THROWS_WITH(scenarios("", "bad.scen"),
+                        Catch::Contains("bad.scen") && Catch::Contains("empty scenario file"));
   }
   SECTION("a line with 8 fields") {
-    REQUIRE_THROWS_WITH(scenarios("version 1\n" + good + "0\ta.map\t10\t10\t1\t2\t3\t4\n", "bad.scen"),
-                        Catch::Contains("bad.scen:3:") && Catch::Contains("expected 9 fields") &&
-                            Catch::Contains("found 8"));
+    REQUIRE_THROWS_WITH(
+        scenarios("version 1\n" + good + "0\ta.map\t10\t10\t1\t2\t3\t4\n", "bad.scen"),
+        Catch::Contains("bad.scen:3:") && Catch::Contains("expected 9 fields") && Catch::Contains("found 8"));
   }
   SECTION("a non-numeric field") {
     REQUIRE_THROWS_WITH(scenarios("version 1\n0\ta.map\t10\t10\tone\t2\t3\t4\t2.5\n", "bad.scen"),
@@ -346,20 +346,20 @@ TEST_CASE("ROS map with an ASCII (P2) PGM", "[map_io]") {
   // 4x2 image: black, white, mid grey, just-free grey / white, black, just-unknown grey, white
   // p = (255 - v) / 255: 128 -> 0.498 (unknown), 210 -> 0.176 (free), 200 -> 0.216 (unknown).
   const std::string pgm = "P2\n# a comment\n4 2\n255\n0 255 128 210\n255 0 200 255\n";
-  const fs::path yaml =
-      ros_map("image: map.pgm\nresolution: 0.05\norigin: [-1.5, 2.0, 0.25]\nnegate: 0\n"
-              "occupied_thresh: 0.65\nfree_thresh: 0.196\n",
-              "map.pgm", pgm);
+  const fs::path yaml = ros_map(
+      "image: map.pgm\nresolution: 0.05\norigin: [-1.5, 2.0, 0.25]\nnegate: 0\n"
+      "occupied_thresh: 0.65\nfree_thresh: 0.196\n",
+      "map.pgm", pgm);
   const aco::OccupancyGrid g = aco::load_ros_map(yaml);
   REQUIRE(g.width() == 4);
   REQUIRE(g.height() == 2);
-  CHECK(g.blocked({0, 0}));   // black: occupied
+  CHECK(g.blocked({0, 0}));  // black: occupied
   CHECK(g.passable({1, 0}));  // white: free
-  CHECK(g.blocked({2, 0}));   // mid grey: unknown counts as blocked
+  CHECK(g.blocked({2, 0}));  // mid grey: unknown counts as blocked
   CHECK(g.passable({3, 0}));  // below free_thresh
   CHECK(g.passable({0, 1}));
   CHECK(g.blocked({1, 1}));
-  CHECK(g.blocked({2, 1}));   // just above free_thresh: unknown
+  CHECK(g.blocked({2, 1}));  // just above free_thresh: unknown
   CHECK(g.passable({3, 1}));
   CHECK(g.geometry().resolution == Approx(0.05));
   CHECK(g.geometry().origin.x() == Approx(-1.5));
@@ -380,28 +380,29 @@ TEST_CASE("ROS map with a binary (P5) PGM, negate and thresholds", "[map_io]") {
     const auto g = aco::load_ros_map(ros_map("image: map.pgm\nresolution: 1.0\norigin: [0, 0, 0]\n", "map.pgm", pgm));
     REQUIRE(g.width() == 3);
     REQUIRE(g.height() == 2);
-    CHECK(g.blocked({0, 0}));   // 10: nearly black
+    CHECK(g.blocked({0, 0}));  // 10: nearly black
     CHECK(g.passable({1, 0}));  // 255
-    CHECK(g.blocked({2, 0}));   // 128: unknown
-    CHECK(g.blocked({0, 1}));   // 0
-    CHECK(g.blocked({1, 1}));   // 35
+    CHECK(g.blocked({2, 0}));  // 128: unknown
+    CHECK(g.blocked({0, 1}));  // 0
+    CHECK(g.blocked({1, 1}));  // 35
     CHECK(g.passable({2, 1}));  // 250
     CHECK(g.geometry().resolution == 1.0);
     CHECK(g.geometry().origin.isZero());
   }
   SECTION("negate 1 inverts") {
-    const auto g = aco::load_ros_map(
-        ros_map("image: map.pgm\nresolution: 1.0\norigin: [0, 0, 0]\nnegate: 1\n", "map.pgm", pgm));
+    const auto g =
+        aco::load_ros_map(ros_map("image: map.pgm\nresolution: 1.0\norigin: [0, 0, 0]\nnegate: 1\n", "map.pgm", pgm));
     CHECK(g.passable({0, 0}));  // 10 -> p = 0.04
-    CHECK(g.blocked({1, 0}));   // 255 -> p = 1
-    CHECK(g.blocked({2, 0}));   // 128: still unknown
+    CHECK(g.blocked({1, 0}));  // 255 -> p = 1
+    CHECK(g.blocked({2, 0}));  // 128: still unknown
     CHECK(g.passable({0, 1}));  // 0
     CHECK(g.passable({1, 1}));  // 35 -> p = 0.137
-    CHECK(g.blocked({2, 1}));   // 250
+    CHECK(g.blocked({2, 1}));  // 250
   }
   SECTION("a higher free_thresh frees mid grey") {
-    const auto g = aco::load_ros_map(ros_map(
-        "image: map.pgm\nresolution: 1.0\norigin: [0, 0, 0]\nfree_thresh: 0.6\noccupied_thresh: 0.9\n", "map.pgm", pgm));
+    const auto g = aco::load_ros_map(
+        ros_map("image: map.pgm\nresolution: 1.0\norigin: [0, 0, 0]\nfree_thresh: 0.6\noccupied_thresh: 0.9\n",
+                "map.pgm", pgm));
     CHECK(g.passable({2, 0}));  // 128 -> p = 0.498 < 0.6
     CHECK(g.blocked({0, 1}));
   }
@@ -436,7 +437,7 @@ TEST_CASE("16-bit P5 PGM is big-endian", "[map_io]") {
   CHECK(g.blocked({0, 0}));
   CHECK(g.passable({1, 0}));
   CHECK(g.passable({0, 1}));  // 65280: nearly white
-  CHECK(g.blocked({1, 1}));   // 255 of 65535: nearly black
+  CHECK(g.blocked({1, 1}));  // 255 of 65535: nearly black
   CHECK(g.geometry().origin.x() == 1.0);
   CHECK(g.geometry().origin.y() == 2.0);
 }
@@ -454,7 +455,8 @@ TEST_CASE("Malformed ROS maps and PGM images are rejected with a precise message
   SECTION("missing image key") {
     const auto yaml = ros_map("resolution: 0.05\norigin: [0, 0, 0]\n", "map.pgm", pgm);
     REQUIRE_THROWS_AS(aco::load_ros_map(yaml), aco::Error);
-    REQUIRE_THROWS_WITH(aco::load_ros_map(yaml), Catch::Contains(yaml.string()) && Catch::Contains("missing key 'image'"));
+    REQUIRE_THROWS_WITH(aco::load_ros_map(yaml),
+                        Catch::Contains(yaml.string()) && Catch::Contains("missing key 'image'"));
   }
   SECTION("missing resolution key") {
     const auto yaml = ros_map("image: map.pgm\norigin: [0, 0, 0]\n", "map.pgm", pgm);
@@ -462,14 +464,14 @@ TEST_CASE("Malformed ROS maps and PGM images are rejected with a precise message
   }
   SECTION("value of the wrong type") {
     const auto yaml = ros_map("image: map.pgm\nresolution: fine\norigin: [0, 0, 0]\n", "map.pgm", pgm);
-    REQUIRE_THROWS_WITH(aco::load_ros_map(yaml),
-                        Catch::Contains(yaml.string() + ":2:") && Catch::Contains("key 'resolution'") &&
-                            Catch::Contains("wrong type"));
+    REQUIRE_THROWS_WITH(aco::load_ros_map(yaml), Catch::Contains(yaml.string() + ":2:") &&
+                                                     Catch::Contains("key 'resolution'") &&
+                                                     Catch::Contains("wrong type"));
   }
   SECTION("bad magic in the PGM") {
     const auto yaml = ros_map("image: map.pgm\nresolution: 1\norigin: [0, 0, 0]\n", "map.pgm", "P6\n2 2\n255\n");
-    REQUIRE_THROWS_WITH(aco::load_ros_map(yaml), Catch::Contains("map.pgm") && Catch::Contains("not a PGM image") &&
-                                                     Catch::Contains("'P6'"));
+    REQUIRE_THROWS_WITH(aco::load_ros_map(yaml),
+                        Catch::Contains("map.pgm") && Catch::Contains("not a PGM image") && Catch::Contains("'P6'"));
     REQUIRE_THROWS_WITH(aco::load_pgm(yaml.parent_path() / "map.pgm"), Catch::Contains("magic 'P6'"));
   }
   SECTION("bad PGM header") {
@@ -499,8 +501,7 @@ TEST_CASE("Malformed ROS maps and PGM images are rejected with a precise message
   }
   SECTION("image that is not a .pgm") {
     const auto yaml = ros_map("image: map.png\nresolution: 1\norigin: [0, 0, 0]\n", "map.png", pgm);
-    REQUIRE_THROWS_WITH(aco::load_ros_map(yaml),
-                        Catch::Contains("image 'map.png' is not a .pgm file"));
+    REQUIRE_THROWS_WITH(aco::load_ros_map(yaml), Catch::Contains("image 'map.png' is not a .pgm file"));
   }
   SECTION("missing image file") {
     const auto yaml = test::temp_file("lonely.yaml", "image: none.pgm\nresolution: 1\norigin: [0, 0, 0]\n");
@@ -523,8 +524,9 @@ TEST_CASE("Malformed ROS maps and PGM images are rejected with a precise message
                         Catch::Contains("thresholds must satisfy"));
     REQUIRE_THROWS_WITH(aco::load_ros_map(ros_map(head + "mode: fancy\n", "map.pgm", pgm)),
                         Catch::Contains("mode 'fancy'"));
-    REQUIRE_THROWS_WITH(aco::load_ros_map(ros_map("image: map.pgm\nresolution: 0\norigin: [0, 0, 0]\n", "map.pgm", pgm)),
-                        Catch::Contains("resolution must be positive"));
+    REQUIRE_THROWS_WITH(
+        aco::load_ros_map(ros_map("image: map.pgm\nresolution: 0\norigin: [0, 0, 0]\n", "map.pgm", pgm)),
+        Catch::Contains("resolution must be positive"));
   }
 }
 
@@ -591,7 +593,8 @@ TEST_CASE("load_map picks the format by extension", "[map_io][slow]") {
       REQUIRE_THROWS_WITH(aco::load_map(folder), Catch::Contains(folder.string()) && Catch::Contains("is a directory"));
       const auto device = dir / (std::string("zero") + ext);
       std::filesystem::create_symlink("/dev/zero", device);
-      REQUIRE_THROWS_WITH(aco::load_map(device), Catch::Contains(device.string()) && Catch::Contains("not a regular file"));
+      REQUIRE_THROWS_WITH(aco::load_map(device),
+                          Catch::Contains(device.string()) && Catch::Contains("not a regular file"));
     }
     REQUIRE_THROWS_WITH(aco::load_scenarios("/dev/zero"), Catch::Contains("not a regular file"));
   }
@@ -599,7 +602,9 @@ TEST_CASE("load_map picks the format by extension", "[map_io][slow]") {
     for (const char* name : {"long.map", "long.txt", "long.asc", "long.map.scen"}) {
       INFO(name);
       const auto file = test::temp_file(name, "0 1 " + std::string(17 << 20, '0'));
-      const auto load = [&] { return std::string(name) == "long.map.scen" ? (aco::load_scenarios(file), 0) : (aco::load_map(file), 0); };
+      const auto load = [&] {
+        return std::string(name) == "long.map.scen" ? (aco::load_scenarios(file), 0) : (aco::load_map(file), 0);
+      };
       REQUIRE_THROWS_WITH(load(), Catch::Contains(file.string() + ":1: a line longer than 16 MiB"));
     }
   }

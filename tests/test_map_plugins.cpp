@@ -47,15 +47,18 @@ TEST_CASE("a run's keys choose the map plugin and set its parameters", "[map_plu
   const aco::LoadedProblem problem = aco::load_problem(run.problem, &map_plugins());
   CHECK(problem.map->width() == 40);
   // A built-in format chosen by the ending adds no key: runs on bundled maps keep theirs.
-  const aco::RunSpec bundled = aco::resolve_run({{"map", arena.string()}, {"start", "1,1"}, {"goal", "2,2"}}, map_plugins());
+  const aco::RunSpec bundled =
+      aco::resolve_run({{"map", arena.string()}, {"start", "1,1"}, {"goal", "2,2"}}, map_plugins());
   CHECK(bundled.problem.map_format.empty());
   CHECK_FALSE(aco::to_keys(bundled).count("map-format"));
-  CHECK_THROWS_WITH(aco::resolve_run({{"map", arena.string()}, {"start", "1,1"}, {"goal", "2,2"}, {"map.resolution", "1"}},
-                                     map_plugins(), "--"),
-                    Contains("--map.resolution: the built-in map format 'movingai'") && Contains("takes no parameters"));
-  CHECK_THROWS_WITH(aco::resolve_run({{"map", room.string()}, {"start", "0,0"}, {"goal", "1,1"}, {"map-format", "shapez"}},
-                                     map_plugins(), "--"),
-                    Contains("--map-format: unknown map format 'shapez'") && Contains("did you mean 'shapes'?"));
+  CHECK_THROWS_WITH(
+      aco::resolve_run({{"map", arena.string()}, {"start", "1,1"}, {"goal", "2,2"}, {"map.resolution", "1"}},
+                       map_plugins(), "--"),
+      Contains("--map.resolution: the built-in map format 'movingai'") && Contains("takes no parameters"));
+  CHECK_THROWS_WITH(
+      aco::resolve_run({{"map", room.string()}, {"start", "0,0"}, {"goal", "1,1"}, {"map-format", "shapez"}},
+                       map_plugins(), "--"),
+      Contains("--map-format: unknown map format 'shapez'") && Contains("did you mean 'shapes'?"));
 }
 
 TEST_CASE("two readers claiming one ending are an error naming both and --map-format", "[map_plugins]") {
@@ -79,29 +82,33 @@ TEST_CASE("a file no format claims is read as a 0/1 matrix and otherwise mention
 
 TEST_CASE("listing and describing plugins shows map readers as map/NAME", "[map_plugins]") {
   const std::string listed = aco::list_plugins(map_plugins());
-  CHECK_THAT(listed, Contains("map/movingai  built-in") && Contains("claims .yaml .yml") && Contains("map/shapes  0.1"));
+  CHECK_THAT(listed,
+             Contains("map/movingai  built-in") && Contains("claims .yaml .yml") && Contains("map/shapes  0.1"));
   CHECK_THAT(aco::describe_plugin(map_plugins(), "map/shapes"), Contains("claims .shapes") && Contains("resolution"));
   CHECK_THAT(aco::describe_plugin(map_plugins(), "map/esri_ascii"), Contains("built-in") && Contains("claims .asc"));
 }
 
 TEST_CASE("aco-plugin-check's checks pass on the example map plugin and catch a reader of nothing", "[map_plugins]") {
   std::vector<aco::conformance::CheckResult> results;
-  const int failures = aco::conformance::check_file(std::filesystem::path(ACO_TEST_MAP_PLUGIN_DIR) / "aco_map_shapes.so", {},
-                                                    [&](const auto& r) { results.push_back(r); });
+  const int failures =
+      aco::conformance::check_file(std::filesystem::path(ACO_TEST_MAP_PLUGIN_DIR) / "aco_map_shapes.so", {},
+                                   [&](const auto& r) { results.push_back(r); });
   CHECK(failures == 0);
-  CHECK(std::any_of(results.begin(), results.end(), [](const auto& r) { return r.line() == "PASS map/shapes [defaults] values"; }));
+  CHECK(std::any_of(results.begin(), results.end(),
+                    [](const auto& r) { return r.line() == "PASS map/shapes [defaults] values"; }));
   CHECK(std::any_of(results.begin(), results.end(),
                     [](const auto& r) { return r.line() == "PASS map/shapes [resolution=10] deterministic"; }));
   std::vector<std::string> lines;
   aco::conformance::check_file(std::filesystem::path(ACO_TEST_GREEDY_MAP_PLUGIN_DIR) / "aco_map_greedy.so", {},
                                [&](const auto& r) { lines.push_back(r.line()); });
-  CHECK(lines == std::vector<std::string>{"PASS map/greedy [defaults] values", "PASS map/greedy [defaults] deterministic",
+  CHECK(lines == std::vector<std::string>{"PASS map/greedy [defaults] values",
+                                          "PASS map/greedy [defaults] deterministic",
                                           "PASS map/greedy [defaults] threads"});
 }
 
 TEST_CASE("acoplan plans on a map a plugin reads", "[map_plugins]") {
-  const auto r = test::acoplan({"--plugin-dir", ACO_TEST_MAP_PLUGIN_DIR, "--map", room.string(), "--start", "0,0", "--goal",
-                                "39,31", "--map.resolution", "0.25", "--iterations", "20", "--json"});
+  const auto r = test::acoplan({"--plugin-dir", ACO_TEST_MAP_PLUGIN_DIR, "--map", room.string(), "--start", "0,0",
+                                "--goal", "39,31", "--map.resolution", "0.25", "--iterations", "20", "--json"});
   INFO(r.err);
   REQUIRE(r.exit_code == 0);
   const auto j = nlohmann::json::parse(r.out);

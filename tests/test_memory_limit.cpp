@@ -21,7 +21,8 @@ constexpr const char* kHugeMovingAi = "type octile\nheight 100000\nwidth 100000\
 constexpr const char* kHugeEsri = "ncols 100000\nnrows 100000\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2 3\n";
 constexpr const char* kHugePgm = "P5\n100000 100000\n255\nabc";
 
-const std::string kHugeEstimate = aco::format_bytes(aco::planning_memory_estimate(100000, 100000, aco::Neighbourhood::four));
+const std::string kHugeEstimate =
+    aco::format_bytes(aco::planning_memory_estimate(100000, 100000, aco::Neighbourhood::four));
 
 // One matcher class, not Contains(...) && Contains(...) returned from a function: Catch2's
 // composed matchers hold references to their parts, which would not outlive the function.
@@ -31,7 +32,9 @@ struct RefusedWithEstimate : Catch::MatcherBase<std::string> {
       if (message.find(part) == std::string::npos) return false;
     return true;
   }
-  std::string describe() const override { return "is a refusal of the 100000x100000 map with its estimate " + kHugeEstimate; }
+  std::string describe() const override {
+    return "is a refusal of the 100000x100000 map with its estimate " + kHugeEstimate;
+  }
 };
 RefusedWithEstimate refused_with_estimate() { return {}; }
 
@@ -41,13 +44,18 @@ std::string acosim() { return ACO_TEST_ACOSIM; }
 // --max-memory `size`.
 test::CommandResult run_host(const std::string& host, const std::string& size) {
   const auto map = test::data_dir() / "maps/movingai/arena.map";
-  if (host == "acoplan") return test::acoplan({"--map", map.string(), "--start", "1,3", "--goal", "46,44", "--iterations", "2", "--ants", "5", "--max-memory", size});
+  if (host == "acoplan")
+    return test::acoplan({"--map", map.string(), "--start", "1,3", "--goal", "46,44", "--iterations", "2", "--ants",
+                          "5", "--max-memory", size});
   if (host == "acobench") {
-    const auto file = test::temp_file("mem.yaml", "name: mem\nrepetitions: 1\nsettings: {ants: 5, iterations: 2}\nproblems:\n  - map: " +
-                                                      map.string() + "\n    start: [1, 3]\n    goal: [46, 44]\n");
-    return test::run({ACO_TEST_ACOBENCH, "run", file.string(), "--db", (file.parent_path() / "mem.db").string(), "--max-memory", size});
+    const auto file = test::temp_file(
+        "mem.yaml", "name: mem\nrepetitions: 1\nsettings: {ants: 5, iterations: 2}\nproblems:\n  - map: " +
+                        map.string() + "\n    start: [1, 3]\n    goal: [46, 44]\n");
+    return test::run({ACO_TEST_ACOBENCH, "run", file.string(), "--db", (file.parent_path() / "mem.db").string(),
+                      "--max-memory", size});
   }
-  const auto file = test::temp_file("mem.yaml", "run: {map: " + map.string() + ", start: [1, 3], goal: [46, 44], ants: 5, iterations: 2}\n");
+  const auto file = test::temp_file(
+      "mem.yaml", "run: {map: " + map.string() + ", start: [1, 3], goal: [46, 44], ants: 5, iterations: 2}\n");
   return test::run({acosim(), file.string(), "--max-memory", size});
 }
 
@@ -61,7 +69,8 @@ TEST_CASE("memory sizes: bytes or K, M, G, T (binary), anything else refused", "
   CHECK(aco::parse_memory_size("2GiB") == 2ull << 30);
   CHECK(aco::parse_memory_size("3kb") == 3ull << 10);
   CHECK(aco::parse_memory_size("1T") == 1ull << 40);
-  for (const char* bad : {"", "0", "0G", "-1", "-4G", "1.5G", "4X", "G", "4 G", " 4G", "4GB2", "17179869184T", "99999999999999999999"})
+  for (const char* bad :
+       {"", "0", "0G", "-1", "-4G", "1.5G", "4X", "G", "4 G", " 4G", "4GB2", "17179869184T", "99999999999999999999"})
     CHECK_THROWS_WITH(aco::parse_memory_size(bad), Contains("--max-memory: '" + std::string(bad) + "'"));
   CHECK_THROWS_WITH(aco::parse_memory_size("17179869184T"), Contains("too large"));
   CHECK_THROWS_WITH(aco::parse_memory_size("4X"), Contains("unknown unit"));
@@ -108,7 +117,8 @@ TEST_CASE("a header claiming a huge map is refused with the estimate, in every f
     CHECK_THROWS_WITH(aco::read_movingai_map(in, "huge.map"), Contains("default") && Contains("--max-memory"));
     const aco::MemoryLimit limit(std::uint64_t(1) << 30);
     std::istringstream again(kHugeMovingAi);
-    CHECK_THROWS_WITH(aco::read_movingai_map(again, "huge.map"), Contains("1.0 GiB") && Contains("set by --max-memory"));
+    CHECK_THROWS_WITH(aco::read_movingai_map(again, "huge.map"),
+                      Contains("1.0 GiB") && Contains("set by --max-memory"));
   }
 }
 
@@ -144,7 +154,8 @@ TEST_CASE("matrix maps are checked row by row as they grow", "[memory][bad-input
   std::istringstream fits("0 0 0\n0 1 0\n");
   CHECK(aco::read_matrix_map(fits, "m.txt").height() == 2);
   std::istringstream grows("0 0 0\n0 1 0\n0 0 0\n");
-  CHECK_THROWS_WITH(aco::read_matrix_map(grows, "m.txt"), Contains("m.txt") && Contains("3x3") && Contains("memory limit"));
+  CHECK_THROWS_WITH(aco::read_matrix_map(grows, "m.txt"),
+                    Contains("m.txt") && Contains("3x3") && Contains("memory limit"));
 }
 
 TEST_CASE("acoplan, acobench and acosim: --max-memory below a small map's estimate refuses it, above accepts it",

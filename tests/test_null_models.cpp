@@ -83,11 +83,10 @@ TEST_CASE("the no-learning twin never changes the pheromone: no init, update or 
   std::vector<aco::ColonyResult> runs;
   // Different init and update rules, and a deadlock policy that changes the pheromone and
   // forbids nodes after every iteration: the twin of each is the same run.
-  for (const auto& [init, update, deadlock] : {std::tuple{"uniform", "ant_system", "backtrack"},
-                                               std::tuple{"potential_field", "max_min", "backtrack"},
-                                               std::tuple{"obstacle_density", "acs", "backtrack_penalty"},
-                                               std::tuple{"uniform", "gaussian", "discard"},
-                                               std::tuple{"fireworks", "wolf_pack", "clear_and_tabu"}}) {
+  for (const auto& [init, update, deadlock] :
+       {std::tuple{"uniform", "ant_system", "backtrack"}, std::tuple{"potential_field", "max_min", "backtrack"},
+        std::tuple{"obstacle_density", "acs", "backtrack_penalty"}, std::tuple{"uniform", "gaussian", "discard"},
+        std::tuple{"fireworks", "wolf_pack", "clear_and_tabu"}}) {
     Strategies p(init, "progress", update, deadlock);
     runs.push_back(aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), settings));
     CHECK(p.counting.begun == 0);
@@ -133,8 +132,8 @@ TEST_CASE("the restart twin's walks are independent: the same result however the
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
   for (bool bidirectional : {false, true}) {
     std::vector<aco::ColonyResult> runs;
-    for (const auto& [ants, iterations, threads] : {std::tuple{6, 5, 1}, std::tuple{30, 1, 2}, std::tuple{1, 30, 1},
-                                                     std::tuple{10, 3, 4}, std::tuple{6, 5, 2}}) {
+    for (const auto& [ants, iterations, threads] :
+         {std::tuple{6, 5, 1}, std::tuple{30, 1, 2}, std::tuple{1, 30, 1}, std::tuple{10, 3, 4}, std::tuple{6, 5, 2}}) {
       auto s = twin_settings(aco::NullModel::restarts);
       s.ants = ants;
       s.iterations = iterations;
@@ -188,14 +187,15 @@ TEST_CASE("the restart twin's walks see the initial pheromone, as the colony's f
 TEST_CASE("both twins are bit-identical for any thread count", "[colony][null-model][determinism]") {
   Arena a;
   for (auto model : {aco::NullModel::no_learning, aco::NullModel::restarts})
-    test::run_on_thread_counts(a.graph, a.start, a.goal, twin_settings(model), {"uniform", "adaptive", "max_min", "backtrack"});
+    test::run_on_thread_counts(a.graph, a.start, a.goal, twin_settings(model),
+                               {"uniform", "adaptive", "max_min", "backtrack"});
 }
 
 TEST_CASE("acoplan runs either twin with --null-model and records it", "[acoplan][null-model]") {
   const auto map = (test::data_dir() / "maps/classic20/map2.txt").string();
   for (const std::string model : {"no-learning", "restarts"}) {
-    const auto r = test::acoplan({"--map", map, "--start", "0,0", "--goal", "19,19", "--iterations", "5", "--null-model",
-                                  model, "--json"});
+    const auto r = test::acoplan(
+        {"--map", map, "--start", "0,0", "--goal", "19,19", "--iterations", "5", "--null-model", model, "--json"});
     REQUIRE(r.exit_code == 0);
     CHECK_THAT(r.out, Contains("\"null-model\":\"" + model + "\""));
     CHECK_THAT(r.out, Contains("\"solved\":true"));
@@ -205,7 +205,8 @@ TEST_CASE("acoplan runs either twin with --null-model and records it", "[acoplan
   CHECK_THAT(bad.err, Contains("null-model") && Contains("no-learning"));
 }
 
-TEST_CASE("an experiment's null-models key adds each named colony configuration's two twins", "[acobench][null-model]") {
+TEST_CASE("an experiment's null-models key adds each named colony configuration's two twins",
+          "[acobench][null-model]") {
   using test::acobench_helpers::kSmall;
   using test::acobench_helpers::load;
   const auto all = load(std::string(kSmall) + "null-models: true\n");
@@ -240,7 +241,8 @@ TEST_CASE("an experiment's null-models key adds each named colony configuration'
   CHECK(load(with_twin + "null-models: true\n").configurations.size() == 5 + 4 * 2);  // the hand-made one has none
 }
 
-TEST_CASE("the report asks of every configuration with twins whether its pheromone matters", "[acobench][null-model][report]") {
+TEST_CASE("the report asks of every configuration with twins whether its pheromone matters",
+          "[acobench][null-model][report]") {
   using namespace test::acobench_helpers;
   // ACS's twins from null-models, and the baseline's no-learning twin written by hand: the report
   // finds a twin by its settings, whoever wrote it.
@@ -277,10 +279,11 @@ null-models: [ACS]
   // two arena problems only, on both sides.
   sqlite3* handle = nullptr;
   REQUIRE(sqlite3_open(db.string().c_str(), &handle) == SQLITE_OK);
-  REQUIRE(sqlite3_exec(handle,
-                       "DELETE FROM runs WHERE plannerid = (SELECT id FROM plannerConfigs WHERE name = 'ACS (restarts)') "
-                       "AND experimentid = (SELECT id FROM experiments WHERE name = 'map1')",
-                       nullptr, nullptr, nullptr) == SQLITE_OK);
+  REQUIRE(
+      sqlite3_exec(handle,
+                   "DELETE FROM runs WHERE plannerid = (SELECT id FROM plannerConfigs WHERE name = 'ACS (restarts)') "
+                   "AND experimentid = (SELECT id FROM experiments WHERE name = 'map1')",
+                   nullptr, nullptr, nullptr) == SQLITE_OK);
   sqlite3_close(handle);
   const auto partial = file.parent_path() / "partial";
   REQUIRE(run_acobench({"report", db.string(), "--out", partial.string()}).exit_code == 0);

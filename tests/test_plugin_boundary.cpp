@@ -20,8 +20,11 @@ namespace {
 const std::string kBundled = ACO_TEST_PLUGIN_DIR;
 
 std::vector<std::string> plan_on_map1(std::vector<std::string> args) {
-  const std::vector<std::string> problem{"--map",  (test::data_dir() / "maps/classic20/map1.txt").string(),
-                                         "--start", "0,0", "--goal", "19,19", "--iterations", "10", "--ants", "10"};
+  const std::vector<std::string> problem{"--map",        (test::data_dir() / "maps/classic20/map1.txt").string(),
+                                         "--start",      "0,0",
+                                         "--goal",       "19,19",
+                                         "--iterations", "10",
+                                         "--ants",       "10"};
   args.insert(args.end(), problem.begin(), problem.end());
   return args;
 }
@@ -41,7 +44,8 @@ void corrupt_code(const fs::path& library) {
   file.read(reinterpret_cast<char*>(&header), sizeof header);
   std::vector<ElfW(Shdr)> sections(header.e_shnum);
   file.seekg(static_cast<std::streamoff>(header.e_shoff));
-  file.read(reinterpret_cast<char*>(sections.data()), static_cast<std::streamsize>(sections.size() * sizeof(ElfW(Shdr))));
+  file.read(reinterpret_cast<char*>(sections.data()),
+            static_cast<std::streamsize>(sections.size() * sizeof(ElfW(Shdr))));
   std::string names(sections[header.e_shstrndx].sh_size, '\0');
   file.seekg(static_cast<std::streamoff>(sections[header.e_shstrndx].sh_offset));
   file.read(names.data(), static_cast<std::streamsize>(names.size()));
@@ -79,8 +83,12 @@ TEST_CASE("plugin records are read from the library file without loading it", "[
 
   aco::PluginRegistry registry({kBundled});
   CHECK(registry.get("update", "ant_system").record.summary == r.summary);
-  REQUIRE_THROWS_WITH(aco::read_plugin_records(test::temp_file("x.so", std::string(100, 'x'))), Contains("is not an ELF file"));
-  REQUIRE_THROWS_WITH(aco::read_plugin_records(test::temp_file("short.so", "\x7f" "ELF")), Contains("truncated"));
+  REQUIRE_THROWS_WITH(aco::read_plugin_records(test::temp_file("x.so", std::string(100, 'x'))),
+                      Contains("is not an ELF file"));
+  REQUIRE_THROWS_WITH(aco::read_plugin_records(test::temp_file("short.so",
+                                                               "\x7f"
+                                                               "ELF")),
+                      Contains("truncated"));
 }
 
 TEST_CASE("a plugin built with the old libstdc++ string ABI is refused from its record, not loaded",
@@ -103,8 +111,8 @@ TEST_CASE("a plugin built by clang with libstdc++ is accepted and plans", "[regi
   const auto& plugin = registry.get("update", "clang_built");
   CHECK_THAT(plugin.record.compiler, Contains("lang"));  // "Debian Clang 14..." or "clang version ..."
   CHECK(plugin.unusable.empty());
-  const auto run = test::acoplan(
-      plan_on_map1({"--plugin-dir", ACO_TEST_CLANG_PLUGIN_DIR, "--update", "clang_built", "--update.rho", "0.2", "--json"}));
+  const auto run = test::acoplan(plan_on_map1(
+      {"--plugin-dir", ACO_TEST_CLANG_PLUGIN_DIR, "--update", "clang_built", "--update.rho", "0.2", "--json"}));
   REQUIRE(run.exit_code == 0);
   const auto j = nlohmann::json::parse(run.out);
   CHECK(j["solved"] == true);
@@ -131,7 +139,8 @@ TEST_CASE("a plugin named like a bundled one shadows it, with a warning, and lis
 
   const auto run = test::acoplan(plan_on_map1({"--plugin-dir", dir, "--update", "ant_system", "--json"}));
   REQUIRE(run.exit_code == 0);
-  CHECK_THAT(run.err, Contains("warning: plugin update/ant_system from " + mine.string() + " shadows " + bundled.string()));
+  CHECK_THAT(run.err,
+             Contains("warning: plugin update/ant_system from " + mine.string() + " shadows " + bundled.string()));
   CHECK(nlohmann::json::parse(run.out)["plugins"]["update"]["file"] == mine.string());
   // Not using it: no warning.
   const auto other = test::acoplan(plan_on_map1({"--plugin-dir", dir, "--update", "acs"}));
@@ -183,14 +192,15 @@ TEST_CASE("every run's JSON names each slot's plugin, version, file and content 
 TEST_CASE("acobench records plugin hashes and refuses to resume with a changed plugin binary, naming it",
           "[acobench][provenance]") {
   const fs::path plugin = copy_to_fresh_dir(kBundled + "/aco_update_acs.so");
-  const fs::path file = test::temp_file("experiment.yaml", "name: rebuilt\nseed: 3\nrepetitions: 2\nproblems:\n  - map: " +
-                                                               (test::data_dir() / "maps/classic20/map1.txt").string() +
-                                                               "\n    start: [0, 0]\n    goal: [19, 19]\n"
-                                                               "settings: {ants: 8, iterations: 8}\n"
-                                                               "baseline: {name: ACS, update: acs}\n");
+  const fs::path file =
+      test::temp_file("experiment.yaml", "name: rebuilt\nseed: 3\nrepetitions: 2\nproblems:\n  - map: " +
+                                             (test::data_dir() / "maps/classic20/map1.txt").string() +
+                                             "\n    start: [0, 0]\n    goal: [19, 19]\n"
+                                             "settings: {ants: 8, iterations: 8}\n"
+                                             "baseline: {name: ACS, update: acs}\n");
   const fs::path db = file.parent_path() / "results.db";
-  const std::vector<std::string> args{ACO_TEST_ACOBENCH, "run", file.string(), "--db", db.string(),
-                                      "--plugin-dir", plugin.parent_path().string()};
+  const std::vector<std::string> args{
+      ACO_TEST_ACOBENCH, "run", file.string(), "--db", db.string(), "--plugin-dir", plugin.parent_path().string()};
   const auto first = test::run(args);
   REQUIRE(first.exit_code == 0);
   const auto configs = aco::studies::ResultsDb(db).configs();

@@ -16,11 +16,13 @@ namespace {
 const std::string examples = ACO_TEST_PYTHON_EXAMPLES;
 const std::string fixtures = ACO_TEST_PYTHON_FIXTURES;
 
-std::string classic_map(int n) { return (test::data_dir() / ("maps/classic20/map" + std::to_string(n) + ".txt")).string(); }
+std::string classic_map(int n) {
+  return (test::data_dir() / ("maps/classic20/map" + std::to_string(n) + ".txt")).string();
+}
 
 std::vector<std::string> problem(int map, int seed) {
-  return {"--map", classic_map(map), "--start", "0,0", "--goal", "19,19", "--ants", "10", "--iterations", "15",
-          "--seed", std::to_string(seed)};
+  return {"--map", classic_map(map), "--start",           "0,0", "--goal", "19,19", "--ants", "10", "--iterations",
+          "15",    "--seed",         std::to_string(seed)};
 }
 
 std::vector<std::string> with(std::vector<std::string> args, const std::vector<std::string>& more) {
@@ -29,7 +31,8 @@ std::vector<std::string> with(std::vector<std::string> args, const std::vector<s
 }
 
 // --<slot> python with a class from the examples (or the fixtures).
-std::vector<std::string> python(const std::string& slot, const std::string& object, const std::string& path = examples) {
+std::vector<std::string> python(const std::string& slot, const std::string& object,
+                                const std::string& path = examples) {
   return {"--" + slot, "python", "--" + slot + ".class", object, "--" + slot + ".path", path};
 }
 
@@ -68,11 +71,13 @@ TEST_CASE("the Python Ant System gives the runs of update/ant_system bit for bit
     }
 }
 
-TEST_CASE("Python init and heuristic examples give the runs of init/uniform and heuristic/distance", "[python][acoplan]") {
+TEST_CASE("Python init and heuristic examples give the runs of init/uniform and heuristic/distance",
+          "[python][acoplan]") {
   for (int map = 1; map <= 3; ++map) {
     INFO("map" << map);
     const auto native = results(with(problem(map, 3), {"--init", "uniform", "--heuristic", "distance"}));
-    const auto args = with(with(problem(map, 3), python("init", "uniform:Uniform")), python("heuristic", "distance:Distance"));
+    const auto args =
+        with(with(problem(map, 3), python("init", "uniform:Uniform")), python("heuristic", "distance:Distance"));
     CHECK(results(args) == native);
   }
 }
@@ -85,9 +90,9 @@ TEST_CASE("python plugins give the same run on 1 and 2 threads", "[python][acopl
 
 TEST_CASE("a python update sees the context and the iteration as the engine has them", "[python][acoplan]") {
   // bridge_fixtures.Checks asserts on each call: any failure would end the run with exit 1.
-  const auto r = test::acoplan({"--map", classic_map(1), "--start", "0,0", "--goal", "19,19", "--ants", "6", "--iterations",
-                                "4", "--seed", "9", "--update", "python", "--update.class", "bridge_fixtures:Checks",
-                                "--update.path", fixtures});
+  const auto r = test::acoplan({"--map", classic_map(1), "--start", "0,0", "--goal", "19,19", "--ants", "6",
+                                "--iterations", "4", "--seed", "9", "--update", "python", "--update.class",
+                                "bridge_fixtures:Checks", "--update.path", fixtures});
   INFO(r.err);
   CHECK(r.exit_code == 0);
 }
@@ -96,7 +101,8 @@ TEST_CASE("a python heuristic is called every iteration only when it varies by i
   const auto base = problem(1, 1);
   CHECK(test::acoplan(with(base, python("heuristic", "bridge_fixtures:FixedHeuristic", fixtures))).exit_code == 0);
   expect_error(with(base, python("heuristic", "bridge_fixtures:ChangingHeuristic", fixtures)),
-               {"plugin heuristic/python (", "in iteration 2 (0-based, as Context::iteration)", "RuntimeError: compute() was called in iteration 2"});
+               {"plugin heuristic/python (", "in iteration 2 (0-based, as Context::iteration)",
+                "RuntimeError: compute() was called in iteration 2"});
 }
 
 TEST_CASE("a python hook may return a new array and an object made already is used as it is", "[python][acoplan]") {
@@ -114,41 +120,50 @@ TEST_CASE("a python hook may return a new array and an object made already is us
 TEST_CASE("python plugins name the plugin and what is wrong with the object they are given", "[python][bad-input]") {
   const auto base = problem(1, 1);
   const std::string plugin = "plugin update/python (";
-  expect_error(with(base, {"--update", "python"}), {plugin, "update.class is empty: name the Python object as module:attribute"});
+  expect_error(with(base, {"--update", "python"}),
+               {plugin, "update.class is empty: name the Python object as module:attribute"});
   expect_error(with(base, {"--update", "python", "--update.class", "AntSystem"}),
                {plugin, "update.class 'AntSystem' is not module:attribute"});
-  expect_error(with(base, python("update", "no_such_module:AntSystem")),
-               {plugin, "update.class 'no_such_module:AntSystem': no Python module 'no_such_module' (searched sys.path: " +
-                            examples});
+  expect_error(
+      with(base, python("update", "no_such_module:AntSystem")),
+      {plugin,
+       "update.class 'no_such_module:AntSystem': no Python module 'no_such_module' (searched sys.path: " + examples});
   expect_error(with(base, python("update", "ant_system:AntSystm")),
-               {plugin, "update.class 'ant_system:AntSystm': ant_system (" + examples + "/ant_system.py) has no attribute 'AntSystm'"});
+               {plugin, "update.class 'ant_system:AntSystm': ant_system (" + examples +
+                            "/ant_system.py) has no attribute 'AntSystm'"});
   expect_error(with(base, python("update", "bridge_fixtures:NoUpdate", fixtures)),
                {plugin, "the object has no method update(self, context, iteration, tau)"});
   expect_error(with(base, python("update", "bridge_fixtures:FailsToStart", fixtures)),
-               {plugin, "failed in its factory", "bridge_fixtures:FailsToStart(), raised RuntimeError: no configuration (at " +
-                                                       fixtures + "/bridge_fixtures.py:"});
+               {plugin, "failed in its factory",
+                "bridge_fixtures:FailsToStart(), raised RuntimeError: no configuration (at " + fixtures +
+                    "/bridge_fixtures.py:"});
   expect_error(with(base, python("init", "bridge_fixtures:NoUpdate.missing", fixtures)),
                {"plugin init/python (", "bridge_fixtures:NoUpdate has no attribute 'missing'"});
 }
 
-TEST_CASE("a Python exception ends the run with its type and message and the line that raised it", "[python][boundary]") {
-  expect_error(with(problem(1, 1), python("update", "bridge_fixtures:Raises", fixtures)),
-               {"acoplan: error: plugin update/python (", "failed in update() in iteration 0 (0-based, as Context::iteration): ",
-                "bridge_fixtures:Raises.update() raised ValueError: deposit went wrong (at " + fixtures +
-                    "/bridge_fixtures.py:", " in update: raise ValueError(\"deposit went wrong\"))"});
+TEST_CASE("a Python exception ends the run with its type and message and the line that raised it",
+          "[python][boundary]") {
+  expect_error(
+      with(problem(1, 1), python("update", "bridge_fixtures:Raises", fixtures)),
+      {"acoplan: error: plugin update/python (", "failed in update() in iteration 0 (0-based, as Context::iteration): ",
+       "bridge_fixtures:Raises.update() raised ValueError: deposit went wrong (at " + fixtures + "/bridge_fixtures.py:",
+       " in update: raise ValueError(\"deposit went wrong\"))"});
 }
 
-TEST_CASE("NaN written by a python update stops the run as the engine's check does for a native one", "[python][faults]") {
+TEST_CASE("NaN written by a python update stops the run as the engine's check does for a native one",
+          "[python][faults]") {
   expect_error(with(problem(1, 1), python("update", "bridge_fixtures:WritesNan", fixtures)),
                {"acoplan: error: plugin update/python (",
-                ") wrote nan to the pheromone of edge (0,0) -> (1,0) in update() in iteration 2 (0-based, as Context::iteration); "
+                ") wrote nan to the pheromone of edge (0,0) -> (1,0) in update() in iteration 2 (0-based, as "
+                "Context::iteration); "
                 "the pheromone must be finite and >= 0\n"});
 }
 
 TEST_CASE("a python hook that returns the wrong array is refused with what was expected", "[python][bad-input]") {
   const std::string expected = "; return None (with the array filled in place) or a float64 array of ";
-  expect_error(with(problem(1, 1), python("update", "bridge_fixtures:WrongLength", fixtures)),
-               {"failed in update() in iteration 0", "WrongLength.update() returned an array of shape (3,)" + expected});
+  expect_error(
+      with(problem(1, 1), python("update", "bridge_fixtures:WrongLength", fixtures)),
+      {"failed in update() in iteration 0", "WrongLength.update() returned an array of shape (3,)" + expected});
   expect_error(with(problem(1, 1), python("update", "bridge_fixtures:WrongDtype", fixtures)),
                {"WrongDtype.update() returned an array of dtype int64" + expected});
   expect_error(with(problem(1, 1), python("update", "bridge_fixtures:ReturnsList", fixtures)),
@@ -168,9 +183,10 @@ TEST_CASE("acobench runs a python update in its worker processes with the result
           "[python][acobench]") {
   std::string text = "name: python-bridge\nseed: 5\nrepetitions: 2\nproblems:\n";
   for (int map = 1; map <= 3; ++map) text += "  - {map: " + classic_map(map) + ", start: [0, 0], goal: [19, 19]}\n";
-  text += "settings: {preset: ant-system, ants: 10, iterations: 15}\nbaseline: {name: native, update: ant_system}\n"
-          "configurations:\n  - {name: python, update: {plugin: python, class: 'ant_system:AntSystem', path: " + examples +
-          "}}\n";
+  text +=
+      "settings: {preset: ant-system, ants: 10, iterations: 15}\nbaseline: {name: native, update: ant_system}\n"
+      "configurations:\n  - {name: python, update: {plugin: python, class: 'ant_system:AntSystem', path: " +
+      examples + "}}\n";
   const auto file = test::acobench_helpers::experiment(text);
   const auto db = file.parent_path() / "python.db";
   const auto r = test::acobench_helpers::run_acobench({"run", file.string(), "--db", db.string(), "--threads", "2"});

@@ -21,7 +21,8 @@ TEST_CASE("plugins are listed from their export tables, one library each", "[reg
   }
   const auto updates = registry.names("update");
   CHECK(std::is_sorted(updates.begin(), updates.end()));
-  for (const char* name : {"acs", "ant_system", "max_min"}) CHECK(std::count(updates.begin(), updates.end(), name) == 1);
+  for (const char* name : {"acs", "ant_system", "max_min"})
+    CHECK(std::count(updates.begin(), updates.end(), name) == 1);
   const auto& d = registry.load("update", "ant_system");
   CHECK(std::string(d.kind) == "update");
   CHECK(std::string(d.name) == "ant_system");
@@ -41,7 +42,8 @@ TEST_CASE("a plugin built for another ABI version is refused before use", "[regi
   aco::PluginRegistry registry({ACO_TEST_BAD_PLUGIN_DIR});
   REQUIRE(registry.find("update", "wrong_abi") != nullptr);
   REQUIRE_THROWS_WITH(registry.load("update", "wrong_abi"),
-                      Contains("plugin update/wrong_abi") && Contains("ABI 999, host expects " + std::to_string(aco::kPluginAbiVersion)));
+                      Contains("plugin update/wrong_abi") &&
+                          Contains("ABI 999, host expects " + std::to_string(aco::kPluginAbiVersion)));
   REQUIRE_THROWS_WITH(registry.create("update", "wrong_abi", {}), Contains("ABI 999"));
 }
 
@@ -55,7 +57,8 @@ TEST_CASE("removing one plugin library leaves the others working", "[registry]")
   aco::PluginRegistry registry({dir});
   CHECK(registry.find("update", "max_min") == nullptr);
   REQUIRE_THROWS_WITH(registry.load("update", "max_min"),
-                      Contains("unknown update plugin 'max_min'") && Contains("available: acs, ant_system, elite, gaussian, population") &&
+                      Contains("unknown update plugin 'max_min'") &&
+                          Contains("available: acs, ant_system, elite, gaussian, population") &&
                           Contains("wolf_pack; searched:"));  // python between them when built
   const auto& d = registry.load("update", "ant_system");
   auto update = registry.create<aco::PheromoneUpdate>("update", "ant_system", aco::resolve(d.parameters(), {}, ""));

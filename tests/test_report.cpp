@@ -35,8 +35,10 @@ std::map<std::string, Cells> markdown_tables(const std::string& md) {
 }
 
 std::string unescaped(std::string text) {
-  for (const auto& [entity, plain] : {std::pair{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}})
-    for (std::size_t at; (at = text.find(entity)) != std::string::npos;) text.replace(at, std::string(entity).size(), plain);
+  for (const auto& [entity, plain] :
+       {std::pair{"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&apos;", "'"}, {"&amp;", "&"}})
+    for (std::size_t at; (at = text.find(entity)) != std::string::npos;)
+      text.replace(at, std::string(entity).size(), plain);
   return text;
 }
 
@@ -87,7 +89,8 @@ std::filesystem::path reported_study(const std::string& configurations) {
 
 TEST_CASE("the Markdown and the HTML report hold the same tables, cell for cell", "[acobench][report]") {
   const auto out = reported_study(
-      "configurations:\n  - {name: elite, update: elite, q0: 0.8}\n  - {name: both, update: elite, q0: 0.8, smoother: prune}\n"
+      "configurations:\n  - {name: elite, update: elite, q0: 0.8}\n  - {name: both, update: elite, q0: 0.8, smoother: "
+      "prune}\n"
       "ablation: {target: both}\n");
   const auto md = markdown_tables(test::acobench_helpers::file_bytes(out / "report.md"));
   const auto html = html_tables(test::acobench_helpers::file_bytes(out / "report.html"));
@@ -96,7 +99,8 @@ TEST_CASE("the Markdown and the HTML report hold the same tables, cell for cell"
   for (const auto& [title, cells] : html) html_titles.push_back(title);
   CHECK(md_titles == html_titles);
   for (const char* title : {"Ranking across problems", "Ablation path", "Plugins"}) CHECK(md.count(title) == 1);
-  CHECK(std::count_if(md_titles.begin(), md_titles.end(), [](const auto& t) { return t.starts_with("map1 (optimal "); }) == 1);
+  CHECK(std::count_if(md_titles.begin(), md_titles.end(),
+                      [](const auto& t) { return t.starts_with("map1 (optimal "); }) == 1);
   for (const auto& [title, cells] : md) {
     INFO("table " << title);
     CHECK(cells.size() > 1);
@@ -119,7 +123,8 @@ TEST_CASE("a height map's paths are drawn on the map each configuration planned 
     for (std::size_t at = 0; (at = svg.find("<rect x=", at)) != std::string::npos; ++at) ++rects;
     return rects;
   };
-  const std::string first = test::acobench_helpers::file_bytes(steep), second = test::acobench_helpers::file_bytes(gentle);
+  const std::string first = test::acobench_helpers::file_bytes(steep),
+                    second = test::acobench_helpers::file_bytes(gentle);
   CHECK_THAT(first, Catch::Contains(">baseline "));
   CHECK_THAT(second, Catch::Contains(">slope60 "));
   CHECK_THAT(second, !Catch::Contains(">baseline "));

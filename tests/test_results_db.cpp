@@ -189,18 +189,22 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
 
   // The OMPL columns: one experiment per problem, NULLs where a value does not exist.
   CHECK(sql_value(file, "SELECT count(*) FROM experiments") == "2");
-  CHECK(sql_value(file, "SELECT totaltime FROM experiments WHERE name = 'map1'") == "0.75");  // 2 configs x (0.125 + 0.25)
+  CHECK(sql_value(file, "SELECT totaltime FROM experiments WHERE name = 'map1'") ==
+        "0.75");  // 2 configs x (0.125 + 0.25)
   CHECK(sql_value(file, "SELECT count(*) FROM runs WHERE length IS NULL AND gap IS NULL AND solved = 0") == "2");
-  CHECK(sql_value(file, "SELECT count(*) FROM runs r JOIN experiments e ON r.experimentid = e.id "
-                        "WHERE e.name = 'arena' AND r.gap IS NULL") == "4");  // optimum unknown
-  CHECK(std::stod(sql_value(file, "SELECT gap FROM runs r JOIN experiments e ON r.experimentid = e.id "
-                                  "WHERE e.name = 'map1' AND r.repetition = 0 LIMIT 1")) ==
-        Approx(31.25 / 28.38 - 1.0));
+  CHECK(sql_value(file,
+                  "SELECT count(*) FROM runs r JOIN experiments e ON r.experimentid = e.id "
+                  "WHERE e.name = 'arena' AND r.gap IS NULL") == "4");  // optimum unknown
+  CHECK(std::stod(sql_value(file,
+                            "SELECT gap FROM runs r JOIN experiments e ON r.experimentid = e.id "
+                            "WHERE e.name = 'map1' AND r.repetition = 0 LIMIT 1")) == Approx(31.25 / 28.38 - 1.0));
   CHECK(sql_value(file, "SELECT count(*) FROM progress") == "48");
-  CHECK(sql_value(file, "SELECT count(*) FROM progress WHERE best_cost IS NULL") == "24");  // 6 solved x 2 + 2 unsolved x 6
+  CHECK(sql_value(file, "SELECT count(*) FROM progress WHERE best_cost IS NULL") ==
+        "24");  // 6 solved x 2 + 2 unsolved x 6
   // The measured anytime curves: OMPL's time column and the walks.
-  CHECK(sql_value(file, "SELECT p.time FROM progress p JOIN runs r ON p.runid = r.id WHERE r.repetition = 1 "
-                        "AND p.iteration = 4 LIMIT 1") == "0.125");
+  CHECK(sql_value(file,
+                  "SELECT p.time FROM progress p JOIN runs r ON p.runid = r.id WHERE r.repetition = 1 "
+                  "AND p.iteration = 4 LIMIT 1") == "0.125");
   CHECK(sql_value(file, "SELECT count(*) FROM progress WHERE walks != 10 * iteration OR walks IS NULL") == "0");
 }
 
@@ -252,11 +256,10 @@ TEST_CASE("a database of another experiment is refused and left as it was", "[re
   REQUIRE(!before.empty());
 
   SECTION("the experiment file changed") {
-    REQUIRE_THROWS_WITH(open(file, "experiment ablation\nants = 30\nmaps = map1, arena\n"),
-                        Contains(file.string()) && Contains("experiment 'ablation'") &&
-                            Contains("the experiment file changed since") &&
-                            Contains("line 2: stored 'ants = 50', now 'ants = 30'") &&
-                            Contains("nothing in it was changed"));
+    REQUIRE_THROWS_WITH(
+        open(file, "experiment ablation\nants = 30\nmaps = map1, arena\n"),
+        Contains(file.string()) && Contains("experiment 'ablation'") && Contains("the experiment file changed since") &&
+            Contains("line 2: stored 'ants = 50', now 'ants = 30'") && Contains("nothing in it was changed"));
   }
   SECTION("another experiment") {
     REQUIRE_THROWS_WITH(aco::studies::ResultsDb(file, "other", kFingerprint, kProblems),
@@ -265,8 +268,9 @@ TEST_CASE("a database of another experiment is refused and left as it was", "[re
   SECTION("the same fingerprint with a problem set up otherwise") {
     auto problems = kProblems;
     problems[1].setup_json = R"({"map":"arena.map","start":[1,2],"goal":[40,40],"neighbourhood":8})";
-    REQUIRE_THROWS_WITH(aco::studies::ResultsDb(file, kName, kFingerprint, problems),
-                        Contains("that the experiment file now runs otherwise:\n  problem 'arena': goal [40,41] -> [40,40]\n"));
+    REQUIRE_THROWS_WITH(
+        aco::studies::ResultsDb(file, kName, kFingerprint, problems),
+        Contains("that the experiment file now runs otherwise:\n  problem 'arena': goal [40,41] -> [40,40]\n"));
   }
   CHECK(bytes(file) == before);
   CHECK_FALSE(fs::exists(file.string() + "-wal"));
@@ -294,7 +298,8 @@ TEST_CASE("simulation and failed trials store their measures, and a format-1 dat
   const int id = with_one_trial(file);
   // What acobench before simulations wrote: no simulation columns, format 1.
   const auto make_format_1 = [&] {
-    for (const char* column : {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps", "error", "failure"})
+    for (const char* column :
+         {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps", "error", "failure"})
       sql_exec(file, std::string("ALTER TABLE runs DROP COLUMN ") + column);
     sql_exec(file, "ALTER TABLE progress DROP COLUMN walks");
     sql_exec(file, "DROP TABLE properties");
@@ -357,7 +362,8 @@ TEST_CASE("a format-4 database gains runs.failure from how its failed trials sto
   CHECK(failures == std::map<int, std::string>{{0, ""}, {11, "crashed"}, {21, "error"}});
 }
 
-TEST_CASE("a database grows by the problems an experiment adds, and leaves out those it no longer names", "[resultsdb]") {
+TEST_CASE("a database grows by the problems an experiment adds, and leaves out those it no longer names",
+          "[resultsdb]") {
   const fs::path file = fresh_db();
   with_one_trial(file);  // problem map1
   const aco::studies::ProblemRecord extra{"extra", R"({"map":"extra.map","start":[0,0],"goal":[5,5]})", 7.0};
@@ -405,8 +411,9 @@ TEST_CASE("a format-3 database gains progress.walks: its runs read back without 
     out.store(t);
   }
   CHECK(sql_value(copy, "SELECT count(*) FROM progress WHERE walks IS NULL") == "6");
-  CHECK(sql_value(copy, "SELECT abs(p.time - 0.125) < 1e-12 FROM progress p JOIN runs r ON p.runid = r.id "
-                        "WHERE r.repetition = 0 AND p.iteration = 6") == "1");  // the estimate: the run's time
+  CHECK(sql_value(copy,
+                  "SELECT abs(p.time - 0.125) < 1e-12 FROM progress p JOIN runs r ON p.runid = r.id "
+                  "WHERE r.repetition = 0 AND p.iteration = 6") == "1");  // the estimate: the run's time
   check_equal(out.trials()[1], trial(0, out_id, 1));
 }
 
@@ -422,8 +429,8 @@ TEST_CASE("a file that is not an acobench database is refused and left as it was
     const fs::path file = fresh_db();
     sqlite3* raw = nullptr;
     REQUIRE(sqlite3_open(file.c_str(), &raw) == SQLITE_OK);
-    REQUIRE(sqlite3_exec(raw, "CREATE TABLE notes (text TEXT); INSERT INTO notes VALUES ('keep me')", nullptr,
-                         nullptr, nullptr) == SQLITE_OK);
+    REQUIRE(sqlite3_exec(raw, "CREATE TABLE notes (text TEXT); INSERT INTO notes VALUES ('keep me')", nullptr, nullptr,
+                         nullptr) == SQLITE_OK);
     sqlite3_close(raw);
     const std::string before = bytes(file);
     REQUIRE_THROWS_WITH(open(file), Contains("not an acobench results database (it has no acobench_meta table)"));
@@ -440,7 +447,7 @@ TEST_CASE("a results database uses write-ahead logging", "[resultsdb]") {
 
 TEST_CASE("a process killed while storing leaves whole trials, and a rerun continues", "[resultsdb]") {
   const fs::path file = fresh_db();
-  constexpr int kCommitted = 20;     // trials the child reports before it is killed
+  constexpr int kCommitted = 20;  // trials the child reports before it is killed
   constexpr int kIterations = 2000;  // long transactions, so the kill likely lands inside one
   int pipe_ends[2];
   REQUIRE(pipe(pipe_ends) == 0);
@@ -457,8 +464,7 @@ TEST_CASE("a process killed while storing leaves whole trials, and a rerun conti
         const char committed = 1;
         if (write(pipe_ends[1], &committed, 1) != 1) break;
       }
-    } catch (...) {
-    }
+    } catch (...) {}
     _exit(1);
   }
   close(pipe_ends[1]);
@@ -482,8 +488,9 @@ TEST_CASE("a process killed while storing leaves whole trials, and a rerun conti
   CHECK(sql_value(file, "SELECT count(*) FROM runs") == std::to_string(stored));
   CHECK(sql_value(file, "SELECT count(*) FROM (SELECT DISTINCT experimentid, plannerid, repetition FROM runs)") ==
         std::to_string(stored));
-  CHECK(sql_value(file, "SELECT count(*) FROM runs r WHERE r.iterations != "
-                        "(SELECT count(*) FROM progress p WHERE p.runid = r.id)") == "0");
+  CHECK(sql_value(file,
+                  "SELECT count(*) FROM runs r WHERE r.iterations != "
+                  "(SELECT count(*) FROM progress p WHERE p.runid = r.id)") == "0");
   CHECK(sql_value(file, "SELECT count(*) FROM progress") == std::to_string(stored * kIterations));
 
   // The rerun: the same command skips what is stored and adds the rest, once each.
@@ -495,8 +502,9 @@ TEST_CASE("a process killed while storing leaves whole trials, and a rerun conti
   CHECK(sql_value(file, "SELECT max(repetition) FROM runs") == std::to_string(wanted - 1));
 }
 
-TEST_CASE("a trial's properties are rows of their own with their types, and a format-4 database gains the table and resumes",
-          "[resultsdb][figures]") {
+TEST_CASE(
+    "a trial's properties are rows of their own with their types, and a format-4 database gains the table and resumes",
+    "[resultsdb][figures]") {
   const fs::path file = fresh_db();
   const int id = with_one_trial(file);
   CHECK(sql_value(file, "SELECT value FROM properties WHERE name = 'update/max_min.restarts'") == "0");

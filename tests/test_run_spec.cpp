@@ -39,10 +39,18 @@ std::string key_error(const aco::Keys& keys, std::string* key = nullptr) {
 }  // namespace
 
 TEST_CASE("resolve_run types every key once, and to_keys and JSON give the same run back", "[run_spec]") {
-  const aco::Keys keys{{"map", "m.map"},          {"start", "1,2"},         {"goal", "30,4"},
-                       {"max-slope", "35"},        {"neighbourhood", "16"},  {"corner-cutting", "true"},
-                       {"ants", "20"},             {"search", "bidirectional"}, {"update", "acs"},
-                       {"q0", "0.25"},      {"heuristic", "progress"}, {"beta", "0.1234567890123456"}};
+  const aco::Keys keys{{"map", "m.map"},
+                       {"start", "1,2"},
+                       {"goal", "30,4"},
+                       {"max-slope", "35"},
+                       {"neighbourhood", "16"},
+                       {"corner-cutting", "true"},
+                       {"ants", "20"},
+                       {"search", "bidirectional"},
+                       {"update", "acs"},
+                       {"q0", "0.25"},
+                       {"heuristic", "progress"},
+                       {"beta", "0.1234567890123456"}};
   const aco::RunSpec run = resolve(keys);
   CHECK(run.problem.map == "m.map");
   CHECK(run.problem.start == aco::Cell{1, 2});
@@ -74,11 +82,11 @@ TEST_CASE("changed_values lists the keys that differ from the defaults of their 
   CHECK(aco::changed_values(resolve(problem), test::plugins()).empty());
   aco::Keys keys = problem;
   keys.insert({{"update", "max_min"},
-                {"update.rho", "0.3"},     // ant_system's default, not max_min's (0.1)
-                {"update.p_best", "0.05"},  // max_min's default, given
-                {"q0", "0.25"},
-                {"ants", std::to_string(aco::ColonySettings{}.ants)},
-                {"neighbourhood", "16"}});
+               {"update.rho", "0.3"},  // ant_system's default, not max_min's (0.1)
+               {"update.p_best", "0.05"},  // max_min's default, given
+               {"q0", "0.25"},
+               {"ants", std::to_string(aco::ColonySettings{}.ants)},
+               {"neighbourhood", "16"}});
   std::vector<std::string> changed;
   for (const auto& [key, value] : aco::changed_values(resolve(keys), test::plugins()))
     changed.push_back(key + "=" + aco::to_string(value));
@@ -107,7 +115,8 @@ TEST_CASE("resolve_run names the key of every mistake", "[run_spec][errors]") {
 
 TEST_CASE("a settings table reads and writes its struct and takes its defaults from it", "[run_spec]") {
   const auto table = aco::colony_parameters();
-  const auto ants = std::find_if(table.begin(), table.end(), [](const auto& p) { return std::string(p.name) == "ants"; });
+  const auto ants =
+      std::find_if(table.begin(), table.end(), [](const auto& p) { return std::string(p.name) == "ants"; });
   REQUIRE(ants != table.end());
   CHECK(std::string(ants->default_value) == std::to_string(aco::ColonySettings{}.ants));
   aco::ColonySettings s;
@@ -143,8 +152,9 @@ TEST_CASE("load_problem checks start and goal and takes a scenario's cells", "[r
 }
 
 TEST_CASE("a config file holds key = value lines, [sections] and comments", "[run_spec]") {
-  const auto file = test::temp_file("run.ini", "# acoplan\nants = 20  # trailing comment\n; a comment line\n\n"
-                                               "[update]\n  rho=0.2\r\n[ local. ]\nkey = a = b\nempty =\n");
+  const auto file = test::temp_file("run.ini",
+                                    "# acoplan\nants = 20  # trailing comment\n; a comment line\n\n"
+                                    "[update]\n  rho=0.2\r\n[ local. ]\nkey = a = b\nempty =\n");
   CHECK(aco::read_config_file(file.string()) ==
         aco::Keys{{"ants", "20"}, {"update.rho", "0.2"}, {"local.key", "a = b"}, {"local.empty", ""}});
   const auto settings = aco::read_config_settings(file.string());
@@ -184,7 +194,8 @@ TEST_CASE("Boost.ProgramOptions errors are reported with the user's text as type
     return std::string("no error");
   };
   CHECK(message({"--batch", "%value%"}) == "the argument ('%value%') for option '--batch' is invalid");
-  CHECK(message({"--batch=%canonical_option%x"}) == "the argument ('%canonical_option%x') for option '--batch' is invalid");
+  CHECK(message({"--batch=%canonical_option%x"}) ==
+        "the argument ('%canonical_option%x') for option '--batch' is invalid");
   CHECK(message({"--%canonical_option%"}) == "unrecognised option '--%canonical_option%'");
   CHECK(message({"--batch"}) == "the required argument for option '--batch' is missing");
   // Text naming a placeholder substituted after it was replaced too: this line showed as ''.

@@ -73,7 +73,8 @@ struct HeuristicProbe final : Probe<aco::Heuristic> {
   }
   void compute_powered(const aco::Context&, std::span<double>) override { note("compute_powered"); }
   void update_node(const aco::Context&, aco::NodeId, int, std::span<double>) const override { note("update_node"); }
-  void step_factors(const aco::Context&, const aco::Ant&, std::span<const aco::EdgeId>, std::span<double>) const override {
+  void step_factors(const aco::Context&, const aco::Ant&, std::span<const aco::EdgeId>,
+                    std::span<double>) const override {
     note("step_factors");
   }
 };
@@ -164,14 +165,16 @@ void call_every_hook(aco::MapReader& p) {
 template <class Interface>
 std::set<std::string> hooks_reaching_the_plugin(std::unique_ptr<Probe<Interface>> probe) {
   const auto called = probe->called;
-  const std::unique_ptr<Interface> guarded = aco::guard(std::unique_ptr<Interface>(std::move(probe)), {"slot", "probe", ""});
+  const std::unique_ptr<Interface> guarded =
+      aco::guard(std::unique_ptr<Interface>(std::move(probe)), {"slot", "probe", ""});
   call_every_hook(*guarded);
   return *called;
 }
 
 }  // namespace
 
-TEST_CASE("every slot's interface declares the hooks the slot table lists, and Strategy begin_run alone", "[slots][guard]") {
+TEST_CASE("every slot's interface declares the hooks the slot table lists, and Strategy begin_run alone",
+          "[slots][guard]") {
   CHECK(declared_virtuals("Strategy") == std::set<std::string>{"begin_run"});
   for (const aco::SlotInfo& slot : aco::kSlotTable) {
     INFO("slot " << slot.name << ", interface " << slot.interface);

@@ -134,7 +134,8 @@ TEST_CASE("statistics refuse non-finite values with a message naming the value",
                     Contains("second sample") && Contains("nan"));
   CHECK_THROWS_WITH(aco::studies::mann_whitney_u(std::vector<double>{}, std::vector<double>{1, 2}),
                     Contains("non-empty") && Contains("sizes 0 and 2"));
-  CHECK_THROWS_WITH(aco::studies::vargha_delaney_a12(std::vector<double>{1}, std::vector<double>{}), Contains("non-empty"));
+  CHECK_THROWS_WITH(aco::studies::vargha_delaney_a12(std::vector<double>{1}, std::vector<double>{}),
+                    Contains("non-empty"));
 }
 
 TEST_CASE("Student t quantiles match the tables", "[statistics]") {
@@ -323,7 +324,8 @@ TEST_CASE("box plots of constant, empty or no samples stay free of NaN", "[stati
 
 TEST_CASE("box plots slant long sample names and cut the longest", "[statistics][plots]") {
   aco::studies::BoxPlot plot;
-  plot.samples = {{"max_min rho=0.02 p_best=0.05 & smoother=prune local=dwa", {1, 2}}, {"acs", {2, 3}}, {"ant_system", {1}}};
+  plot.samples = {
+      {"max_min rho=0.02 p_best=0.05 & smoother=prune local=dwa", {1, 2}}, {"acs", {2, 3}}, {"ant_system", {1}}};
   const std::string svg = aco::studies::box_plot_svg(plot);
   CHECK(well_formed(svg));
   CHECK(count(svg, "rotate(-45") == 3);
@@ -350,8 +352,9 @@ TEST_CASE("convergence charts draw a line and a band per series, a legend and ax
   aco::studies::LineChart chart;
   chart.title = "classic map1";
   chart.y_label = "best length so far";
-  chart.series = {aco::studies::convergence_series("ant_system", {{40, 38, 36, 35}, {41, 37, 37, 34.5}, {39, 39, 35, 35}}),
-                  aco::studies::convergence_series("max_min", {{42, 36, 34.4, 34.4}, {40, 35, 34.4, 34.4}})};
+  chart.series = {
+      aco::studies::convergence_series("ant_system", {{40, 38, 36, 35}, {41, 37, 37, 34.5}, {39, 39, 35, 35}}),
+      aco::studies::convergence_series("max_min", {{42, 36, 34.4, 34.4}, {40, 35, 34.4, 34.4}})};
   chart.reference = 34.3848;
   const std::string svg = aco::studies::line_chart_svg(chart);
   CHECK(well_formed(svg));
@@ -387,7 +390,8 @@ TEST_CASE("hitting times, the fixed-target ECDF and the expected running time on
   CHECK(aco::studies::hitting_time(effort, gap, 7.0) == 0.2);  // reaching the target exactly counts
   CHECK(aco::studies::hitting_time(effort, gap, 1.0) == 0.8);
   CHECK(aco::studies::hitting_time(effort, gap, 0.5) == never);
-  CHECK_THROWS_WITH(aco::studies::hitting_time(effort, std::vector<double>{1.0}, 5.0), Contains("4 efforts for 1 values"));
+  CHECK_THROWS_WITH(aco::studies::hitting_time(effort, std::vector<double>{1.0}, 5.0),
+                    Contains("4 efforts for 1 values"));
 
   // Four runs reached the target at 0.5, 2 and 1 s, the third never: 1/4 by 0.5 s, 2/4 by 1 s,
   // 3/4 from 2 s on, never 4/4.
@@ -396,7 +400,8 @@ TEST_CASE("hitting times, the fixed-target ECDF and the expected running time on
   CHECK(aco::studies::ecdf(hits, at) == std::vector<double>{0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75});
   CHECK(aco::studies::ecdf(std::vector<double>{}, at) == std::vector<double>(at.size(), 0.0));
   // ERT: the three hits' times plus the whole 4 s of the run that missed, over 3 hits.
-  CHECK(aco::studies::expected_running_time(hits, std::vector<double>{3.0, 3.0, 4.0, 3.0}) == Approx((0.5 + 2 + 4 + 1) / 3.0));
+  CHECK(aco::studies::expected_running_time(hits, std::vector<double>{3.0, 3.0, 4.0, 3.0}) ==
+        Approx((0.5 + 2 + 4 + 1) / 3.0));
   CHECK(aco::studies::expected_running_time(std::vector<double>{never}, std::vector<double>{2.0}) == never);
 
   // The ECDF as a step series from 0.25 to 8 s: 0 at the start, a step at each hit, flat to the end.
@@ -405,7 +410,8 @@ TEST_CASE("hitting times, the fixed-target ECDF and the expected running time on
   CHECK(series.value == std::vector<double>{0.0, 0.25, 0.5, 0.75, 0.75});
 }
 
-TEST_CASE("anytime means: step curves on their own x, the same runs throughout if asked", "[statistics][plots][anytime]") {
+TEST_CASE("anytime means: step curves on their own x, the same runs throughout if asked",
+          "[statistics][plots][anytime]") {
   const double none = std::numeric_limits<double>::infinity();
   // Run 1 ends its iterations at 1, 2, 4 s with gaps inf, 10, 6; run 2 at 3 and 5 s with 20, 2.
   const std::vector<aco::studies::StepCurve> runs{{{1, 2, 4}, {none, 10, 6}}, {{3, 5}, {20, 2}}};
@@ -414,11 +420,11 @@ TEST_CASE("anytime means: step curves on their own x, the same runs throughout i
   CHECK(any.x == at);
   REQUIRE(any.value.size() == 6);
   CHECK(std::isnan(any.value[0]));  // no path yet
-  CHECK(any.value[1] == 10);        // run 1 alone
-  CHECK(any.value[2] == 15);        // (10 + 20) / 2
-  CHECK(any.value[3] == 13);        // (6 + 20) / 2
-  CHECK(any.value[4] == 4);         // (6 + 2) / 2
-  CHECK(any.value[5] == 4);         // both ended: their last values
+  CHECK(any.value[1] == 10);  // run 1 alone
+  CHECK(any.value[2] == 15);  // (10 + 20) / 2
+  CHECK(any.value[3] == 13);  // (6 + 20) / 2
+  CHECK(any.value[4] == 4);  // (6 + 2) / 2
+  CHECK(any.value[5] == 4);  // both ended: their last values
   const auto same = aco::studies::mean_series("same", runs, at, true);
   CHECK(std::isnan(same.value[1]));  // run 2 has no path before 3 s
   CHECK(same.value[2] == 15);
@@ -437,7 +443,8 @@ TEST_CASE("anytime means: step curves on their own x, the same runs throughout i
   CHECK(aco::studies::log_spaced(2, 2, 5) == std::vector<double>{2});
 }
 
-TEST_CASE("line charts with their own x: a log axis, steps, fixed y range, and a legend never cut", "[statistics][plots][anytime]") {
+TEST_CASE("line charts with their own x: a log axis, steps, fixed y range, and a legend never cut",
+          "[statistics][plots][anytime]") {
   aco::studies::LineChart chart;
   chart.title = "within 1 %";
   chart.x_label = "seconds";
@@ -465,12 +472,14 @@ TEST_CASE("line charts with their own x: a log axis, steps, fixed y range, and a
   // one too long for that puts the legend under the plot.
   chart.series[1].name = "003 obstacle-density init + wolf-pack";
   const std::string wider = aco::studies::line_chart_svg(chart);
-  CHECK_THAT(wider, !Contains("width=\"640\"") && Contains("<g class=\"legend\">\n<line x1=\"386\" x2=\"406\" y1=\"50\""));
+  CHECK_THAT(wider,
+             !Contains("width=\"640\"") && Contains("<g class=\"legend\">\n<line x1=\"386\" x2=\"406\" y1=\"50\""));
   chart.series[1].name = "003 obstacle-density init + wolf-pack update + Gaussian deposition";
   const std::string wide = aco::studies::line_chart_svg(chart);
   CHECK(well_formed(wide));
-  CHECK_THAT(wide, Contains(">003 obstacle-density init + wolf-pack update + Gaussian deposition<") &&
-                       Contains("<g class=\"legend\">\n<line x1=\"16\" x2=\"36\" y1=\"416\""));  // under the x axis title
+  CHECK_THAT(wide,
+             Contains(">003 obstacle-density init + wolf-pack update + Gaussian deposition<") &&
+                 Contains("<g class=\"legend\">\n<line x1=\"16\" x2=\"36\" y1=\"416\""));  // under the x axis title
   CHECK(test::texts_outside_view_box(wider).empty());
   CHECK(test::texts_outside_view_box(wide).empty());
 }
@@ -488,13 +497,15 @@ std::vector<std::string> forty_long_names() {
 
 }  // namespace
 
-TEST_CASE("every plot's text lies inside its picture: forty long names, wide tick labels, long titles", "[statistics][plots][svg]") {
+TEST_CASE("every plot's text lies inside its picture: forty long names, wide tick labels, long titles",
+          "[statistics][plots][svg]") {
   const auto names = forty_long_names();
   aco::studies::BoxPlot box;
   box.title = "final path length of forty configurations on a map with a long name: Berlin_0_512.map";
   box.value_label = "path length";
   box.reference = 123456.789;
-  for (std::size_t k = 0; k < names.size(); ++k) box.samples.push_back({names[k], {123000.0 + double(k), 124000.0 + double(k)}});
+  for (std::size_t k = 0; k < names.size(); ++k)
+    box.samples.push_back({names[k], {123000.0 + double(k), 124000.0 + double(k)}});
   const std::string boxes = aco::studies::box_plot_svg(box);
   CHECK(well_formed(boxes));
   for (const auto& text : test::texts_outside_view_box(boxes)) FAIL_CHECK("box plot: " << text);

@@ -32,8 +32,8 @@ aco::TerrainMap esri(const std::string& text, const aco::TerrainOptions& options
 aco::TerrainMap terrain(const std::vector<std::vector<double>>& rows, double cell_size = 1, double max_slope = 90) {
   std::vector<double> heights;
   for (const auto& row : rows) heights.insert(heights.end(), row.begin(), row.end());
-  return aco::TerrainMap(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), cell_size, heights, max_slope,
-                         "test terrain");
+  return aco::TerrainMap(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), cell_size, heights,
+                         max_slope, "test terrain");
 }
 
 constexpr double kNoData = std::numeric_limits<double>::quiet_NaN();
@@ -99,22 +99,26 @@ TEST_CASE("ESRI ASCII grid: malformed files name the line and the problem", "[te
   std::string values;
   for (int i = 0; i < 399; ++i) values += "1 ";
   CHECK_THAT(error_of(header + values + "\n"), Contains("inline.asc:6: expected 400 heights") && Contains("found 399"));
-  CHECK_THAT(error_of(header + values + "\n1 1\n"), Contains("inline.asc:7: expected 400 heights") && Contains("found 401"));
+  CHECK_THAT(error_of(header + values + "\n1 1\n"),
+             Contains("inline.asc:7: expected 400 heights") && Contains("found 401"));
   CHECK_THAT(error_of(header + "1 2 x3\n"), Contains("inline.asc:6: height 'x3' is not a number"));
   CHECK_THAT(error_of(header + "1 nan\n"), Contains("inline.asc:6: height 'nan' is not a number"));
   CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 0\n1 2\n"),
              Contains("inline.asc:5: cellsize '0' is not positive"));
   CHECK_THAT(error_of("ncols -2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2\n"),
              Contains("inline.asc:1: ncols '-2' is not a whole number"));
-  CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner west\n"), Contains("inline.asc:3: xllcorner 'west' is not a number"));
-  CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\n1 2\n"), Contains("inline.asc:5: header lacks 'cellsize'"));
+  CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner west\n"),
+             Contains("inline.asc:3: xllcorner 'west' is not a number"));
+  CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\n1 2\n"),
+             Contains("inline.asc:5: header lacks 'cellsize'"));
   CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\nrows 3\n1 2\n"),
              Contains("inline.asc:6: unknown header key 'rows'"));
   CHECK_THAT(error_of("ncols 2\nncols 2\n"), Contains("inline.asc:2: header key 'ncols' is given twice"));
   CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nxllcenter 0\nyllcorner 0\ncellsize 1\n1 2\n"),
              Contains("exactly one of 'xllcorner' and 'xllcenter'"));
   CHECK_THAT(error_of("ncols 2 3\n"), Contains("inline.asc:1: header line 'ncols 2 3' should be 'ncols VALUE'"));
-  CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\n"), Contains("no heights after the header"));
+  CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\n"),
+             Contains("no heights after the header"));
 }
 
 TEST_CASE("PGM height images: height = grey * scale, cell size from the options", "[terrain]") {
@@ -126,8 +130,10 @@ TEST_CASE("PGM height images: height = grey * scale, cell size from the options"
   CHECK(t->height() == 2);
   CHECK(t->position({1, 1}) == Eigen::Vector3d(4, 4, 500));
   CHECK(t->position({2, 0}) == Eigen::Vector3d(8, 0, 10));
-  REQUIRE_THROWS_WITH(aco::load_height_pgm(file, {90, 0, 1}), Contains("heights.pgm: height scale") && Contains("not a positive number"));
-  REQUIRE_THROWS_WITH(aco::load_height_pgm(file, {90, 1, -1}), Contains("heights.pgm: cell size") && Contains("not a positive number"));
+  REQUIRE_THROWS_WITH(aco::load_height_pgm(file, {90, 0, 1}),
+                      Contains("heights.pgm: height scale") && Contains("not a positive number"));
+  REQUIRE_THROWS_WITH(aco::load_height_pgm(file, {90, 1, -1}),
+                      Contains("heights.pgm: cell size") && Contains("not a positive number"));
 }
 
 TEST_CASE("Slope limit: steep steps refused both ways, gentle ones allowed, steep cells blocked", "[terrain]") {
@@ -139,7 +145,8 @@ TEST_CASE("Slope limit: steep steps refused both ways, gentle ones allowed, stee
   CHECK_FALSE(map.step_allowed({2, 0}, {1, 0}));
   // A diagonal step's run is sqrt(2): rise 2 over 1.414 is 54.7 deg, still too steep.
   CHECK_FALSE(map.step_allowed({1, 0}, {2, 1}));
-  // Cell slopes: (0,0) one-sided 0.5 -> 26.6 deg; (1,0) central (2.5 - 0) / 2 -> 51.3 deg; (2,0) one-sided 2 -> 63.4 deg.
+  // Cell slopes: (0,0) one-sided 0.5 -> 26.6 deg; (1,0) central (2.5 - 0) / 2 -> 51.3 deg; (2,0) one-sided 2 -> 63.4
+  // deg.
   CHECK(map.slope_deg({0, 0}) == Approx(std::atan(0.5) * 180 / M_PI));
   CHECK(map.slope_deg({1, 0}) == Approx(std::atan(1.25) * 180 / M_PI));
   CHECK(map.passable({0, 0}));
@@ -172,10 +179,10 @@ TEST_CASE("Terrain step costs are 3D distances", "[terrain]") {
     REQUIRE(e >= 0);
     return g.costs[e];
   };
-  CHECK(cost({0, 0}, {1, 0}) == Approx(5));                         // run 4, rise 3
+  CHECK(cost({0, 0}, {1, 0}) == Approx(5));  // run 4, rise 3
   CHECK(cost({1, 0}, {0, 0}) == Approx(5));
-  CHECK(cost({0, 0}, {1, 1}) == Approx(std::sqrt(32.0)));           // diagonal, level
-  CHECK(cost({1, 1}, {0, 1}) == Approx(std::sqrt(16.0 + 16.0)));    // run 4, rise 4
+  CHECK(cost({0, 0}, {1, 1}) == Approx(std::sqrt(32.0)));  // diagonal, level
+  CHECK(cost({1, 1}, {0, 1}) == Approx(std::sqrt(16.0 + 16.0)));  // run 4, rise 4
   CHECK(cost({2, 0}, {1, 1}) == Approx(std::sqrt(32.0)));
 }
 
@@ -205,8 +212,9 @@ TEST_CASE("Knight moves on terrain need the cells they cross passable", "[terrai
 
 TEST_CASE("The 16-neighbourhood needs room for a knight move", "[terrain][graph]") {
   const aco::GraphOptions sixteen{aco::Neighbourhood::sixteen, false};
-  REQUIRE_THROWS_WITH(aco::build_graph(test::grid({"..", ".."}), sixteen),
-                      "16-neighbourhood needs a map at least 3 cells long in one direction and 2 in the other; test grid is 2x2");
+  REQUIRE_THROWS_WITH(
+      aco::build_graph(test::grid({"..", ".."}), sixteen),
+      "16-neighbourhood needs a map at least 3 cells long in one direction and 2 in the other; test grid is 2x2");
   REQUIRE_THROWS_WITH(aco::build_graph(test::grid({"....."}), sixteen), Contains("test grid is 5x1"));
   REQUIRE_THROWS_WITH(aco::build_graph(terrain({{1}, {2}, {3}}), sixteen), Contains("test terrain is 1x3"));
   CHECK(aco::build_graph(test::grid({"...", "..."}), sixteen).num_edges() > 0);
@@ -226,7 +234,8 @@ TEST_CASE("line_of_sight respects the slope limit between consecutive cells", "[
     CHECK_FALSE(aco::line_of_sight(limited, {4, 0}, {0, 2}, cc));
     CHECK(aco::line_of_sight(limited, {0, 0}, {1, 2}, cc));  // never reaches the ridge
     // Same answers as on an occupancy grid where the ridge is not there at all.
-    CHECK(aco::line_of_sight(ridge, {0, 0}, {4, 2}, cc) == aco::line_of_sight(test::grid({".....", ".....", "....."}), {0, 0}, {4, 2}, cc));
+    CHECK(aco::line_of_sight(ridge, {0, 0}, {4, 2}, cc) ==
+          aco::line_of_sight(test::grid({".....", ".....", "....."}), {0, 0}, {4, 2}, cc));
   }
 }
 
@@ -243,14 +252,16 @@ TEST_CASE("The SVG of a terrain shows shading, contours and a height legend", "[
                       Contains("id=\"height-legend\"") && Contains(">800</text>") && Contains(">1000</text>") &&
                       Contains("url(#height-ramp)"));
   // Shading: one colour band per height step (heights here span 4 bands or more).
-  const auto shading = svg.substr(svg.find("<g id=\"terrain\""), svg.find("<g id=\"contours\"") - svg.find("<g id=\"terrain\""));
+  const auto shading =
+      svg.substr(svg.find("<g id=\"terrain\""), svg.find("<g id=\"contours\"") - svg.find("<g id=\"terrain\""));
   std::set<std::string> fills;
   for (auto at = shading.find("fill=\"#"); at != std::string::npos; at = shading.find("fill=\"#", at + 1))
     fills.insert(shading.substr(at + 6, 7));
   CHECK(fills.size() >= 4);
   // Paths in cells, not in map units: the goal is drawn at cell (3,2), not at (30,20).
   CHECK_THAT(svg, Contains("cx=\"3\" cy=\"2\""));
-  CHECK_THAT(svg, Contains("<g id=\"obstacles\" fill=\"#333\" shape-rendering=\"crispEdges\">\n<rect x=\"1.5\" y=\"0.5\""));
+  CHECK_THAT(svg,
+             Contains("<g id=\"obstacles\" fill=\"#333\" shape-rendering=\"crispEdges\">\n<rect x=\"1.5\" y=\"0.5\""));
   // The map's legend under the height legend, which names the blocked cells itself.
   const std::string map_legend = svg.substr(svg.find("<g id=\"map-legend\""));
   CHECK_THAT(map_legend, Contains(">start<") && Contains(">path after the smoother<") && !Contains("blocked"));
@@ -280,7 +291,8 @@ TEST_CASE("acoplan plans on the paper 000 terrain look-alike", "[terrain][acopla
   CHECK(j["length"].get<double>() >= j["optimal_length"].get<double>() - 1e-9);
   for (const auto& p : j["path"]) {
     REQUIRE(p.size() == 3);
-    const aco::Cell c{static_cast<int>(std::lround(p[0].get<double>() / 10)), static_cast<int>(std::lround(p[1].get<double>() / 10))};
+    const aco::Cell c{static_cast<int>(std::lround(p[0].get<double>() / 10)),
+                      static_cast<int>(std::lround(p[1].get<double>() / 10))};
     CHECK(p[2].get<double>() == map.elevation(c));
   }
   CHECK(j["path"].front() == nlohmann::json::array({0.0, 100.0, map.elevation({0, 10})}));
@@ -297,12 +309,14 @@ TEST_CASE("acoplan on terrain: blocked start or goal and malformed files are cle
     CHECK(r.out.empty());
     CHECK_THAT(r.err, Contains(expected));
   };
-  expect_error({"--map", asc.string(), "--start", "0,1", "--goal", "2,0"}, "start (0,1) is blocked: NODATA (" + asc.string() + ")");
+  expect_error({"--map", asc.string(), "--start", "0,1", "--goal", "2,0"},
+               "start (0,1) is blocked: NODATA (" + asc.string() + ")");
   expect_error({"--map", asc.string(), "--start", "0,0", "--goal", "3,1", "--max-slope", "60"},
                "goal (3,1) is blocked: too steep: slope 79.9 deg > max 60 deg");  // atan(hypot(5, 2.5))
   expect_error({"--map", asc.string(), "--start", "0,0", "--goal", "3,1", "--max-slope", "91"}, "--max-slope");
   const auto bad = test::temp_file("bad.asc", "ncols 2\nnrows 2\nxllcorner 0\nyllcorner 0\ncellsize 1\n1 2\n3 x\n");
-  expect_error({"--map", bad.string(), "--start", "0,0", "--goal", "1,1"}, bad.string() + ":7: height 'x' is not a number");
+  expect_error({"--map", bad.string(), "--start", "0,0", "--goal", "1,1"},
+               bad.string() + ":7: height 'x' is not a number");
   // Without a slope limit the steep cell is fine, and the path ends on it.
   const auto r = test::acoplan({"--map", asc.string(), "--start", "0,0", "--goal", "3,1", "--planner", "astar"});
   CHECK(r.exit_code == 0);

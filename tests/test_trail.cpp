@@ -50,7 +50,7 @@ TEST_CASE("a trail evaporated for thousands of iterations keeps its values", "[t
   for (int i = 0; i < 2000; ++i) {
     trail.evaporate(0.3);
     CHECK(trail.scale() >= 1e-100);  // the stored values are rescaled before the scale underflows
-    trail.set(1, trail[1] + 1.0);    // a deposit every iteration: its sum converges to 1 / 0.3
+    trail.set(1, trail[1] + 1.0);  // a deposit every iteration: its sum converges to 1 / 0.3
   }
   CHECK(trail[0] == Approx(std::pow(0.7, 2000)).margin(1e-300));
   CHECK(trail[1] == Approx(0.7 / 0.3 + 1.0));

@@ -28,8 +28,16 @@ const std::string kHostile = kHealthy +
                              "  - {name: throw, update: throwing, update.at_iteration: 3}\n";
 
 std::vector<std::string> hostile_options(const std::filesystem::path& db) {
-  return {"--db", db.string(), "--plugin-dir", ACO_TEST_HOSTILE_PLUGIN_DIR, "--plugin-dir", ACO_TEST_FAULTY_PLUGIN_DIR,
-          "--trial-timeout", "3", "--trial-memory", "128M"};
+  return {"--db",
+          db.string(),
+          "--plugin-dir",
+          ACO_TEST_HOSTILE_PLUGIN_DIR,
+          "--plugin-dir",
+          ACO_TEST_FAULTY_PLUGIN_DIR,
+          "--trial-timeout",
+          "3",
+          "--trial-memory",
+          "128M"};
 }
 
 std::vector<std::string> with(std::vector<std::string> first, const std::vector<std::string>& then) {
@@ -41,8 +49,9 @@ std::vector<std::string> with(std::vector<std::string> first, const std::vector<
 std::vector<std::string> healthy_rows(const std::filesystem::path& db) {
   std::vector<std::string> rows;
   for (const auto& t : aco::studies::ResultsDb(db).trials())
-    if (t.config <= 2) rows.push_back(std::to_string(t.problem) + " " + std::to_string(t.config) + " " +
-                                      std::to_string(t.repetition) + " " + std::to_string(t.length) + " " + t.path_json);
+    if (t.config <= 2)
+      rows.push_back(std::to_string(t.problem) + " " + std::to_string(t.config) + " " + std::to_string(t.repetition) +
+                     " " + std::to_string(t.length) + " " + t.path_json);
   return rows;
 }
 
@@ -50,10 +59,15 @@ std::vector<std::string> healthy_rows(const std::filesystem::path& db) {
 std::map<std::string, int> check_failures(const std::filesystem::path& db) {
   const std::string hostile = ACO_TEST_HOSTILE_PLUGIN_DIR;
   const std::map<int, std::pair<std::string, std::string>> expected{
-      {3, {"crashed", "crashed: SIGSEGV in plugin update/crashing (" + hostile + "/aco_update_crashing.so) in update() in iteration 3"}},
-      {4, {"timed out", "timed out after 3 s in plugin update/hanging (" + hostile + "/aco_update_hanging.so) in update() in iteration 3"}},
-      {5, {"out of memory", "out of memory (over 128 MiB) in plugin update/hogging (" + hostile +
-                                "/aco_update_hogging.so) in update() in iteration 3"}},
+      {3,
+       {"crashed", "crashed: SIGSEGV in plugin update/crashing (" + hostile +
+                       "/aco_update_crashing.so) in update() in iteration 3"}},
+      {4,
+       {"timed out", "timed out after 3 s in plugin update/hanging (" + hostile +
+                         "/aco_update_hanging.so) in update() in iteration 3"}},
+      {5,
+       {"out of memory", "out of memory (over 128 MiB) in plugin update/hogging (" + hostile +
+                             "/aco_update_hogging.so) in update() in iteration 3"}},
       {6, {"plugin error", "plugin update/throwing ("}}};
   std::map<std::string, int> kinds;
   for (const auto& t : aco::studies::ResultsDb(db).trials()) {
@@ -85,9 +99,11 @@ TEST_CASE("a crash an endless loop a memory hog and a throw each cost only their
                         Contains("  crashed (a signal): 6\n    'crash': 6, e.g. problem 'across', "
                                  "repetition 0: crashed: SIGSEGV in plugin update/crashing") &&
                         Contains("  over the trial time limit: 6\n    'hang': 6, e.g.") &&
-                        Contains("  out of memory: 6\n    'hog': 6, e.g.") && Contains("  a plugin threw: 6\n    'throw': 6, e.g."));
+                        Contains("  out of memory: 6\n    'hog': 6, e.g.") &&
+                        Contains("  a plugin threw: 6\n    'throw': 6, e.g."));
   CHECK(count_runs(db) == 36);
-  CHECK(check_failures(db) == std::map<std::string, int>{{"crashed", 6}, {"plugin error", 6}, {"out of memory", 6}, {"timed out", 6}});
+  CHECK(check_failures(db) ==
+        std::map<std::string, int>{{"crashed", 6}, {"plugin error", 6}, {"out of memory", 6}, {"timed out", 6}});
   // The healthy configurations' trials are those of an experiment without the hostile ones.
   const auto healthy = experiment(kHealthy);
   REQUIRE(run_acobench({"run", healthy.string(), "--db", healthy_db.string()}).exit_code == 0);
@@ -112,7 +128,8 @@ TEST_CASE("under mpirun -n 3 the hostile trials are contained the same way and t
   const auto file = experiment(kHostile);
   const auto single = file.parent_path() / "single.db", ranks = file.parent_path() / "ranks.db";
   REQUIRE(run_acobench(with({"run", file.string()}, hostile_options(single))).exit_code == 3);
-  const auto r = test::run(mpirun(3, with({"run", file.string(), "--threads", "1"}, hostile_options(ranks))), kMpiEnvironment);
+  const auto r =
+      test::run(mpirun(3, with({"run", file.string(), "--threads", "1"}, hostile_options(ranks))), kMpiEnvironment);
   INFO(r.out << r.err);
   CHECK(r.exit_code == 3);  // rank 0's verdict: trials failed
   CHECK_THAT(r.err, Contains("24 of 36 trials failed") && Contains("crashed (a signal): 6"));
@@ -129,11 +146,13 @@ TEST_CASE("worker processes and --in-process give the same database", "[acobench
   REQUIRE(run_acobench({"run", file.string(), "--db", in_process.string(), "--in-process"}).exit_code == 0);
   CHECK(database_rows(workers) == database_rows(in_process));
   // Limits need workers: said, not silently ignored.
-  const auto warned = run_acobench({"run", file.string(), "--db", in_process.string(), "--in-process", "--trial-timeout", "5"});
+  const auto warned =
+      run_acobench({"run", file.string(), "--db", in_process.string(), "--in-process", "--trial-timeout", "5"});
   CHECK_THAT(warned.err, Contains("--in-process: the trial time and memory limits are not enforced"));
 }
 
-TEST_CASE("trial limits come from experiment keys or the command line which wins and bad values are refused", "[acobench][isolation]") {
+TEST_CASE("trial limits come from experiment keys or the command line which wins and bad values are refused",
+          "[acobench][isolation]") {
   const auto e = load(kHealthy + "trial-timeout: 2.5\ntrial-memory: 1G\n");
   CHECK(e.trial_timeout_s == 2.5);
   CHECK(e.trial_memory_bytes == std::uint64_t(1) << 30);
@@ -152,12 +171,24 @@ TEST_CASE("trial limits come from experiment keys or the command line which wins
   const auto r2 = run_acobench({"run", file.string(), "--db", db2.string(), "--plugin-dir", ACO_TEST_HOSTILE_PLUGIN_DIR,
                                 "--trial-timeout", "0.5"});
   CHECK_THAT(r2.err, Contains("timed out after 0.5 s in plugin update/hanging"));
-  CHECK_THAT(run_acobench({"run", file.string(), "--trial-timeout", "0", "--plugin-dir", ACO_TEST_HOSTILE_PLUGIN_DIR}).err, Contains("--trial-timeout: '0' is not a time"));
+  CHECK_THAT(
+      run_acobench({"run", file.string(), "--trial-timeout", "0", "--plugin-dir", ACO_TEST_HOSTILE_PLUGIN_DIR}).err,
+      Contains("--trial-timeout: '0' is not a time"));
 }
 
 TEST_CASE("acoplan names the plugin and hook a crash happened in and ends as the signal does", "[acoplan][isolation]") {
-  const std::vector<std::string> args{"--map", map1(), "--start", "0,0", "--goal", "19,19", "--plugin-dir",
-                                      ACO_TEST_HOSTILE_PLUGIN_DIR, "--update", "crashing", "--update.at_iteration", "2"};
+  const std::vector<std::string> args{"--map",
+                                      map1(),
+                                      "--start",
+                                      "0,0",
+                                      "--goal",
+                                      "19,19",
+                                      "--plugin-dir",
+                                      ACO_TEST_HOSTILE_PLUGIN_DIR,
+                                      "--update",
+                                      "crashing",
+                                      "--update.at_iteration",
+                                      "2"};
   const auto segv = test::acoplan(args);
   CHECK(segv.exit_code == 139);
   CHECK_THAT(segv.err, Contains("acoplan: error: crashed: SIGSEGV in plugin update/crashing (") &&

@@ -28,11 +28,16 @@ const std::vector<aco::studies::ProblemRecord> kProblems{{"map1", R"({"map":"map
 // A value of `type` that no field has by default and that tells fields apart.
 aco::studies::TrialCell sample(aco::studies::TrialCellType type, int index) {
   switch (type) {
-    case aco::studies::TrialCellType::boolean: return true;
-    case aco::studies::TrialCellType::integer: return std::int64_t{100 + index};
-    case aco::studies::TrialCellType::count: return std::uint64_t{0x8000'0000'0000'0000ULL} + static_cast<std::uint64_t>(index);
-    case aco::studies::TrialCellType::real: return 30.25 + index;
-    case aco::studies::TrialCellType::text: break;
+    case aco::studies::TrialCellType::boolean:
+      return true;
+    case aco::studies::TrialCellType::integer:
+      return std::int64_t{100 + index};
+    case aco::studies::TrialCellType::count:
+      return std::uint64_t{0x8000'0000'0000'0000ULL} + static_cast<std::uint64_t>(index);
+    case aco::studies::TrialCellType::real:
+      return 30.25 + index;
+    case aco::studies::TrialCellType::text:
+      break;
   }
   return "[\"field, " + std::to_string(index) + "\"]";  // valid JSON (the path must be), with a comma
 }
@@ -45,7 +50,8 @@ aco::studies::TrialRecord sample_trial(int config) {
   for (std::size_t i = 0; i < fields.size(); ++i)
     if (fields[i].set) fields[i].set(t, sample(fields[i].type, static_cast<int>(i)));
   t.best_so_far.assign(static_cast<std::size_t>(t.iterations), 40.0);
-  t.properties = {{"ant_steps", std::int64_t{7}}, {"stopped_by", std::string("time")}, {"update/x.restarts", std::int64_t{2}}};
+  t.properties = {
+      {"ant_steps", std::int64_t{7}}, {"stopped_by", std::string("time")}, {"update/x.restarts", std::int64_t{2}}};
   return t;
 }
 
@@ -54,10 +60,12 @@ std::set<std::string> runs_columns(const fs::path& file) {
   REQUIRE(sqlite3_open_v2(file.c_str(), &raw, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
   std::unique_ptr<sqlite3, decltype(&sqlite3_close)> db(raw, sqlite3_close);
   sqlite3_stmt* raw_statement = nullptr;
-  REQUIRE(sqlite3_prepare_v2(raw, "SELECT name FROM pragma_table_info('runs')", -1, &raw_statement, nullptr) == SQLITE_OK);
+  REQUIRE(sqlite3_prepare_v2(raw, "SELECT name FROM pragma_table_info('runs')", -1, &raw_statement, nullptr) ==
+          SQLITE_OK);
   std::unique_ptr<sqlite3_stmt, decltype(&sqlite3_finalize)> statement(raw_statement, sqlite3_finalize);
   std::set<std::string> names;
-  while (sqlite3_step(raw_statement) == SQLITE_ROW) names.insert(reinterpret_cast<const char*>(sqlite3_column_text(raw_statement, 0)));
+  while (sqlite3_step(raw_statement) == SQLITE_ROW)
+    names.insert(reinterpret_cast<const char*>(sqlite3_column_text(raw_statement, 0)));
   return names;
 }
 
@@ -66,9 +74,12 @@ std::vector<std::string> csv_line(const std::string& line) {
   std::string cell;
   bool quoted = false;
   for (const char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) cells.push_back(std::exchange(cell, ""));
-    else cell += c;
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      cells.push_back(std::exchange(cell, ""));
+    else
+      cell += c;
   }
   cells.push_back(cell);
   return cells;
@@ -113,7 +124,8 @@ TEST_CASE("every trial field reaches the messages, the runs table and runs.csv f
   }());
 }
 
-TEST_CASE("a database made before a field was added gains its column, NULL for its runs, and resumes", "[trialrecord]") {
+TEST_CASE("a database made before a field was added gains its column, NULL for its runs, and resumes",
+          "[trialrecord]") {
   const fs::path file = test::temp_file("unused", "").parent_path() / "older.db";
   const auto& newest = aco::studies::trial_fields().back();
   REQUIRE((newest.use & aco::studies::kInRunsTable));

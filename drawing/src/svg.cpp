@@ -20,7 +20,6 @@ constexpr double kPlotHeight = 300.0;
 constexpr double kMargin = 40.0;
 constexpr double kConvergenceAir = 0.05;  // of the values' range, above and below them
 
-
 void polyline(std::ostream& out, const std::vector<std::pair<double, double>>& points, const char* style) {
   if (points.size() < 2) return;
   out << "<polyline fill=\"none\" " << style << " points=\"";
@@ -33,7 +32,8 @@ struct ColourStop {
   double at;
   int r, g, b;
 };
-constexpr ColourStop kHeightRamp[] = {{0.0, 0x3a, 0x8a, 0x3f}, {0.35, 0xd8, 0xc8, 0x7a}, {0.7, 0x8b, 0x5a, 0x2b}, {1.0, 0xf7, 0xf7, 0xf4}};
+constexpr ColourStop kHeightRamp[] = {
+    {0.0, 0x3a, 0x8a, 0x3f}, {0.35, 0xd8, 0xc8, 0x7a}, {0.7, 0x8b, 0x5a, 0x2b}, {1.0, 0xf7, 0xf7, 0xf4}};
 // Shading bands: cells of one band share a colour, so rows merge into few rectangles.
 constexpr int kHeightBands = 32;
 
@@ -129,7 +129,8 @@ void draw_contours(std::ostream& out, const TerrainMap& terrain, HeightRange ran
           const int j = (i + 1) % 4;
           if ((z[i] >= level) == (z[j] >= level)) continue;
           const double t = (level - z[i]) / (z[j] - z[i]);
-          crossings.emplace_back(corner[i].x + t * (corner[j].x - corner[i].x), corner[i].y + t * (corner[j].y - corner[i].y));
+          crossings.emplace_back(corner[i].x + t * (corner[j].x - corner[i].x),
+                                 corner[i].y + t * (corner[j].y - corner[i].y));
         }
         if (crossings.size() == 4) {
           // Join sides 0-1 and 2-3 when corner 1 is cut off from the centre, else sides 3-0 and 1-2.
@@ -180,16 +181,18 @@ double draw_map_legend(std::ostream& out, const RunPicture& pic, bool terrain_sh
       {"line x1=\"0\" x2=\"20\" y1=\"0\" y2=\"0\" stroke=\"#1565c0\" stroke-width=\"2\"", "grid path (cell to cell)"},
       {"line x1=\"0\" x2=\"20\" y1=\"0\" y2=\"0\" stroke=\"#d32f2f\" stroke-width=\"2\" stroke-dasharray=\"6,3\"",
        "path after the smoother"}};
-  if (!terrain_shading) entries.push_back({"rect x=\"4\" y=\"-6\" width=\"12\" height=\"12\" fill=\"#333\"", "blocked cell"});
+  if (!terrain_shading)
+    entries.push_back({"rect x=\"4\" y=\"-6\" width=\"12\" height=\"12\" fill=\"#333\"", "blocked cell"});
   if (!pic.pheromone.empty())
     entries.push_back({"rect x=\"4\" y=\"-6\" width=\"12\" height=\"12\" fill=\"#2e7d32\" fill-opacity=\"0.6\"",
                        "pheromone (darker: more)"});
   // One flat group (no nested ones), each entry placed by its own transform and coordinates.
-  out << "<g id=\"map-legend\" transform=\"translate(" << left << ',' << top << ")\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  out << "<g id=\"map-legend\" transform=\"translate(" << left << ',' << top
+      << ")\" font-family=\"sans-serif\" font-size=\"12\">\n";
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const double x = double(i % 2) * kPlotWidth / 2, y = double(i / 2) * kMapLegendRow;
-    out << '<' << entries[i].mark << " transform=\"translate(" << x << ',' << y << ")\"/><text x=\"" << x + 26 << "\" y=\""
-        << y + 4 << "\">" << entries[i].label << "</text>\n";
+    out << '<' << entries[i].mark << " transform=\"translate(" << x << ',' << y << ")\"/><text x=\"" << x + 26
+        << "\" y=\"" << y + 4 << "\">" << entries[i].label << "</text>\n";
   }
   out << "</g>\n";
   return double((entries.size() + 1) / 2) * kMapLegendRow;
@@ -204,8 +207,8 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
   const double unit = terrain ? terrain->cell_size() : 1.0;
   out << "<g id=\"map\" transform=\"translate(" << kMargin << ',' << kMargin << ") scale(" << scale
       << ") translate(0.5,0.5)\">\n";
-  out << "<rect x=\"-0.5\" y=\"-0.5\" width=\"" << w << "\" height=\"" << h << "\" fill=\"#ffffff\" stroke=\"#888\" stroke-width=\""
-      << 1.0 / scale << "\"/>\n";
+  out << "<rect x=\"-0.5\" y=\"-0.5\" width=\"" << w << "\" height=\"" << h
+      << "\" fill=\"#ffffff\" stroke=\"#888\" stroke-width=\"" << 1.0 / scale << "\"/>\n";
   if (heights) {
     draw_height_shading(out, *terrain, *heights);
     draw_contours(out, *terrain, *heights, 1.0 / scale);
@@ -230,8 +233,8 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
         int end = x + 1;
         while (end < w && level(end, y) == l) ++end;
         if (l > 0)
-          out << "<rect x=\"" << x - 0.5 << "\" y=\"" << y - 0.5 << "\" width=\"" << end - x << "\" height=\"1\" fill-opacity=\""
-              << l * kOpacityStep << "\"/>\n";
+          out << "<rect x=\"" << x - 0.5 << "\" y=\"" << y - 0.5 << "\" width=\"" << end - x
+              << "\" height=\"1\" fill-opacity=\"" << l * kOpacityStep << "\"/>\n";
         x = end;
       }
     out << "</g>\n";
@@ -266,8 +269,8 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
   polyline(out, points, style.str().c_str());
   for (const auto& [node, colour] : {std::pair{pic.start, kStartColour}, std::pair{pic.goal, kGoalColour}}) {
     const auto& p = graph.positions[node];
-    out << "<circle cx=\"" << p.x() / unit << "\" cy=\"" << p.y() / unit << "\" r=\"" << std::max(0.35, 4.0 / scale) << "\" fill=\""
-        << colour << "\"/>\n";
+    out << "<circle cx=\"" << p.x() / unit << "\" cy=\"" << p.y() / unit << "\" r=\"" << std::max(0.35, 4.0 / scale)
+        << "\" fill=\"" << colour << "\"/>\n";
   }
   out << "</g>\n";
 }
@@ -281,11 +284,13 @@ void draw_convergence(std::ostream& out, const RunPicture& pic, double left, dou
     for (double v : *curve)
       if (std::isfinite(v)) finite.push_back(v);
   if (pic.optimal_length > 0) finite.push_back(pic.optimal_length);
-  out << "<g id=\"convergence\" transform=\"translate(" << left << ',' << top << ")\" font-family=\"sans-serif\" font-size=\"12\">\n";
+  out << "<g id=\"convergence\" transform=\"translate(" << left << ',' << top
+      << ")\" font-family=\"sans-serif\" font-size=\"12\">\n";
   out << "<rect width=\"" << kPlotWidth << "\" height=\"" << kPlotHeight << "\" fill=\"none\" stroke=\"#888\"/>\n";
   out << "<text x=\"" << kPlotWidth / 2 << "\" y=\"-8\" text-anchor=\"middle\">path length per iteration</text>\n";
   if (finite.empty() || pic.best_so_far.empty()) {
-    out << "<text x=\"" << kPlotWidth / 2 << "\" y=\"" << kPlotHeight / 2 << "\" text-anchor=\"middle\">no path found</text>\n</g>\n";
+    out << "<text x=\"" << kPlotWidth / 2 << "\" y=\"" << kPlotHeight / 2
+        << "\" text-anchor=\"middle\">no path found</text>\n</g>\n";
     return;
   }
   const double low = *std::min_element(finite.begin(), finite.end());
@@ -303,7 +308,8 @@ void draw_convergence(std::ostream& out, const RunPicture& pic, double left, dou
         continue;
       }
       if (points.size() == 1)  // one iteration between gaps: a dot, as a line needs two
-        out << "<circle cx=\"" << points[0].first << "\" cy=\"" << points[0].second << "\" r=\"1.5\" " << style << "/>\n";
+        out << "<circle cx=\"" << points[0].first << "\" cy=\"" << points[0].second << "\" r=\"1.5\" " << style
+            << "/>\n";
       polyline(out, points, style);
       points.clear();
     }
@@ -311,23 +317,25 @@ void draw_convergence(std::ostream& out, const RunPicture& pic, double left, dou
   curve(pic.iteration_best, "stroke=\"#90a4ae\" stroke-width=\"1\" class=\"iteration-best\"");
   curve(pic.best_so_far, "stroke=\"#1565c0\" stroke-width=\"2\" class=\"best-so-far\"");
   if (pic.optimal_length > 0)
-    out << "<line x1=\"0\" x2=\"" << kPlotWidth << "\" y1=\"" << py(pic.optimal_length) << "\" y2=\"" << py(pic.optimal_length)
-        << "\" stroke=\"#43a047\" stroke-dasharray=\"4,3\" class=\"optimum\"/>\n";
+    out << "<line x1=\"0\" x2=\"" << kPlotWidth << "\" y1=\"" << py(pic.optimal_length) << "\" y2=\""
+        << py(pic.optimal_length) << "\" stroke=\"#43a047\" stroke-dasharray=\"4,3\" class=\"optimum\"/>\n";
   // The highest and the lowest value, each at its height with a tick.
   for (const double v : {high, low})
-    out << "<line x1=\"-4\" x2=\"0\" y1=\"" << py(v) << "\" y2=\"" << py(v) << "\" stroke=\"#888\"/><text x=\"-6\" y=\"" << py(v) + 4
-        << "\" text-anchor=\"end\">" << v << "</text>\n";
+    out << "<line x1=\"-4\" x2=\"0\" y1=\"" << py(v) << "\" y2=\"" << py(v) << "\" stroke=\"#888\"/><text x=\"-6\" y=\""
+        << py(v) + 4 << "\" text-anchor=\"end\">" << v << "</text>\n";
   out << "<text x=\"0\" y=\"" << kPlotHeight + 16 << "\">1</text>\n";
   out << "<text x=\"" << kPlotWidth << "\" y=\"" << kPlotHeight + 16 << "\" text-anchor=\"end\">" << n << "</text>\n";
-  out << "<text x=\"" << kPlotWidth / 2 << "\" y=\"" << kPlotHeight + 16 << "\" text-anchor=\"middle\">iterations run</text>\n";
+  out << "<text x=\"" << kPlotWidth / 2 << "\" y=\"" << kPlotHeight + 16
+      << "\" text-anchor=\"middle\">iterations run</text>\n";
   const double ly = kPlotHeight + 36;
-  out << "<line x1=\"0\" x2=\"20\" y1=\"" << ly << "\" y2=\"" << ly << "\" stroke=\"#1565c0\" stroke-width=\"2\"/><text x=\"24\" y=\""
-      << ly + 4 << "\">best so far</text>\n";
-  out << "<line x1=\"120\" x2=\"140\" y1=\"" << ly << "\" y2=\"" << ly << "\" stroke=\"#90a4ae\"/><text x=\"144\" y=\"" << ly + 4
-      << "\">iteration best</text>\n";
+  out << "<line x1=\"0\" x2=\"20\" y1=\"" << ly << "\" y2=\"" << ly
+      << "\" stroke=\"#1565c0\" stroke-width=\"2\"/><text x=\"24\" y=\"" << ly + 4 << "\">best so far</text>\n";
+  out << "<line x1=\"120\" x2=\"140\" y1=\"" << ly << "\" y2=\"" << ly << "\" stroke=\"#90a4ae\"/><text x=\"144\" y=\""
+      << ly + 4 << "\">iteration best</text>\n";
   if (pic.optimal_length > 0)
-    out << "<line x1=\"260\" x2=\"280\" y1=\"" << ly << "\" y2=\"" << ly << "\" stroke=\"#43a047\" stroke-dasharray=\"4,3\"/><text x=\"284\" y=\""
-        << ly + 4 << "\">optimum (A*)</text>\n";
+    out << "<line x1=\"260\" x2=\"280\" y1=\"" << ly << "\" y2=\"" << ly
+        << "\" stroke=\"#43a047\" stroke-dasharray=\"4,3\"/><text x=\"284\" y=\"" << ly + 4
+        << "\">optimum (A*)</text>\n";
   out << "</g>\n";
 }
 
@@ -348,13 +356,15 @@ std::string render_svg(const Graph& graph, const RunPicture& pic) {
   draw_map(parts, graph, pic, scale, terrain, heights);
   draw_convergence(parts, pic, plot_left, kMargin + 10);
   if (heights) draw_height_legend(parts, *heights, plot_left, height_legend_top);
-  const double legend_bottom = map_legend_top + draw_map_legend(parts, pic, heights.has_value(), plot_left, map_legend_top);
+  const double legend_bottom =
+      map_legend_top + draw_map_legend(parts, pic, heights.has_value(), plot_left, map_legend_top);
   const double height = std::max(map_h + kMargin * 2, legend_bottom + kMargin / 2);
   std::ostringstream out;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
-      << width << ' ' << height << "\">\n";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
-  out << "<text x=\"" << kMargin << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"14\">" << xml_escape(pic.title) << "</text>\n";
+  out << "<text x=\"" << kMargin << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"14\">" << xml_escape(pic.title)
+      << "</text>\n";
   out << parts.str() << "</svg>\n";
   return out.str();
 }
@@ -370,11 +380,16 @@ double text_width(std::string_view text, double font_size) {
     if ((byte & 0xC0) == 0x80) continue;  // inside a UTF-8 character, counted at its first byte
     const std::string_view narrow = " ijl'.,:;|!", slim = "frt()[]{}/-\\\"";
     double em = 0.9;  // symbols (% + = & ...) and characters beyond ASCII (\u2026, \u25b2)
-    if (narrow.find(c) != std::string_view::npos) em = 0.33;
-    else if (slim.find(c) != std::string_view::npos) em = 0.43;
-    else if (c == 'm' || c == 'w' || c == 'M' || c == 'W') em = 1.0;
-    else if (c >= 'A' && c <= 'Z') em = 0.79;
-    else if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9')) em = 0.64;
+    if (narrow.find(c) != std::string_view::npos)
+      em = 0.33;
+    else if (slim.find(c) != std::string_view::npos)
+      em = 0.43;
+    else if (c == 'm' || c == 'w' || c == 'M' || c == 'W')
+      em = 1.0;
+    else if (c >= 'A' && c <= 'Z')
+      em = 0.79;
+    else if ((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9'))
+      em = 0.64;
     ems += em;
   }
   return ems * font_size;
@@ -384,11 +399,20 @@ std::string xml_escape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;

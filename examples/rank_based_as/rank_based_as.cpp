@@ -9,13 +9,14 @@
 namespace {
 
 struct Parameters {
-  int w = 6;          // Dorigo and Stuetzle's setting (Ant Colony Optimization, 2004, table 3.1)
-  double rho = 0.1;   // evaporation rate, same source
-  double q = 1.0;     // deposit constant Q
+  int w = 6;  // Dorigo and Stuetzle's setting (Ant Colony Optimization, 2004, table 3.1)
+  double rho = 0.1;  // evaporation rate, same source
+  double q = 1.0;  // deposit constant Q
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::field("w", &Parameters::w, "1:1000", "the best-so-far path deposits w Q / L; the w - 1 best ants of the iteration rank"),
+    aco::field("w", &Parameters::w, "1:1000",
+               "the best-so-far path deposits w Q / L; the w - 1 best ants of the iteration rank"),
     aco::field("rho", &Parameters::rho, "0:1", "evaporation rate: tau <- (1 - rho) tau first"),
     aco::field("q", &Parameters::q, "(0:1e12]", "deposit constant Q"),
 });
@@ -50,6 +51,7 @@ class RankBasedUpdate final : public aco::PheromoneUpdate {
 
 }  // namespace
 
-ACO_PLUGIN(update, rank_based_as, RankBasedUpdate, "1.0",
-           "rank-based Ant System (Bullnheimer et al. 1999): the w-1 best ants deposit (w-r)Q/L_r, the best so far wQ/L",
-           kParams)
+ACO_PLUGIN(
+    update, rank_based_as, RankBasedUpdate, "1.0",
+    "rank-based Ant System (Bullnheimer et al. 1999): the w-1 best ants deposit (w-r)Q/L_r, the best so far wQ/L",
+    kParams)

@@ -9,7 +9,8 @@ TEST_CASE("update/rank_based_as passes the conformance checks", "[rank_based_as]
 // Four arrived ants on a 1x6 corridor walk its first k edges (lengths 5, 4, 3, 2: the goal is
 // at their end only for the first, so the others are declared arrived by hand: the rule reads
 // lengths and edges, not the map). Edge i of the corridor is used by every ant longer than i.
-TEST_CASE("update/rank_based_as: evaporation, then (w - r) Q / L_r for the w - 1 best, w Q / L_best", "[rank_based_as]") {
+TEST_CASE("update/rank_based_as: evaporation, then (w - r) Q / L_r for the w - 1 best, w Q / L_best",
+          "[rank_based_as]") {
   const auto problem = aco::testing::make_problem("corridor", {"......"}, {0, 0}, {5, 0});
   std::vector<aco::Ant> ants;
   for (const int k : {5, 4, 3, 2}) {
@@ -24,12 +25,14 @@ TEST_CASE("update/rank_based_as: evaporation, then (w - r) Q / L_r for the w - 1
   auto update = aco::testing::create<aco::PheromoneUpdate>(PLUGIN_FILE, {{"w", "3"}, {"rho", "0.5"}, {"q", "2"}});
   std::vector<double> tau(problem.graph.num_edges(), 1.0);
   update->update(problem.context(), iteration, tau);
-  auto edge = [&](int x) { return tau[problem.graph.find_edge(problem.graph.node({x, 0}), problem.graph.node({x + 1, 0}))]; };
+  auto edge = [&](int x) {
+    return tau[problem.graph.find_edge(problem.graph.node({x, 0}), problem.graph.node({x + 1, 0}))];
+  };
   const double rank1 = 2 * 2.0 / 2, rank2 = 1 * 2.0 / 3, best = 3 * 2.0 / 2;
   CHECK(edge(0) == Approx(0.5 + rank1 + rank2 + best));
   CHECK(edge(1) == Approx(0.5 + rank1 + rank2 + best));
   CHECK(edge(2) == Approx(0.5 + rank2));  // only the ant of length 3 (rank 2) walked it
-  CHECK(edge(3) == Approx(0.5));          // the ants of length 4 and 5 rank 3 and 4: no deposit
+  CHECK(edge(3) == Approx(0.5));  // the ants of length 4 and 5 rank 3 and 4: no deposit
   CHECK(tau[problem.graph.find_edge(problem.graph.node({1, 0}), problem.graph.node({0, 0}))] == Approx(0.5));
 }
 

@@ -105,5 +105,5 @@ class ShapesReader final : public aco::MapReader {
 
 }  // namespace
 
-ACO_PLUGIN(map, shapes, ShapesReader, "0.1", "obstacles as rectangles and circles in metres, rasterised at map.resolution",
-           kParams)
+ACO_PLUGIN(map, shapes, ShapesReader, "0.1",
+           "obstacles as rectangles and circles in metres, rasterised at map.resolution", kParams)

@@ -7,10 +7,10 @@ TEST_CASE("map/shapes passes the conformance checks", "[shapes]") { aco::testing
 TEST_CASE("map/shapes rasterises the room at its resolution", "[shapes]") {
   const auto reader = aco::testing::create<aco::MapReader>(PLUGIN_FILE, {{"resolution", "0.5"}});
   const auto map = reader->read(ROOM_FILE, {});
-  CHECK(map->width() == 20);   // 10 m at 0.5 m per cell
+  CHECK(map->width() == 20);  // 10 m at 0.5 m per cell
   CHECK(map->height() == 16);  // 8 m
   CHECK(map->passable({0, 0}));
-  CHECK_FALSE(map->passable({4, 0}));   // the wall from the top: x 2..3 m
+  CHECK_FALSE(map->passable({4, 0}));  // the wall from the top: x 2..3 m
   CHECK_FALSE(map->passable({12, 15}));  // the wall from the bottom: x 6..7 m
   CHECK_FALSE(map->passable({17, 4}));  // the pillar's centre (8.5, 2) m
   CHECK(map->passable({19, 15}));

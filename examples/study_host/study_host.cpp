@@ -18,10 +18,12 @@ int main(int argc, char** argv) {
     aco::studies::RunOptions options;
     options.database = argv[2];
     options.progress = [](std::size_t done, std::size_t total) { std::cerr << "\r" << done << "/" << total; };
-    const auto summary = aco::studies::run_experiment(aco::studies::load_experiment(argv[1], registry), registry, options);
+    const auto summary =
+        aco::studies::run_experiment(aco::studies::load_experiment(argv[1], registry), registry, options);
     std::cout << "\nran " << summary.ran << " trials (" << summary.skipped << " already stored), "
               << summary.failures.size() << " failed\n";
-    for (const auto& file : aco::studies::write_report(argv[2], argv[3])) std::cout << "wrote " << file.string() << "\n";
+    for (const auto& file : aco::studies::write_report(argv[2], argv[3]))
+      std::cout << "wrote " << file.string() << "\n";
   } catch (...) {  // a bad experiment file or plugin: its message, as acobench prints it
     std::cerr << "study_host: error: " << aco::describe_current_exception() << "\n";
     return 1;

@@ -31,7 +31,6 @@
 namespace aco {
 namespace {
 
-
 // Asks the kernel to back a large, untouched buffer with transparent huge pages. On a 512x512 map
 // a per-edge field is 16 MB; faulting it in 4 kB pages costs tens of milliseconds per run, more
 // than the ants' work on a short run. A hint only: no effect elsewhere, never a change of result.
@@ -126,7 +125,11 @@ class Colony {
  public:
   Colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline, const ColonySettings& settings,
          bool check_every_hook)
-      : g_(graph), p_(pipeline), s_(settings), check_every_hook_(check_every_hook), shortener_(graph, forbidden_, settings.local_search == "loops" ? 0 : settings.local_search_window) {
+      : g_(graph),
+        p_(pipeline),
+        s_(settings),
+        check_every_hook_(check_every_hook),
+        shortener_(graph, forbidden_, settings.local_search == "loops" ? 0 : settings.local_search_window) {
     context_.graph = &graph;
     context_.start = start;
     context_.goal = goal;
@@ -238,8 +241,8 @@ class Colony {
     for (EdgeId e : ant.edges) ant.length += g_.costs[e];
     // A walk that retraces the best path (already shortened) has nothing to gain: skip the work.
     // Not in the restart twin, whose walks must not depend on each other.
-    const bool retraces_best = s_.null_model != NullModel::restarts && has_best_ && ant.length == best_.length &&
-                               ant.nodes == best_.nodes;
+    const bool retraces_best =
+        s_.null_model != NullModel::restarts && has_best_ && ant.length == best_.length && ant.nodes == best_.nodes;
     if (local_search_ && scratch != nullptr && !retraces_best) shortener_.shorten(ant, scratch->walk);
   }
 
@@ -331,15 +334,17 @@ class Colony {
   // `values`: eta^beta of the edges from `first` on.
   void check_heuristic(std::span<const double> values, const char* hook, std::size_t first) const {
     const std::size_t i = first_invalid(values);
-    if (i != values.size()) reject_value(*p_.heuristic, "heuristic", hook, "heuristic (eta^beta)", values[i], first + i);
+    if (i != values.size())
+      reject_value(*p_.heuristic, "heuristic", hook, "heuristic (eta^beta)", values[i], first + i);
   }
 
   [[noreturn]] void reject_value(const Strategy& plugin, const char* slot, const char* hook, const std::string& field,
                                  double value, std::size_t e) const {
     const NodeId from = g_.source(static_cast<EdgeId>(e));
-    throw InvalidValueError(describe_plugin(plugin, slot) + " wrote " + to_string(ParamValue(value)) + " to the " + field + " of edge " +
-                to_string(g_.cell(from)) + " -> " + to_string(g_.cell(g_.targets[e])) + " in " +
-                describe_hook(hook, context_.iteration) + "; the " + field + " must be finite and >= 0");
+    throw InvalidValueError(describe_plugin(plugin, slot) + " wrote " + to_string(ParamValue(value)) + " to the " +
+                            field + " of edge " + to_string(g_.cell(from)) + " -> " +
+                            to_string(g_.cell(g_.targets[e])) + " in " + describe_hook(hook, context_.iteration) +
+                            "; the " + field + " must be finite and >= 0");
   }
 
   // Brings node n's edges to the current iteration (heuristics that update by node). Ants on
@@ -414,7 +419,8 @@ class Colony {
           total += weights[i] *= factors[i];
         }
         // In the pass that applies them, as for the pheromone: NaN and infinity reach the total.
-        if (negative_factor || !(total <= std::numeric_limits<double>::max())) reject_factors_or_overflow(factors, candidates);
+        if (negative_factor || !(total <= std::numeric_limits<double>::max()))
+          reject_factors_or_overflow(factors, candidates);
       }
       const EdgeId e = candidates[choose(rng, n, weights, total)];
       const NodeId next = targets[e];
@@ -441,14 +447,14 @@ class Colony {
   [[noreturn]] void reject_factors_or_overflow(std::span<const double> factors, const EdgeId* candidates) const {
     const std::size_t i = first_invalid(factors);
     if (i != factors.size())
-      reject_value(*p_.heuristic, "heuristic", "step_factors()", "step factor", factors[i], static_cast<std::size_t>(candidates[i]));
+      reject_value(*p_.heuristic, "heuristic", "step_factors()", "step factor", factors[i],
+                   static_cast<std::size_t>(candidates[i]));
     overflowed();
   }
 
   // Pseudo-random proportional rule: with probability q0 the best candidate, else the roulette.
   int choose(Rng& rng, int n, const double* weights, double total) const {
-    if (s_.q0 > 0.0 && rng.uniform() < s_.q0)
-      return static_cast<int>(std::max_element(weights, weights + n) - weights);
+    if (s_.q0 > 0.0 && rng.uniform() < s_.q0) return static_cast<int>(std::max_element(weights, weights + n) - weights);
     if (!(total > 0.0)) return static_cast<int>(rng.below(n));  // every weight underflowed to 0
     return static_cast<int>(roulette(rng, {weights, static_cast<std::size_t>(n)}, total));
   }
@@ -555,7 +561,8 @@ std::uint64_t construct_pair(const Graph& g, const Colony& forward, const Colony
 // numbers its walks through the whole run instead, so that its result depends on the walks
 // alone, not on how they are split into iterations.
 Rng walk_stream(const ColonySettings& s, int it, std::uint64_t k, std::uint64_t walks_per_iteration) {
-  if (s.null_model == NullModel::restarts) return Rng::stream(s.seed, 0, static_cast<std::uint64_t>(it) * walks_per_iteration + k);
+  if (s.null_model == NullModel::restarts)
+    return Rng::stream(s.seed, 0, static_cast<std::uint64_t>(it) * walks_per_iteration + k);
   return Rng::stream(s.seed, static_cast<std::uint64_t>(it), k);
 }
 
@@ -589,7 +596,8 @@ ColonyResult iterate(const ColonySettings& s, Clock::time_point started, std::sp
     result.best_so_far.push_back(result.length);
     result.arrived.push_back(arrived);
     result.iterations = it + 1;
-    clock.record(result, static_cast<std::uint64_t>(result.iterations) * static_cast<std::uint64_t>(s.ants) * colonies.size());
+    clock.record(result,
+                 static_cast<std::uint64_t>(result.iterations) * static_cast<std::uint64_t>(s.ants) * colonies.size());
 
     if (s.stagnation > 0 && it + 1 - last_improvement >= s.stagnation) {
       result.stopped_by = "stagnation";
@@ -672,7 +680,6 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const Pipeline&
 
 }  // namespace
 
-
 ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
                         const ColonySettings& settings, const Pipeline* backward) {
   check_inputs(graph, start, goal, pipeline, settings);
@@ -707,15 +714,15 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pip
     repeat.time_limit = 0.0;
     try {
       run(repeat, true);
-    } catch (const PheromoneFoundBad&) {
-    }
+    } catch (const PheromoneFoundBad&) {}
     const NodeId from = graph.source(static_cast<EdgeId>(found.edge));
-    throw InvalidValueError("the pheromone of edge " + to_string(graph.cell(from)) + " -> " +
-                to_string(graph.cell(graph.targets[found.edge])) + " was " + to_string(ParamValue(found.value)) + " " +
-                found.where + " in iteration " + std::to_string(found.iteration) +
-                " (0-based, as Context::iteration), but not when the run was repeated with a check after every hook: "
-                "the init, update or deadlock plugin is not deterministic (aco-plugin-check tells which); it must be "
-                "finite and >= 0");
+    throw InvalidValueError(
+        "the pheromone of edge " + to_string(graph.cell(from)) + " -> " +
+        to_string(graph.cell(graph.targets[found.edge])) + " was " + to_string(ParamValue(found.value)) + " " +
+        found.where + " in iteration " + std::to_string(found.iteration) +
+        " (0-based, as Context::iteration), but not when the run was repeated with a check after every hook: "
+        "the init, update or deadlock plugin is not deterministic (aco-plugin-check tells which); it must be "
+        "finite and >= 0");
   }
 }
 

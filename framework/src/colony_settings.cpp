@@ -27,17 +27,19 @@ const SettingsTable<ColonySettings>& colony_table() {
       choice("search", &S::bidirectional, {"single", "bidirectional"}, {false, true},
              "single = one colony from start to goal; bidirectional = two colonies meeting halfway (paper 000)"),
       field("fill-dead-ends", &S::fill_dead_ends, "",
-            "forbid, before the first iteration, every cell that lies on no loop-free start-goal path (dead-end filling)"),
+            "forbid, before the first iteration, every cell that lies on no loop-free start-goal path (dead-end "
+            "filling)"),
       field("local-search", &S::local_search, "none,loops,straighten",
             "shorten each arrived ant's walk before the update: cut its loops, or also straighten stretches of it"),
       field("local-search-window", &S::local_search_window, "2:4096",
             "longest stretch of a walk, in nodes, that straighten replaces by one straight segment"),
       field("walk-limit", &S::walk_limit, "0:1e6",
             "an ant dies after this many times as many moves as the best path so far has steps (0 = no limit)"),
-      choice("null-model", &S::null_model, {"none", "no-learning", "restarts"},
-             {NullModel::none, NullModel::no_learning, NullModel::restarts},
-             "run a null model of the pipeline instead (docs/learning.md): no-learning = the pheromone ignored and never "
-             "updated; restarts = the same number of walks as independent one-iteration runs"),
+      choice(
+          "null-model", &S::null_model, {"none", "no-learning", "restarts"},
+          {NullModel::none, NullModel::no_learning, NullModel::restarts},
+          "run a null model of the pipeline instead (docs/learning.md): no-learning = the pheromone ignored and never "
+          "updated; restarts = the same number of walks as independent one-iteration runs"),
   });
   return table;
 }

@@ -32,7 +32,8 @@ std::string where(const PluginCall& call) { return call.hook ? " in " + describe
 
 void check_name(const PluginCall& call, std::string_view name, const char* function) {
   if (const std::string problem = figure_name_problem(name); !problem.empty())
-    reject(call, std::string("called Context::") + function + "() with the figure name '" + std::string(name) + "'", problem);
+    reject(call, std::string("called Context::") + function + "() with the figure name '" + std::string(name) + "'",
+           problem);
 }
 
 // One count of one plugin, as one thread added it up.

@@ -62,7 +62,8 @@ std::string describe(const GraphOptions& options) {
 constexpr std::array<std::int8_t, 25> kMoveIndex = [] {
   std::array<std::int8_t, 25> index{};
   index.fill(-1);
-  for (std::size_t k = 0; k < kMoves.size(); ++k) index[(kMoves[k].dx + 2) * 5 + kMoves[k].dy + 2] = static_cast<std::int8_t>(k);
+  for (std::size_t k = 0; k < kMoves.size(); ++k)
+    index[(kMoves[k].dx + 2) * 5 + kMoves[k].dy + 2] = static_cast<std::int8_t>(k);
   return index;
 }();
 
@@ -88,8 +89,8 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   // A knight move needs room: without any, a "16-neighbourhood" would silently be the 8 one.
   const bool knight_fits = std::min(g.width, g.height) >= 2 && std::max(g.width, g.height) >= 3;
   if (options.neighbourhood == Neighbourhood::sixteen && !knight_fits)
-    throw Error("16-neighbourhood needs a map at least 3 cells long in one direction and 2 in the other; " + map.name() +
-                " is " + std::to_string(g.width) + "x" + std::to_string(g.height));
+    throw Error("16-neighbourhood needs a map at least 3 cells long in one direction and 2 in the other; " +
+                map.name() + " is " + std::to_string(g.width) + "x" + std::to_string(g.height));
   const int moves = static_cast<int>(options.neighbourhood);
   check_planning_memory(g.width, g.height, options.neighbourhood, map.name());
   // Node and edge ids are 32-bit: a map with more cells or possible edges than that (reachable
@@ -198,9 +199,12 @@ bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
     // With one direction exhausted the other comes first; otherwise both are strictly inside
     // the segment and the cross-multiplied comparison is valid (adx, ady > 0).
     std::int64_t order = 0;  // < 0: column boundary first, > 0: row boundary first, 0: vertex
-    if (iy == ady) order = -1;
-    else if (ix == adx) order = 1;
-    else order = (2 * ix + 1) * ady - (2 * iy + 1) * adx;
+    if (iy == ady)
+      order = -1;
+    else if (ix == adx)
+      order = 1;
+    else
+      order = (2 * ix + 1) * ady - (2 * iy + 1) * adx;
     if (order < 0) {
       c.x += sx;
       ++ix;

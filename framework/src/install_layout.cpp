@@ -11,7 +11,8 @@ const InstallLayout& install_layout() {
     const fs::path library = boost::dll::this_line_location(ec);  // this libaco file
     if (ec) return InstallLayout{};  // nowhere to look: no bundled plugins, no bundled data
     std::error_code fs_ec;
-    if (fs::equivalent(library.parent_path(), ACO_BUILD_LIBRARY_DIR, fs_ec)) return InstallLayout{false, ACO_BUILD_PLUGIN_DIR, ACO_SOURCE_DATA_DIR};
+    if (fs::equivalent(library.parent_path(), ACO_BUILD_LIBRARY_DIR, fs_ec))
+      return InstallLayout{false, ACO_BUILD_PLUGIN_DIR, ACO_SOURCE_DATA_DIR};
     // Loaded through an RPATH such as $ORIGIN/../lib: <prefix>/bin/../lib/../share reads better
     // as <prefix>/share.
     const fs::path libdir = library.parent_path();

@@ -25,7 +25,8 @@ WalkShortener::WalkShortener(const Graph& graph, const std::vector<std::uint8_t>
   const std::span<const Move> all = moves(graph.options.neighbourhood);
   for (std::size_t m = 0; m < all.size(); ++m) {
     inverse_length_.push_back(1.0 / std::hypot(all[m].dx, all[m].dy));
-    if (std::abs(all[m].dx) <= 1 && std::abs(all[m].dy) <= 1) unit_move_[(all[m].dy + 1) * 3 + all[m].dx + 1] = static_cast<int>(m);
+    if (std::abs(all[m].dx) <= 1 && std::abs(all[m].dy) <= 1)
+      unit_move_[(all[m].dy + 1) * 3 + all[m].dx + 1] = static_cast<int>(m);
   }
   eight_ = graph.options.neighbourhood == Neighbourhood::eight;
   inverse_diagonal_ = 1.0 / std::hypot(1, 1);
@@ -84,7 +85,9 @@ bool WalkShortener::straight_segment(NodeId from, NodeId to, std::vector<NodeId>
       const int ax = std::abs(dx), ay = std::abs(dy);
       const int sx = (dx > 0) - (dx < 0), sy = (dy > 0) - (dy < 0);
       const bool diagonal = (ax + ay) * inverse_diagonal_ > std::max(ax, ay);
-      best = diagonal ? unit_move_[(sy + 1) * 3 + sx + 1] : ax >= ay ? unit_move_[4 + sx] : unit_move_[(sy + 1) * 3 + 1];
+      best = diagonal   ? unit_move_[(sy + 1) * 3 + sx + 1]
+             : ax >= ay ? unit_move_[4 + sx]
+                        : unit_move_[(sy + 1) * 3 + 1];
     } else {
       double best_alignment = 0.0;
       for (std::size_t m = 0; m < all.size(); ++m) {
@@ -142,7 +145,8 @@ void WalkShortener::straighten(std::vector<NodeId>& nodes, WalkScratch& s) const
         continue;
       }
     }
-    out.insert(out.end(), nodes.begin() + static_cast<std::ptrdiff_t>(k) + 1, nodes.begin() + static_cast<std::ptrdiff_t>(good) + 1);
+    out.insert(out.end(), nodes.begin() + static_cast<std::ptrdiff_t>(k) + 1,
+               nodes.begin() + static_cast<std::ptrdiff_t>(good) + 1);
     k = good;
   }
   // A straight segment may cross the rest of the walk: cut the loops that made.

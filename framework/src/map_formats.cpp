@@ -15,14 +15,16 @@ bool ends_with(const std::string& text, const std::string& ending) {
 
 bool claims(const std::vector<std::string>& extensions, const std::filesystem::path& file) {
   const std::string name = file.filename().string();
-  return std::any_of(extensions.begin(), extensions.end(), [&](const std::string& e) { return !e.empty() && ends_with(name, e); });
+  return std::any_of(extensions.begin(), extensions.end(),
+                     [&](const std::string& e) { return !e.empty() && ends_with(name, e); });
 }
 
 std::unique_ptr<Map> read_matrix_file(const std::filesystem::path& file, const TerrainOptions&) {
   return std::make_unique<OccupancyGrid>(load_matrix_map(file));
 }
 
-std::unique_ptr<MapReader> make_reader(PluginRegistry& registry, const std::string& name, const ParameterValues& parameters) {
+std::unique_ptr<MapReader> make_reader(PluginRegistry& registry, const std::string& name,
+                                       const ParameterValues& parameters) {
   return registry.create<MapReader>("map", name, parameters);
 }
 
@@ -34,19 +36,27 @@ ParameterValues defaults_of(PluginRegistry& registry, const std::string& name) {
 
 const std::vector<BuiltinMapFormat>& builtin_map_formats() {
   static const std::vector<BuiltinMapFormat> formats = {
-      {"movingai", {".map"}, "Moving AI .map grid ('type octile', '@' blocked)",
+      {"movingai",
+       {".map"},
+       "Moving AI .map grid ('type octile', '@' blocked)",
        [](const std::filesystem::path& file, const TerrainOptions&) -> std::unique_ptr<Map> {
          return std::make_unique<OccupancyGrid>(load_movingai_map(file));
        }},
-      {"ros", {".yaml", ".yml"}, "ROS map_server YAML and its PGM image (unknown cells blocked)",
+      {"ros",
+       {".yaml", ".yml"},
+       "ROS map_server YAML and its PGM image (unknown cells blocked)",
        [](const std::filesystem::path& file, const TerrainOptions&) -> std::unique_ptr<Map> {
          return std::make_unique<OccupancyGrid>(load_ros_map(file));
        }},
-      {"esri_ascii", {".asc"}, "ESRI ASCII grid of heights (terrain; max-slope applies)",
+      {"esri_ascii",
+       {".asc"},
+       "ESRI ASCII grid of heights (terrain; max-slope applies)",
        [](const std::filesystem::path& file, const TerrainOptions& terrain) -> std::unique_ptr<Map> {
          return std::make_unique<TerrainMap>(load_esri_ascii(file, terrain));
        }},
-      {"height_pgm", {".pgm"}, "PGM image of heights (terrain; height-scale, cell-size, max-slope apply)",
+      {"height_pgm",
+       {".pgm"},
+       "PGM image of heights (terrain; height-scale, cell-size, max-slope apply)",
        [](const std::filesystem::path& file, const TerrainOptions& terrain) -> std::unique_ptr<Map> {
          return std::make_unique<TerrainMap>(load_height_pgm(file, terrain));
        }},
@@ -75,7 +85,8 @@ std::string map_format_of(const std::filesystem::path& file, const std::string& 
     std::string message = "unknown map format '" + format + "' (formats:";
     for (const auto& name : map_format_names(registry)) message += " " + name;
     message += "; a map plugin adds one: --list-plugins shows them as map/NAME)";
-    if (const auto near = nearest(format, map_format_names(registry)); !near.empty()) message += "; did you mean '" + near + "'?";
+    if (const auto near = nearest(format, map_format_names(registry)); !near.empty())
+      message += "; did you mean '" + near + "'?";
     throw Error(message);
   }
   std::vector<std::string> claimants;  // "the built-in format movingai", "plugin map/x (FILE)"
@@ -96,8 +107,8 @@ std::string map_format_of(const std::filesystem::path& file, const std::string& 
   return chosen;
 }
 
-std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain, PluginRegistry& registry,
-                              const std::string& format, const ParameterValues& parameters) {
+std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain,
+                              PluginRegistry& registry, const std::string& format, const ParameterValues& parameters) {
   const std::string name = map_format_of(file, format, registry);
   if (name.empty()) {
     try {
@@ -105,12 +116,14 @@ std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOp
     } catch (const Error& e) {
       const std::string ending = file.extension().string();
       if (ending.empty() || ending == ".txt") throw;
-      throw Error(std::string(e.what()) + " (read as a 0/1 matrix: no built-in format or map plugin claims '" + ending +
-                  "'; a map plugin reads other formats: --list-plugins lists them as map/NAME, --map-format NAME chooses one)");
+      throw Error(
+          std::string(e.what()) + " (read as a 0/1 matrix: no built-in format or map plugin claims '" + ending +
+          "'; a map plugin reads other formats: --list-plugins lists them as map/NAME, --map-format NAME chooses one)");
     }
   }
   if (const BuiltinMapFormat* builtin = find_builtin_map_format(name)) return builtin->read(file, terrain);
-  auto map = make_reader(registry, name, parameters.all().empty() ? defaults_of(registry, name) : parameters)->read(file, terrain);
+  auto map = make_reader(registry, name, parameters.all().empty() ? defaults_of(registry, name) : parameters)
+                 ->read(file, terrain);
   if (!map) throw Error("plugin map/" + name + " read " + file.string() + " but returned no map");
   return map;
 }

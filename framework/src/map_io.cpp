@@ -30,7 +30,8 @@ class LineReader {
     int c = buffer.sbumpc();
     if (c == std::char_traits<char>::eof()) return false;
     for (; c != std::char_traits<char>::eof() && c != '\n'; c = buffer.sbumpc()) {
-      if (line.size() >= kMaxLine) fail_at(number_ + 1, "a line longer than " + std::to_string(kMaxLine >> 20) + " MiB: not a map file");
+      if (line.size() >= kMaxLine)
+        fail_at(number_ + 1, "a line longer than " + std::to_string(kMaxLine >> 20) + " MiB: not a map file");
       line.push_back(static_cast<char>(c));
     }
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -112,14 +113,17 @@ OccupancyGrid read_movingai_map(std::istream& in, const std::string& name) {
     const auto words = split_whitespace(line);
     if (words.empty()) continue;
     if (words[0] == "map" && words.size() == 1) break;
-    if (words.size() != 2) reader.fail("bad header line '" + line + "': expected 'type octile', 'height H', 'width W' or 'map'");
+    if (words.size() != 2)
+      reader.fail("bad header line '" + line + "': expected 'type octile', 'height H', 'width W' or 'map'");
     if (words[0] == "type") {
       if (words[1] != "octile") reader.fail("map type '" + words[1] + "' is not supported (expected 'type octile')");
       typed = true;
-    }
-    else if (words[0] == "height") height = parse_dimension(reader, words[1], "height");
-    else if (words[0] == "width") width = parse_dimension(reader, words[1], "width");
-    else reader.fail("bad header line '" + line + "': expected 'type octile', 'height H', 'width W' or 'map'");
+    } else if (words[0] == "height")
+      height = parse_dimension(reader, words[1], "height");
+    else if (words[0] == "width")
+      width = parse_dimension(reader, words[1], "width");
+    else
+      reader.fail("bad header line '" + line + "': expected 'type octile', 'height H', 'width W' or 'map'");
   }
   if (!typed || width == 0 || height == 0) reader.fail("header lacks a 'type', 'height' or 'width' line before 'map'");
   check_memory(width, height, name);
@@ -132,8 +136,16 @@ OccupancyGrid read_movingai_map(std::istream& in, const std::string& name) {
                   std::to_string(width));
     for (int x = 0; x < width; ++x) {
       switch (line[x]) {
-        case '.': case 'G': case 'S': break;
-        case '@': case 'O': case 'T': case 'W': grid.set_blocked({x, y}, true); break;
+        case '.':
+        case 'G':
+        case 'S':
+          break;
+        case '@':
+        case 'O':
+        case 'T':
+        case 'W':
+          grid.set_blocked({x, y}, true);
+          break;
         default:
           reader.fail("unknown character '" + std::string(1, line[x]) + "' at column " + std::to_string(x) +
                       " (passable: . G S; blocked: @ O T W)");
@@ -209,7 +221,8 @@ GreyImage read_pgm(std::istream& in, const std::string& name) {
     return t;
   };
   const std::string magic = token();
-  if (magic != "P5" && magic != "P2") throw Error(name + ": not a PGM image (magic '" + magic + "', expected P5 or P2)");
+  if (magic != "P5" && magic != "P2")
+    throw Error(name + ": not a PGM image (magic '" + magic + "', expected P5 or P2)");
   GreyImage image;
   const std::string w = token(), h = token(), m = token();
   if (!parse_number(w, image.width) || !parse_number(h, image.height) || !parse_number(m, image.maxval) ||
@@ -230,7 +243,8 @@ GreyImage read_pgm(std::istream& in, const std::string& name) {
   } else {
     for (std::size_t i = 0; i < count; ++i) {
       const std::string t = token();
-      if (t.empty()) throw Error(name + ": truncated PGM data (" + std::to_string(i) + " of " + std::to_string(count) + " values)");
+      if (t.empty())
+        throw Error(name + ": truncated PGM data (" + std::to_string(i) + " of " + std::to_string(count) + " values)");
       if (!parse_number(t, image.pixels[i])) throw Error(name + ": PGM value '" + t + "' is not a number");
     }
   }
@@ -261,7 +275,8 @@ OccupancyGrid load_ros_map(const std::filesystem::path& yaml_file) {
     try {
       return node.as<T>();
     } catch (const YAML::Exception&) {
-      throw Error(name + ":" + std::to_string(node.Mark().line + 1) + ": key '" + key + "' has a value of the wrong type");
+      throw Error(name + ":" + std::to_string(node.Mark().line + 1) + ": key '" + key +
+                  "' has a value of the wrong type");
     }
   };
   const auto image_name = get("image", std::string(), true);
@@ -294,8 +309,8 @@ OccupancyGrid load_ros_map(const std::filesystem::path& yaml_file) {
       // value as an occupancy percentage and ignores negate; a planner still has to decide
       // free or not, so the free threshold applies to it too (values above 100 are unknown).
       const double p = mode == "raw" ? v / 100.0
-                       : negate     ? double(v) / image.maxval
-                                    : double(image.maxval - v) / image.maxval;
+                       : negate      ? double(v) / image.maxval
+                                     : double(image.maxval - v) / image.maxval;
       grid.set_blocked({x, y}, !(p < free));
     }
   }
@@ -304,7 +319,8 @@ OccupancyGrid load_ros_map(const std::filesystem::path& yaml_file) {
 
 TerrainMap read_esri_ascii(std::istream& in, const std::string& name, const TerrainOptions& options) {
   LineReader reader(in, name);
-  static const char* const kKeys = "ncols, nrows, xllcorner or xllcenter, yllcorner or yllcenter, cellsize, NODATA_value";
+  static const char* const kKeys =
+      "ncols, nrows, xllcorner or xllcenter, yllcorner or yllcenter, cellsize, NODATA_value";
   // Header: "KEY VALUE" lines until the first line that starts like a number.
   std::map<std::string, double> header;  // lower-case key -> value
   std::string line;
@@ -329,7 +345,8 @@ TerrainMap read_esri_ascii(std::istream& in, const std::string& name, const Terr
     if (!header.emplace(key, value).second) reader.fail("header key '" + words[0] + "' is given twice");
   }
   for (const char* key : {"ncols", "nrows", "cellsize"})
-    if (!header.count(key)) reader.fail(std::string("header lacks '") + key + "' (an ESRI ASCII grid needs " + kKeys + ")");
+    if (!header.count(key))
+      reader.fail(std::string("header lacks '") + key + "' (an ESRI ASCII grid needs " + kKeys + ")");
   for (const char* axis : {"x", "y"}) {
     const std::string corner = std::string(axis) + "llcorner", centre = std::string(axis) + "llcenter";
     if (header.count(corner) == header.count(centre))
@@ -404,14 +421,16 @@ std::vector<Scenario> read_scenarios(std::istream& in, const std::string& name) 
     for (std::string w; std::getline(fields, w, '\t');) f.push_back(w);
     if (f.size() != 9) f = split_whitespace(line);
     if (f.size() != 9)
-      reader.fail("expected 9 fields (bucket, map, width, height, start x, start y, goal x, goal y, optimal length), found " +
-                  std::to_string(f.size()));
+      reader.fail(
+          "expected 9 fields (bucket, map, width, height, start x, start y, goal x, goal y, optimal length), found " +
+          std::to_string(f.size()));
     Scenario s;
     s.map_path = f[1];
     const bool ok = parse_number(f[0], s.bucket) && parse_number(f[2], s.width) && parse_number(f[3], s.height) &&
                     parse_number(f[4], s.start.x) && parse_number(f[5], s.start.y) && parse_number(f[6], s.goal.x) &&
                     parse_number(f[7], s.goal.y) && parse_number(f[8], s.optimal_length);
-    if (!ok || s.width <= 0 || s.height <= 0 || s.optimal_length < 0) reader.fail("malformed scenario line '" + line + "'");
+    if (!ok || s.width <= 0 || s.height <= 0 || s.optimal_length < 0)
+      reader.fail("malformed scenario line '" + line + "'");
     scenarios.push_back(s);
   }
   return scenarios;

@@ -49,7 +49,8 @@ std::uint64_t physical_memory() {
 }
 
 std::string limit_origin() {
-  return g_limit.load() ? "set by --max-memory" : "the default, 3/4 of the available memory; change it with --max-memory";
+  return g_limit.load() ? "set by --max-memory"
+                        : "the default, 3/4 of the available memory; change it with --max-memory";
 }
 
 }  // namespace
@@ -77,7 +78,8 @@ std::uint64_t memory_limit() {
   return set ? set : default_memory_limit();
 }
 
-void check_planning_memory(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood, const std::string& name) {
+void check_planning_memory(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood,
+                           const std::string& name) {
   const std::uint64_t estimate = planning_memory_estimate(width, height, neighbourhood);
   const std::uint64_t limit = memory_limit();
   if (estimate <= limit) return;
@@ -89,7 +91,8 @@ void check_planning_memory(std::int64_t width, std::int64_t height, Neighbourhoo
 
 std::uint64_t parse_memory_size(const std::string& text, const std::string& option) {
   const auto fail = [&](const std::string& why) -> std::uint64_t {
-    throw Error(option + ": '" + text + "' " + why + " (expected bytes or a whole number with K, M, G or T, e.g. 512M, 4G)");
+    throw Error(option + ": '" + text + "' " + why +
+                " (expected bytes or a whole number with K, M, G or T, e.g. 512M, 4G)");
   };
   std::uint64_t number = 0;
   const char* end = text.data() + text.size();

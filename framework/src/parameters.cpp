@@ -44,7 +44,8 @@ std::string format_number(double v) {
 }
 
 std::string describe_range(const NumericRange& r) {
-  return std::string(r.low_open ? "(" : "[") + format_number(r.low) + ", " + format_number(r.high) + (r.high_open ? ")" : "]");
+  return std::string(r.low_open ? "(" : "[") + format_number(r.low) + ", " + format_number(r.high) +
+         (r.high_open ? ")" : "]");
 }
 
 std::size_t edit_distance(const std::string& a, const std::string& b) {
@@ -66,11 +67,16 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 
 const char* to_string(ParamType type) {
   switch (type) {
-    case ParamType::integer: return "int";
-    case ParamType::real: return "real";
-    case ParamType::boolean: return "bool";
-    case ParamType::categorical: return "categorical";
-    case ParamType::text: return "text";
+    case ParamType::integer:
+      return "int";
+    case ParamType::real:
+      return "real";
+    case ParamType::boolean:
+      return "bool";
+    case ParamType::categorical:
+      return "categorical";
+    case ParamType::text:
+      return "text";
   }
   return "?";
 }
@@ -85,10 +91,14 @@ std::string to_string(const ParamValue& value) {
   return std::visit(
       [](const auto& v) -> std::string {
         using T = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
-        else if constexpr (std::is_same_v<T, double>) return format_number(v);
-        else if constexpr (std::is_same_v<T, std::string>) return v;
-        else return std::to_string(v);
+        if constexpr (std::is_same_v<T, bool>)
+          return v ? "true" : "false";
+        else if constexpr (std::is_same_v<T, double>)
+          return format_number(v);
+        else if constexpr (std::is_same_v<T, std::string>)
+          return v;
+        else
+          return std::to_string(v);
       },
       value);
 }
@@ -106,7 +116,9 @@ static const T& typed(const ParamValue& v, const std::string& name, const char* 
   throw Error("parameter '" + name + "' is not of type " + type);
 }
 
-std::int64_t ParameterValues::integer(const std::string& name) const { return typed<std::int64_t>(at(name), name, "int"); }
+std::int64_t ParameterValues::integer(const std::string& name) const {
+  return typed<std::int64_t>(at(name), name, "int");
+}
 double ParameterValues::real(const std::string& name) const { return typed<double>(at(name), name, "real"); }
 bool ParameterValues::boolean(const std::string& name) const { return typed<bool>(at(name), name, "bool"); }
 const std::string& ParameterValues::text(const std::string& name) const {
@@ -131,7 +143,8 @@ std::optional<NumericRange> numeric_range(const ParamSpec& spec) {
   const auto parts = split(text, ':');
   double step = 0;
   const bool ok = (parts.size() == 2 || parts.size() == 3) && parse_real(parts.front(), r.low) &&
-                  parse_real(parts.back(), r.high) && (parts.size() == 2 || parse_real(parts[1], step)) && r.low <= r.high;
+                  parse_real(parts.back(), r.high) && (parts.size() == 2 || parse_real(parts[1], step)) &&
+                  r.low <= r.high;
   if (!ok) throw Error(std::string("parameter '") + spec.name + "': malformed range '" + spec.range + "'");
   if (parts.size() == 3) r.step = step;
   return r;
@@ -151,7 +164,8 @@ ParamValue parse_value(const ParamSpec& spec, const std::string& text, const std
       if (no.count(text)) return false;
       throw Error(key + ": " + quoted + " is not a boolean (use true or false)");
     }
-    case ParamType::text: return text;
+    case ParamType::text:
+      return text;
     case ParamType::categorical: {
       const auto options = choices(spec);
       if (std::find(options.begin(), options.end(), text) != options.end()) return text;
@@ -205,7 +219,8 @@ ParameterValues resolve(std::span<const ParamSpec> table, const std::map<std::st
     names.push_back(spec.name);
     const auto it = given.find(spec.name);
     try {
-      values.set(spec.name, parse_value(spec, it == given.end() ? spec.default_value : it->second, key_prefix + spec.name));
+      values.set(spec.name,
+                 parse_value(spec, it == given.end() ? spec.default_value : it->second, key_prefix + spec.name));
     } catch (const KeyError&) {
       throw;
     } catch (const Error& e) {
@@ -215,8 +230,10 @@ ParameterValues resolve(std::span<const ParamSpec> table, const std::map<std::st
   for (const auto& [name, text] : given) {
     if (values.contains(name)) continue;
     std::string message = "unknown parameter '" + key_prefix + name + "'";
-    if (const std::string near = nearest(name, names); !near.empty()) message += "; did you mean '" + key_prefix + near + "'?";
-    else if (names.empty()) message += " (this plugin has no parameters)";
+    if (const std::string near = nearest(name, names); !near.empty())
+      message += "; did you mean '" + key_prefix + near + "'?";
+    else if (names.empty())
+      message += " (this plugin has no parameters)";
     else {
       message += " (valid: ";
       for (std::size_t i = 0; i < names.size(); ++i) message += (i ? ", " : "") + key_prefix + names[i];

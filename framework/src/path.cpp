@@ -57,7 +57,8 @@ bool on_free_cell(const Graph& graph, const Eigen::Vector3d& point) {
   // tolerance takes in the rounding of a position divided back by a terrain's cell size.
   constexpr double kTolerance = 1e-9;
   const auto cells = [](double v) {
-    return std::pair{static_cast<int>(std::ceil(v - 0.5 - kTolerance)), static_cast<int>(std::floor(v + 0.5 + kTolerance))};
+    return std::pair{static_cast<int>(std::ceil(v - 0.5 - kTolerance)),
+                     static_cast<int>(std::floor(v + 0.5 + kTolerance))};
   };
   const auto [x_low, x_high] = cells(x);
   const auto [y_low, y_high] = cells(y);
@@ -70,17 +71,17 @@ bool on_free_cell(const Graph& graph, const Eigen::Vector3d& point) {
 std::string waypoint_problem(const Graph& graph, NodeId start, NodeId goal, std::span<const Eigen::Vector3d> points) {
   if (points.empty()) return "no waypoints";
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::string which = "waypoint " + std::to_string(i) + " (0-based) of " + std::to_string(points.size()) + ", " +
-                              to_text(points[i]) + ", ";
+    const std::string which = "waypoint " + std::to_string(i) + " (0-based) of " + std::to_string(points.size()) +
+                              ", " + to_text(points[i]) + ", ";
     if (!points[i].allFinite()) return which + "is not finite";
     if (!on_free_cell(graph, points[i])) return which + "lies on no free cell";
   }
   if (points.front() != graph.positions[start])
-    return "the first waypoint, " + to_text(points.front()) + ", is not the start " + to_string(graph.cell(start)) + " at " +
-           to_text(graph.positions[start]);
+    return "the first waypoint, " + to_text(points.front()) + ", is not the start " + to_string(graph.cell(start)) +
+           " at " + to_text(graph.positions[start]);
   if (points.back() != graph.positions[goal])
-    return "the last waypoint, " + to_text(points.back()) + ", is not the goal " + to_string(graph.cell(goal)) + " at " +
-           to_text(graph.positions[goal]);
+    return "the last waypoint, " + to_text(points.back()) + ", is not the goal " + to_string(graph.cell(goal)) +
+           " at " + to_text(graph.positions[goal]);
   return "";
 }
 

@@ -14,9 +14,10 @@ constexpr std::size_t kGrain = 1 << 15;
 
 template <class Body>
 void for_each_chunk(std::span<double> tau, Body body) {
-  aco::parallel_for(tbb::blocked_range<std::size_t>(0, tau.size(), kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t e = r.begin(); e != r.end(); ++e) body(tau[e]);
-  });
+  aco::parallel_for(tbb::blocked_range<std::size_t>(0, tau.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t e = r.begin(); e != r.end(); ++e) body(tau[e]);
+                    });
 }
 
 }  // namespace

@@ -29,7 +29,8 @@ void append_number(char* out, std::size_t size, std::size_t& length, long value)
   int n = 0;
   const bool negative = value < 0;
   unsigned long v = negative ? 0ul - static_cast<unsigned long>(value) : static_cast<unsigned long>(value);
-  do digits[n++] = static_cast<char>('0' + v % 10); while ((v /= 10) != 0);
+  do digits[n++] = static_cast<char>('0' + v % 10);
+  while ((v /= 10) != 0);
   if (negative) digits[n++] = '-';
   char text[24];
   for (int i = 0; i < n; ++i) text[i] = digits[n - 1 - i];
@@ -90,7 +91,8 @@ std::string describe_current_exception() {
     const std::type_info* type = abi::__cxa_current_exception_type();
     if (!type) return "an exception of unknown type";
     int status = 0;
-    std::unique_ptr<char, decltype(&std::free)> name(abi::__cxa_demangle(type->name(), nullptr, nullptr, &status), std::free);
+    std::unique_ptr<char, decltype(&std::free)> name(abi::__cxa_demangle(type->name(), nullptr, nullptr, &status),
+                                                     std::free);
     return std::string("an exception of type ") + (status == 0 && name ? name.get() : type->name());
   }
 }

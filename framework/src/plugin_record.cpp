@@ -31,7 +31,9 @@ class ElfFile {
         header.e_ident[EI_DATA] != (std::endian::native == std::endian::little ? ELFDATA2LSB : ELFDATA2MSB))
       fail("is an ELF file for another word size or byte order than this machine's");
     if (header.e_shentsize != sizeof(ElfW(Shdr))) fail("has malformed section headers");
-    const auto section_header = [&](std::uint64_t i) { return read<ElfW(Shdr)>(header.e_shoff + i * sizeof(ElfW(Shdr))); };
+    const auto section_header = [&](std::uint64_t i) {
+      return read<ElfW(Shdr)>(header.e_shoff + i * sizeof(ElfW(Shdr)));
+    };
     if (header.e_shstrndx >= header.e_shnum) fail("has no section name table");
     const std::string names = bytes(section_header(header.e_shstrndx));
     for (std::uint64_t i = 0; i < header.e_shnum; ++i) {
@@ -88,7 +90,8 @@ std::vector<PluginRecord> read_plugin_records(const fs::path& file) {
     at = data.find_first_not_of('\0', at);  // padding the linker put between records
     if (at == std::string::npos) break;
     if (field() != ACO_PLUGIN_RECORD_MAGIC)
-      throw Error(file.string() + ": section " ACO_PLUGIN_RECORD_SECTION " holds something that is not a plugin record");
+      throw Error(file.string() + ": section " ACO_PLUGIN_RECORD_SECTION
+                                  " holds something that is not a plugin record");
     PluginRecord r;
     r.abi = field();
     // A record of another ABI version may have other fields: only the first two are read.

@@ -32,7 +32,7 @@ struct Loaded {
   std::mutex mutex;
   std::vector<boost::dll::shared_library> libraries;
   std::map<std::string, const PluginDescriptor*> descriptors;  // by "file|alias"
-  std::map<std::string, std::string> sha256;                   // by file
+  std::map<std::string, std::string> sha256;  // by file
 };
 Loaded& loaded() {
   static Loaded* instance = new Loaded;
@@ -102,7 +102,8 @@ std::string crash_while_loading(const fs::path& file) {
     if (errno != EINTR) return {};
   if (!WIFSIGNALED(status)) return {};
   return std::string("crashed while loading (signal ") + std::to_string(WTERMSIG(status)) + ", " +
-         strsignal(WTERMSIG(status)) + ", in a child process that tried it first): the library is corrupt or "
+         strsignal(WTERMSIG(status)) +
+         ", in a child process that tried it first): the library is corrupt or "
          "was not built for this machine; rebuild or remove it";
 }
 
@@ -139,8 +140,9 @@ PluginRegistry::PluginRegistry(std::vector<fs::path> search_dirs) : dirs_(std::m
     std::sort(libraries.begin(), libraries.end());
     for (const auto& file : libraries)
       for (auto& plugin : exported_plugins(file)) {
-        const auto first = std::find_if(files_.begin(), files_.end(),
-                                        [&](const PluginFile& p) { return p.kind == plugin.kind && p.name == plugin.name; });
+        const auto first = std::find_if(files_.begin(), files_.end(), [&](const PluginFile& p) {
+          return p.kind == plugin.kind && p.name == plugin.name;
+        });
         if (first == files_.end())
           files_.push_back(std::move(plugin));
         else

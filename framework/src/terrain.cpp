@@ -87,9 +87,12 @@ bool TerrainMap::step_allowed(Cell from, Cell to) const {
 std::string TerrainMap::blocked_reason(Cell c) const {
   if (!contains(c)) return "outside the map";
   switch (reason_[index(c)]) {
-    case Blocked::no: return "";
-    case Blocked::no_data: return "NODATA";
-    case Blocked::too_steep: break;
+    case Blocked::no:
+      return "";
+    case Blocked::no_data:
+      return "NODATA";
+    case Blocked::too_steep:
+      break;
   }
   char text[96];
   std::snprintf(text, sizeof text, "too steep: slope %.1f deg > max %g deg", slope_deg(c), max_slope_deg_);

@@ -86,12 +86,12 @@ class Progress {
     char line[160];
     if (terminal_) {
       const int filled = static_cast<int>(fraction * 30);
-      std::snprintf(line, sizeof line, "\r[%-30s] %zu/%zu %5.1f%%  %.1f trials/s  ETA %s", std::string(filled, '#').c_str(),
-                    done, total, 100 * fraction, rate, clock_text(eta).c_str());
+      std::snprintf(line, sizeof line, "\r[%-30s] %zu/%zu %5.1f%%  %.1f trials/s  ETA %s",
+                    std::string(filled, '#').c_str(), done, total, 100 * fraction, rate, clock_text(eta).c_str());
       std::cerr << line << (done == total ? "\n" : "") << std::flush;
     } else {
-      std::snprintf(line, sizeof line, "acobench: %zu/%zu trials (%.1f%%), %.1f trials/s, ETA %s\n", done, total, 100 * fraction,
-                    rate, clock_text(eta).c_str());
+      std::snprintf(line, sizeof line, "acobench: %zu/%zu trials (%.1f%%), %.1f trials/s, ETA %s\n", done, total,
+                    100 * fraction, rate, clock_text(eta).c_str());
       std::cerr << line;
     }
   }
@@ -150,7 +150,7 @@ std::string counted(std::size_t count, const std::string& noun) {
 // so that a user knows what was started ("4320 trials: 18 configurations x 24 problems x 10
 // repetitions; 0 already in paper003.db, 4320 to run").
 std::function<void(const aco::studies::TrialPlan&)> announce_trials(const aco::studies::Experiment& experiment,
-                                                                const aco::studies::RunOptions& run) {
+                                                                    const aco::studies::RunOptions& run) {
   return [&experiment, &run](const aco::studies::TrialPlan& plan) {
     const std::size_t configurations = plan.configurations + plan.ablation_configurations;
     const std::size_t all = configurations * plan.problems * static_cast<std::size_t>(plan.repetitions);
@@ -158,7 +158,8 @@ std::function<void(const aco::studies::TrialPlan&)> announce_trials(const aco::s
     if (run.shard) std::cout << "shard " << aco::studies::to_string(*run.shard) << ": " << plan.trials << " of the ";
     std::cout << all << " trials: ";
     if (plan.ablation_configurations)
-      std::cout << "(" << plan.configurations << " + " << plan.ablation_configurations << " on the ablation path) configurations";
+      std::cout << "(" << plan.configurations << " + " << plan.ablation_configurations
+                << " on the ablation path) configurations";
     else
       std::cout << counted(plan.configurations, "configuration");
     // The ablation path's stored trials are known as its rounds start (they come after all others).
@@ -172,8 +173,8 @@ std::function<void(const aco::studies::TrialPlan&)> announce_trials(const aco::s
 }
 
 // The run's verdict: 0, or aco::kExitTrialsFailed when a trial failed and failures are not allowed.
-int print_summary(const aco::studies::RunSummary& s, const aco::studies::Experiment& experiment, const aco::studies::RunOptions& run,
-                  bool allow_failures) {
+int print_summary(const aco::studies::RunSummary& s, const aco::studies::Experiment& experiment,
+                  const aco::studies::RunOptions& run, bool allow_failures) {
   const auto& g = s.growth;
   if (g.grew()) {
     std::string added;
@@ -187,10 +188,12 @@ int print_summary(const aco::studies::RunSummary& s, const aco::studies::Experim
   if (!g.dropped_configurations.empty() || !g.dropped_problems.empty())
     std::cout << "acobench: " << run.database.string() << " also holds "
               << quoted_list(g.dropped_configurations.empty() ? g.dropped_problems : g.dropped_configurations)
-              << (g.dropped_configurations.empty() || g.dropped_problems.empty() ? "" : " and " + quoted_list(g.dropped_problems))
+              << (g.dropped_configurations.empty() || g.dropped_problems.empty()
+                      ? ""
+                      : " and " + quoted_list(g.dropped_problems))
               << ", which the experiment file no longer names: their trials are kept (and reported), not run\n";
-  std::cout << "acobench: " << experiment.name << (run.shard ? " shard " + aco::studies::to_string(*run.shard) : "") << ": "
-            << s.trials << " trials, " << s.skipped << " already in " << run.database.string() << ", " << s.ran
+  std::cout << "acobench: " << experiment.name << (run.shard ? " shard " + aco::studies::to_string(*run.shard) : "")
+            << ": " << s.trials << " trials, " << s.skipped << " already in " << run.database.string() << ", " << s.ran
             << " run in " << s.seconds << " s (" << (s.seconds > 0 ? s.ran / s.seconds : 0.0) << " trials/s)\n";
   if (s.ablation_left)
     std::cout << "acobench: the experiment's ablation path is not run by shards: merge the shards (acobench merge), "
@@ -252,16 +255,18 @@ int run(const std::vector<std::string>& args) {
   po::options_description options("acobench run");
   std::string db, shard;
   aco::HostOptions host;
-  options.add_options()("experiment", po::value<std::string>()->required(), "experiment file (YAML)")
-      ("db", po::value(&db), "results database (default: the experiment file's name with .db, in the current folder)")
-      ("shard", po::value(&shard)->value_name("K/N"), "only shard K of N of the trials, into its own database");
+  options.add_options()("experiment", po::value<std::string>()->required(), "experiment file (YAML)")(
+      "db", po::value(&db), "results database (default: the experiment file's name with .db, in the current folder)")(
+      "shard", po::value(&shard)->value_name("K/N"), "only shard K of N of the trials, into its own database");
   host.add_threads(options);
   host.add_plugin_dir_and_max_memory(options);
-  options.add_options()
-      ("trial-timeout", po::value<std::string>()->value_name("SECONDS"), "a trial running longer is stopped and stored as timed out")
-      ("trial-memory", po::value<std::string>()->value_name("SIZE"), "a trial growing its worker's memory by more is stopped and stored as out of memory (default: each thread's share of 3/4 of the memory available at start)")
-      ("in-process", "run the trials on this process's threads, not in worker processes (for a debugger)")
-      ("allow-failures", "exit 0 even when trials failed (else 3)");
+  options.add_options()("trial-timeout", po::value<std::string>()->value_name("SECONDS"),
+                        "a trial running longer is stopped and stored as timed out")(
+      "trial-memory", po::value<std::string>()->value_name("SIZE"),
+      "a trial growing its worker's memory by more is stopped and stored as out of memory (default: each thread's "
+      "share of 3/4 of the memory available at start)")(
+      "in-process", "run the trials on this process's threads, not in worker processes (for a debugger)")(
+      "allow-failures", "exit 0 even when trials failed (else 3)");
   const po::variables_map vm = aco::parse_arguments(args, options, "experiment", 1);
   const int threads = host.threads;
   const std::optional<std::uint64_t> max_memory = host.max_memory_bytes();
@@ -289,8 +294,10 @@ int run(const std::vector<std::string>& args) {
   aco::studies::TrialLimits limits;
   if (experiment.trial_timeout_s) limits.timeout_s = *experiment.trial_timeout_s;
   if (experiment.trial_memory_bytes) limits.memory_bytes = *experiment.trial_memory_bytes;
-  if (vm.count("trial-timeout")) limits.timeout_s = aco::parse_seconds(vm["trial-timeout"].as<std::string>(), "--trial-timeout");
-  if (vm.count("trial-memory")) limits.memory_bytes = aco::parse_memory_size(vm["trial-memory"].as<std::string>(), "--trial-memory");
+  if (vm.count("trial-timeout"))
+    limits.timeout_s = aco::parse_seconds(vm["trial-timeout"].as<std::string>(), "--trial-timeout");
+  if (vm.count("trial-memory"))
+    limits.memory_bytes = aco::parse_memory_size(vm["trial-memory"].as<std::string>(), "--trial-memory");
   const bool in_process = vm.count("in-process") > 0;
   const bool allow_failures = vm.count("allow-failures") > 0;
   if (in_process && (limits.timeout_s > 0 || limits.memory_bytes > 0))
@@ -302,9 +309,11 @@ int run(const std::vector<std::string>& args) {
   const auto make_workers = [&](int lanes) -> std::unique_ptr<aco::studies::TrialWorkers> {
     if (in_process) return nullptr;
     aco::studies::TrialLimits lane_limits = limits;
-    if (!lane_limits.memory_bytes) lane_limits.memory_bytes = aco::default_memory_limit() / static_cast<std::uint64_t>(lanes);
-    return std::make_unique<aco::studies::TrialWorkers>(lanes, aco::studies::worker_command(experiment, host.plugin_dirs, max_memory), lane_limits,
-                                                    experiment.fingerprint(registry));
+    if (!lane_limits.memory_bytes)
+      lane_limits.memory_bytes = aco::default_memory_limit() / static_cast<std::uint64_t>(lanes);
+    return std::make_unique<aco::studies::TrialWorkers>(
+        lanes, aco::studies::worker_command(experiment, host.plugin_dirs, max_memory), lane_limits,
+        experiment.fingerprint(registry));
   };
 #ifdef ACOBENCH_WITH_MPI
   std::optional<aco::studies::mpi::Session> session;
@@ -334,7 +343,8 @@ int worker(const std::vector<std::string>& args) {
     const po::variables_map vm = aco::parse_arguments(args, options, "experiment", 1);
     const aco::MemoryLimit memory(host.max_memory_bytes());
     aco::PluginRegistry registry(host.plugin_search_dirs());
-    const aco::studies::Experiment experiment = aco::studies::load_experiment(vm["experiment"].as<std::string>(), registry);
+    const aco::studies::Experiment experiment =
+        aco::studies::load_experiment(vm["experiment"].as<std::string>(), registry);
     aco::studies::serve_trials_as_worker(experiment, registry);
     return 0;
   } catch (...) {
@@ -346,21 +356,23 @@ int worker(const std::vector<std::string>& args) {
 int merge(const std::vector<std::string>& args) {
   po::options_description options("acobench merge");
   std::string db;
-  options.add_options()("databases", po::value<std::vector<std::string>>()->required(), "results databases to merge")
-      ("db", po::value(&db), "the merged database, created or added to (default: the experiment file's name with "
-                             ".db, in the current folder)");
+  options.add_options()("databases", po::value<std::vector<std::string>>()->required(), "results databases to merge")(
+      "db", po::value(&db),
+      "the merged database, created or added to (default: the experiment file's name with "
+      ".db, in the current folder)");
   const po::variables_map vm = aco::parse_arguments(args, options, "databases", -1);
   const auto names = vm["databases"].as<std::vector<std::string>>();
   const std::vector<std::filesystem::path> inputs(names.begin(), names.end());
   std::string experiment_file = "EXPERIMENT.yaml";
-  if (const auto stored = aco::studies::ResultsDb(inputs.front()).find_meta("experiment_file")) experiment_file = *stored;
+  if (const auto stored = aco::studies::ResultsDb(inputs.front()).find_meta("experiment_file"))
+    experiment_file = *stored;
   const std::filesystem::path output =
       db.empty() ? std::filesystem::path(std::filesystem::path(experiment_file).stem().string() + ".db")
                  : std::filesystem::path(db);
   const auto s = aco::studies::merge_databases(inputs, output);
   std::cout << "acobench: merged " << inputs.size() << " databases into " << output.string() << ": " << s.copied
-            << " trials copied, " << s.duplicates << " held twice (identical, kept once), "
-            << s.expected - s.missing << " of the configurations' " << s.expected << " trials now stored\n";
+            << " trials copied, " << s.duplicates << " held twice (identical, kept once), " << s.expected - s.missing
+            << " of the configurations' " << s.expected << " trials now stored\n";
   const std::string rerun = "acobench run " + experiment_file + " --db " + output.string();
   if (s.missing) {
     std::cerr << "acobench: warning: " << s.missing << " trials are in none of the databases:\n";
@@ -376,17 +388,20 @@ int report(const std::vector<std::string>& args) {
   po::options_description options("acobench report");
   std::string out = ".";
   aco::HostOptions host;
-  options.add_options()("database", po::value<std::string>()->required(), "results database")
-      ("out", po::value(&out), "folder for report.md, report.html, runs.csv and plots/*.svg (default: current folder)");
+  options.add_options()("database", po::value<std::string>()->required(), "results database")(
+      "out", po::value(&out), "folder for report.md, report.html, runs.csv and plots/*.svg (default: current folder)");
   host.add_plugin_dir(options);  // map plugins, to draw the maps of their formats
   const po::variables_map vm = aco::parse_arguments(args, options, "database", 1);
   std::vector<std::string> warnings;
-  const auto files = aco::studies::write_report(vm["database"].as<std::string>(), out, &warnings, host.plugin_search_dirs());
+  const auto files =
+      aco::studies::write_report(vm["database"].as<std::string>(), out, &warnings, host.plugin_search_dirs());
   // The plots, one file each, are many on a large study: their folder is named once.
   std::size_t plots = 0;
   for (const auto& f : files) {
-    if (f.parent_path().filename() == "plots") ++plots;
-    else std::cout << f.string() << "\n";
+    if (f.parent_path().filename() == "plots")
+      ++plots;
+    else
+      std::cout << f.string() << "\n";
   }
   if (plots > 0) std::cout << (std::filesystem::path(out) / "plots").string() << "/ (" << plots << " SVG plots)\n";
   for (const auto& warning : warnings) std::cerr << "acobench: warning: " << warning << "\n";
@@ -408,7 +423,8 @@ int main(int argc, char** argv) {
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     // "acobench run --help": every command's usage is the one text.
-    if (std::find(rest.begin(), rest.end(), "--help") != rest.end() || std::find(rest.begin(), rest.end(), "-h") != rest.end()) {
+    if (std::find(rest.begin(), rest.end(), "--help") != rest.end() ||
+        std::find(rest.begin(), rest.end(), "-h") != rest.end()) {
       std::cout << kUsage;
       return aco::kExitOk;
     }

@@ -64,7 +64,7 @@ std::string irace_cost(const std::vector<aco::PlanRun>& runs, Request::IraceCost
 
 void dump_irace_params(acoplan::Request& r, std::ostream& out) {
   const std::string table = r.irace_plugin.empty() ? aco::irace_parameters(*r.registry, r.irace_slots)
-                                                    : aco::irace_plugin_parameters(*r.registry, r.irace_plugin);
+                                                   : aco::irace_plugin_parameters(*r.registry, r.irace_plugin);
   if (r.irace_params_file == "-") {
     out << table;
     return;
@@ -104,14 +104,29 @@ int plan(const acoplan::Request& r, std::ostream& out) {
 
 int run(Request& request, std::ostream& out) {
   switch (request.action) {
-    case Request::Action::help: out << request.help; break;
-    case Request::Action::version: out << aco::version_text("acoplan") << "\n"; break;
-    case Request::Action::list_plugins: out << aco::list_plugins(*request.registry); break;
-    case Request::Action::list_presets: out << list_presets(); break;
-    case Request::Action::describe: out << aco::describe_plugin(*request.registry, request.describe); break;
-    case Request::Action::print_config: out << request.config; break;
-    case Request::Action::dump_irace_params: dump_irace_params(request, out); break;
-    case Request::Action::plan: return plan(request, out);
+    case Request::Action::help:
+      out << request.help;
+      break;
+    case Request::Action::version:
+      out << aco::version_text("acoplan") << "\n";
+      break;
+    case Request::Action::list_plugins:
+      out << aco::list_plugins(*request.registry);
+      break;
+    case Request::Action::list_presets:
+      out << list_presets();
+      break;
+    case Request::Action::describe:
+      out << aco::describe_plugin(*request.registry, request.describe);
+      break;
+    case Request::Action::print_config:
+      out << request.config;
+      break;
+    case Request::Action::dump_irace_params:
+      dump_irace_params(request, out);
+      break;
+    case Request::Action::plan:
+      return plan(request, out);
   }
   return aco::kExitOk;
 }

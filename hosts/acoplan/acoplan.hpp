@@ -15,7 +15,8 @@ namespace acoplan {
 inline constexpr double kIraceUnsolvedCost = 1e9;
 
 // Carries out the request (plan, help, list, describe, print the config, dump irace's table) and
-// returns the exit status (aco::kExitOk, or aco::kExitNoPath when a run found no path). Errors are thrown (aco::Error), as parse_command_line() does.
+// returns the exit status (aco::kExitOk, or aco::kExitNoPath when a run found no path). Errors are thrown (aco::Error),
+// as parse_command_line() does.
 int run(Request& request, std::ostream& out);
 
 }  // namespace acoplan

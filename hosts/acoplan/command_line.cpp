@@ -29,17 +29,23 @@ constexpr aco::ParamSpec kHostParameters[] = {
 
 std::string type_hint(const aco::ParamSpec& spec) {
   switch (spec.type) {
-    case aco::ParamType::integer: return "N";
-    case aco::ParamType::real: return "X";
-    case aco::ParamType::boolean: return "BOOL";
-    case aco::ParamType::categorical: return spec.range;
-    case aco::ParamType::text: return "TEXT";
+    case aco::ParamType::integer:
+      return "N";
+    case aco::ParamType::real:
+      return "X";
+    case aco::ParamType::boolean:
+      return "BOOL";
+    case aco::ParamType::categorical:
+      return spec.range;
+    case aco::ParamType::text:
+      return "TEXT";
   }
   return "V";
 }
 
 std::string help_text(const aco::ParamSpec& spec) {
-  std::string text = std::string(spec.help) + " [" + aco::to_string(spec.type) + ", default " + aco::shown_default(spec);
+  std::string text =
+      std::string(spec.help) + " [" + aco::to_string(spec.type) + ", default " + aco::shown_default(spec);
   if (spec.type != aco::ParamType::boolean && spec.type != aco::ParamType::categorical && spec.range && *spec.range)
     text += ", range " + std::string(spec.range);
   return text + "]";
@@ -120,7 +126,9 @@ po::parsed_options config_options(const po::options_description& options, const 
 
 // The preset a command naming neither --config nor --preset runs, by the kind of its map.
 std::string default_preset(const po::variables_map& vm) {
-  return aco::default_preset(vm.count("map") ? vm["map"].as<std::string>() : vm.count("scen") ? vm["scen"].as<std::string>() : "");
+  return aco::default_preset(vm.count("map")    ? vm["map"].as<std::string>()
+                             : vm.count("scen") ? vm["scen"].as<std::string>()
+                                                : "");
 }
 
 // Command line first, then the --config file: po keeps the first value stored for a key.
@@ -131,15 +139,19 @@ po::variables_map parse(const po::options_description& options, int argc, const 
   const po::parsed_options parsed = parser.run();
   if (!lenient)
     for (const auto& option : parsed.options)
-      if (option.position_key >= 0) throw aco::Error("unexpected argument '" + option.value.front() + "' (options start with --)");
+      if (option.position_key >= 0)
+        throw aco::Error("unexpected argument '" + option.value.front() + "' (options start with --)");
   po::store(parsed, vm);
   if (vm.count("config") && vm.count("preset")) throw aco::Error("--config and --preset: give one of them");
   {
     // Neither: the recommended pipeline for the map's kind, as if named.
     std::string file;
-    if (vm.count("config")) file = vm["config"].as<std::string>();
-    else if (vm.count("preset")) file = aco::preset_file(vm["preset"].as<std::string>()).string();
-    else file = aco::preset_file(default_preset(vm)).string();
+    if (vm.count("config"))
+      file = vm["config"].as<std::string>();
+    else if (vm.count("preset"))
+      file = aco::preset_file(vm["preset"].as<std::string>()).string();
+    else
+      file = aco::preset_file(default_preset(vm)).string();
     const po::parsed_options settings = config_options(options, file, lenient, vm);
     try {
       po::store(settings, vm);
@@ -167,7 +179,8 @@ std::string unknown_option_message(const po::unknown_option& e, const po::option
       for (const auto& key : keys)
         if (key.rfind(slot->first + ".", 0) == 0) params.push_back(key.substr(dot + 1));
       message += " (the " + slot->first + " plugin '" + slot->second + "' has ";
-      if (params.empty()) message += "no parameters)";
+      if (params.empty())
+        message += "no parameters)";
       else {
         message += "parameters:";
         for (const auto& p : params) message += " " + p;
@@ -203,43 +216,47 @@ Request parse_command_line(int argc, const char* const* argv) {
   Request r;
   aco::HostOptions host_options;
   po::options_description general("General");
-  general.add_options()
-      ("help,h", po::bool_switch(), "print this help (with the options of the chosen plugins) and exit")
-      ("version", po::bool_switch(), "print the framework's version, commit, build type and compiler and exit")
-      ("map", po::value<std::string>()->value_name("FILE"),
-       "map: Moving AI .map, ROS map_server .yaml, ESRI ASCII terrain .asc, PGM height image .pgm, a format a map "
-       "plugin claims, or 0/1 matrix text (default: bundled classic map1)")
-      ("map-format", po::value<std::string>()->value_name("NAME"),
-       "read --map with this format, built in (movingai, ros, esri_ascii, height_pgm, matrix) or a map plugin's "
-       "(--list-plugins: map/NAME), whatever its ending")
-      ("start", po::value<std::string>()->value_name("X,Y"), "start cell (column, row from the top, 0-based)")
-      ("goal", po::value<std::string>()->value_name("X,Y"), "goal cell")
-      ("scen", po::value<std::string>()->value_name("FILE"),
-       "Moving AI scenario file; start and goal come from --scen-index, the map from FILE minus .scen unless --map")
-      ("json", po::bool_switch(), "print one JSON object instead of the readable summary")
-      ("irace", po::bool_switch(),
-       "for irace's target runner: print only the cost, the mean over --repeat of --irace-cost (1e9 for an unsolved "
-       "run), and exit 0 unless there is an error")
-      ("irace-cost", po::value<std::string>()->value_name("KIND")->default_value("length"),
-       "with --irace: length = the final path's length; gap = the grid path's gap to A*'s optimum in %; "
-       "gap-penalised = that gap g plus its square, g (1 + g), which punishes the worst runs")
-      ("irace-effort", po::value<double>()->value_name("X")->default_value(0.0),
-       "with --irace: add X times the colony's effort, its ant moves per walk over the optimal path's length "
-       "(about 1 for walks as long as the optimum): effort stands for time, deterministically")
-      ("dump-irace-params", po::value<std::string>()->value_name("FILE"),
-       "write irace's parameter file (colony and plugin parameters) to FILE (- = stdout) and exit")
-      ("irace-slots", po::value<std::string>()->value_name("SLOTS"),
-       "with --dump-irace-params: the slots whose plugin irace chooses, comma separated (default: all but local, which acoplan does not use)")
-      ("irace-plugin", po::value<std::string>()->value_name("SLOT/NAME"),
-       "with --dump-irace-params: only this plugin's parameters, its slot fixed to it (e.g. update/mine)")
-      ("svg", po::value<std::string>()->value_name("FILE"), "write a picture of the map, the path and the convergence curve")
-      ("config", po::value<std::string>()->value_name("FILE"), "read options from an INI file (command line wins)")
-      ("preset", po::value<std::string>()->value_name("NAME"), "read options from the named preset's INI file (see --list-presets; command line wins); default: robust on 2D maps, terrain on height maps, unless --config is given")
-      ("list-presets", po::bool_switch(), "list the named presets and exit")
-      ("print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")
-      ("list-plugins", po::bool_switch(), "list the plugins found and exit")
-      ("describe", po::value<std::string>()->value_name("SLOT/NAME"),
-       "print a plugin's parameter table and exit (e.g. init/potential_field; the NAME alone if one slot only has it)");
+  general.add_options()("help,h", po::bool_switch(),
+                        "print this help (with the options of the chosen plugins) and exit")(
+      "version", po::bool_switch(), "print the framework's version, commit, build type and compiler and exit")(
+      "map", po::value<std::string>()->value_name("FILE"),
+      "map: Moving AI .map, ROS map_server .yaml, ESRI ASCII terrain .asc, PGM height image .pgm, a format a map "
+      "plugin claims, or 0/1 matrix text (default: bundled classic map1)")(
+      "map-format", po::value<std::string>()->value_name("NAME"),
+      "read --map with this format, built in (movingai, ros, esri_ascii, height_pgm, matrix) or a map plugin's "
+      "(--list-plugins: map/NAME), whatever its ending")("start", po::value<std::string>()->value_name("X,Y"),
+                                                         "start cell (column, row from the top, 0-based)")(
+      "goal", po::value<std::string>()->value_name("X,Y"), "goal cell")(
+      "scen", po::value<std::string>()->value_name("FILE"),
+      "Moving AI scenario file; start and goal come from --scen-index, the map from FILE minus .scen unless --map")(
+      "json", po::bool_switch(), "print one JSON object instead of the readable summary")(
+      "irace", po::bool_switch(),
+      "for irace's target runner: print only the cost, the mean over --repeat of --irace-cost (1e9 for an unsolved "
+      "run), and exit 0 unless there is an error")(
+      "irace-cost", po::value<std::string>()->value_name("KIND")->default_value("length"),
+      "with --irace: length = the final path's length; gap = the grid path's gap to A*'s optimum in %; "
+      "gap-penalised = that gap g plus its square, g (1 + g), which punishes the worst runs")(
+      "irace-effort", po::value<double>()->value_name("X")->default_value(0.0),
+      "with --irace: add X times the colony's effort, its ant moves per walk over the optimal path's length "
+      "(about 1 for walks as long as the optimum): effort stands for time, deterministically")(
+      "dump-irace-params", po::value<std::string>()->value_name("FILE"),
+      "write irace's parameter file (colony and plugin parameters) to FILE (- = stdout) and exit")(
+      "irace-slots", po::value<std::string>()->value_name("SLOTS"),
+      "with --dump-irace-params: the slots whose plugin irace chooses, comma separated (default: all but local, which "
+      "acoplan does not use)")(
+      "irace-plugin", po::value<std::string>()->value_name("SLOT/NAME"),
+      "with --dump-irace-params: only this plugin's parameters, its slot fixed to it (e.g. update/mine)")(
+      "svg", po::value<std::string>()->value_name("FILE"),
+      "write a picture of the map, the path and the convergence curve")(
+      "config", po::value<std::string>()->value_name("FILE"), "read options from an INI file (command line wins)")(
+      "preset", po::value<std::string>()->value_name("NAME"),
+      "read options from the named preset's INI file (see --list-presets; command line wins); default: robust on 2D "
+      "maps, terrain on height maps, unless --config is given")("list-presets", po::bool_switch(),
+                                                                "list the named presets and exit")(
+      "print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")(
+      "list-plugins", po::bool_switch(), "list the plugins found and exit")(
+      "describe", po::value<std::string>()->value_name("SLOT/NAME"),
+      "print a plugin's parameter table and exit (e.g. init/potential_field; the NAME alone if one slot only has it)");
   host_options.add_plugin_dir_and_max_memory(general);
   add_table(general, kHostParameters, "");
   po::options_description problem("Problem and graph");
@@ -249,7 +266,8 @@ Request parse_command_line(int argc, const char* const* argv) {
   po::options_description colony("Colony");
   add_table(colony, aco::colony_parameters(), "");
   po::options_description baselines("Baseline planners (--planner ifwa|pso)");
-  for (const auto& planner : aco::planners_with_parameters()) add_table(baselines, aco::planner_parameters(planner), planner + ".");
+  for (const auto& planner : aco::planners_with_parameters())
+    add_table(baselines, aco::planner_parameters(planner), planner + ".");
   po::options_description slots("Strategies (one plugin per slot; see --list-plugins)");
   for (const char* slot : aco::kSlots)
     slots.add_options()(slot, po::value<std::string>()->value_name("PLUGIN"),
@@ -324,8 +342,7 @@ Request parse_command_line(int argc, const char* const* argv) {
          << "A command naming no pipeline (--preset, --config) runs the recommended preset over the engine defaults\n"
          << "listed below: robust on 2D maps, terrain on height maps; --print-config shows what a command runs,\n"
          << "--list-presets the others (each paper's pipeline: --preset paper000 ... paper004).\n\n"
-         << all
-         << "\nExit status: " << aco::kExitOk << " solved, " << aco::kExitError << " error, " << aco::kExitNoPath
+         << all << "\nExit status: " << aco::kExitOk << " solved, " << aco::kExitError << " error, " << aco::kExitNoPath
          << " no path found (goal unreachable or no ant arrived; " << aco::kExitOk << " with --irace).\n";
     r.help = help.str();
     if (vm["help"].as<bool>()) {
@@ -339,7 +356,8 @@ Request parse_command_line(int argc, const char* const* argv) {
     collect(vm, aco::problem_parameters(), "", keys);
     collect(vm, aco::graph_parameters(), "", keys);
     collect(vm, aco::colony_parameters(), "", keys);
-    for (const auto& planner : aco::planners_with_parameters()) collect(vm, aco::planner_parameters(planner), planner + ".", keys);
+    for (const auto& planner : aco::planners_with_parameters())
+      collect(vm, aco::planner_parameters(planner), planner + ".", keys);
     for (const char* slot : aco::kSlots) {
       if (vm.count(slot)) keys[slot] = plugins[slot];
       collect(vm, r.registry->load(slot, plugins[slot]).parameters(), std::string(slot) + ".", keys);
@@ -361,8 +379,10 @@ Request parse_command_line(int argc, const char* const* argv) {
     r.host = aco::resolve(kHostParameters, host, "--");
     if (auto v = text(vm, "svg")) r.svg = *v;
     r.max_memory = host_options.max_memory_bytes();
-    if (vm.count("preset")) r.pipeline_source = vm["preset"].as<std::string>();
-    else if (vm.count("config")) r.pipeline_source = "none (--config " + vm["config"].as<std::string>() + ")";
+    if (vm.count("preset"))
+      r.pipeline_source = vm["preset"].as<std::string>();
+    else if (vm.count("config"))
+      r.pipeline_source = "none (--config " + vm["config"].as<std::string>() + ")";
     else {
       const std::string preset = default_preset(vm);
       r.pipeline_source = preset + " (the default for " + (preset == "terrain" ? "height" : "2D") +
@@ -371,10 +391,14 @@ Request parse_command_line(int argc, const char* const* argv) {
     r.json = vm["json"].as<bool>();
     r.irace = vm["irace"].as<bool>();
     const std::string cost = vm["irace-cost"].as<std::string>();
-    if (cost == "length") r.irace_cost = Request::IraceCost::length;
-    else if (cost == "gap") r.irace_cost = Request::IraceCost::gap;
-    else if (cost == "gap-penalised") r.irace_cost = Request::IraceCost::gap_penalised;
-    else throw aco::Error("--irace-cost: '" + cost + "' is not one of length, gap, gap-penalised");
+    if (cost == "length")
+      r.irace_cost = Request::IraceCost::length;
+    else if (cost == "gap")
+      r.irace_cost = Request::IraceCost::gap;
+    else if (cost == "gap-penalised")
+      r.irace_cost = Request::IraceCost::gap_penalised;
+    else
+      throw aco::Error("--irace-cost: '" + cost + "' is not one of length, gap, gap-penalised");
     r.irace_effort = vm["irace-effort"].as<double>();
     if (!(r.irace_effort >= 0.0 && std::isfinite(r.irace_effort)))
       throw aco::Error("--irace-effort must be finite and >= 0");

@@ -19,12 +19,12 @@ struct Request {
   enum class Action { plan, help, version, list_plugins, list_presets, describe, print_config, dump_irace_params };
   Action action = Action::plan;
   std::string describe;  // plugin to describe
-  std::string help;      // full --help text
+  std::string help;  // full --help text
   std::string config;
   std::string pipeline_source;  // "preset robust (the default for 2D maps ...)", "preset paper001", "config FILE"
-  std::string irace_params_file;         // --dump-irace-params: where to write the table ("-" = stdout)
+  std::string irace_params_file;  // --dump-irace-params: where to write the table ("-" = stdout)
   std::vector<std::string> irace_slots;  // the slots whose plugins irace chooses (--irace-slots)
-  std::string irace_plugin;              // --irace-plugin SLOT/NAME: only its parameters ("" = the slots')
+  std::string irace_plugin;  // --irace-plugin SLOT/NAME: only its parameters ("" = the slots')
 
   std::optional<std::filesystem::path> svg;
   bool json = false;
@@ -40,7 +40,7 @@ struct Request {
   std::optional<std::uint64_t> max_memory;  // --max-memory in bytes; none: the default limit
 
   aco::ParameterValues host;  // acoplan's own settings: threads, svg-pheromone, repeat
-  aco::RunSpec run;           // everything else, resolved once
+  aco::RunSpec run;  // everything else, resolved once
   std::unique_ptr<aco::PluginRegistry> registry;
 };
 

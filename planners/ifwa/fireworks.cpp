@@ -1,6 +1,5 @@
 #include "ifwa/fireworks.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -28,13 +27,15 @@ const SettingsTable<FireworksSettings>& fireworks_table() {
       field("b", &F::b, "0:1", "each firework makes at most round(b m) explosion sparks (a <= b)"),
       field("inertia_start", &F::inertia_start, "0:10",
             "mutation inertia weight w at the first generation: a mutated weight is multiplied by 1 + w N(0,1)"),
-      field("inertia_end", &F::inertia_end, "0:10", "mutation inertia weight at the last generation (linear in between)"),
+      field("inertia_end", &F::inertia_end, "0:10",
+            "mutation inertia weight at the last generation (linear in between)"),
       field("weight_min", &F::weight_min, "(0:1e9)", "smallest node weight a_j (positive: every move stays possible)"),
       field("weight_max", &F::weight_max, "(0:1e9]", "largest node weight a_j"),
       field("max_weights", &F::max_weights, "1:1000000000",
             "most weights per firework: one per cell up to it, on larger maps one per square block of cells"),
       field("walk_limit", &F::walk_limit, "0:1e6",
-            "once a path is known, a decoding walk is abandoned after this many times its steps (at least 4096 moves; 0 = never)"),
+            "once a path is known, a decoding walk is abandoned after this many times its steps (at least 4096 moves; "
+            "0 = never)"),
   });
   return table;
 }
@@ -54,7 +55,11 @@ struct Spark {
 class Search {
  public:
   Search(const Graph& graph, NodeId start, NodeId goal, const FireworksSettings& settings)
-      : g_(graph), start_(start), goal_(goal), s_(settings), index_(graph.num_nodes(), -1),
+      : g_(graph),
+        start_(start),
+        goal_(goal),
+        s_(settings),
+        index_(graph.num_nodes(), -1),
         attraction_(graph.num_nodes(), 0.0) {
     std::vector<NodeId> active;  // the nodes a walk can use: those with edges
     for (NodeId n = 0; n < g_.num_nodes(); ++n) {
@@ -114,7 +119,8 @@ class Search {
     const auto counts = explosion_counts(fitness, s_.sparks, s_.a, s_.b);
     const auto amplitudes = explosion_amplitudes(fitness, explosion_radius(s_, generation));
     std::vector<int> exploding;  // parent of each explosion spark
-    for (std::size_t i = 0; i < fireworks.size(); ++i) exploding.insert(exploding.end(), counts[i], static_cast<int>(i));
+    for (std::size_t i = 0; i < fireworks.size(); ++i)
+      exploding.insert(exploding.end(), counts[i], static_cast<int>(i));
     const double progress = s_.iterations > 1 ? double(generation - 1) / (s_.iterations - 1) : 0.0;
     const double inertia = s_.inertia_start + (s_.inertia_end - s_.inertia_start) * progress;
 
@@ -146,7 +152,8 @@ class Search {
     aco::parallel_for(std::size_t{0}, pool.size(), [&](std::size_t i) {
       for (const auto& other : pool) {
         double d2 = 0.0;
-        for (std::size_t k = 0; k < dimensions_; ++k) d2 += (pool[i].weights[k] - other.weights[k]) * (pool[i].weights[k] - other.weights[k]);
+        for (std::size_t k = 0; k < dimensions_; ++k)
+          d2 += (pool[i].weights[k] - other.weights[k]) * (pool[i].weights[k] - other.weights[k]);
         spread[i] += std::sqrt(d2);
       }
     });
@@ -159,7 +166,8 @@ class Search {
       spread[pick] = 0.0;
       // Candidates identical to all others have no spread: then the next fittest one.
       const bool spread_left = std::any_of(spread.begin(), spread.end(), [](double v) { return v > 0.0; });
-      pick = spread_left ? roulette(rng, spread, std::accumulate(spread.begin(), spread.end(), 0.0)) : std::find(taken.begin(), taken.end(), false) - taken.begin();
+      pick = spread_left ? roulette(rng, spread, std::accumulate(spread.begin(), spread.end(), 0.0))
+                         : std::find(taken.begin(), taken.end(), false) - taken.begin();
     }
     return kept;
   }
@@ -170,7 +178,8 @@ class Search {
   // (every map of the papers) no walk is ever cut: a walk enters each node at most once.
   std::size_t move_limit(const Spark& best) const {
     if (s_.walk_limit <= 0.0 || best.path.empty()) return std::numeric_limits<std::size_t>::max();
-    return std::max<std::size_t>(4096, static_cast<std::size_t>(std::ceil(s_.walk_limit * double(best.path.size() - 1))));
+    return std::max<std::size_t>(4096,
+                                 static_cast<std::size_t>(std::ceil(s_.walk_limit * double(best.path.size() - 1))));
   }
 
   // Paper 004 gives every node its own weight, which on a 512x512 map makes a firework 260,000
@@ -224,7 +233,8 @@ class Search {
         options.push_back(j);
         chances.push_back(spark.weights[index_[j]] * attraction_[j]);
       }
-      if (next < 0 && !options.empty()) next = options[roulette(rng, chances, std::accumulate(chances.begin(), chances.end(), 0.0))];
+      if (next < 0 && !options.empty())
+        next = options[roulette(rng, chances, std::accumulate(chances.begin(), chances.end(), 0.0))];
       if (next < 0) {
         walk.pop_back();
         continue;
@@ -242,7 +252,7 @@ class Search {
   FireworksSettings s_;
   std::size_t dimensions_ = 0;  // weights per firework
   std::size_t max_moves_ = std::numeric_limits<std::size_t>::max();  // per decoding walk, this generation
-  std::vector<int> index_;      // node -> its weight's index in a firework, or -1
+  std::vector<int> index_;  // node -> its weight's index in a firework, or -1
   std::vector<double> attraction_;  // per node: 1 / distance to the goal
   double penalty_ = 0.0;
 };
@@ -262,8 +272,8 @@ void check(const FireworksSettings& s) {
     throw Error("fireworks: a = " + to_string(ParamValue(s.a)) + " is above b = " + to_string(ParamValue(s.b)) +
                 " (the spark count bounds are [round(a m), round(b m)])");
   if (s.weight_min >= s.weight_max)
-    throw Error("fireworks: weight_min = " + to_string(ParamValue(s.weight_min)) + " must be below weight_max = " +
-                to_string(ParamValue(s.weight_max)));
+    throw Error("fireworks: weight_min = " + to_string(ParamValue(s.weight_min)) +
+                " must be below weight_max = " + to_string(ParamValue(s.weight_max)));
 }
 
 std::vector<int> explosion_counts(std::span<const double> fitness, int m, double a, double b) {
@@ -272,7 +282,8 @@ std::vector<int> explosion_counts(std::span<const double> fitness, int m, double
   for (double f : fitness) total += worst - f;
   const long low = std::lround(a * m), high = std::lround(b * m);
   std::vector<int> counts;
-  for (double f : fitness) counts.push_back(static_cast<int>(std::clamp(std::lround(m * (worst - f + kEps) / total), low, high)));
+  for (double f : fitness)
+    counts.push_back(static_cast<int>(std::clamp(std::lround(m * (worst - f + kEps) / total), low, high)));
   return counts;
 }
 

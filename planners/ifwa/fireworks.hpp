@@ -24,21 +24,21 @@
 namespace aco {
 
 struct FireworksSettings {
-  int iterations = 50;       // generations G_max
-  int fireworks = 15;        // fireworks kept per generation
+  int iterations = 50;  // generations G_max
+  int fireworks = 15;  // fireworks kept per generation
   int mutation_sparks = 10;  // Gaussian sparks per generation
-  int sparks = 5;            // explosion count m
-  double radius = 3.0;       // maximum explosion amplitude A^ at the first generation
-  double radius_end = 0.1;   // the amplitude cools geometrically to radius * radius_end at G_max
-  double a = 0.3;            // spark count bounds: [round(a m), round(b m)]
+  int sparks = 5;  // explosion count m
+  double radius = 3.0;  // maximum explosion amplitude A^ at the first generation
+  double radius_end = 0.1;  // the amplitude cools geometrically to radius * radius_end at G_max
+  double a = 0.3;  // spark count bounds: [round(a m), round(b m)]
   double b = 0.5;
   double inertia_start = 0.9;  // mutation inertia weight, linear from start to end over the run
   double inertia_end = 0.4;
   double weight_min = 0.01;  // range of a node weight
   double weight_max = 1.0;
-  int max_weights = 4096;    // above it, the nodes of a square block of cells share one weight
-  double walk_limit = 3.0;   // decoding walks longer than this x the best path (and 4096 moves) are abandoned
-  std::uint64_t seed = 1;    // not in the table: acoplan's --seed, the plugin's context seed
+  int max_weights = 4096;  // above it, the nodes of a square block of cells share one weight
+  double walk_limit = 3.0;  // decoding walks longer than this x the best path (and 4096 moves) are abandoned
+  std::uint64_t seed = 1;  // not in the table: acoplan's --seed, the plugin's context seed
 };
 
 // The table of every setting but the seed (paper 004's set-up as defaults), and its rows.

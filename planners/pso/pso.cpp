@@ -1,6 +1,5 @@
 #include "pso/pso.hpp"
 
-
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -117,7 +116,8 @@ class Swarm {
   void evaluate(Particle& p) const {
     std::vector<Cell> cells{start_};
     for (int k = 0; k < s_.waypoints; ++k)
-      cells.push_back({static_cast<int>(std::lround(p.position[2 * k])), static_cast<int>(std::lround(p.position[2 * k + 1]))});
+      cells.push_back(
+          {static_cast<int>(std::lround(p.position[2 * k])), static_cast<int>(std::lround(p.position[2 * k + 1]))});
     cells.push_back(goal_);
     p.walk = walk_waypoints(g_, cells);
     p.fitness = p.walk.length + s_.penalty * p.walk.infeasible;
@@ -128,7 +128,7 @@ class Swarm {
   Cell goal_;
   PsoSettings s_;
   int dims_;
-  std::vector<double> high_;          // per coordinate: the largest cell coordinate
+  std::vector<double> high_;  // per coordinate: the largest cell coordinate
   std::vector<double> max_velocity_;  // per coordinate
 };
 

@@ -23,13 +23,13 @@ namespace aco {
 struct PsoSettings {
   int particles = 50;
   int iterations = 100;
-  int waypoints = 3;             // K
-  double inertia = 0.7298;       // w (Clerc and Kennedy's constriction values)
-  double c1 = 1.49618;           // pull towards the particle's own best
-  double c2 = 1.49618;           // pull towards the swarm's best
-  double max_velocity = 0.2;     // velocity clamp per coordinate, as a fraction of the map's width or height
-  double penalty = 100.0;        // fitness added per infeasible step
-  std::uint64_t seed = 1;        // not in the table: acoplan's --seed
+  int waypoints = 3;  // K
+  double inertia = 0.7298;  // w (Clerc and Kennedy's constriction values)
+  double c1 = 1.49618;  // pull towards the particle's own best
+  double c2 = 1.49618;  // pull towards the swarm's best
+  double max_velocity = 0.2;  // velocity clamp per coordinate, as a fraction of the map's width or height
+  double penalty = 100.0;  // fitness added per infeasible step
+  std::uint64_t seed = 1;  // not in the table: acoplan's --seed
 };
 
 // The table of every setting but the seed.
@@ -43,8 +43,8 @@ PlannerResult run_pso(const Graph& graph, NodeId start, NodeId goal, const PsoSe
 // The walk through the given cells (start, waypoints, goal) by moves along each straight leg.
 struct WaypointWalk {
   std::vector<NodeId> nodes;
-  double length = 0.0;     // graph cost of feasible steps, straight-line length of infeasible ones
-  int infeasible = 0;      // steps that are not edges of the graph
+  double length = 0.0;  // graph cost of feasible steps, straight-line length of infeasible ones
+  int infeasible = 0;  // steps that are not edges of the graph
 };
 WaypointWalk walk_waypoints(const Graph& graph, std::span<const Cell> cells);
 

@@ -33,7 +33,8 @@ const char* const kHeader =
 
 // irace names are R identifiers: letters, digits and underscores (dots are refused by some versions).
 std::string irace_name(std::string text) {
-  std::replace_if(text.begin(), text.end(), [](unsigned char c) { return !std::isalnum(c); }, '_');
+  std::replace_if(
+      text.begin(), text.end(), [](unsigned char c) { return !std::isalnum(c); }, '_');
   return text;
 }
 
@@ -48,9 +49,9 @@ std::string number(double x) {
 }
 
 struct Domain {
-  std::string type;    // i, r or c
+  std::string type;  // i, r or c
   std::string values;  // "(low, high)" or "(a, b, c)"
-  std::string skipped; // why the parameter cannot be tuned, or ""
+  std::string skipped;  // why the parameter cannot be tuned, or ""
 };
 
 Domain numeric_domain(const aco::ParamSpec& spec) {
@@ -66,23 +67,27 @@ Domain numeric_domain(const aco::ParamSpec& spec) {
   low = std::ceil(low / unit - 1e-6) * unit;
   high = std::floor(high / unit + 1e-6) * unit;
   if (!(low < high))
-    return {"", "", std::string("range ") + spec.range + " capped at 100 x default " + spec.default_value +
-                        " leaves no interval on irace's 4-decimal grid"};
+    return {"", "",
+            std::string("range ") + spec.range + " capped at 100 x default " + spec.default_value +
+                " leaves no interval on irace's 4-decimal grid"};
   return {integer ? "i" : "r", std::string("(").append(number(low)).append(", ").append(number(high)).append(")"), ""};
 }
 
 Domain domain(const aco::ParamSpec& spec) {
   switch (spec.type) {
-    case aco::ParamType::boolean: return {"c", "(true, false)", ""};
+    case aco::ParamType::boolean:
+      return {"c", "(true, false)", ""};
     case aco::ParamType::categorical: {
       std::string values;
       for (const auto& choice : aco::choices(spec)) values += (values.empty() ? "" : ", ") + choice;
       return {"c", "(" + values + ")", ""};
     }
     case aco::ParamType::integer:
-    case aco::ParamType::real: return numeric_domain(spec);
+    case aco::ParamType::real:
+      return numeric_domain(spec);
     // irace samples numbers and choices; a text (a Python class, a file) is for the user to fix.
-    case aco::ParamType::text: return {"", "", "free text is not tuned"};
+    case aco::ParamType::text:
+      return {"", "", "free text is not tuned"};
   }
   return {"", "", "unknown parameter type"};
 }
@@ -110,8 +115,8 @@ class ParameterFile {
 
   void line(const std::string& name, const std::string& flag, const std::string& domain, const std::string& condition) {
     if (!names_.insert(name).second)
-      throw aco::Error("--dump-irace-params: two parameters would both be called '" + name + "' in irace (the second is " +
-                       flag + ")");
+      throw aco::Error("--dump-irace-params: two parameters would both be called '" + name +
+                       "' in irace (the second is " + flag + ")");
     out_ << name << " \"" << flag << "\" " << domain << (condition.empty() ? "" : " | " + condition) << "\n";
   }
 
@@ -129,7 +134,8 @@ void add_slot(ParameterFile& file, aco::PluginRegistry& registry, const std::str
       const aco::PluginDescriptor& descriptor = registry.load(slot, name);
       // Such a plugin needs its text set (python needs its class): irace would run it without.
       const auto params = descriptor.parameters();
-      const auto text = std::find_if(params.begin(), params.end(), [](const auto& p) { return p.type == aco::ParamType::text; });
+      const auto text =
+          std::find_if(params.begin(), params.end(), [](const auto& p) { return p.type == aco::ParamType::text; });
       if (text != params.end()) {
         file.comment("skipped " + slot + "/" + name + ": its text parameter " + text->name +
                      " is not tuned (to tune the other slots around it, pass --" + slot + " " + name + " and its --" +
@@ -170,13 +176,17 @@ std::string irace_plugin_parameters(aco::PluginRegistry& registry, const std::st
   }
   const aco::PluginDescriptor& descriptor = registry.load(slot, name);
   ParameterFile file;
-  file.comment(plugin + " only: its slot fixed to it; the colony and the other slots as the target runner's options set them");
+  file.comment(plugin +
+               " only: its slot fixed to it; the colony and the other slots as the target runner's options set them");
   file.line(slot, "--" + slot + " ", "c (" + name + ")", "");
   std::size_t tuned = 0;
-  for (const auto& spec : descriptor.parameters()) tuned += file.add(irace_name(slot + "_" + spec.name), slot + "." + spec.name, spec);
+  for (const auto& spec : descriptor.parameters())
+    tuned += file.add(irace_name(slot + "_" + spec.name), slot + "." + spec.name, spec);
   if (tuned == 0)
-    throw aco::Error("--irace-plugin " + plugin + ": no parameter irace can tune (a plugin needs a numeric, boolean or "
-                     "categorical parameter; --describe " + plugin + " lists them)");
+    throw aco::Error("--irace-plugin " + plugin +
+                     ": no parameter irace can tune (a plugin needs a numeric, boolean or "
+                     "categorical parameter; --describe " +
+                     plugin + " lists them)");
   return file.text();
 }
 

@@ -36,8 +36,8 @@ std::string map_line(const aco::Graph& graph) {
 // settings, the pipeline or planner line the plugins and the planner's parameters. A planner
 // other than the colony uses no colony setting and no plugin but the smoother.
 bool shown_elsewhere(const std::string& key, const aco::RunSpec& run) {
-  static const std::set<std::string> lines = {"neighbourhood", "corner-cutting", "planner", "ants", "iterations",
-                                              "alpha", "beta", "seed"};
+  static const std::set<std::string> lines = {"neighbourhood", "corner-cutting", "planner", "ants",
+                                              "iterations",    "alpha",          "beta",    "seed"};
   const std::string owner = key.substr(0, key.find('.'));
   const bool slot_key = std::find(aco::kSlots.begin(), aco::kSlots.end(), owner) != aco::kSlots.end();
   if (lines.count(key) || (slot_key && owner == key)) return true;
@@ -64,14 +64,16 @@ std::string pipeline_lines(const PlanReport& report) {
   if (run.planner != "aco") {
     out << "planner:  " << run.planner << ", smoother=" << run.pipeline.at("smoother").plugin;
     if (!run.planner_parameters.all().empty()) {
-      for (const auto& [name, v] : run.planner_parameters.all()) out << " " << run.planner << "." << name << "=" << aco::to_string(v);
+      for (const auto& [name, v] : run.planner_parameters.all())
+        out << " " << run.planner << "." << name << "=" << aco::to_string(v);
       out << ", seed " << run.colony.seed;
     }
     out << "\n" << settings_line(report);
     return out.str();
   }
   out << "colony:   " << run.colony.ants << " ants x " << run.colony.iterations << " iterations, alpha "
-      << aco::to_string(run.colony.alpha) << ", beta " << aco::to_string(run.colony.beta) << ", seed " << run.colony.seed << "\n";
+      << aco::to_string(run.colony.alpha) << ", beta " << aco::to_string(run.colony.beta) << ", seed "
+      << run.colony.seed << "\n";
   if (!report.pipeline_source.empty()) out << "preset:   " << report.pipeline_source << "\n";
   out << "pipeline:";
   for (const char* slot : aco::kSlots) out << " " << slot << "=" << run.pipeline.at(slot).plugin;
@@ -149,8 +151,10 @@ bool plugin_figure(const std::string& property) {
 std::map<std::string, double> numeric_properties(const PlanOutcome& o) {
   std::map<std::string, double> numbers;
   for (const auto& [name, value] : o.properties) {
-    if (const auto* count = std::get_if<std::int64_t>(&value)) numbers[name] = static_cast<double>(*count);
-    else if (const auto* real = std::get_if<double>(&value)) numbers[name] = *real;
+    if (const auto* count = std::get_if<std::int64_t>(&value))
+      numbers[name] = static_cast<double>(*count);
+    else if (const auto* real = std::get_if<double>(&value))
+      numbers[name] = *real;
   }
   return numbers;
 }
@@ -211,10 +215,13 @@ std::string to_json(const PlanReport& report, const std::vector<PlanRun>& runs) 
   nlohmann::json& s = j["summary"];
   s["runs"] = runs.size();
   s["solved"] = solved;
-  s["optimal_length"] = runs.front().optimal_length ? nlohmann::json(*runs.front().optimal_length) : nlohmann::json(nullptr);
+  s["optimal_length"] =
+      runs.front().optimal_length ? nlohmann::json(*runs.front().optimal_length) : nlohmann::json(nullptr);
   for (const auto& [name, st] : measures(runs)) {
-    if (st.n == 0) s[name] = nullptr;
-    else s[name] = {{"mean", st.mean}, {"sd", st.sd}, {"min", st.min}, {"max", st.max}};
+    if (st.n == 0)
+      s[name] = nullptr;
+    else
+      s[name] = {{"mean", st.mean}, {"sd", st.sd}, {"min", st.min}, {"max", st.max}};
   }
   return j.dump();
 }
@@ -230,7 +237,8 @@ std::string summary(const PlanReport& report, const std::vector<PlanRun>& runs) 
   out << pipeline_lines(report);
   int solved = 0;
   for (const auto& o : runs) solved += o.solved();
-  out << "runs:     " << runs.size() << " seeds (" << first.seed << ".." << runs.back().seed << "), " << solved << " solved\n";
+  out << "runs:     " << runs.size() << " seeds (" << first.seed << ".." << runs.back().seed << "), " << solved
+      << " solved\n";
   out << std::fixed;
   for (const auto& [name, st] : measures(runs)) {
     out << "  " << std::left << std::setw(15) << name << std::right << (name.size() >= 15 ? " " : "");
@@ -239,8 +247,8 @@ std::string summary(const PlanReport& report, const std::vector<PlanRun>& runs) 
       continue;
     }
     const int digits = name == "length" || name == "grid_length" ? 4 : name == "time_ms" ? 2 : 1;
-    out << std::setprecision(digits) << "mean " << st.mean << "  sd " << st.sd << "  min " << st.min << "  max " << st.max
-        << "\n";
+    out << std::setprecision(digits) << "mean " << st.mean << "  sd " << st.sd << "  min " << st.min << "  max "
+        << st.max << "\n";
   }
   return out.str();
 }
@@ -265,15 +273,15 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
         << std::setprecision(4);
   }
   if (planner == "aco") {
-    out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations << " iterations (stopped by "
-        << o.text("stopped_by") << "), " << o.count("ant_steps")
-        << " ant steps, " << std::setprecision(2) << o.time_ms << " ms";
+    out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations
+        << " iterations (stopped by " << o.text("stopped_by") << "), " << o.count("ant_steps") << " ant steps, "
+        << std::setprecision(2) << o.time_ms << " ms";
     if (o.count("ant_steps") > 0)
       out << " (" << std::setprecision(1) << o.time_ms * 1e6 / double(o.count("ant_steps")) << " ns per ant step)";
     out << "\n";
   } else if (o.count("evaluations") > 0) {
-    out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations << " iterations, " << o.count("evaluations")
-        << " evaluations, " << std::setprecision(2) << o.time_ms << " ms\n";
+    out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations << " iterations, "
+        << o.count("evaluations") << " evaluations, " << std::setprecision(2) << o.time_ms << " ms\n";
   } else {
     out << "search:   " << std::setprecision(2) << o.time_ms << " ms\n";
   }

@@ -18,7 +18,8 @@ namespace {
 std::span<const ParamSpec> no_parameters() { return {}; }
 
 void run_aco(const PlanContext& c, PlanOutcome& o) {
-  ColonyResult colony = run_colony(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony, &c.figures);
+  ColonyResult colony =
+      run_colony(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony, &c.figures);
   o.properties["ant_steps"] = static_cast<std::int64_t>(colony.ant_steps);
   o.properties["stopped_by"] = colony.stopped_by;
   o.iteration_best = std::move(colony.iteration_best);
@@ -43,19 +44,23 @@ void run_astar(const PlanContext& c, PlanOutcome& o) {
 
 // IFWA and PSO: their own settings, the run's seed.
 template <class Settings, class Result>
-void run_baseline(const PlanContext& c, PlanOutcome& o, Settings settings, Result (*search)(const Graph&, NodeId, NodeId, const Settings&)) {
+void run_baseline(const PlanContext& c, PlanOutcome& o, Settings settings,
+                  Result (*search)(const Graph&, NodeId, NodeId, const Settings&)) {
   settings.seed = c.run.colony.seed;
   PlannerResult result = search(c.graph, c.start, c.goal, settings);
   o.properties["evaluations"] = static_cast<std::int64_t>(result.evaluations);
   o.search = std::move(static_cast<SearchResult&>(result));
   if (!o.search.solved)
-    o.reason = "no feasible path found in " + std::to_string(o.search.iterations) + " iterations (try more iterations or particles)";
+    o.reason = "no feasible path found in " + std::to_string(o.search.iterations) +
+               " iterations (try more iterations or particles)";
 }
 
 void run_ifwa(const PlanContext& c, PlanOutcome& o) {
   run_baseline(c, o, fireworks_settings(c.run.planner_parameters), run_fireworks);
 }
-void run_pso(const PlanContext& c, PlanOutcome& o) { run_baseline(c, o, pso_settings(c.run.planner_parameters), aco::run_pso); }
+void run_pso(const PlanContext& c, PlanOutcome& o) {
+  run_baseline(c, o, pso_settings(c.run.planner_parameters), aco::run_pso);
+}
 
 const Planner kPlanners[] = {
     {"aco", "the colony", no_parameters, nullptr, run_aco},
@@ -128,8 +133,9 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
     pipeline.smoother->begin_run(context);
     o.path = pipeline.smoother->smooth(context, o.search.path);
     if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
-      throw InvalidValueError(describe_plugin(*pipeline.smoother, "smoother") + " returned bad waypoints in smooth(): " + problem +
-                  " (waypoints must be finite and on free cells, from the start's position to the goal's)");
+      throw InvalidValueError(describe_plugin(*pipeline.smoother, "smoother") +
+                              " returned bad waypoints in smooth(): " + problem +
+                              " (waypoints must be finite and on free cells, from the start's position to the goal's)");
     o.length = polyline_length(o.path);
     o.turns = count_turns(o.path);
   }

@@ -38,7 +38,8 @@ std::string list_plugins(aco::PluginRegistry& registry) {
     const std::string kind = slot.name;
     if (kind == "map")
       for (const auto& format : aco::builtin_map_formats())
-        out << "  map/" << format.name << "  built-in  " << format.summary << "\n      " << extensions_line(format.extensions);
+        out << "  map/" << format.name << "  built-in  " << format.summary << "\n      "
+            << extensions_line(format.extensions);
     for (const auto& name : registry.names(kind)) {
       const auto& plugin = registry.get(kind, name);
       out << "  " << kind << "/" << name;
@@ -58,7 +59,8 @@ std::string list_plugins(aco::PluginRegistry& registry) {
 std::string describe_plugin(aco::PluginRegistry& registry, const std::string& name) {
   // A built-in map format: "map/NAME", or NAME alone when no plugin is called so.
   const auto& files = registry.available();
-  const bool plugin_named = std::any_of(files.begin(), files.end(), [&](const aco::PluginFile& p) { return p.name == name; });
+  const bool plugin_named =
+      std::any_of(files.begin(), files.end(), [&](const aco::PluginFile& p) { return p.name == name; });
   for (const auto& format : aco::builtin_map_formats())
     if (name == "map/" + format.name || (name == format.name && !plugin_named))
       return "map/" + format.name + " built-in: " + format.summary + "\n" + extensions_line(format.extensions) +
@@ -71,10 +73,12 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
   if (matches.empty()) {
     std::string message = "--describe: no plugin named '" + name + "'";
     std::vector<std::string> names;
-    for (const auto& p : registry.available()) names.push_back(name.find('/') == std::string::npos ? p.name : p.kind + "/" + p.name);
+    for (const auto& p : registry.available())
+      names.push_back(name.find('/') == std::string::npos ? p.name : p.kind + "/" + p.name);
     if (const auto near = aco::nearest(name, names); !near.empty())
       for (const auto& p : registry.available())
-        if (p.name == near || p.kind + "/" + p.name == near) message += "; did you mean '" + p.kind + "/" + p.name + "'?";
+        if (p.name == near || p.kind + "/" + p.name == near)
+          message += "; did you mean '" + p.kind + "/" + p.name + "'?";
     throw aco::Error(message);
   }
   if (matches.size() > 1) {
@@ -88,8 +92,8 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
   std::ostringstream out;
   out << d.kind << "/" << d.name << " " << d.version << ": " << d.summary << "\n"
       << "file: " << matches[0]->file.string() << "\n"
-      << shadow_lines(*matches[0]) << "built by: " << matches[0]->record.compiler << ", "
-      << matches[0]->record.stdlib << ", " << matches[0]->record.build << "\n";
+      << shadow_lines(*matches[0]) << "built by: " << matches[0]->record.compiler << ", " << matches[0]->record.stdlib
+      << ", " << matches[0]->record.build << "\n";
   if (d.kind == std::string("map")) {
     const auto values = aco::resolve(d.parameters(), {}, "map.");
     out << extensions_line(registry.create<aco::MapReader>("map", d.name, values)->extensions());

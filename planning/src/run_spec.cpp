@@ -67,7 +67,8 @@ std::vector<std::string> known_keys(const RunSpec& spec, PluginRegistry& registr
   }
   for (const auto& planner : planners_with_parameters())
     for (const auto& p : planner_parameters(planner)) keys.push_back(planner + "." + p.name);
-  for (const auto& [name, value] : spec.problem.map_parameters.all()) keys.push_back(std::string(kMapSlot) + "." + name);
+  for (const auto& [name, value] : spec.problem.map_parameters.all())
+    keys.push_back(std::string(kMapSlot) + "." + name);
   return keys;
 }
 
@@ -146,7 +147,8 @@ void check_cell(const Map& map, Cell c, const std::string& what) {
   if (!map.contains(c))
     throw Error(what + " " + to_string(c) + " is outside the " + std::to_string(map.width()) + "x" +
                 std::to_string(map.height()) + " map " + map.name());
-  if (!map.passable(c)) throw Error(what + " " + to_string(c) + " is blocked: " + map.blocked_reason(c) + " (" + map.name() + ")");
+  if (!map.passable(c))
+    throw Error(what + " " + to_string(c) + " is blocked: " + map.blocked_reason(c) + " (" + map.name() + ")");
 }
 
 std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem::path& file, const std::string& format,
@@ -176,7 +178,8 @@ std::unique_ptr<Map> load_problem_map(const ProblemSpec& spec, PluginRegistry* r
   if (file.empty()) throw Error("a problem needs a map with start and goal, or a scenario");
   if (registry) return load_map(file, spec.terrain, *registry, spec.map_format, spec.map_parameters);
   if (!spec.map_format.empty() && !find_builtin_map_format(spec.map_format))
-    throw Error(file.string() + ": map format '" + spec.map_format + "' is a map plugin, and no plugin registry was given");
+    throw Error(file.string() + ": map format '" + spec.map_format +
+                "' is a map plugin, and no plugin registry was given");
   if (const auto* builtin = find_builtin_map_format(spec.map_format)) return builtin->read(file, spec.terrain);
   return load_map(file, spec.terrain);
 }
@@ -186,8 +189,8 @@ LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry) {
   if (!spec.scen.empty()) {
     const auto scenarios = load_scenarios(spec.scen);
     if (spec.scen_index >= static_cast<int>(scenarios.size()))
-      throw Error("scen-index " + std::to_string(spec.scen_index) + " is out of range: " + spec.scen.string() + " has " +
-                  std::to_string(scenarios.size()) + " scenarios");
+      throw Error("scen-index " + std::to_string(spec.scen_index) + " is out of range: " + spec.scen.string() +
+                  " has " + std::to_string(scenarios.size()) + " scenarios");
     const Scenario& s = scenarios[spec.scen_index];
     p.map = load_problem_map(spec, registry);
     if (p.map->width() != s.width || p.map->height() != s.height)
@@ -197,7 +200,8 @@ LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry) {
     p.start = s.start;
     p.goal = s.goal;
   } else {
-    if (spec.map.empty() || !spec.start || !spec.goal) throw Error("a problem needs a map with start and goal, or a scenario");
+    if (spec.map.empty() || !spec.start || !spec.goal)
+      throw Error("a problem needs a map with start and goal, or a scenario");
     p.map = load_problem_map(spec, registry);
     p.start = *spec.start;
     p.goal = *spec.goal;
@@ -218,19 +222,21 @@ ProblemSpec resolve_problem_keys(const Keys& problem, const Keys& map_keys, Plug
   if (problem.count("start")) p.start = parse_cell(problem.at("start"), key_prefix + "start");
   if (problem.count("goal")) p.goal = parse_cell(problem.at("goal"), key_prefix + "goal");
   if (!p.scen.empty() && (p.start || p.goal))
-    throw KeyError(key_prefix + "scen", "give either " + key_prefix + "scen or " + key_prefix + "start/" + key_prefix +
-                                            "goal, not both");
+    throw KeyError(key_prefix + "scen",
+                   "give either " + key_prefix + "scen or " + key_prefix + "start/" + key_prefix + "goal, not both");
   if (problem.count("scen-index") && p.scen.empty())
     throw KeyError(key_prefix + "scen-index", key_prefix + "scen-index needs " + key_prefix + "scen");
   // The map file: --map, or the scenario's (a scenario file misnamed is load_problem()'s to say).
-  const std::filesystem::path map_file =
-      !p.map.empty() ? p.map : p.scen.extension() == ".scen" ? scenario_map_file(p.scen) : std::filesystem::path();
+  const std::filesystem::path map_file = !p.map.empty()                  ? p.map
+                                         : p.scen.extension() == ".scen" ? scenario_map_file(p.scen)
+                                                                         : std::filesystem::path();
   if (!map_file.empty()) {
     const std::string format = problem.count("map-format") ? problem.at("map-format") : "";
     std::tie(p.map_format, p.map_parameters) = resolve_map_format(map_file, format, map_keys, registry, key_prefix);
   } else if (problem.count("map-format") || !map_keys.empty()) {
     const std::string key = problem.count("map-format") ? "map-format" : kMapSlot + ("." + map_keys.begin()->first);
-    throw KeyError(key_prefix + key, key_prefix + key + " needs a map (" + key_prefix + "map or " + key_prefix + "scen)");
+    throw KeyError(key_prefix + key,
+                   key_prefix + key + " needs a map (" + key_prefix + "map or " + key_prefix + "scen)");
   }
   Keys numbers;
   for (const auto& [key, value] : problem)
@@ -259,7 +265,8 @@ ProblemSpec resolve_problem(const Keys& keys, PluginRegistry& registry, const st
       std::vector<std::string> known(kProblemTexts.begin(), kProblemTexts.end());
       for (const auto& p : problem_parameters()) known.push_back(p.name);
       std::string message = "'" + key_prefix + key + "' is not a key of a problem";
-      if (const auto near = nearest(key, known); !near.empty()) message += "; did you mean '" + key_prefix + near + "'?";
+      if (const auto near = nearest(key, known); !near.empty())
+        message += "; did you mean '" + key_prefix + near + "'?";
       throw KeyError(key_prefix + key, message);
     }
   }
@@ -296,7 +303,8 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
         slots[owner][name] = value;
       } else if (owner == kMapSlot) {
         map_keys[name] = value;
-      } else if (const auto with = planners_with_parameters(); std::find(with.begin(), with.end(), owner) != with.end()) {
+      } else if (const auto with = planners_with_parameters();
+                 std::find(with.begin(), with.end(), owner) != with.end()) {
         if (owner != spec.planner)
           throw KeyError(key_prefix + key, key_prefix + key + " is a parameter of the planner '" + owner +
                                                "', but the planner is '" + spec.planner + "'");
@@ -450,11 +458,16 @@ RunSpec run_spec_from_json(const std::string& text, PluginRegistry& registry) {
   if (!j.is_object()) throw Error("a run's configuration must be a JSON object of keys");
   Keys keys;
   for (const auto& [key, value] : j.items()) {
-    if (value.is_string()) keys[key] = value.get<std::string>();
-    else if (value.is_boolean()) keys[key] = value.get<bool>() ? "true" : "false";
-    else if (value.is_number_integer()) keys[key] = std::to_string(value.get<std::int64_t>());
-    else if (value.is_number()) keys[key] = to_string(ParamValue(value.get<double>()));
-    else throw KeyError(key, "key '" + key + "' must be a string, a number or a boolean");
+    if (value.is_string())
+      keys[key] = value.get<std::string>();
+    else if (value.is_boolean())
+      keys[key] = value.get<bool>() ? "true" : "false";
+    else if (value.is_number_integer())
+      keys[key] = std::to_string(value.get<std::int64_t>());
+    else if (value.is_number())
+      keys[key] = to_string(ParamValue(value.get<double>()));
+    else
+      throw KeyError(key, "key '" + key + "' must be a string, a number or a boolean");
   }
   return resolve_run(keys, registry);
 }

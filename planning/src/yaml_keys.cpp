@@ -73,13 +73,15 @@ void only_keys(const std::filesystem::path& file, const YAML::Node& map, const s
 namespace {
 
 // One key; a slot may be given as {plugin: NAME, param: value, ...}.
-void read_key(const std::filesystem::path& file, const YAML::Node& name, const YAML::Node& value, aco::KeyedValues& out) {
+void read_key(const std::filesystem::path& file, const YAML::Node& name, const YAML::Node& value,
+              aco::KeyedValues& out) {
   const std::string key = name.Scalar();
   if (value.IsMap()) {
     if (std::find(kSlots.begin(), kSlots.end(), key) == kSlots.end()) {
       std::string slots;
       for (const char* slot : kSlots) slots += (slots.empty() ? "" : ", ") + std::string(slot);
-      fail(file, name, "'" + key + "' is not a slot; only slots (" + slots + ") take a {plugin: ..., parameter: ...} mapping");
+      fail(file, name,
+           "'" + key + "' is not a slot; only slots (" + slots + ") take a {plugin: ..., parameter: ...} mapping");
     }
     for (const auto& inner : value) {
       const std::string param = inner.first.Scalar();
@@ -96,7 +98,8 @@ void read_key(const std::filesystem::path& file, const YAML::Node& name, const Y
 
 }  // namespace
 
-aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node, const std::vector<std::string>& skip) {
+aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node,
+                               const std::vector<std::string>& skip) {
   if (!node.IsMap()) fail(file, node, "a configuration must be a mapping of keys to values");
   aco::KeyedValues own;
   for (const auto& entry : node) {

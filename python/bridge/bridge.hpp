@@ -16,7 +16,7 @@ namespace aco::python {
 
 struct Settings {
   std::string object;  // --<slot>.class: module:attribute
-  std::string path;    // --<slot>.path: folders put in front of sys.path, ':'-separated
+  std::string path;  // --<slot>.path: folders put in front of sys.path, ':'-separated
 };
 // The parameters of every python plugin.
 const SettingsTable<Settings>& settings_table();
@@ -28,7 +28,8 @@ class Object {
   // object.method(context, field), or object.method(context, iteration, field) when `iteration`
   // is given. `field` goes over as a writable float64 array on its memory, which the method
   // fills in place (or it returns a float64 array of the same length, copied in).
-  virtual void call(const char* method, const Context& context, const Iteration* iteration, std::span<double> field) = 0;
+  virtual void call(const char* method, const Context& context, const Iteration* iteration,
+                    std::span<double> field) = 0;
   virtual bool has(const char* method) const = 0;
   // bool(object.attribute), calling it if it is a method; false if there is none.
   virtual bool flag(const char* attribute) const = 0;

@@ -121,8 +121,8 @@ class PythonObject final : public Object {
         "cells"_a = cells_, "neighbourhood"_a = static_cast<int>(g.options.neighbourhood),
         "corner_cutting"_a = g.options.corner_cutting);
     return namespace_("graph"_a = graph, "start"_a = c.start, "goal"_a = c.goal, "ants"_a = c.ants,
-                      "max_iterations"_a = c.max_iterations, "alpha"_a = c.alpha, "beta"_a = c.beta,
-                      "seed"_a = c.seed, "iteration"_a = c.iteration);
+                      "max_iterations"_a = c.max_iterations, "alpha"_a = c.alpha, "beta"_a = c.beta, "seed"_a = c.seed,
+                      "iteration"_a = c.iteration);
   }
 
   // Cells are not stored in the graph: computed once per map size, and kept (a copy, not a view).
@@ -203,8 +203,8 @@ void prepend_to_sys_path(const std::string& path) {
 py::object find_object(const std::string& slot, const std::string& spec, const std::string& path) {
   const std::string key = slot + ".class";
   if (spec.empty())
-    throw Error(key + " is empty: name the Python object as module:attribute, e.g. --" + key + " my_module:MyClass (--" +
-                slot + ".path adds folders to sys.path)");
+    throw Error(key + " is empty: name the Python object as module:attribute, e.g. --" + key +
+                " my_module:MyClass (--" + slot + ".path adds folders to sys.path)");
   const auto colon = spec.find(':');
   if (colon == std::string::npos || colon == 0 || colon + 1 == spec.size())
     throw Error(key + " '" + spec + "' is not module:attribute (e.g. my_module:MyClass)");
@@ -229,7 +229,8 @@ py::object find_object(const std::string& slot, const std::string& spec, const s
   std::string walked = module_name;
   for (const auto& name : split(spec.substr(colon + 1), '.')) {
     if (!py::hasattr(object, name.c_str())) {
-      const std::string file = walked == module_name ? " (" + text(py::getattr(object, "__file__", py::str("?"))) + ")" : "";
+      const std::string file =
+          walked == module_name ? " (" + text(py::getattr(object, "__file__", py::str("?"))) + ")" : "";
       throw Error(key + " '" + spec + "': " + walked + file + " has no attribute '" + name + "'");
     }
     object = object.attr(name.c_str());
@@ -249,7 +250,8 @@ py::object find_object(const std::string& slot, const std::string& spec, const s
 }  // namespace aco::python
 
 extern "C" __attribute__((visibility("default"))) aco::python::Object* aco_python_make_object(
-    const std::string& slot, const std::string& spec, const std::string& path, const std::vector<std::string>& required) {
+    const std::string& slot, const std::string& spec, const std::string& path,
+    const std::vector<std::string>& required) {
   using namespace aco::python;
   start_interpreter();
   py::gil_scoped_acquire gil;

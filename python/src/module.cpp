@@ -86,12 +86,15 @@ py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain
   return py::make_tuple("grid", blocked, 1.0, map->name());
 }
 
-std::string cell_text(const std::pair<int, int>& cell) { return std::to_string(cell.first) + "," + std::to_string(cell.second); }
+std::string cell_text(const std::pair<int, int>& cell) {
+  return std::to_string(cell.first) + "," + std::to_string(cell.second);
+}
 
 // One run, as acoplan's: the keys over the pipeline file (a preset, a config file, or the
 // default preset for the map's kind), resolved once, then plan_runs() and its JSON.
-py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pair<int, int> start, std::pair<int, int> goal,
-               const aco::Keys& keys, const std::string& preset, const std::string& config, std::int64_t threads) {
+py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pair<int, int> start,
+               std::pair<int, int> goal, const aco::Keys& keys, const std::string& preset, const std::string& config,
+               std::int64_t threads) {
   aco::KeyedValues changes;
   changes.keys = keys;
   changes.keys["start"] = cell_text(start);
@@ -99,8 +102,10 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
   const auto* file = std::get_if<std::filesystem::path>(&map);
   if (file) changes.keys["map"] = file->string();
   std::string source = preset;
-  if (!config.empty()) source = "none (config " + config + ")";
-  else if (source.empty()) source = file ? aco::default_preset(*file) : std::get<ArrayMap>(map).heights.size() ? "terrain" : "robust";
+  if (!config.empty())
+    source = "none (config " + config + ")";
+  else if (source.empty())
+    source = file ? aco::default_preset(*file) : std::get<ArrayMap>(map).heights.size() ? "terrain" : "robust";
   const aco::KeyedValues pipeline = config.empty() ? aco::preset_keys(source) : aco::config_file_keys(config);
   const aco::RunSpec run = aco::resolve_run(aco::over_pipeline_file(pipeline, changes).keys, registry(), "--");
 
@@ -141,8 +146,8 @@ py::list plugins() {
     if (file.unusable.empty())
       for (const auto& spec : registry().load(file.kind, file.name).parameters())
         parameters.append(py::dict(py::arg("name") = spec.name, py::arg("type") = aco::to_string(spec.type),
-                                   py::arg("default") = spec.default_value, py::arg("range") = spec.range ? spec.range : "",
-                                   py::arg("help") = spec.help));
+                                   py::arg("default") = spec.default_value,
+                                   py::arg("range") = spec.range ? spec.range : "", py::arg("help") = spec.help));
     plugin["parameters"] = parameters;
     list.append(plugin);
   }
@@ -172,9 +177,10 @@ py::dict run_experiment(const std::filesystem::path& file, const std::filesystem
                              py::arg("message") = f.message, py::arg("earlier") = f.earlier));
     by_reason[py::str(f.kind)] = by_reason.attr("get")(f.kind, 0).cast<int>() + 1;
   }
-  return py::dict(py::arg("trials") = summary.trials, py::arg("skipped") = summary.skipped, py::arg("ran") = summary.ran,
-                  py::arg("failures") = failures, py::arg("failures_by_reason") = by_reason,
-                  py::arg("same_runs") = experiment.same_runs(), py::arg("seconds") = summary.seconds);
+  return py::dict(py::arg("trials") = summary.trials, py::arg("skipped") = summary.skipped,
+                  py::arg("ran") = summary.ran, py::arg("failures") = failures,
+                  py::arg("failures_by_reason") = by_reason, py::arg("same_runs") = experiment.same_runs(),
+                  py::arg("seconds") = summary.seconds);
 }
 
 // A results database as columns (the runs, each with its problem's and configuration's name,
@@ -187,24 +193,34 @@ py::object python_column(const aco::studies::TrialField& field, const std::vecto
     for (const auto& cell : cells)
       values.push_back(std::visit(
           [null](const auto& v) -> decltype(null) {
-            if constexpr (std::is_arithmetic_v<std::decay_t<decltype(v)>>) return static_cast<decltype(null)>(v);
-            else return null;
+            if constexpr (std::is_arithmetic_v<std::decay_t<decltype(v)>>)
+              return static_cast<decltype(null)>(v);
+            else
+              return null;
           },
           cell));
     return py::object(py::array(py::cast(values)));
   };
   switch (field.type) {
-    case aco::studies::TrialCellType::integer: return numbers(std::int64_t{-1});
-    case aco::studies::TrialCellType::count: return numbers(std::uint64_t{0});
-    case aco::studies::TrialCellType::real: return numbers(std::nan(""));
-    default: break;
+    case aco::studies::TrialCellType::integer:
+      return numbers(std::int64_t{-1});
+    case aco::studies::TrialCellType::count:
+      return numbers(std::uint64_t{0});
+    case aco::studies::TrialCellType::real:
+      return numbers(std::nan(""));
+    default:
+      break;
   }
   py::list values;
   for (const auto& cell : cells)
-    values.append(std::visit([](const auto& v) -> py::object {
-      if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>) return py::none();
-      else return py::cast(v);
-    }, cell));
+    values.append(std::visit(
+        [](const auto& v) -> py::object {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>)
+            return py::none();
+          else
+            return py::cast(v);
+        },
+        cell));
   return field.type == aco::studies::TrialCellType::boolean ? py::object(py::array(values)) : py::object(values);
 }
 
@@ -228,12 +244,19 @@ py::dict read_trials(const std::filesystem::path& database) {
   for (const auto& t : trials) {
     for (auto& [name, column] : properties) {
       const auto it = t.properties.find(name);
-      if (it == t.properties.end()) column.append(none);
-      else if (const auto* text = std::get_if<std::string>(&it->second)) column.append(*text);
-      else column.append(std::visit([](const auto& v) -> double {
-        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>) return 0.0;
-        else return static_cast<double>(v);
-      }, it->second));
+      if (it == t.properties.end())
+        column.append(none);
+      else if (const auto* text = std::get_if<std::string>(&it->second))
+        column.append(*text);
+      else
+        column.append(std::visit(
+            [](const auto& v) -> double {
+              if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>)
+                return 0.0;
+              else
+                return static_cast<double>(v);
+            },
+            it->second));
     }
     const auto& p = problems.at(static_cast<std::size_t>(t.problem));
     problem.append(p.name);
@@ -291,7 +314,8 @@ PYBIND11_MODULE(_aco, m) {
     for (const auto& p : aco::list_presets()) list.emplace_back(p.name, p.summary);
     return list;
   });
-  m.def("run_experiment", &run_experiment, py::arg("file"), py::arg("database"), py::arg("threads"), py::arg("progress"));
+  m.def("run_experiment", &run_experiment, py::arg("file"), py::arg("database"), py::arg("threads"),
+        py::arg("progress"));
   m.def("read_trials", &read_trials, py::arg("database"));
   // The trial fields (aco/studies/trial_record.hpp): where each goes, for the tests.
   m.def("trial_fields", [] {
@@ -307,9 +331,10 @@ PYBIND11_MODULE(_aco, m) {
   // The report's statistics (aco/studies/statistics.hpp), on plain samples.
   m.def("summarize", [](const Sample& s) {
     const auto r = aco::studies::summarize(s);
-    return py::dict(py::arg("n") = r.n, py::arg("mean") = r.mean, py::arg("sd") = r.stddev, py::arg("median") = r.median,
-                    py::arg("q1") = r.q1, py::arg("q3") = r.q3, py::arg("iqr") = r.iqr, py::arg("ci_low") = r.ci_low,
-                    py::arg("ci_high") = r.ci_high, py::arg("min") = r.min, py::arg("max") = r.max);
+    return py::dict(py::arg("n") = r.n, py::arg("mean") = r.mean, py::arg("sd") = r.stddev,
+                    py::arg("median") = r.median, py::arg("q1") = r.q1, py::arg("q3") = r.q3, py::arg("iqr") = r.iqr,
+                    py::arg("ci_low") = r.ci_low, py::arg("ci_high") = r.ci_high, py::arg("min") = r.min,
+                    py::arg("max") = r.max);
   });
   m.def("mann_whitney_u", [](const Sample& a, const Sample& b) {
     const auto r = aco::studies::mann_whitney_u(a, b);

@@ -35,7 +35,8 @@ void write_output_file(const fs::path& file, std::string_view text, const std::s
     if (auto resolved = fs::canonical(file, error); !error) target = std::move(resolved);
   if (target.has_parent_path() && !fs::is_directory(target.parent_path(), error)) {
     fs::create_directories(target.parent_path(), error);
-    if (error) throw Error(failure + "cannot make its folder " + target.parent_path().string() + ": " + error.message());
+    if (error)
+      throw Error(failure + "cannot make its folder " + target.parent_path().string() + ": " + error.message());
   }
   fs::path partial = target;
   partial += ".partial-" + std::to_string(::getpid());

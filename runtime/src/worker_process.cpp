@@ -126,10 +126,14 @@ void send_frame(char kind, const std::string& payload) {
 
 const char* to_string(WorkerReply::Status status) {
   switch (status) {
-    case WorkerReply::Status::replied: return "replied";
-    case WorkerReply::Status::crashed: return "crashed";
-    case WorkerReply::Status::timed_out: return "timed out";
-    case WorkerReply::Status::out_of_memory: return "out of memory";
+    case WorkerReply::Status::replied:
+      return "replied";
+    case WorkerReply::Status::crashed:
+      return "crashed";
+    case WorkerReply::Status::timed_out:
+      return "timed out";
+    case WorkerReply::Status::out_of_memory:
+      return "out of memory";
   }
   return "unknown";
 }
@@ -147,7 +151,8 @@ int lane_count(int threads) {
   if (threads > 0) return threads;
   cpu_set_t set;
   CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) != 0) return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (sched_getaffinity(0, sizeof set, &set) != 0)
+    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   return std::max(1, CPU_COUNT(&set));
 }
 
@@ -303,7 +308,8 @@ WorkerReply WorkerProcess::await(char wanted, const WorkerLimits& limits, std::u
     int wait_ms = -1;
     if (limits.memory_bytes) {
       if (resident_bytes(pid_) > baseline + limits.memory_bytes)
-        return end_worker(WorkerReply::Status::out_of_memory, "out of memory (over " + format_bytes(limits.memory_bytes) + ")");
+        return end_worker(WorkerReply::Status::out_of_memory,
+                          "out of memory (over " + format_bytes(limits.memory_bytes) + ")");
       wait_ms = 20;
     }
     const double elapsed = std::chrono::duration<double>(clock::now() - began).count();
@@ -345,11 +351,11 @@ WorkerReply WorkerProcess::end_worker(WorkerReply::Status status, const std::str
   if (status != WorkerReply::Status::crashed) ::syscall(SYS_tgkill, pid_, pid_, SIGUSR1);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
   for (;;) {
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0 || receive(static_cast<int>(left.count())) == Received::closed) break;
   }
-  while (take_frame()) {
-  }  // the note among them is kept
+  while (take_frame()) {}  // the note among them is kept
   ::kill(pid_, SIGKILL);  // if it is still there
   int wait_status = 0;
   ::waitpid(pid_, &wait_status, 0);
@@ -360,8 +366,10 @@ WorkerReply WorkerProcess::end_worker(WorkerReply::Status status, const std::str
   reply.status = status;
   reply.failure = reason;
   if (status == WorkerReply::Status::crashed) {
-    if (WIFSIGNALED(wait_status)) reply.failure = std::string("crashed: ") + signal_name(WTERMSIG(wait_status));
-    else reply.failure = "crashed: the worker process exited with status " + std::to_string(WEXITSTATUS(wait_status));
+    if (WIFSIGNALED(wait_status))
+      reply.failure = std::string("crashed: ") + signal_name(WTERMSIG(wait_status));
+    else
+      reply.failure = "crashed: the worker process exited with status " + std::to_string(WEXITSTATUS(wait_status));
   }
   if (!note_.empty()) reply.failure += " in " + note_;
   return reply;

@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
         std::vector<std::string> in_folder;
         for (const auto& entry : std::filesystem::directory_iterator(arg)) {
           const std::string name = entry.path().filename().string();
-          if (name.rfind("aco_", 0) == 0 && entry.path().extension() == ".so") in_folder.push_back(entry.path().string());
+          if (name.rfind("aco_", 0) == 0 && entry.path().extension() == ".so")
+            in_folder.push_back(entry.path().string());
         }
         if (in_folder.empty()) {
           std::cerr << "aco-plugin-check: " << arg << ": a folder with no plugin library (aco_*.so) in it\n";

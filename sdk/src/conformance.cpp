@@ -56,7 +56,8 @@ std::vector<NodeId> Problem::shortest_path() const {
 }
 
 Problem make_problem(const std::string& name, const std::vector<std::string>& rows, Cell start, Cell goal) {
-  auto map = std::make_shared<OccupancyGrid>(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), name);
+  auto map =
+      std::make_shared<OccupancyGrid>(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), name);
   for (int y = 0; y < map->height(); ++y)
     for (int x = 0; x < map->width(); ++x) map->set_blocked({x, y}, rows[y][x] == '#');
   Problem p{name, map, build_graph(*map, {}), 0, 0};
@@ -67,17 +68,17 @@ Problem make_problem(const std::string& name, const std::vector<std::string>& ro
 
 std::vector<Problem> standard_problems() {
   std::vector<Problem> problems;
-  problems.push_back(make_problem("open", {"........", "........", "........", "........", "........", "........"},
-                                  {0, 0}, {7, 5}));
-  problems.push_back(make_problem("obstacles",
-                                  {"..........", "..#####...", "......#...", ".##...#.#.", "..#...#.#.", "..#.###.#.",
-                                   "..#.....#.", ".........."},
-                                  {0, 0}, {9, 7}));
+  problems.push_back(
+      make_problem("open", {"........", "........", "........", "........", "........", "........"}, {0, 0}, {7, 5}));
+  problems.push_back(make_problem(
+      "obstacles",
+      {"..........", "..#####...", "......#...", ".##...#.#.", "..#...#.#.", "..#.###.#.", "..#.....#.", ".........."},
+      {0, 0}, {9, 7}));
   // Two pockets (the left column and the box entered at (2,1)) and the walled-in cell (4,4).
-  problems.push_back(make_problem("dead end",
-                                  {".........#", ".#.#####.#", ".#.....#..", ".#.###.#..", ".#.#.#.#..", ".#.###.#..",
-                                   ".#.....#..", ".#######.."},
-                                  {0, 0}, {9, 7}));
+  problems.push_back(make_problem(
+      "dead end",
+      {".........#", ".#.#####.#", ".#.....#..", ".#.###.#..", ".#.#.#.#..", ".#.###.#..", ".#.....#..", ".#######.."},
+      {0, 0}, {9, 7}));
   problems.push_back(make_problem("corridor", {"............"}, {0, 0}, {11, 0}));
   return problems;
 }
@@ -102,15 +103,19 @@ Iteration IterationCase::view() const {
 
 std::vector<IterationCase> standard_iterations(const Problem& problem) {
   const std::vector<NodeId> shortest = problem.shortest_path();
-  auto prefix = [&](std::size_t n) { return walk(problem, {shortest.begin(), shortest.begin() + std::max<std::size_t>(n, 1)}); };
+  auto prefix = [&](std::size_t n) {
+    return walk(problem, {shortest.begin(), shortest.begin() + std::max<std::size_t>(n, 1)});
+  };
   // A longer arrived walk: around the middle node of the shortest path, where the map allows.
   std::vector<NodeId> detour = shortest;
   if (shortest.size() > 2) {
     BreadthFirstSearch search;
-    if (search.find(problem.graph, problem.start, problem.goal, {}, shortest[shortest.size() / 2])) detour = search.path();
+    if (search.find(problem.graph, problem.start, problem.goal, {}, shortest[shortest.size() / 2]))
+      detour = search.path();
   }
 
-  IterationCase arrived{"ants arrived", {walk(problem, detour), walk(problem, shortest), prefix(shortest.size() / 2), prefix(1)}, -1, {}};
+  IterationCase arrived{
+      "ants arrived", {walk(problem, detour), walk(problem, shortest), prefix(shortest.size() / 2), prefix(1)}, -1, {}};
   arrived.best = arrived.ants[0].length < arrived.ants[1].length ? 0 : 1;
   IterationCase none{"no ant arrived", {prefix(shortest.size() / 2), prefix(shortest.size() / 4), prefix(1)}, -1, {}};
   none.earlier_best = walk(problem, shortest);
@@ -154,7 +159,8 @@ std::vector<ParameterSet> parameter_sets(std::span<const ParamSpec> table, std::
       // An end the plugin refuses should have been declared open.
       const std::string declared = spec.range;
       const bool closed = !(low_end ? range->low_open : range->high_open);
-      const std::string open_end = closed ? "the range " + (low_end ? "(" + declared : declared + ")") : "a narrower range";
+      const std::string open_end =
+          closed ? "the range " + (low_end ? "(" + declared : declared + ")") : "a narrower range";
       if (!integer) {
         add(number(value), "", open_end);
       } else if (value > static_cast<double>(integer_cap)) {
@@ -207,8 +213,9 @@ std::pair<PluginRegistry*, std::vector<PluginFile>> plugins_of(const fs::path& f
   for (const auto& plugin : registry.available())
     if (fs::equivalent(plugin.file, real, ec)) found.push_back(plugin);
   if (found.empty())
-    throw Error(file.string() + ": exports no aco plugin (or each is shadowed by a plugin of the same slot and name in a "
-                                "file of its folder that sorts before it)");
+    throw Error(file.string() +
+                ": exports no aco plugin (or each is shadowed by a plugin of the same slot and name in a "
+                "file of its folder that sorts before it)");
   return {&registry, found};
 }
 
@@ -279,10 +286,10 @@ std::string difference(const Trace& a, const Trace& b) {
   const std::size_t n = std::min(a.values.size(), b.values.size());
   for (std::size_t i = 0; i < n; ++i)
     if (!same_bits(std::span(a.values).subspan(i, 1), std::span(b.values).subspan(i, 1)))
-      return a.describe(i) + " is " + number(a.values[i]) + " in one run and " +
-             number(b.values[i]) + " in the other";
+      return a.describe(i) + " is " + number(a.values[i]) + " in one run and " + number(b.values[i]) + " in the other";
   if (a.values.size() != b.values.size())
-    return "one run produced " + std::to_string(a.values.size()) + " values, the other " + std::to_string(b.values.size());
+    return "one run produced " + std::to_string(a.values.size()) + " values, the other " +
+           std::to_string(b.values.size());
   return "";
 }
 
@@ -331,7 +338,8 @@ void run_slot(Heuristic& heuristic, const Problem& problem, Trace& trace) {
     ant.nodes.push_back(path[i]);
     if (i > 0) ant.edges.push_back(problem.graph.find_edge(path[i - 1], path[i]));
     std::vector<EdgeId> candidates;
-    for (EdgeId e = problem.graph.edges_begin(path[i]); e < problem.graph.edges_end(path[i]); ++e) candidates.push_back(e);
+    for (EdgeId e = problem.graph.edges_begin(path[i]); e < problem.graph.edges_end(path[i]); ++e)
+      candidates.push_back(e);
     std::vector<double> factors(candidates.size(), nan);
     heuristic.step_factors(problem.context(0, kIterations), ant, candidates, factors);
     trace.add_checked(factors, "factors of step_factors() at step " + std::to_string(i));
@@ -394,7 +402,8 @@ void run_slot(Smoother& smoother, const Problem& problem, Trace& trace) {
       trace.problem(what + " returned no waypoints");
       continue;
     }
-    for (const auto& p : points) trace.add_checked(std::span<const double>(p.data(), 3), what + ": waypoint coordinate", -INFINITY);
+    for (const auto& p : points)
+      trace.add_checked(std::span<const double>(p.data(), 3), what + ": waypoint coordinate", -INFINITY);
     const double length = polyline_length(points);
     trace.add_checked(std::span(&length, 1), what + ": length");
     if ((points.front() - problem.graph.positions[path.front()]).norm() > 1e-9 ||
@@ -455,7 +464,8 @@ void run_slot(MapReader& reader, const Problem& problem, Trace& trace) {
   if (problem.name != "open") return;  // the first standard problem; nothing depends on it: once per pass
   const std::vector<std::string> extensions = reader.extensions();
   for (const auto& e : extensions)
-    if (e.size() < 2 || e.front() != '.') trace.problem("extensions(): '" + e + "' is not a file ending such as '.shapes'");
+    if (e.size() < 2 || e.front() != '.')
+      trace.problem("extensions(): '" + e + "' is not a file ending such as '.shapes'");
   const std::string ending = extensions.empty() ? ".sample" : extensions.front();
   // Removed however the reads end.
   const struct Folder {
@@ -473,7 +483,8 @@ void run_slot(MapReader& reader, const Problem& problem, Trace& trace) {
     trace.problem("read() of a missing file returned a map instead of an aco::Error naming " + missing.string());
   } catch (const std::exception& e) {
     if (std::string(e.what()).find(missing.string()) == std::string::npos)
-      trace.problem("read() of a missing file threw '" + std::string(e.what()) + "', which does not name " + missing.string());
+      trace.problem("read() of a missing file threw '" + std::string(e.what()) + "', which does not name " +
+                    missing.string());
   }
   const std::string sample = reader.sample();
   if (sample.empty()) return;
@@ -484,7 +495,8 @@ void run_slot(MapReader& reader, const Problem& problem, Trace& trace) {
   trace.add(map->width());
   trace.add(map->height());
   if (map->width() <= 0 || map->height() <= 0)
-    return trace.problem("its sample reads into a " + std::to_string(map->width()) + "x" + std::to_string(map->height()) + " map");
+    return trace.problem("its sample reads into a " + std::to_string(map->width()) + "x" +
+                         std::to_string(map->height()) + " map");
   std::vector<double> free_positions;
   for (int y = 0; y < map->height(); ++y)
     for (int x = 0; x < map->width(); ++x) {
@@ -576,7 +588,9 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
       const std::string name = spec.name;
       if (name == set.given.begin()->first) continue;
       for (auto at = message.find(name); at != std::string::npos; at = message.find(name, at + 1)) {
-        const auto word = [&](std::size_t i) { return i < message.size() && (std::isalnum(static_cast<unsigned char>(message[i])) || message[i] == '_'); };
+        const auto word = [&](std::size_t i) {
+          return i < message.size() && (std::isalnum(static_cast<unsigned char>(message[i])) || message[i] == '_');
+        };
         if ((at == 0 || !word(at - 1)) && !word(at + name.size())) return true;
       }
     }
@@ -588,8 +602,7 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
       try {
         std::unique_ptr<Strategy>(descriptor.create(resolve(descriptor.parameters(), given, plugin.kind + ".")));
         return true;
-      } catch (const Error&) {
-      }
+      } catch (const Error&) {}
     }
     return false;
   };
@@ -618,8 +631,9 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
         const ParamSpec& spec = *std::find_if(descriptor.parameters().begin(), descriptor.parameters().end(),
                                               [&](const ParamSpec& p) { return set.given.count(p.name); });
         result("constructs",
-               "refused " + set.label + ", which its declared " + (spec.range && *spec.range ? "range " + std::string(spec.range) : "type") +
-                   " admits (" + e.what() + "); declare " + set.if_refused + " or accept the value",
+               "refused " + set.label + ", which its declared " +
+                   (spec.range && *spec.range ? "range " + std::string(spec.range) : "type") + " admits (" + e.what() +
+                   "); declare " + set.if_refused + " or accept the value",
                CheckResult::Status::fail);
       }
       continue;
@@ -644,18 +658,22 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
     using S = CheckResult::Status;
     const auto& problems_found = one.trace.problems;
     result("values",
-           problems_found.empty() ? ""
-                                  : problems_found.front() + (problems_found.size() > 1
-                                                                  ? " (and " + std::to_string(problems_found.size() - 1) + " more)"
-                                                                  : ""),
+           problems_found.empty()
+               ? ""
+               : problems_found.front() +
+                     (problems_found.size() > 1 ? " (and " + std::to_string(problems_found.size() - 1) + " more)" : ""),
            problems_found.empty() ? S::pass : S::fail);
     result("deterministic", nondeterminism, nondeterminism.empty() ? S::pass : S::fail);
-    result("threads", by_threads.empty() ? "" : "1 vs 4 threads: " + by_threads, by_threads.empty() ? S::pass : S::fail);
+    result("threads", by_threads.empty() ? "" : "1 vs 4 threads: " + by_threads,
+           by_threads.empty() ? S::pass : S::fail);
     if (!Pass<Interface>::kHasRuns) continue;
     if (!nondeterminism.empty())
       result("reused", "two runs of fresh objects differ already", S::skip);
     else
-      result("reused", one.reuse.empty() ? "" : "a second run of the same object, after runs on other maps, differs from its first: " + one.reuse,
+      result("reused",
+             one.reuse.empty()
+                 ? ""
+                 : "a second run of the same object, after runs on other maps, differs from its first: " + one.reuse,
              one.reuse.empty() ? S::pass : S::fail);
   }
 }

@@ -26,7 +26,8 @@ std::pair<Eigen::Vector2d, Eigen::Vector2d> along(const std::vector<Eigen::Vecto
   double left = u * total;
   for (std::size_t i = 1; i < path.size(); ++i) {
     const Eigen::Vector2d leg = path[i] - path[i - 1];
-    if (left <= leg.norm() || i + 1 == path.size()) return {path[i - 1] + leg * std::min(1.0, left / leg.norm()), leg.normalized()};
+    if (left <= leg.norm() || i + 1 == path.size())
+      return {path[i - 1] + leg * std::min(1.0, left / leg.norm()), leg.normalized()};
     left -= leg.norm();
   }
   return {path.front(), Eigen::Vector2d(1.0, 0.0)};
@@ -42,10 +43,17 @@ json result_json(const SimulationResult& r) {
     plans.push_back(std::move(points));
   }
   for (const aco::Cell& c : r.sensed) sensed.push_back({c.x, c.y});
-  return {{"reached", r.reached},   {"outcome", r.outcome},         {"reason", r.reason},
-          {"time", r.time},         {"distance", r.distance},       {"min_clearance", r.min_clearance},
-          {"collisions", r.collisions}, {"replans", r.replans},     {"steps", r.steps},
-          {"plans", plans},         {"sensed", sensed}};
+  return {{"reached", r.reached},
+          {"outcome", r.outcome},
+          {"reason", r.reason},
+          {"time", r.time},
+          {"distance", r.distance},
+          {"min_clearance", r.min_clearance},
+          {"collisions", r.collisions},
+          {"replans", r.replans},
+          {"steps", r.steps},
+          {"plans", plans},
+          {"sensed", sensed}};
 }
 
 SimulationResult result_from(const json& j) {

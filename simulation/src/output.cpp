@@ -34,8 +34,14 @@ std::string summary_json(const Scenario& scenario, const SimulationResult& r, co
   for (const Frame& f : r.frames) {
     nlohmann::json moving = nlohmann::json::array();
     for (const auto& m : f.moving) moving.push_back({m.x(), m.y()});
-    j["trajectory"].push_back({{"t", f.t}, {"x", f.robot.x}, {"y", f.robot.y}, {"heading", f.robot.heading},
-                               {"v", f.robot.v}, {"w", f.robot.w}, {"plan", f.plan}, {"goal_index", f.goal_index},
+    j["trajectory"].push_back({{"t", f.t},
+                               {"x", f.robot.x},
+                               {"y", f.robot.y},
+                               {"heading", f.robot.heading},
+                               {"v", f.robot.v},
+                               {"w", f.robot.w},
+                               {"plan", f.plan},
+                               {"goal_index", f.goal_index},
                                {"moving", moving}});
   }
   return j.dump();
@@ -46,8 +52,8 @@ std::string trajectory_csv(const SimulationResult& r) {
   out.precision(10);
   out << "t,x,y,heading,v,w,plan,goal_index\n";
   for (const Frame& f : r.frames)
-    out << f.t << "," << f.robot.x << "," << f.robot.y << "," << f.robot.heading << "," << f.robot.v << "," << f.robot.w << ","
-        << f.plan << "," << f.goal_index << "\n";
+    out << f.t << "," << f.robot.x << "," << f.robot.y << "," << f.robot.heading << "," << f.robot.v << "," << f.robot.w
+        << "," << f.plan << "," << f.goal_index << "\n";
   return out.str();
 }
 
@@ -75,26 +81,30 @@ std::string start_mark(double x, double y) {
 }
 std::string goal_mark(double x, double y) {
   std::ostringstream s;
-  s << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"7\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"2.5\"/><circle cx=\"" << x
-    << "\" cy=\"" << y << "\" r=\"3\" fill=\"#000\"/>";
+  s << "<circle cx=\"" << x << "\" cy=\"" << y
+    << "\" r=\"7\" fill=\"#fff\" stroke=\"#000\" stroke-width=\"2.5\"/><circle cx=\"" << x << "\" cy=\"" << y
+    << "\" r=\"3\" fill=\"#000\"/>";
   return s.str();
 }
 // A cross where the robot touched an obstacle: black on a white outline, to stand out on the red
 // of an unknown cell as on the dark grey of a known one.
 std::string collision_mark(double x, double y) {
   std::ostringstream cross;
-  cross << "M" << x - 7 << ',' << y - 7 << "L" << x + 7 << ',' << y + 7 << "M" << x - 7 << ',' << y + 7 << "L" << x + 7 << ',' << y - 7;
+  cross << "M" << x - 7 << ',' << y - 7 << "L" << x + 7 << ',' << y + 7 << "M" << x - 7 << ',' << y + 7 << "L" << x + 7
+        << ',' << y - 7;
   return "<path d=\"" + cross.str() + "\" stroke=\"#fff\" stroke-width=\"6\"/><path d=\"" + cross.str() +
          "\" stroke=\"#000\" stroke-width=\"3\"/>";
 }
 
 // A marker with its word beside it: above and to the right, unless that would leave the map;
 // the white outline keeps the word legible over lines and obstacles.
-void labelled_mark(std::ostream& s, const char* id, const std::string& mark, const char* word, double x, double y, double map_right) {
+void labelled_mark(std::ostream& s, const char* id, const std::string& mark, const char* word, double x, double y,
+                   double map_right) {
   const bool left = x + 10 + aco::text_width(word, kFontSize) > map_right;
   const bool below = y - 8 - kFontSize < kPad;
-  s << "<g id=\"" << id << "\">" << mark << "<text x=\"" << (left ? x - 10 : x + 10) << "\" y=\"" << (below ? y + 8 + kFontSize : y - 8)
-    << "\" text-anchor=\"" << (left ? "end" : "start") << "\" font-family=\"sans-serif\" font-size=\"" << kFontSize
+  s << "<g id=\"" << id << "\">" << mark << "<text x=\"" << (left ? x - 10 : x + 10) << "\" y=\""
+    << (below ? y + 8 + kFontSize : y - 8) << "\" text-anchor=\"" << (left ? "end" : "start")
+    << "\" font-family=\"sans-serif\" font-size=\"" << kFontSize
     << "\" font-weight=\"bold\" stroke=\"#fff\" stroke-width=\"3\" paint-order=\"stroke\">" << word << "</text></g>\n";
 }
 
@@ -107,16 +117,18 @@ struct LegendEntry {
 std::vector<LegendEntry> legend_entries(const Scenario& scenario, const SimulationResult& r, bool moving_discs) {
   const std::string line = "<line x1=\"2\" x2=\"26\" y1=\"7\" y2=\"7\" ";
   const std::string cell = "<rect x=\"7\" y=\"0\" width=\"14\" height=\"14\" ";
-  std::vector<LegendEntry> entries{{start_mark(14, 7), "start"}, {goal_mark(14, 7), "goal"},
-                                   {cell + kObstacleFill + "/>", "obstacle on the map"}};
+  std::vector<LegendEntry> entries{
+      {start_mark(14, 7), "start"}, {goal_mark(14, 7), "goal"}, {cell + kObstacleFill + "/>", "obstacle on the map"}};
   if (!scenario.unknown.empty()) entries.push_back({cell + kUnknownFill + "/>", "obstacle the map did not show"});
   if (!r.plans.empty()) entries.push_back({line + kFirstPlanStyle + "/>", "planned path"});
   if (r.plans.size() > 1)
-    entries.push_back({line + kReplanStyle + "/>", "replanned path" + std::string(r.plans.size() > 2 ? "s" : "") + " (" +
-                                                        std::to_string(r.plans.size() - 1) + ")"});
+    entries.push_back({line + kReplanStyle + "/>", "replanned path" + std::string(r.plans.size() > 2 ? "s" : "") +
+                                                       " (" + std::to_string(r.plans.size() - 1) + ")"});
   if (!scenario.moving.empty()) {
     entries.push_back({line + kTrackStyle + "/>", "moving obstacle's track"});
-    if (moving_discs) entries.push_back({"<circle cx=\"14\" cy=\"7\" r=\"6\" " + std::string(kMovingFill) + "/>", "moving obstacle at the end"});
+    if (moving_discs)
+      entries.push_back(
+          {"<circle cx=\"14\" cy=\"7\" r=\"6\" " + std::string(kMovingFill) + "/>", "moving obstacle at the end"});
   }
   entries.push_back({line + kTrajectoryStyle + "/>", "driven trajectory"});
   if (r.collisions > 0) entries.push_back({collision_mark(14, 7), "collision"});
@@ -130,11 +142,11 @@ double legend_width(const std::vector<LegendEntry>& entries) {
 }
 
 void draw_legend(std::ostream& s, const std::vector<LegendEntry>& entries, double left, double top) {
-  s << "<g id=\"legend\" class=\"legend\" transform=\"translate(" << left << ',' << top << ")\" font-family=\"sans-serif\" font-size=\""
-    << kFontSize << "\">\n";
+  s << "<g id=\"legend\" class=\"legend\" transform=\"translate(" << left << ',' << top
+    << ")\" font-family=\"sans-serif\" font-size=\"" << kFontSize << "\">\n";
   for (std::size_t i = 0; i < entries.size(); ++i)
-    s << "<g class=\"legend-entry\" transform=\"translate(0," << double(i) * kLegendRow << ")\">" << entries[i].swatch << "<text x=\""
-      << kSwatch + 8 << "\" y=\"12\">" << aco::xml_escape(entries[i].text) << "</text></g>\n";
+    s << "<g class=\"legend-entry\" transform=\"translate(0," << double(i) * kLegendRow << ")\">" << entries[i].swatch
+      << "<text x=\"" << kSwatch + 8 << "\" y=\"12\">" << aco::xml_escape(entries[i].text) << "</text></g>\n";
   s << "</g>\n";
 }
 
@@ -147,7 +159,8 @@ std::string picture(const Scenario& scenario, const SimulationResult& r, const s
   const double map_right = kPad + map.width() * kCell, map_bottom = kPad + map.height() * kCell;
   std::ostringstream summary;
   summary.precision(6);
-  summary << r.outcome << (r.reason.empty() ? "" : ": " + r.reason) << "; time " << r.time << " s, " << r.replans << " replans";
+  summary << r.outcome << (r.reason.empty() ? "" : ": " + r.reason) << "; time " << r.time << " s, " << r.replans
+          << " replans";
   const std::string outcome = summary.str();
   const auto entries = legend_entries(scenario, r, moving_discs);
   const double legend_left = map_right + kLegendGap;
@@ -155,10 +168,10 @@ std::string picture(const Scenario& scenario, const SimulationResult& r, const s
   const double height = std::max(map_bottom + 24, kPad + double(entries.size()) * kLegendRow) + kPad;
   std::ostringstream s;
   s.precision(6);
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" id=\"world\" width=\"" << width << "\" height=\"" << height << "\" viewBox=\"0 0 "
-    << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  s << "<rect x=\"" << kPad << "\" y=\"" << kPad << "\" width=\"" << map.width() * kCell << "\" height=\"" << map.height() * kCell
-    << "\" fill=\"none\" stroke=\"#888\"/>\n";
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" id=\"world\" width=\"" << width << "\" height=\"" << height
+    << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s << "<rect x=\"" << kPad << "\" y=\"" << kPad << "\" width=\"" << map.width() * kCell << "\" height=\""
+    << map.height() * kCell << "\" fill=\"none\" stroke=\"#888\"/>\n";
   // Obstacle cells merged into horizontal runs, drawn with crisp edges: no seams between them.
   s << "<g id=\"obstacles\" " << kObstacleFill << " shape-rendering=\"crispEdges\">\n";
   for (int y = 0; y < map.height(); ++y)
@@ -166,14 +179,14 @@ std::string picture(const Scenario& scenario, const SimulationResult& r, const s
       int end = x;
       while (end < map.width() && !map.passable({end, y})) ++end;
       if (end > x)
-        s << "<rect x=\"" << kPad + x * kCell << "\" y=\"" << kPad + y * kCell << "\" width=\"" << (end - x) * kCell << "\" height=\""
-          << kCell << "\"/>\n";
+        s << "<rect x=\"" << kPad + x * kCell << "\" y=\"" << kPad + y * kCell << "\" width=\"" << (end - x) * kCell
+          << "\" height=\"" << kCell << "\"/>\n";
       x = std::max(end, x + 1);
     }
   s << "</g>\n<g id=\"unknown\" " << kUnknownFill << " shape-rendering=\"crispEdges\">\n";
   for (const aco::Cell& c : scenario.unknown)
-    s << "<rect class=\"unknown\" x=\"" << kPad + c.x * kCell << "\" y=\"" << kPad + c.y * kCell << "\" width=\"" << kCell
-      << "\" height=\"" << kCell << "\"/>\n";
+    s << "<rect class=\"unknown\" x=\"" << kPad + c.x * kCell << "\" y=\"" << kPad + c.y * kCell << "\" width=\""
+      << kCell << "\" height=\"" << kCell << "\"/>\n";
   s << "</g>\n";
   const auto polyline = [&](const std::vector<Eigen::Vector2d>& points, const std::string& attributes) {
     s << "<polyline fill=\"none\" " << attributes << " points=\"";
@@ -196,18 +209,19 @@ std::string picture(const Scenario& scenario, const SimulationResult& r, const s
       s << "<circle class=\"moving-end\" cx=\"" << px(at.x()) << "\" cy=\"" << px(at.y()) << "\" r=\""
         << scenario.moving[k].radius * kCell << "\" " << kMovingFill << "/>\n";
     }
-  labelled_mark(s, "start", start_mark(px(scenario.start.x), px(scenario.start.y)), "start", px(scenario.start.x), px(scenario.start.y),
-                map_right);
-  labelled_mark(s, "goal", goal_mark(px(scenario.goal.x), px(scenario.goal.y)), "goal", px(scenario.goal.x), px(scenario.goal.y),
-                map_right);
+  labelled_mark(s, "start", start_mark(px(scenario.start.x), px(scenario.start.y)), "start", px(scenario.start.x),
+                px(scenario.start.y), map_right);
+  labelled_mark(s, "goal", goal_mark(px(scenario.goal.x), px(scenario.goal.y)), "goal", px(scenario.goal.x),
+                px(scenario.goal.y), map_right);
   if (r.collisions > 0 && !r.frames.empty()) {
     const auto& robot = r.frames.back().robot;
     s << "<g id=\"collision\">" << collision_mark(px(robot.x), px(robot.y)) << "</g>\n";
   }
   s << extra;
   draw_legend(s, entries, legend_left, kPad);
-  s << "<text id=\"outcome\" x=\"" << kPad << "\" y=\"" << map_bottom + 18 << "\" font-family=\"sans-serif\" font-size=\"" << kFontSize
-    << "\">" << aco::xml_escape(outcome) << "</text>\n</svg>\n";
+  s << "<text id=\"outcome\" x=\"" << kPad << "\" y=\"" << map_bottom + 18
+    << "\" font-family=\"sans-serif\" font-size=\"" << kFontSize << "\">" << aco::xml_escape(outcome)
+    << "</text>\n</svg>\n";
   return s.str();
 }
 
@@ -232,14 +246,18 @@ std::string render_html(const Scenario& scenario, const SimulationResult& r) {
     frames.push_back(row);
   }
   std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>acosim: " << aco::xml_escape(scenario.file.filename().string())
-       << "</title>\n<style>body{font-family:sans-serif;margin:16px} #controls{margin:8px 0} #slider{width:420px}</style>\n"
-       << "</head><body>\n<h1>acosim: " << aco::xml_escape(scenario.file.string()) << "</h1>\n<p>" << aco::xml_escape(r.outcome)
-       << (r.reason.empty() ? "" : ": " + aco::xml_escape(r.reason)) << "; " << r.time << " s, " << r.distance << " driven, "
-       << r.replans << " replans, local planner " << aco::xml_escape(scenario.run.pipeline.at("local").plugin) << "</p>\n"
+  html << "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>acosim: "
+       << aco::xml_escape(scenario.file.filename().string())
+       << "</title>\n<style>body{font-family:sans-serif;margin:16px} #controls{margin:8px 0} "
+          "#slider{width:420px}</style>\n"
+       << "</head><body>\n<h1>acosim: " << aco::xml_escape(scenario.file.string()) << "</h1>\n<p>"
+       << aco::xml_escape(r.outcome) << (r.reason.empty() ? "" : ": " + aco::xml_escape(r.reason)) << "; " << r.time
+       << " s, " << r.distance << " driven, " << r.replans << " replans, local planner "
+       << aco::xml_escape(scenario.run.pipeline.at("local").plugin) << "</p>\n"
        << "<div id=\"controls\"><button id=\"play\">play</button> <input id=\"slider\" type=\"range\" min=\"0\" max=\""
        << r.frames.size() - 1 << "\" value=\"0\"> <span id=\"time\">0 s</span> <span id=\"speed\"></span></div>\n"
-       << picture(scenario, r, robot.str(), false) << "<script>\nconst frames = " << frames.dump() << ";\nconst radius = " << radius << ";\n"
+       << picture(scenario, r, robot.str(), false) << "<script>\nconst frames = " << frames.dump()
+       << ";\nconst radius = " << radius << ";\n"
        << R"JS(const slider = document.getElementById('slider'), play = document.getElementById('play');
 const body = document.getElementById('robot-body'), heading = document.getElementById('robot-heading');
 const discs = document.querySelectorAll('.disc');

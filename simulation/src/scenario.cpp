@@ -21,7 +21,8 @@ const aco::SettingsTable<RobotSettings>& robot_table() {
       aco::field("max-speed", &R::max_speed, "(0:100]", "top speed v_max (paper 003: 1.5 m/s)"),
       aco::field("max-yaw-rate", &R::max_yaw_rate, "(0:3600]", "top turn rate in degrees/s (paper 003: 20)"),
       aco::field("max-accel", &R::max_accel, "(0:1000]", "acceleration and braking limit (paper 003: 0.2 m/s^2)"),
-      aco::field("max-yaw-accel", &R::max_yaw_accel, "(0:36000]", "turn-rate change limit in degrees/s^2 (paper 003: 50)"),
+      aco::field("max-yaw-accel", &R::max_yaw_accel, "(0:36000]",
+                 "turn-rate change limit in degrees/s^2 (paper 003: 50)"),
       aco::field("min-speed", &R::min_speed, "-100:0",
                  "slowest forward speed; below 0 the robot may back up (not in the paper, whose V_s starts at v_min)"),
   });
@@ -35,7 +36,8 @@ const aco::SettingsTable<SimulationSettings>& simulation_table() {
       aco::field("sensor-range", &S::sensor_range, "(0:1000]", "obstacles within this distance of the robot are seen"),
       aco::field("time-limit", &S::time_limit, "(0:1e6]", "seconds before the run counts as a timeout"),
       aco::field("goal-tolerance", &S::goal_tolerance, "(0:100]", "the goal is reached within this distance"),
-      aco::field("waypoint-tolerance", &S::waypoint_tolerance, "(0:100]", "an intermediate goal is passed within this distance"),
+      aco::field("waypoint-tolerance", &S::waypoint_tolerance, "(0:100]",
+                 "an intermediate goal is passed within this distance"),
       aco::field("stall-time", &S::stall_time, "(0:1e6]", "seconds without progress before the robot replans"),
       aco::field("stall-distance", &S::stall_distance, "(0:100]",
                  "progress: the distance to the intermediate goal shrinking by this much"),
@@ -46,8 +48,8 @@ const aco::SettingsTable<SimulationSettings>& simulation_table() {
 
 // A mapping of settings read through its table; errors name the file and line of the key.
 template <class Settings>
-Settings read_settings(const std::filesystem::path& file, const YAML::Node& node, const aco::SettingsTable<Settings>& table,
-                       const std::string& section) {
+Settings read_settings(const std::filesystem::path& file, const YAML::Node& node,
+                       const aco::SettingsTable<Settings>& table, const std::string& section) {
   if (!node) return Settings{};
   if (!node.IsMap()) fail(file, node, "'" + section + "' must be a mapping of keys to values");
   std::map<std::string, std::string> given, origins;
@@ -65,7 +67,8 @@ Settings read_settings(const std::filesystem::path& file, const YAML::Node& node
 }
 
 Eigen::Vector2d point(const std::filesystem::path& file, const YAML::Node& node, const std::string& key) {
-  if (!node || !node.IsSequence() || node.size() != 2) fail(file, node ? node : YAML::Node(), "'" + key + "' must be a point [x, y]");
+  if (!node || !node.IsSequence() || node.size() != 2)
+    fail(file, node ? node : YAML::Node(), "'" + key + "' must be a point [x, y]");
   try {
     return {node[0].as<double>(), node[1].as<double>()};
   } catch (const YAML::Exception&) {
@@ -80,7 +83,8 @@ double number(const std::filesystem::path& file, const YAML::Node& node, const s
   } catch (const YAML::Exception&) {
     fail(file, node, "'" + key + "' must be a number");
   }
-  if (!(value > low) || !std::isfinite(value)) fail(file, node, "'" + key + "' must be a number above " + aco::to_string(aco::ParamValue(low)));
+  if (!(value > low) || !std::isfinite(value))
+    fail(file, node, "'" + key + "' must be a number above " + aco::to_string(aco::ParamValue(low)));
   return value;
 }
 
@@ -89,8 +93,10 @@ MovingObstacle read_moving(const std::filesystem::path& file, const YAML::Node& 
   MovingObstacle m;
   if (node["radius"]) m.radius = number(file, node["radius"], "radius", 0.0);
   if (node["route"]) {
-    if (node["position"] || node["velocity"]) fail(file, node, "a moving obstacle has either a route and a speed, or a position and a velocity");
-    if (!node["route"].IsSequence() || node["route"].size() < 2) fail(file, node["route"], "'route' must list at least two points");
+    if (node["position"] || node["velocity"])
+      fail(file, node, "a moving obstacle has either a route and a speed, or a position and a velocity");
+    if (!node["route"].IsSequence() || node["route"].size() < 2)
+      fail(file, node["route"], "'route' must list at least two points");
     for (const auto& p : node["route"]) m.route.push_back(point(file, p, "route"));
     if (!node["speed"]) fail(file, node, "a moving obstacle with a route needs a 'speed'");
     m.speed = number(file, node["speed"], "speed", 0.0);
@@ -113,19 +119,22 @@ aco::RunSpec resolve(const aco::KeyedValues& keys, aco::PluginRegistry& registry
 std::string period_error(const Scenario& s) {
   const aco::ParameterValues& local = s.run.pipeline.at("local").parameters;
   if (!local.contains("horizon") || s.simulation.period <= local.real("horizon")) return "";
-  return "the control period " + aco::to_string(aco::ParamValue(s.simulation.period)) + " s is longer than the local planner's horizon " +
-         aco::to_string(aco::ParamValue(local.real("horizon"))) + " s";
+  return "the control period " + aco::to_string(aco::ParamValue(s.simulation.period)) +
+         " s is longer than the local planner's horizon " + aco::to_string(aco::ParamValue(local.real("horizon"))) +
+         " s";
 }
 
 }  // namespace
 
 Scenario with_run_keys(const Scenario& scenario, const aco::KeyedValues& changes, aco::PluginRegistry& registry) {
   for (const char* key : {"map", "scen", "scen-index", "start", "goal", "seed"})
-    if (changes.keys.count(key)) throw aco::Error(changes.origin(key) + "'" + key + "' is the scenario's, not a run key to change");
+    if (changes.keys.count(key))
+      throw aco::Error(changes.origin(key) + "'" + key + "' is the scenario's, not a run key to change");
   Scenario s = scenario;
   s.keys = aco::overlay(scenario.keys, changes);
   s.run = resolve(s.keys, registry);
-  if (const std::string error = period_error(s); !error.empty()) throw aco::Error(scenario.file.string() + ": " + error);
+  if (const std::string error = period_error(s); !error.empty())
+    throw aco::Error(scenario.file.string() + ": " + error);
   return s;
 }
 
@@ -157,7 +166,8 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
 
   s.robot = read_settings(file, doc["robot"], robot_table(), "robot");
   s.simulation = read_settings(file, doc["simulation"], simulation_table(), "simulation");
-  if (const std::string error = period_error(s); !error.empty()) fail(file, doc["simulation"] ? doc["simulation"] : doc, error);
+  if (const std::string error = period_error(s); !error.empty())
+    fail(file, doc["simulation"] ? doc["simulation"] : doc, error);
 
   const aco::LoadedProblem problem = aco::load_problem(s.run.problem, &registry);
   const auto* grid = dynamic_cast<const aco::OccupancyGrid*>(problem.map.get());
@@ -174,7 +184,8 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
       const aco::Cell c = aco::yaml::cell(file, entry, "unknown");
       if (!s.map->contains(c)) fail(file, entry, "unknown obstacle " + aco::to_string(c) + " is outside the map");
       if (aco::distance_to_square(start, {c.x, c.y}, 1.0) < s.robot.radius)
-        fail(file, entry, "unknown obstacle " + aco::to_string(c) + " overlaps the robot at the start " + aco::to_string(s.start));
+        fail(file, entry,
+             "unknown obstacle " + aco::to_string(c) + " overlaps the robot at the start " + aco::to_string(s.start));
       if (c == s.goal) fail(file, entry, "unknown obstacle " + aco::to_string(c) + " is on the goal");
       s.unknown.push_back(c);
     }

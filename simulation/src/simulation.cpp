@@ -36,7 +36,9 @@ namespace {
 
 Eigen::Vector2d centre(aco::Cell c) { return {double(c.x), double(c.y)}; }
 // The cell whose square holds p.
-aco::Cell cell_under(const Eigen::Vector2d& p) { return {static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))}; }
+aco::Cell cell_under(const Eigen::Vector2d& p) {
+  return {static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
+}
 
 // The world as the simulator knows it: the truth (map plus unknown cells) and the robot's map.
 class World {
@@ -102,18 +104,18 @@ std::vector<Eigen::Vector2d> turning_points(const aco::Waypoints& path) {
 
 // A command out of the window by more than rounding (or NaN) is the local planner's bug: clamped,
 // it would hide it, or drive the robot by NaN into every output.
-[[noreturn]] void reject_command(const aco::LocalPlanner& planner, const aco::VelocityCommand& c, const aco::DynamicWindow& window,
-                                 int step, double t) {
+[[noreturn]] void reject_command(const aco::LocalPlanner& planner, const aco::VelocityCommand& c,
+                                 const aco::DynamicWindow& window, int step, double t) {
   const auto number = [](double v) {
     std::ostringstream text;
     text << v;
     return text.str();
   };
-  throw aco::InvalidValueError(aco::describe_plugin(planner, "local") + " returned the command v = " + number(c.v) + ", w = " + number(c.w) +
-                   " in command() at control step " + std::to_string(step) + " (0-based, t = " + number(t) +
-                   " s), outside the dynamic window v in [" + number(window.v_low) + ", " + number(window.v_high) +
-                   "], w in [" + number(window.w_low) + ", " + number(window.w_high) +
-                   "] (a command must be finite and inside it)");
+  throw aco::InvalidValueError(
+      aco::describe_plugin(planner, "local") + " returned the command v = " + number(c.v) + ", w = " + number(c.w) +
+      " in command() at control step " + std::to_string(step) + " (0-based, t = " + number(t) +
+      " s), outside the dynamic window v in [" + number(window.v_low) + ", " + number(window.v_high) + "], w in [" +
+      number(window.w_low) + ", " + number(window.w_high) + "] (a command must be finite and inside it)");
 }
 
 }  // namespace
@@ -210,14 +212,16 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
     aco::LocalView view{robot, limits, sim.period, goals[next], cells, 1.0, seen, path};
     const aco::DynamicWindow window = aco::dynamic_window(robot, limits, sim.period);
     const aco::VelocityCommand wanted = pipeline.local->command(view);
-    if (!window.contains(wanted, aco::kWindowTolerance)) reject_command(*pipeline.local, wanted, window, result.steps, t);
+    if (!window.contains(wanted, aco::kWindowTolerance))
+      reject_command(*pipeline.local, wanted, window, result.steps, t);
     const aco::VelocityCommand command = window.clamp(wanted);  // rounding's excess only
     const aco::RobotState moved = aco::move(robot, command, sim.period);
     result.distance += (moved.position() - robot.position()).norm();
     robot = moved;
     t += sim.period;
     ++result.steps;
-    result.frames.push_back({t, robot, static_cast<int>(next), static_cast<int>(result.plans.size()) - 1, moving_at(t)});
+    result.frames.push_back(
+        {t, robot, static_cast<int>(next), static_cast<int>(result.plans.size()) - 1, moving_at(t)});
 
     aco::Cell touched;
     double clearance = world.clearance(robot.position(), limits.radius, touched);

@@ -40,15 +40,17 @@ Configuration overlay(const Configuration& base, const Configuration& changes, c
 
 // The recommended preset for the experiment's maps, for configurations that name none: robust on
 // 2D maps, terrain on height maps. Simulation problems keep their scenario's own pipeline.
-Configuration default_pipeline(const std::filesystem::path& file, const YAML::Node& doc, const std::vector<Problem>& problems) {
+Configuration default_pipeline(const std::filesystem::path& file, const YAML::Node& doc,
+                               const std::vector<Problem>& problems) {
   std::set<std::string> kinds;
   for (const Problem& p : problems) {
     if (p.simulation) return Configuration();
     kinds.insert(aco::default_preset(p.map));
   }
   if (kinds.size() > 1)
-    fail(file, doc["problems"], "the problems mix 2D maps and height maps, whose recommended pipelines differ: name one "
-                                "(settings: {preset: robust}, or terrain, or config: FILE)");
+    fail(file, doc["problems"],
+         "the problems mix 2D maps and height maps, whose recommended pipelines differ: name one "
+         "(settings: {preset: robust}, or terrain, or config: FILE)");
   Configuration c;
   static_cast<aco::KeyedValues&>(c) = aco::preset_keys(kinds.empty() ? "robust" : *kinds.begin());
   return c;
@@ -61,21 +63,25 @@ Configuration read_keys(const std::filesystem::path& file, const YAML::Node& nod
   return c;
 }
 
-std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML::Node& list, aco::PluginRegistry& registry) {
-  if (!list || !list.IsSequence() || list.size() == 0) fail(file, list ? list : YAML::Node(), "'problems' must be a non-empty list");
+std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML::Node& list,
+                                   aco::PluginRegistry& registry) {
+  if (!list || !list.IsSequence() || list.size() == 0)
+    fail(file, list ? list : YAML::Node(), "'problems' must be a non-empty list");
   const auto dir = file.parent_path();
   std::vector<Problem> problems;
   for (const auto& entry : list) {
     // Before any entry["key"]: yaml-cpp throws its own exception for a subscript of a scalar.
     if (!entry.IsMap())
-      fail(file, entry, "a problem is a mapping ({map: FILE, start: [x, y], goal: [x, y]}, {scen: FILE} or "
-                        "{simulation: FILE}), not a single value");
+      fail(file, entry,
+           "a problem is a mapping ({map: FILE, start: [x, y], goal: [x, y]}, {scen: FILE} or "
+           "{simulation: FILE}), not a single value");
     if (entry["simulation"]) {
       only_keys(file, entry, {"simulation", "variations", "name"}, "a simulation problem");
       const std::string scenario = scalar(file, entry["simulation"], "simulation");
       Problem p;
       try {
-        p.simulation = std::make_shared<const aco::simulation::Scenario>(aco::simulation::load_scenario(dir / scenario, registry));
+        p.simulation =
+            std::make_shared<const aco::simulation::Scenario>(aco::simulation::load_scenario(dir / scenario, registry));
       } catch (const aco::Error& e) {
         fail(file, entry["simulation"], e.what());
       }
@@ -96,8 +102,9 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
       }
       const int count = entry["count"] ? integer(file, entry["count"], "count", 1) : static_cast<int>(scenarios.size());
       if (count > static_cast<int>(scenarios.size()))
-        fail(file, entry["count"], "count " + std::to_string(count) + " exceeds the " + std::to_string(scenarios.size()) +
-                                       " scenarios of " + scen.string());
+        fail(file, entry["count"],
+             "count " + std::to_string(count) + " exceeds the " + std::to_string(scenarios.size()) + " scenarios of " +
+                 scen.string());
       const std::string prefix = entry["name"] ? scalar(file, entry["name"], "name") : scen.stem().stem().string();
       // Evenly spread over the file, which Moving AI orders by difficulty (bucket).
       for (int i = 0; i < count; ++i) {
@@ -121,7 +128,8 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
           reader_keys[name.substr(4)] = scalar(file, key.second, name);
         }
       only_keys(file, entry, allowed, "a problem");
-      if (!entry["map"] || !entry["start"] || !entry["goal"]) fail(file, entry, "a problem needs map, start and goal (or scen)");
+      if (!entry["map"] || !entry["start"] || !entry["goal"])
+        fail(file, entry, "a problem needs map, start and goal (or scen)");
       const std::string map = scalar(file, entry["map"], "map");
       Problem p;
       p.map = dir / map;
@@ -144,7 +152,8 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
 }
 
 // Full factorial over `factors` (key -> values), each combination overlaid on the baseline.
-std::vector<Configuration> factorial(const std::filesystem::path& file, const YAML::Node& node, const Configuration& base) {
+std::vector<Configuration> factorial(const std::filesystem::path& file, const YAML::Node& node,
+                                     const Configuration& base) {
   if (!node.IsMap()) fail(file, node, "'factorial' must map keys to lists of values");
   std::vector<std::pair<std::string, std::vector<std::string>>> factors;
   for (const auto& entry : node) {
@@ -190,7 +199,8 @@ std::vector<const Configuration*> null_model_subjects(const std::filesystem::pat
     const auto it = std::find_if(configs.begin(), configs.end(), [&](const auto& c) { return c.name == name; });
     if (it == configs.end()) fail(file, entry, "null-models: '" + name + "' is not a configuration of this file");
     if (it->run->planner != "aco")
-      fail(file, entry, "null-models: '" + name + "' runs the planner '" + it->run->planner + "'; only a colony has twins");
+      fail(file, entry,
+           "null-models: '" + name + "' runs the planner '" + it->run->planner + "'; only a colony has twins");
     if (is_twin(*it)) fail(file, entry, "null-models: '" + name + "' is itself a null model (it sets null-model)");
     if (std::find(subjects.begin(), subjects.end(), &*it) != subjects.end())
       fail(file, entry, "null-models: '" + name + "' is named twice");
@@ -202,7 +212,8 @@ std::vector<const Configuration*> null_model_subjects(const std::filesystem::pat
 // The no-learning and restart twins of `subject`: its keys with null-model set.
 std::vector<Configuration> twins(const Configuration& subject, const std::string& origin) {
   std::vector<Configuration> result;
-  for (const auto& [model, label] : {std::pair{"no-learning", " (no learning)"}, std::pair{"restarts", " (restarts)"}}) {
+  for (const auto& [model, label] :
+       {std::pair{"no-learning", " (no learning)"}, std::pair{"restarts", " (restarts)"}}) {
     Configuration twin = subject;
     twin.name += label;
     twin.keys["null-model"] = model;
@@ -222,7 +233,8 @@ aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry)
   for (const char* key : {"map", "scen", "scen-index", "start", "goal"})
     if (config.keys.count(key))
       throw fail_key(key, "'" + std::string(key) + "' belongs to the problems: list them under 'problems'");
-  if (config.keys.count("seed")) throw fail_key("seed", "'seed' is set per trial from the experiment's seed, not per configuration");
+  if (config.keys.count("seed"))
+    throw fail_key("seed", "'seed' is set per trial from the experiment's seed, not per configuration");
   try {
     return aco::resolve_run(config.keys, registry);
   } catch (const aco::KeyError& e) {
@@ -231,13 +243,15 @@ aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry)
 }
 
 aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& problems, aco::PluginRegistry& registry) {
-  const bool all_simulations =
-      !problems.empty() && std::all_of(problems.begin(), problems.end(), [](const Problem& p) { return p.simulation != nullptr; });
+  const bool all_simulations = !problems.empty() && std::all_of(problems.begin(), problems.end(), [](const Problem& p) {
+    return p.simulation != nullptr;
+  });
   if (!all_simulations) return resolve(config, registry);
   try {
     return aco::simulation::with_run_keys(*problems.front().simulation, config, registry).run;
   } catch (const aco::Error& e) {
-    throw aco::Error("configuration '" + config.name + "' over " + problems.front().simulation->file.string() + ": " + e.what());
+    throw aco::Error("configuration '" + config.name + "' over " + problems.front().simulation->file.string() + ": " +
+                     e.what());
   }
 }
 
@@ -245,8 +259,8 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   const YAML::Node doc = aco::yaml::load_file(file, "experiment");
   if (!doc.IsMap()) throw aco::Error(file.string() + ": an experiment file is a YAML mapping (name, problems, ...)");
   only_keys(file, doc,
-            {"name", "seed", "repetitions", "problems", "settings", "baseline", "configurations", "factorial", "ablation",
-             "null-models", "trial-timeout", "trial-memory"},
+            {"name", "seed", "repetitions", "problems", "settings", "baseline", "configurations", "factorial",
+             "ablation", "null-models", "trial-timeout", "trial-memory"},
             "the experiment");
   Experiment e;
   e.file = file;
@@ -254,7 +268,8 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   if (doc["seed"]) e.seed = static_cast<std::uint64_t>(integer(file, doc["seed"], "seed", 0));
   if (doc["repetitions"]) e.repetitions = integer(file, doc["repetitions"], "repetitions", 1);
   try {
-    if (doc["trial-timeout"]) e.trial_timeout_s = aco::parse_seconds(scalar(file, doc["trial-timeout"], "trial-timeout"), "trial-timeout");
+    if (doc["trial-timeout"])
+      e.trial_timeout_s = aco::parse_seconds(scalar(file, doc["trial-timeout"], "trial-timeout"), "trial-timeout");
     if (doc["trial-memory"])
       e.trial_memory_bytes = aco::parse_memory_size(scalar(file, doc["trial-memory"], "trial-memory"), "trial-memory");
   } catch (const aco::Error& error) {
@@ -264,12 +279,14 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
 
   const Configuration common = doc["settings"] ? read_keys(file, doc["settings"]) : Configuration();
   const Configuration own = doc["baseline"] ? read_keys(file, doc["baseline"]) : Configuration();
-  const std::string baseline_name = doc["baseline"] && doc["baseline"]["name"] ? scalar(file, doc["baseline"]["name"], "name") : "baseline";
+  const std::string baseline_name =
+      doc["baseline"] && doc["baseline"]["name"] ? scalar(file, doc["baseline"]["name"], "name") : "baseline";
   // A configuration that names no pipeline (config or preset, in itself, the baseline or the
   // settings) runs the recommended one, as acoplan does.
   const Configuration named_baseline = overlay(common, own, baseline_name);
   const bool base_names_one = names_pipeline(doc["settings"]) || names_pipeline(doc["baseline"]);
-  e.baseline = base_names_one ? named_baseline : overlay(default_pipeline(file, doc, e.problems), named_baseline, baseline_name);
+  e.baseline =
+      base_names_one ? named_baseline : overlay(default_pipeline(file, doc, e.problems), named_baseline, baseline_name);
   e.configurations.push_back(e.baseline);
   if (doc["configurations"]) {
     if (!doc["configurations"].IsSequence()) fail(file, doc["configurations"], "'configurations' must be a list");
@@ -286,8 +303,10 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
     const YAML::Node target = doc["ablation"]["target"];
     if (!target) fail(file, doc["ablation"], "'ablation' needs a 'target' configuration name");
     const std::string name = scalar(file, target, "target");
-    const auto it = std::find_if(e.configurations.begin(), e.configurations.end(), [&](const auto& c) { return c.name == name; });
-    if (it == e.configurations.end()) fail(file, target, "the ablation target '" + name + "' is not a configuration of this file");
+    const auto it =
+        std::find_if(e.configurations.begin(), e.configurations.end(), [&](const auto& c) { return c.name == name; });
+    if (it == e.configurations.end())
+      fail(file, target, "the ablation target '" + name + "' is not a configuration of this file");
     e.ablation_target = *it;
   }
   for (auto& c : e.configurations) c.run = resolve(c, e.problems, registry);
@@ -302,7 +321,8 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   }
   std::set<std::string> names;
   for (const auto& c : e.configurations)
-    if (!names.insert(c.name).second) throw aco::Error(file.string() + ": two configurations are named '" + c.name + "'");
+    if (!names.insert(c.name).second)
+      throw aco::Error(file.string() + ": two configurations are named '" + c.name + "'");
   e.baseline.run = e.configurations.front().run;
   return e;
 }
@@ -319,8 +339,10 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
   j["repetitions"] = repetitions;
   j["seed"] = seed;
   for (const auto& p : problems) {
-    nlohmann::json problem = {{"name", p.name}, {"map", relative_to_file(p.map)},
-                              {"start", {p.start.x, p.start.y}}, {"goal", {p.goal.x, p.goal.y}}};
+    nlohmann::json problem = {{"name", p.name},
+                              {"map", relative_to_file(p.map)},
+                              {"start", {p.start.x, p.start.y}},
+                              {"goal", {p.goal.x, p.goal.y}}};
     if (!p.map_format.empty()) problem["map-format"] = p.map_format;
     for (const auto& [name, value] : p.map_parameters.all()) problem["map." + name] = aco::to_string(value);
     // A scenario's world is its file's: the file named, not its contents (as a map is).
@@ -340,7 +362,8 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
       // file named from another working folder (acobench's workers load the experiment by its
       // absolute path) is the same experiment.
       for (const char* key : {"map", "scen"})
-        if (entry["run"].contains(key) && entry["run"][key].is_string() && !entry["run"][key].get<std::string>().empty())
+        if (entry["run"].contains(key) && entry["run"][key].is_string() &&
+            !entry["run"][key].get<std::string>().empty())
           entry["run"][key] = relative_to_file(entry["run"][key].get<std::string>());
     }
     j["configurations"].push_back(entry);
@@ -406,7 +429,8 @@ std::vector<std::vector<std::string>> ablation_components(const Configuration& f
   return components;
 }
 
-Configuration flip(const Configuration& config, const Configuration& target, const std::vector<std::string>& component) {
+Configuration flip(const Configuration& config, const Configuration& target,
+                   const std::vector<std::string>& component) {
   Configuration c = config;
   c.run.reset();
   for (const auto& k : component) {

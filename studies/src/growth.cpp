@@ -71,8 +71,9 @@ std::vector<std::string> differences(const json& stored, const json& now) {
 
 // "configuration 'a': X", or one line for a difference several share ("configurations 'a',
 // 'b': X"; "every configuration: X" when all of `of` do).
-void grouped(const std::map<std::string, std::vector<std::string>>& names_by_line, std::size_t of, const std::string& one,
-             const std::string& several, const std::string& every, std::vector<std::string>& out) {
+void grouped(const std::map<std::string, std::vector<std::string>>& names_by_line, std::size_t of,
+             const std::string& one, const std::string& several, const std::string& every,
+             std::vector<std::string>& out) {
   for (const auto& [line, names] : names_by_line) {
     if (names.size() > 1 && names.size() == of) {
       out.push_back(every + ": " + line);
@@ -116,18 +117,22 @@ std::vector<std::string> fingerprint_conflicts(const std::string& stored_text, c
   if (!is_fingerprint(stored) || !is_fingerprint(now)) return {fingerprint_change(stored_text, now_text)};
   std::vector<std::string> lines;
   if (stored.value("seed", json()) != now.value("seed", json()))
-    lines.push_back("seed " + shown(&stored.at("seed")) + " -> " + shown(&now.at("seed")) + " (every trial's seed derives from it)");
-  if (stored.contains("ablation_target") && now.contains("ablation_target") && stored["ablation_target"] != now["ablation_target"])
+    lines.push_back("seed " + shown(&stored.at("seed")) + " -> " + shown(&now.at("seed")) +
+                    " (every trial's seed derives from it)");
+  if (stored.contains("ablation_target") && now.contains("ablation_target") &&
+      stored["ablation_target"] != now["ablation_target"])
     lines.push_back("ablation target " + shown(&stored["ablation_target"]) + " -> " + shown(&now["ablation_target"]) +
                     " (the stored ablation path leads to the other)");
   if (stored.contains("ablation_target")) {
     const Growth g = growth(stored_text, now_text);
     if (!g.added_problems.empty() || g.repetitions_now > g.repetitions_before)
-      lines.push_back("ablation: the stored path was chosen on the stored problems and repetitions; with more it "
-                      "may take another, whose rounds the database cannot hold beside it: add no problems or "
-                      "repetitions to an experiment with an ablation path");
+      lines.push_back(
+          "ablation: the stored path was chosen on the stored problems and repetitions; with more it "
+          "may take another, whose rounds the database cannot hold beside it: add no problems or "
+          "repetitions to an experiment with an ablation path");
   }
-  if (!stored.contains("plugins") && now.contains("plugins")) lines.push_back(fingerprint_change(stored_text, now_text));
+  if (!stored.contains("plugins") && now.contains("plugins"))
+    lines.push_back(fingerprint_change(stored_text, now_text));
   if (stored.contains("plugins") && now.contains("plugins"))
     for (const auto& [plugin, then] : stored.at("plugins").items()) {
       if (!now.at("plugins").contains(plugin) || now.at("plugins").at(plugin) == then) continue;
@@ -149,11 +154,13 @@ std::vector<std::string> fingerprint_conflicts(const std::string& stored_text, c
   return lines;
 }
 
-std::vector<std::string> problem_conflicts(const std::vector<ProblemRecord>& stored, const std::vector<ProblemRecord>& now) {
+std::vector<std::string> problem_conflicts(const std::vector<ProblemRecord>& stored,
+                                           const std::vector<ProblemRecord>& now) {
   std::map<std::string, std::vector<std::string>> names_by_line;
   std::size_t common = 0;
   for (const auto& before : stored) {
-    const auto later = std::find_if(now.begin(), now.end(), [&](const ProblemRecord& p) { return p.name == before.name; });
+    const auto later =
+        std::find_if(now.begin(), now.end(), [&](const ProblemRecord& p) { return p.name == before.name; });
     if (later == now.end()) continue;
     ++common;
     std::vector<std::string> lines;
@@ -176,7 +183,8 @@ std::vector<std::string> config_conflicts(const std::string& name, const std::st
   // Settings that are not acobench's (keys, run, plugins) are the same only when equal.
   const bool ours = stored.is_object() && now.is_object() && stored.contains("run") && now.contains("run");
   std::vector<std::string> lines;
-  for (const auto& line : ours ? differences(stored, now) : std::vector<std::string>{stored_settings + " -> " + now_settings})
+  for (const auto& line :
+       ours ? differences(stored, now) : std::vector<std::string>{stored_settings + " -> " + now_settings})
     lines.push_back("configuration " + in_quotes(name) + ": " + line);
   return lines;
 }
@@ -188,7 +196,8 @@ std::string merged_fingerprint(const std::string& stored_text, const std::string
   merged["configurations"] = united(stored.at("configurations"), now.at("configurations"));
   merged["problems"] = united(stored.value("problems", json::array()), now.value("problems", json::array()));
   merged["repetitions"] = std::max(stored.value("repetitions", 0), now.value("repetitions", 0));
-  if (stored.contains("ablation_target") && !now.contains("ablation_target")) merged["ablation_target"] = stored["ablation_target"];
+  if (stored.contains("ablation_target") && !now.contains("ablation_target"))
+    merged["ablation_target"] = stored["ablation_target"];
   json plugins = stored.value("plugins", json::object());
   const json now_plugins = now.value("plugins", json::object());
   for (const auto& [plugin, binary] : now_plugins.items()) plugins[plugin] = binary;
@@ -200,25 +209,30 @@ Growth growth(const std::string& stored_text, const std::string& now_text) {
   const json stored = parsed(stored_text), now = parsed(now_text);
   Growth g;
   if (!is_fingerprint(stored) || !is_fingerprint(now)) return g;
-  const auto compare = [](const json& before, const json& later, std::vector<std::string>& added, std::vector<std::string>& dropped) {
+  const auto compare = [](const json& before, const json& later, std::vector<std::string>& added,
+                          std::vector<std::string>& dropped) {
     for (const auto& name : names(later))
       if (!by_name(before, name)) added.push_back(name);
     for (const auto& name : names(before))
       if (!by_name(later, name)) dropped.push_back(name);
   };
   compare(stored.at("configurations"), now.at("configurations"), g.added_configurations, g.dropped_configurations);
-  compare(stored.value("problems", json::array()), now.value("problems", json::array()), g.added_problems, g.dropped_problems);
+  compare(stored.value("problems", json::array()), now.value("problems", json::array()), g.added_problems,
+          g.dropped_problems);
   g.repetitions_before = stored.value("repetitions", 0);
   g.repetitions_now = now.value("repetitions", 0);
   return g;
 }
 
-std::string conflicts_message(const std::string& file, const std::string& experiment, const std::vector<std::string>& lines) {
-  std::string text = file + " holds trials of experiment " + in_quotes(experiment) + " that the experiment file now runs otherwise:";
+std::string conflicts_message(const std::string& file, const std::string& experiment,
+                              const std::vector<std::string>& lines) {
+  std::string text =
+      file + " holds trials of experiment " + in_quotes(experiment) + " that the experiment file now runs otherwise:";
   for (const auto& line : lines) text += "\n  " + line;
-  return text + "\nnothing in it was changed: give a changed configuration or problem a new name (its stored trials stay "
-                "under the old one), or give another results file (--db). An experiment may gain configurations, "
-                "problems and repetitions: only the new trials run.";
+  return text +
+         "\nnothing in it was changed: give a changed configuration or problem a new name (its stored trials stay "
+         "under the old one), or give another results file (--db). An experiment may gain configurations, "
+         "problems and repetitions: only the new trials run.";
 }
 
 }  // namespace aco::studies

@@ -97,8 +97,8 @@ struct Coordinator::State {
   const Session& session;
   std::string fingerprint;
   std::deque<std::pair<int, int>> waiting;  // (rank, trials wanted) of workers that asked for work
-  std::map<int, std::set<int>> known;       // per rank: the configuration ids it has been sent
-  std::set<int> greeted;                    // ranks whose fingerprint was checked
+  std::map<int, std::set<int>> known;  // per rank: the configuration ids it has been sent
+  std::set<int> greeted;  // ranks whose fingerprint was checked
   std::chrono::steady_clock::duration busy{}, stored{};  // handling messages; of that, storing records
 
   int workers() const { return session.size() - 1; }
@@ -182,9 +182,8 @@ void Coordinator::finish() {
   stop_waiting();
   std::size_t none = 0;
   while (static_cast<int>(stopped.size()) < s.workers()) {
-    s.handle(receive(MPI_ANY_SOURCE), none, [](const TrialRecord&) {
-      throw aco::Error("a worker sent a trial that was not handed out");
-    });
+    s.handle(receive(MPI_ANY_SOURCE), none,
+             [](const TrialRecord&) { throw aco::Error("a worker sent a trial that was not handed out"); });
     stop_waiting();
   }
 }
@@ -196,8 +195,9 @@ double Coordinator::storing_seconds() const { return std::chrono::duration<doubl
 void warn_if_bound(const Session& session, int threads) {
   const int usable = aco::lane_count(0), all = static_cast<int>(std::thread::hardware_concurrency());
   if (usable >= all || (threads > 0 && threads <= usable)) return;
-  std::cerr << "acobench: warning: rank " << session.rank() << " on " << hostname() << " may use " << usable << " of its "
-            << all << " CPUs: the launcher bound it (mpirun binds each rank to one core when -n is 2 or less); "
+  std::cerr << "acobench: warning: rank " << session.rank() << " on " << hostname() << " may use " << usable
+            << " of its " << all
+            << " CPUs: the launcher bound it (mpirun binds each rank to one core when -n is 2 or less); "
             << "start mpirun with --bind-to none, or give each rank its cores (Slurm: --cpus-per-task)\n";
 }
 

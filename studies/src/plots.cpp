@@ -18,16 +18,16 @@ namespace {
 constexpr double kWidth = 640.0;
 constexpr double kHeight = 400.0;
 constexpr double kLeft = 70.0;  // room for the y tick labels and the y axis label
-constexpr double kTop = 40.0;   // room for the title
+constexpr double kTop = 40.0;  // room for the title
 constexpr double kRight = 20.0;
 constexpr double kLegendWidth = 170.0;
-constexpr double kBottom = 50.0;          // x tick labels and the x axis label
+constexpr double kBottom = 50.0;  // x tick labels and the x axis label
 constexpr double kRotatedBottom = 130.0;  // sample names written at a slant, at least
 constexpr std::size_t kLongestSlantedName = 40;  // longer names are cut, in full in the tooltip
 constexpr double kMinSlantedSlot = 18.0;  // a box's width of axis, so that slanted names do not overlap
 constexpr double kSin45 = 0.7071067811865476;
 constexpr double kFontSize = 12.0, kTitleFontSize = 15.0;
-constexpr double kYTitleX = 18.0;         // the y axis title's centre line, written upwards
+constexpr double kYTitleX = 18.0;  // the y axis title's centre line, written upwards
 constexpr double kMinLineFrameWidth = 300.0;  // a line chart's plotting area, however wide its legend
 constexpr std::size_t kMaxLegendRowsBeside = 15;  // more rows, or a wider legend, go under the plot
 constexpr double kMaxLegendWidthBeside = 300.0;
@@ -37,14 +37,13 @@ constexpr std::array kPalette{"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467
 constexpr std::array kDashes{"", "7,3", "2,2", "8,3,2,3"};
 static_assert(kPalette.size() * kDashes.size() == kDistinctStyles);
 
-
 double text_width(const std::string& text) { return aco::text_width(text, kFontSize); }
 
 // At most `decimals` decimals, trailing zeros dropped; std::to_chars ignores the locale.
 std::string number(double value, int decimals = 1) {
   std::array<char, 400> buffer{};  // the widest finite double in fixed notation fits
-  const auto end = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value + 0.0, std::chars_format::fixed,
-                                 decimals).ptr;
+  const auto end =
+      std::to_chars(buffer.data(), buffer.data() + buffer.size(), value + 0.0, std::chars_format::fixed, decimals).ptr;
   std::string text(buffer.data(), end);
   if (text.find('.') != std::string::npos) {
     text.erase(text.find_last_not_of('0') + 1);
@@ -82,7 +81,11 @@ Axis nice_axis(double low, double high, bool extend, double min_step = 0.0) {
   const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
   const double fraction = raw / magnitude;
   Axis axis;
-  axis.step = std::max(min_step, (fraction <= 1.0 ? 1.0 : fraction <= 2.0 ? 2.0 : fraction <= 5.0 ? 5.0 : 10.0) * magnitude);
+  axis.step = std::max(min_step, (fraction <= 1.0   ? 1.0
+                                  : fraction <= 2.0 ? 2.0
+                                  : fraction <= 5.0 ? 5.0
+                                                    : 10.0) *
+                                     magnitude);
   axis.low = extend ? std::floor(low / axis.step) * axis.step : low;
   axis.high = extend ? std::ceil(high / axis.step) * axis.step : high;
   axis.decimals = std::max(0, -int(std::floor(std::log10(axis.step) + 1e-9)));
@@ -138,15 +141,16 @@ void draw_value_axis(std::ostream& out, const Frame& frame, const std::string& l
   }
   const std::string middle = number(frame.top + frame.height / 2);
   out << "<text x=\"" << number(kYTitleX) << "\" y=\"" << middle << "\" text-anchor=\"middle\" transform=\"rotate(-90 "
-      << number(kYTitleX) << ' ' << middle << ")\">"
-      << aco::xml_escape(label) << "</text>\n";
+      << number(kYTitleX) << ' ' << middle << ")\">" << aco::xml_escape(label) << "</text>\n";
   out << "<rect x=\"" << number(frame.left) << "\" y=\"" << number(frame.top) << "\" width=\"" << number(frame.width)
       << "\" height=\"" << number(frame.height) << "\" fill=\"none\" stroke=\"#555\"/>\n</g>\n";
 }
 
 constexpr const char* kReferenceStyle = "stroke=\"#2e7d32\" stroke-dasharray=\"6,4\"";
 
-std::string reference_text(double value, const std::string& label) { return aco::xml_escape(label) + ' ' + number(value, 4); }
+std::string reference_text(double value, const std::string& label) {
+  return aco::xml_escape(label) + ' ' + number(value, 4);
+}
 
 // The dashed line across the frame. Unless a legend names it, a key above the frame's right
 // corner does (kReferenceKeyRoom): a label on the line itself lay across the last box.
@@ -165,7 +169,8 @@ void draw_reference(std::ostream& out, const Frame& frame, const std::optional<d
   const std::string dash_y = number(frame.top - 10);
   out << "<g class=\"reference-key\"><line x1=\"" << number(text_left - 26) << "\" x2=\"" << number(text_left - 6)
       << "\" y1=\"" << dash_y << "\" y2=\"" << dash_y << "\" " << kReferenceStyle << "/><text x=\"" << number(text_left)
-      << "\" y=\"" << number(frame.top - 6) << "\" fill=\"#2e7d32\">" << reference_text(*value, label) << "</text></g>\n";
+      << "\" y=\"" << number(frame.top - 6) << "\" fill=\"#2e7d32\">" << reference_text(*value, label)
+      << "</text></g>\n";
 }
 
 void no_data(std::ostream& out, const Frame& frame) {
@@ -186,15 +191,17 @@ void draw_box(std::ostream& out, const Frame& frame, const NamedSample& sample, 
   const double fence_low = s.q1 - 1.5 * s.iqr, fence_high = s.q3 + 1.5 * s.iqr;
   double whisker_low = s.q1, whisker_high = s.q3;
   for (double v : sample.values)
-    if (v >= fence_low && v <= fence_high) whisker_low = std::min(whisker_low, v), whisker_high = std::max(whisker_high, v);
-  const std::string x = number(centre), cap_left = number(centre - box_width / 4), cap_right = number(centre + box_width / 4);
+    if (v >= fence_low && v <= fence_high)
+      whisker_low = std::min(whisker_low, v), whisker_high = std::max(whisker_high, v);
+  const std::string x = number(centre), cap_left = number(centre - box_width / 4),
+                    cap_right = number(centre + box_width / 4);
   const std::string left = number(centre - box_width / 2), right = number(centre + box_width / 2);
-  out << "<g class=\"sample\"><title>" << aco::xml_escape(sample.name) << ": n " << std::to_string(s.n) << ", median " << number(s.median, 4)
-      << ", quartiles " << number(s.q1, 4) << " to " << number(s.q3, 4) << "</title>\n";
-  out << "<path class=\"whisker\" fill=\"none\" stroke=\"#333\" d=\"M" << x << ',' << number(frame.py(whisker_low)) << "V"
-      << number(frame.py(s.q1)) << "M" << x << ',' << number(frame.py(s.q3)) << "V" << number(frame.py(whisker_high))
-      << "M" << cap_left << ',' << number(frame.py(whisker_low)) << "H" << cap_right << "M" << cap_left << ','
-      << number(frame.py(whisker_high)) << "H" << cap_right << "\"/>\n";
+  out << "<g class=\"sample\"><title>" << aco::xml_escape(sample.name) << ": n " << std::to_string(s.n) << ", median "
+      << number(s.median, 4) << ", quartiles " << number(s.q1, 4) << " to " << number(s.q3, 4) << "</title>\n";
+  out << "<path class=\"whisker\" fill=\"none\" stroke=\"#333\" d=\"M" << x << ',' << number(frame.py(whisker_low))
+      << "V" << number(frame.py(s.q1)) << "M" << x << ',' << number(frame.py(s.q3)) << "V"
+      << number(frame.py(whisker_high)) << "M" << cap_left << ',' << number(frame.py(whisker_low)) << "H" << cap_right
+      << "M" << cap_left << ',' << number(frame.py(whisker_high)) << "H" << cap_right << "\"/>\n";
   out << "<rect class=\"box\" x=\"" << left << "\" y=\"" << number(frame.py(s.q3)) << "\" width=\"" << number(box_width)
       << "\" height=\"" << number(frame.py(s.q1) - frame.py(s.q3)) << "\" fill=\"#bbdefb\" stroke=\"#1565c0\"/>\n";
   const std::string median = number(frame.py(s.median));
@@ -202,7 +209,8 @@ void draw_box(std::ostream& out, const Frame& frame, const NamedSample& sample, 
       << "\" stroke=\"#0d47a1\" stroke-width=\"2\"/>\n";
   for (double v : sample.values)
     if (v < fence_low || v > fence_high)
-      out << "<circle class=\"outlier\" cx=\"" << x << "\" cy=\"" << number(frame.py(v)) << "\" r=\"2.5\" fill=\"#d32f2f\"/>\n";
+      out << "<circle class=\"outlier\" cx=\"" << x << "\" cy=\"" << number(frame.py(v))
+          << "\" r=\"2.5\" fill=\"#d32f2f\"/>\n";
   out << "</g>\n";
 }
 
@@ -226,8 +234,8 @@ void draw_sample_name(std::ostream& out, const std::string& name, double centre,
     out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"middle\">" << aco::xml_escape(name) << "</text>\n";
     return;
   }
-  out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"end\" transform=\"rotate(-45 " << x << ' ' << y << ")\">"
-      << aco::xml_escape(name) << "</text>\n";
+  out << "<text x=\"" << x << "\" y=\"" << y << "\" text-anchor=\"end\" transform=\"rotate(-45 " << x << ' ' << y
+      << ")\">" << aco::xml_escape(name) << "</text>\n";
 }
 
 // Half-open index ranges [begin, end) where `defined(i)` holds: the pieces of a curve with gaps.
@@ -252,12 +260,12 @@ Stretches stretches(std::size_t count, Defined defined) {
 void check_series(const Series& series) {
   const bool has_band = !series.band_low.empty() || !series.band_high.empty();
   if (has_band && (series.band_low.size() != series.value.size() || series.band_high.size() != series.value.size()))
-    throw aco::Error("line chart series \"" + series.name + "\": the band has " + std::to_string(series.band_low.size()) +
-                     " low and " + std::to_string(series.band_high.size()) + " high values for " +
-                     std::to_string(series.value.size()) + " values");
+    throw aco::Error("line chart series \"" + series.name + "\": the band has " +
+                     std::to_string(series.band_low.size()) + " low and " + std::to_string(series.band_high.size()) +
+                     " high values for " + std::to_string(series.value.size()) + " values");
   if (!series.x.empty() && series.x.size() != series.value.size())
-    throw aco::Error("line chart series \"" + series.name + "\": " + std::to_string(series.x.size()) + " x values for " +
-                     std::to_string(series.value.size()) + " values");
+    throw aco::Error("line chart series \"" + series.name + "\": " + std::to_string(series.x.size()) +
+                     " x values for " + std::to_string(series.value.size()) + " values");
 }
 
 // The left margin that holds the y tick labels (right-aligned 6 px left of the frame) and, left
@@ -344,7 +352,8 @@ std::string box_plot_svg(const BoxPlot& plot) {
   frame.left = value_axis_room(frame.y);
   const double count = double(std::max<std::size_t>(plot.samples.size(), 1));
   double slot = (kWidth - frame.left - kRight) / count;
-  const bool slanted = std::any_of(names.begin(), names.end(), [&](const std::string& name) { return text_width(name) > slot - 4; });
+  const bool slanted =
+      std::any_of(names.begin(), names.end(), [&](const std::string& name) { return text_width(name) > slot - 4; });
   double bottom = kBottom;
   if (slanted) {
     slot = std::max(slot, kMinSlantedSlot);
@@ -384,7 +393,8 @@ Series mean_series(std::string name, const std::vector<StepCurve>& runs, std::ve
   for (const double point : at) {
     by_then.clear();
     for (const auto& run : runs) {
-      const auto ended = std::upper_bound(run.x.begin(), run.x.end(), point) - run.x.begin();  // iterations ended by then
+      const auto ended =
+          std::upper_bound(run.x.begin(), run.x.end(), point) - run.x.begin();  // iterations ended by then
       if (ended > 0 && finite(run.value[static_cast<std::size_t>(ended - 1)]))
         by_then.push_back(run.value[static_cast<std::size_t>(ended - 1)]);
     }
@@ -417,7 +427,8 @@ Series convergence_series(std::string name, const std::vector<std::vector<double
 std::vector<double> log_spaced(double low, double high, std::size_t count) {
   if (!(low > 0.0) || !(high > low) || count < 2) return {low};
   std::vector<double> points;
-  for (std::size_t k = 0; k + 1 < count; ++k) points.push_back(low * std::pow(high / low, double(k) / double(count - 1)));
+  for (std::size_t k = 0; k + 1 < count; ++k)
+    points.push_back(low * std::pow(high / low, double(k) / double(count - 1)));
   points.push_back(high);
   return points;
 }
@@ -438,14 +449,17 @@ std::string line_chart_svg(const LineChart& chart) {
   for (const auto& series : chart.series) {
     check_series(series);
     for (const auto* values : {&series.value, &series.band_low, &series.band_high})
-      std::copy_if(values->begin(), values->end(), std::back_inserter(finite), [](double v) { return std::isfinite(v); });
+      std::copy_if(values->begin(), values->end(), std::back_inserter(finite),
+                   [](double v) { return std::isfinite(v); });
     for (std::size_t i = 0; i < series.value.size(); ++i)
       if (on_axis(x_of(series, i))) xs.push_back(x_of(series, i));
   }
-  const auto [x_low, x_high] = xs.empty() ? std::pair(1.0, 1.0) : std::pair(*std::min_element(xs.begin(), xs.end()),
-                                                                            *std::max_element(xs.begin(), xs.end()));
-  const bool by_iteration = std::all_of(chart.series.begin(), chart.series.end(), [](const Series& s) { return s.x.empty(); });
-  const XAxis x_axis = chart.log_x       ? log_x_axis(x_low, x_high)
+  const auto [x_low, x_high] =
+      xs.empty() ? std::pair(1.0, 1.0)
+                 : std::pair(*std::min_element(xs.begin(), xs.end()), *std::max_element(xs.begin(), xs.end()));
+  const bool by_iteration =
+      std::all_of(chart.series.begin(), chart.series.end(), [](const Series& s) { return s.x.empty(); });
+  const XAxis x_axis = chart.log_x    ? log_x_axis(x_low, x_high)
                        : by_iteration ? linear_x_axis(1.0, std::max(x_high, 1.0), 1.0)
                                       : linear_x_axis(x_low, x_high, 0.0);
   // The layout makes room for every text by its estimated width (aco::text_width): the y tick
@@ -461,11 +475,13 @@ std::string line_chart_svg(const LineChart& chart) {
   if (chart.reference) legend.emplace_back(kReferenceStyle, reference_text(*chart.reference, chart.reference_label));
   double longest = 0.0;
   for (const auto& series : chart.series) longest = std::max(longest, text_width(series.name));
-  if (chart.reference) longest = std::max(longest, text_width(chart.reference_label + ' ' + number(*chart.reference, 4)));
+  if (chart.reference)
+    longest = std::max(longest, text_width(chart.reference_label + ' ' + number(*chart.reference, 4)));
   const double entry_width = 26 + longest + 8;  // line, gap, text, gap
   const double last_tick_half = x_axis.ticks.empty() ? 0.0 : text_width(x_axis.ticks.back().second) / 2 + 4;
   Frame frame;
-  frame.y = chart.y_range ? nice_axis(chart.y_range->first, chart.y_range->second, false) : value_axis(finite, chart.reference);
+  frame.y = chart.y_range ? nice_axis(chart.y_range->first, chart.y_range->second, false)
+                          : value_axis(finite, chart.reference);
   frame.left = value_axis_room(frame.y);
   frame.height = std::max(kHeight - kTop - kBottom, text_width(chart.y_label) + 10);
   const bool beside = legend.size() <= kMaxLegendRowsBeside && 16 + entry_width <= kMaxLegendWidthBeside;
@@ -505,24 +521,31 @@ std::string line_chart_svg(const LineChart& chart) {
     const Series& s = chart.series[k];
     const std::size_t style = s.style.value_or(k);
     const char* stroke = series_style(style).colour;
-    auto banded = [&](std::size_t i) { return std::isfinite(s.band_low[i]) && std::isfinite(s.band_high[i]) && on_axis(x_of(s, i)); };
+    auto banded = [&](std::size_t i) {
+      return std::isfinite(s.band_low[i]) && std::isfinite(s.band_high[i]) && on_axis(x_of(s, i));
+    };
     const Stretches band_pieces = s.band_low.empty() ? Stretches{} : stretches(s.value.size(), banded);
     if (!band_pieces.empty()) {
       out << "<path class=\"band\" fill=\"" << stroke << "\" fill-opacity=\"0.2\" stroke=\"none\" d=\"";
       for (const auto& [begin, end] : band_pieces) {
         for (std::size_t i = begin; i < end; ++i)
           out << (i == begin ? 'M' : 'L') << number(px(x_of(s, i))) << ',' << number(frame.py(s.band_high[i]));
-        for (std::size_t i = end; i-- > begin;) out << 'L' << number(px(x_of(s, i))) << ',' << number(frame.py(s.band_low[i]));
+        for (std::size_t i = end; i-- > begin;)
+          out << 'L' << number(px(x_of(s, i))) << ',' << number(frame.py(s.band_low[i]));
         out << 'Z';
       }
       out << "\"/>\n";
     }
     out << "<path class=\"series\" fill=\"none\" " << stroke_attributes(style) << " stroke-width=\"2\" d=\"";
-    for (const auto& [begin, end] : stretches(s.value.size(), [&](std::size_t i) { return std::isfinite(s.value[i]) && on_axis(x_of(s, i)); }))
+    for (const auto& [begin, end] :
+         stretches(s.value.size(), [&](std::size_t i) { return std::isfinite(s.value[i]) && on_axis(x_of(s, i)); }))
       for (std::size_t i = begin; i < end; ++i) {
-        if (i == begin) out << 'M' << number(px(x_of(s, i))) << ',' << number(frame.py(s.value[i]));
-        else if (chart.steps) out << 'H' << number(px(x_of(s, i))) << 'V' << number(frame.py(s.value[i]));
-        else out << 'L' << number(px(x_of(s, i))) << ',' << number(frame.py(s.value[i]));
+        if (i == begin)
+          out << 'M' << number(px(x_of(s, i))) << ',' << number(frame.py(s.value[i]));
+        else if (chart.steps)
+          out << 'H' << number(px(x_of(s, i))) << 'V' << number(frame.py(s.value[i]));
+        else
+          out << 'L' << number(px(x_of(s, i))) << ',' << number(frame.py(s.value[i]));
       }
     out << "\"/>\n";
   }
@@ -531,9 +554,9 @@ std::string line_chart_svg(const LineChart& chart) {
   out << "<g class=\"legend\">\n";
   for (std::size_t k = 0; k < legend.size(); ++k) {
     const double x = legend_x + entry_width * double(k % columns), y = legend_y + kLegendRow * double(k / columns);
-    out << "<line x1=\"" << number(x) << "\" x2=\"" << number(x + 20) << "\" y1=\"" << number(y) << "\" y2=\"" << number(y)
-        << "\" " << legend[k].first << "/><text x=\"" << number(x + 26) << "\" y=\"" << number(y) << "\" dy=\"4\">"
-        << legend[k].second << "</text>\n";
+    out << "<line x1=\"" << number(x) << "\" x2=\"" << number(x + 20) << "\" y1=\"" << number(y) << "\" y2=\""
+        << number(y) << "\" " << legend[k].first << "/><text x=\"" << number(x + 26) << "\" y=\"" << number(y)
+        << "\" dy=\"4\">" << legend[k].second << "</text>\n";
   }
   out << "</g>\n</svg>\n";
   return out.str();
@@ -551,16 +574,17 @@ std::string map_paths_svg(const aco::Map& map, const std::vector<MapPath>& paths
   const double width = legend_x + 28 + longest + 8, height = std::max(map_h, 16.0 * double(paths.size()) + 4);
   std::ostringstream svg;
   svg << "<svg class=\"paths\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-      << "\" viewBox=\"0 0 " << width << ' ' << height << "\" font-family=\"sans-serif\" font-size=\"12\"><rect width=\"" << map_w
-      << "\" height=\"" << map_h << "\" fill=\"#fff\" stroke=\"#999\"/><g fill=\"#333\" shape-rendering=\"crispEdges\">";
+      << "\" viewBox=\"0 0 " << width << ' ' << height
+      << "\" font-family=\"sans-serif\" font-size=\"12\"><rect width=\"" << map_w << "\" height=\"" << map_h
+      << "\" fill=\"#fff\" stroke=\"#999\"/><g fill=\"#333\" shape-rendering=\"crispEdges\">";
   // Blocked cells in horizontal runs, with crisp edges: no seams between rows.
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w;) {
       int end = x;
       while (end < w && !map.passable({end, y})) ++end;
       if (end > x)
-        svg << "<rect x=\"" << x * scale << "\" y=\"" << y * scale << "\" width=\"" << (end - x) * scale << "\" height=\"" << scale
-            << "\"/>";
+        svg << "<rect x=\"" << x * scale << "\" y=\"" << y * scale << "\" width=\"" << (end - x) * scale
+            << "\" height=\"" << scale << "\"/>";
       x = std::max(end, x + 1);
     }
   svg << "</g>";
@@ -568,11 +592,12 @@ std::string map_paths_svg(const aco::Map& map, const std::vector<MapPath>& paths
     const MapPath& path = paths[row];
     svg << "<polyline fill=\"none\" " << stroke_attributes(path.style) << " stroke-width=\"" << std::max(1.0, scale / 5)
         << "\" stroke-opacity=\"0.8\" points=\"";
-    for (const auto& point : path.points) svg << (point[0] / cell + 0.5) * scale << "," << (point[1] / cell + 0.5) * scale << " ";
+    for (const auto& point : path.points)
+      svg << (point[0] / cell + 0.5) * scale << "," << (point[1] / cell + 0.5) * scale << " ";
     const double y = 14 + 16 * double(row);
-    svg << "\"/><line x1=\"" << legend_x << "\" x2=\"" << legend_x + 22 << "\" y1=\"" << y - 4 << "\" y2=\"" << y - 4 << "\" "
-        << stroke_attributes(path.style) << " stroke-width=\"2\"/><text x=\"" << legend_x + 28 << "\" y=\"" << y << "\" fill=\""
-        << series_style(path.style).colour << "\">" << aco::xml_escape(path.label) << "</text>";
+    svg << "\"/><line x1=\"" << legend_x << "\" x2=\"" << legend_x + 22 << "\" y1=\"" << y - 4 << "\" y2=\"" << y - 4
+        << "\" " << stroke_attributes(path.style) << " stroke-width=\"2\"/><text x=\"" << legend_x + 28 << "\" y=\""
+        << y << "\" fill=\"" << series_style(path.style).colour << "\">" << aco::xml_escape(path.label) << "</text>";
   }
   svg << "</svg>";
   return svg.str();

@@ -19,8 +19,8 @@ std::string first_difference(const std::string& stored, const std::string& now) 
     const bool more_b = static_cast<bool>(std::getline(b, line_b));
     if (!more_a && !more_b) return "they differ only in line endings";
     if (!more_a || !more_b || line_a != line_b)
-      return "first difference at line " + std::to_string(line) + ": stored " +
-             (more_a ? in_quotes(line_a) : "(end)") + ", now " + (more_b ? in_quotes(line_b) : "(end)");
+      return "first difference at line " + std::to_string(line) + ": stored " + (more_a ? in_quotes(line_a) : "(end)") +
+             ", now " + (more_b ? in_quotes(line_b) : "(end)");
   }
 }
 
@@ -37,7 +37,8 @@ std::string hostname() {
 // differing line is told.
 std::string fingerprint_change(const std::string& stored, const std::string& now) {
   const auto a = nlohmann::json::parse(stored, nullptr, false), b = nlohmann::json::parse(now, nullptr, false);
-  if (!a.is_object() || !b.is_object()) return "the experiment file changed since (" + first_difference(stored, now) + ")";
+  if (!a.is_object() || !b.is_object())
+    return "the experiment file changed since (" + first_difference(stored, now) + ")";
   if (b.contains("plugins") && !a.contains("plugins"))
     return "its trials were stored by an acobench that did not record which plugin binaries ran them, so "
            "resuming could mix the trials of two builds (the database can still be reported)";
@@ -55,7 +56,8 @@ std::string fingerprint_change(const std::string& stored, const std::string& now
       return "the experiment file changed since (" + key + ": stored " + shortened(then.dump()) + ", now " +
              (b.contains(key) ? shortened(b.at(key).dump()) : "(missing)") + ")";
   for (const auto& [key, value] : b.items())
-    if (!a.contains(key)) return "the experiment file changed since (" + key + ": new, " + shortened(value.dump()) + ")";
+    if (!a.contains(key))
+      return "the experiment file changed since (" + key + ": new, " + shortened(value.dump()) + ")";
   return "the experiment file changed since (" + first_difference(stored, now) + ")";
 }
 

@@ -45,7 +45,7 @@ struct Result {
   int config = 0;  // index into Analysis::configs
   std::vector<const TrialRecord*> runs;
   std::vector<double> lengths;  // solved runs only
-  std::vector<double> gaps;     // solved runs only, when the optimum is known: gap_percent()
+  std::vector<double> gaps;  // solved runs only, when the optimum is known: gap_percent()
   Summary length;
   double success = 0.0;
   double gap = NAN;  // mean of gaps
@@ -60,12 +60,12 @@ struct Analysis {
   std::vector<std::pair<int, ConfigRecord>> configs;
   std::vector<TrialRecord> trials;
   std::vector<std::vector<Result>> results;  // [problem][config]
-  std::vector<double> average_rank;          // per config
+  std::vector<double> average_rank;  // per config
   std::vector<std::string> ablation_path;
   std::filesystem::path experiment_dir;  // the maps are relative to it
   aco::PluginRegistry* registry = nullptr;  // the map plugins
-  std::vector<int> buckets;              // per problem: Moving AI bucket, or -1
-  std::size_t unmeasured = 0;            // runs stored without anytime curves (by an older acobench)
+  std::vector<int> buckets;  // per problem: Moving AI bucket, or -1
+  std::size_t unmeasured = 0;  // runs stored without anytime curves (by an older acobench)
   std::string host_version, host_build;  // of the acobench that ran the trials ("" if not recorded)
 };
 
@@ -174,20 +174,23 @@ std::vector<Column> columns() {
       {"sd", [](const Result& r) { return fixed(r.length.stddev, 3); }},
       {"median", [](const Result& r) { return fixed(r.length.median, 3); }},
       {"IQR", [](const Result& r) { return fixed(r.length.iqr, 3); }},
-      {"95 % CI", [](const Result& r) {
-         return std::isfinite(r.length.ci_low) ? "[" + fixed(r.length.ci_low, 2) + ", " + fixed(r.length.ci_high, 2) + "]" : "-";
+      {"95 % CI",
+       [](const Result& r) {
+         return std::isfinite(r.length.ci_low)
+                    ? "[" + fixed(r.length.ci_low, 2) + ", " + fixed(r.length.ci_high, 2) + "]"
+                    : "-";
        }},
       {"gap %", [](const Result& r) { return fixed(r.gap, 2); }},
       {"turns", [](const Result& r) { return fixed(r.turns, 1); }},
       {"best it.", [](const Result& r) { return fixed(r.best_iteration, 1); }},
       {"time ms", [](const Result& r) { return number(r.time_ms, 3); }},
       {"p (Holm)", [](const Result& r) { return number(r.p_holm, 3); }},
-      {"A12", [](const Result& r) {
+      {"A12",
+       [](const Result& r) {
          return std::isfinite(r.a12) ? fixed(r.a12, 2) + " " + std::string(to_string(effect_size(r.a12))) : "-";
        }},
   };
 }
-
 
 // Problems from one scenario file share a set name: "arena#40" belongs to "arena".
 std::string problem_set(const std::string& problem) { return problem.substr(0, problem.find('#')); }
@@ -200,7 +203,8 @@ std::vector<Table> simulation_tables(const Analysis& a) {
           "Problems that are acosim scenarios: share of runs that reached the goal, runs that ended in a collision, "
           "mean simulated time to the goal (reached runs), mean of each run's smallest clearance, mean replans, "
           "and how the other runs ended. The length columns of these problems are the distance driven.",
-          {"problem", "configuration", "runs", "reached", "collisions", "time to goal s", "clearance", "replans", "other outcomes"},
+          {"problem", "configuration", "runs", "reached", "collisions", "time to goal s", "clearance", "replans",
+           "other outcomes"},
           {}};
   for (std::size_t p = 0; p < a.problems.size(); ++p)
     for (const Result& r : a.results[p]) {
@@ -211,18 +215,22 @@ std::vector<Table> simulation_tables(const Analysis& a) {
         if (!trial->simulation) continue;
         const SimulationRecord& sim = *trial->simulation;
         ++simulated;
-        if (trial->solved) ++reached, times.push_back(sim.time_to_goal);
-        else ++outcomes[sim.outcome];
+        if (trial->solved)
+          ++reached, times.push_back(sim.time_to_goal);
+        else
+          ++outcomes[sim.outcome];
         collisions += sim.collisions;
         if (std::isfinite(sim.clearance)) clearances.push_back(sim.clearance);
         replans.push_back(sim.replans);
       }
       if (simulated == 0) continue;
       std::string other;
-      for (const auto& [outcome, count] : outcomes) other += (other.empty() ? "" : ", ") + outcome + " " + std::to_string(count);
+      for (const auto& [outcome, count] : outcomes)
+        other += (other.empty() ? "" : ", ") + outcome + " " + std::to_string(count);
       t.rows.push_back({a.problems[p].name, a.configs[r.config].second.name, std::to_string(simulated),
-                        fixed(100.0 * reached / simulated, 1) + " %", std::to_string(collisions), fixed(mean_of(times), 1),
-                        fixed(mean_of(clearances), 3), fixed(mean_of(replans), 2), other.empty() ? "-" : other});
+                        fixed(100.0 * reached / simulated, 1) + " %", std::to_string(collisions),
+                        fixed(mean_of(times), 1), fixed(mean_of(clearances), 3), fixed(mean_of(replans), 2),
+                        other.empty() ? "-" : other});
     }
   if (t.rows.empty()) return {};
   return {t};
@@ -274,7 +282,8 @@ std::string settings_without_null_model(const ConfigRecord& config, std::string*
 // twin is a configuration whose resolved settings equal the subject's but for null-model.
 std::vector<Table> pheromone_tables(const Analysis& a) {
   Table t{"Does the pheromone matter?",
-          "Each configuration against its null models, over every run of every problem with a known optimum that both ran: the "
+          "Each configuration against its null models, over every run of every problem with a known optimum that both "
+          "ran: the "
           "no-learning twin (the same pipeline with the pheromone ignored and never updated) and the restart twin (the "
           "same number of walks as independent one-iteration runs); docs/learning.md defines them. Solved runs, mean "
           "and largest gap % of the solved runs, the ratio of the mean gaps; p is the two-sided Mann-Whitney U test of "
@@ -286,7 +295,8 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
            "problems better / worse", "verdict"},
           {}};
   std::vector<std::string> subject_key(a.configs.size()), model(a.configs.size());
-  for (std::size_t c = 0; c < a.configs.size(); ++c) subject_key[c] = settings_without_null_model(a.configs[c].second, &model[c]);
+  for (std::size_t c = 0; c < a.configs.size(); ++c)
+    subject_key[c] = settings_without_null_model(a.configs[c].second, &model[c]);
   struct Pair {
     std::size_t subject, twin;
     std::vector<double> gaps, twin_gaps;  // solved runs
@@ -321,7 +331,8 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
       per_problem_p.push_back(mann_whitney_u(r.lengths, w.lengths).p);
       per_problem.emplace_back(i, vargha_delaney_a12(r.lengths, w.lengths) < 0.5);
     }
-    pooled_p.push_back(pair.ranked.empty() || pair.twin_ranked.empty() ? 1.0 : mann_whitney_u(pair.ranked, pair.twin_ranked).p);
+    pooled_p.push_back(
+        pair.ranked.empty() || pair.twin_ranked.empty() ? 1.0 : mann_whitney_u(pair.ranked, pair.twin_ranked).p);
   }
   const auto pooled_holm = holm_adjust(pooled_p);
   const auto per_problem_holm = holm_adjust(per_problem_p);
@@ -336,12 +347,15 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
     const double mean = mean_of(pair.gaps), twin_mean = mean_of(pair.twin_gaps);
     std::string verdict = "no optimum known";
     if (compared)
-      verdict = pooled_holm[i] >= 0.05 ? "no evidence of a difference" : a12 < 0.5 ? "beats the twin" : "the twin is better";
+      verdict = pooled_holm[i] >= 0.05 ? "no evidence of a difference"
+                : a12 < 0.5            ? "beats the twin"
+                                       : "the twin is better";
     t.rows.push_back({a.configs[pair.subject].second.name, model[pair.twin],
-                      std::to_string(pair.solved) + "/" + std::to_string(pair.runs) + " vs " + std::to_string(pair.twin_solved) +
-                          "/" + std::to_string(pair.twin_runs),
+                      std::to_string(pair.solved) + "/" + std::to_string(pair.runs) + " vs " +
+                          std::to_string(pair.twin_solved) + "/" + std::to_string(pair.twin_runs),
                       fixed(mean, 3), fixed(twin_mean, 3), twin_mean > 0 ? fixed(mean / twin_mean, 2) : "-",
-                      fixed(largest(pair.gaps), 2), fixed(largest(pair.twin_gaps), 2), compared ? number(pooled_holm[i], 3) : "-",
+                      fixed(largest(pair.gaps), 2), fixed(largest(pair.twin_gaps), 2),
+                      compared ? number(pooled_holm[i], 3) : "-",
                       compared ? fixed(a12, 2) + " " + std::string(to_string(effect_size(a12))) : "-",
                       std::to_string(better[i]) + " / " + std::to_string(worse[i]), verdict});
   }
@@ -350,10 +364,14 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
 
 // A property's value as a number, if it is one (a count, a real or a flag).
 std::optional<double> numeric(const aco::ParamValue& value) {
-  return std::visit([](const auto& v) -> std::optional<double> {
-    if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>) return std::nullopt;
-    else return static_cast<double>(v);
-  }, value);
+  return std::visit(
+      [](const auto& v) -> std::optional<double> {
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>)
+          return std::nullopt;
+        else
+          return static_cast<double>(v);
+      },
+      value);
 }
 
 // Per configuration, each numeric property of its runs over all problems: the planners' own
@@ -390,8 +408,9 @@ struct PluginUse {
 // stored before that (format 4 or earlier) the name, version and hash its settings keep.
 std::vector<PluginUse> plugin_uses(const ConfigRecord& config) {
   const bool recorded = !config.plugins_json.empty();
-  const auto plugins = recorded ? nlohmann::json::parse(config.plugins_json)
-                                : nlohmann::json::parse(config.settings_json).value("plugins", nlohmann::json::object());
+  const auto plugins = recorded
+                           ? nlohmann::json::parse(config.plugins_json)
+                           : nlohmann::json::parse(config.settings_json).value("plugins", nlohmann::json::object());
   std::vector<PluginUse> uses;
   for (const auto& [slot, p] : plugins.items())
     uses.push_back({slot, p.value("name", "?"), p.value("version", "?"), p.value("build", "not recorded"),
@@ -453,12 +472,15 @@ std::vector<Table> summary_tables(const Analysis& a) {
   }
   if (sets.size() == a.problems.size()) return tables;
   Table totals{"Summary by problem set",
-               "Over every run of every problem of the set: solved share, gap of the solved runs' grid paths to the exact grid optimum "
+               "Over every run of every problem of the set: solved share, gap of the solved runs' grid paths to the "
+               "exact grid optimum "
                "(mean and largest), and time per run.",
                {"problem set", "configuration", "problems", "runs", "solved", "mean gap %", "max gap %", "mean time ms",
                 "max time ms"},
                {}};
-  const auto gaps_of = [](const Result& r, std::vector<double>& gaps) { gaps.insert(gaps.end(), r.gaps.begin(), r.gaps.end()); };
+  const auto gaps_of = [](const Result& r, std::vector<double>& gaps) {
+    gaps.insert(gaps.end(), r.gaps.begin(), r.gaps.end());
+  };
   for (const auto& set : sets)
     for (std::size_t c = 0; c < a.configs.size(); ++c) {
       std::vector<double> gaps, times;
@@ -475,11 +497,12 @@ std::vector<Table> summary_tables(const Analysis& a) {
                              fixed(largest(gaps), 2), number(mean_of(times), 3), number(largest(times), 3)});
     }
   tables.push_back(totals);
-  Table by_bucket{"Gap by difficulty bucket",
-                  "Each problem set's scenarios in four groups of about equal size by Moving AI bucket (scenario column 1, "
-                  "optimal length / 4): mean gap % of the solved runs, and the solved share where below 100 %.",
-                  {"problem set", "buckets", "problems"},
-                  {}};
+  Table by_bucket{
+      "Gap by difficulty bucket",
+      "Each problem set's scenarios in four groups of about equal size by Moving AI bucket (scenario column 1, "
+      "optimal length / 4): mean gap % of the solved runs, and the solved share where below 100 %.",
+      {"problem set", "buckets", "problems"},
+      {}};
   for (std::size_t c = 0; c < a.configs.size(); ++c) by_bucket.header.push_back(a.configs[c].second.name);
   for (const auto& set : sets) {
     std::vector<std::size_t> ps = members[set];
@@ -487,7 +510,8 @@ std::vector<Table> summary_tables(const Analysis& a) {
     std::stable_sort(ps.begin(), ps.end(), [&](std::size_t x, std::size_t y) { return a.buckets[x] < a.buckets[y]; });
     for (std::size_t g = 0; g < 4; ++g) {
       const std::size_t from = g * ps.size() / 4, to = (g + 1) * ps.size() / 4;
-      std::vector<std::string> row{set, std::to_string(a.buckets[ps[from]]) + "-" + std::to_string(a.buckets[ps[to - 1]]),
+      std::vector<std::string> row{set,
+                                   std::to_string(a.buckets[ps[from]]) + "-" + std::to_string(a.buckets[ps[to - 1]]),
                                    std::to_string(to - from)};
       for (std::size_t c = 0; c < a.configs.size(); ++c) {
         std::vector<double> gaps;
@@ -555,21 +579,23 @@ std::string target_name(double target) { return "gap <= " + fixed(target, 0) + "
 
 std::string unmeasured_note(const Analysis& a) {
   if (a.unmeasured == 0) return "";
-  return " " + std::to_string(a.unmeasured) + " runs stored by an older acobench (format 3 or earlier) have no measured "
+  return " " + std::to_string(a.unmeasured) +
+         " runs stored by an older acobench (format 3 or earlier) have no measured "
          "times and walks and are left out.";
 }
 
 // Per configuration and target: how many of its runs on the problems with a known optimum came
 // within the target, and how fast.
 std::vector<Table> anytime_tables(const Analysis& a) {
-  Table t{"Anytime: fixed targets",
-          "Over every (problem, run) pair of the problems with a known optimum: the share of runs whose best-so-far grid "
-          "path came within the target gap to the optimum, the median wall time (since the search began) and walks "
-          "(candidate paths built) at which the runs that did got there, and the expected running time ERT = (time the "
-          "runs spent until they reached the target, or in all if they never did) / runs that reached it." +
-              unmeasured_note(a),
-          {"configuration", "target", "runs", "reached", "median time s", "median walks", "ERT s"},
-          {}};
+  Table t{
+      "Anytime: fixed targets",
+      "Over every (problem, run) pair of the problems with a known optimum: the share of runs whose best-so-far grid "
+      "path came within the target gap to the optimum, the median wall time (since the search began) and walks "
+      "(candidate paths built) at which the runs that did got there, and the expected running time ERT = (time the "
+      "runs spent until they reached the target, or in all if they never did) / runs that reached it." +
+          unmeasured_note(a),
+      {"configuration", "target", "runs", "reached", "median time s", "median walks", "ERT s"},
+      {}};
   const auto all = reaches(a);
   for (std::size_t c = 0; c < a.configs.size(); ++c)
     for (std::size_t k = 0; k < kTargets.size(); ++k) {
@@ -655,10 +681,10 @@ std::vector<Figure> anytime_charts(const Analysis& a, std::size_t p, FigureFiles
     std::function<std::vector<double>(const TrialRecord&)> of;
   };
   const Effort efforts[] = {
-      {"anytime-time-", "best-so-far gap against time (mean of the runs): ", "wall time since the search began, s (log scale)",
-       [](const TrialRecord& t) { return t.elapsed_s; }},
-      {"anytime-walks-", "best-so-far gap against walks (mean of the runs): ", "walks: candidate paths built (log scale)",
-       [](const TrialRecord& t) { return as_reals(t.walks); }},
+      {"anytime-time-", "best-so-far gap against time (mean of the runs): ",
+       "wall time since the search began, s (log scale)", [](const TrialRecord& t) { return t.elapsed_s; }},
+      {"anytime-walks-", "best-so-far gap against walks (mean of the runs): ",
+       "walks: candidate paths built (log scale)", [](const TrialRecord& t) { return as_reals(t.walks); }},
   };
   std::vector<Figure> figures;
   for (const Effort& effort : efforts) {
@@ -696,7 +722,8 @@ std::vector<Figure> anytime_charts(const Analysis& a, std::size_t p, FigureFiles
 // The problem's map as the configuration's trials planned on it: the file and reader the problem
 // recorded, with the terrain options of the configuration's run (max-slope decides which cells of
 // a height map are blocked, cell-size where a path's points lie).
-std::unique_ptr<aco::Map> load_problem_map(const Analysis& a, const ProblemRecord& problem, const ConfigRecord& config) {
+std::unique_ptr<aco::Map> load_problem_map(const Analysis& a, const ProblemRecord& problem,
+                                           const ConfigRecord& config) {
   const auto setup = nlohmann::json::parse(problem.setup_json);
   aco::Keys keys{{"map", (a.experiment_dir / setup.at("map").get<std::string>()).string()}};
   if (setup.contains("map-format")) keys["map-format"] = setup.at("map-format").get<std::string>();
@@ -704,7 +731,8 @@ std::unique_ptr<aco::Map> load_problem_map(const Analysis& a, const ProblemRecor
     keys["map." + name] = value.get<std::string>();
   const auto run = nlohmann::json::parse(config.settings_json).value("run", nlohmann::json::object());
   for (const aco::ParamSpec& terrain : aco::problem_parameters())
-    if (run.contains(terrain.name) && run.at(terrain.name).is_number()) keys[terrain.name] = run.at(terrain.name).dump();
+    if (run.contains(terrain.name) && run.at(terrain.name).is_number())
+      keys[terrain.name] = run.at(terrain.name).dump();
   keys.erase("scen-index");
   return aco::load_problem_map(aco::resolve_problem(keys, *a.registry), a.registry);
 }
@@ -730,10 +758,12 @@ std::vector<Figure> path_pictures(const Analysis& a, std::size_t p, FigureFiles&
     } catch (const std::exception& e) {
       return {{"", "", "map not drawn: " + std::string(e.what())}};
     }
-    MapPath path{a.configs[r.config].second.name + " " + fixed(r.best->length, 2), static_cast<std::size_t>(r.config), {}};
+    MapPath path{
+        a.configs[r.config].second.name + " " + fixed(r.best->length, 2), static_cast<std::size_t>(r.config), {}};
     for (const auto& point : nlohmann::json::parse(r.best->path_json))
       path.points.push_back({point[0].get<double>(), point[1].get<double>()});
-    auto same = std::find_if(pictures.begin(), pictures.end(), [&](const auto& picture) { return same_picture(*picture.first, *map); });
+    auto same = std::find_if(pictures.begin(), pictures.end(),
+                             [&](const auto& picture) { return same_picture(*picture.first, *map); });
     if (same == pictures.end()) same = pictures.emplace(pictures.end(), std::move(map), std::vector<MapPath>{});
     same->second.push_back(std::move(path));
   }
@@ -746,7 +776,8 @@ std::vector<Figure> path_pictures(const Analysis& a, std::size_t p, FigureFiles&
     }
   }
   std::vector<Figure> figures;
-  for (const auto& [map, paths] : pictures) figures.push_back(files.add("paths-" + a.problems[p].name, map_paths_svg(*map, paths)));
+  for (const auto& [map, paths] : pictures)
+    figures.push_back(files.add("paths-" + a.problems[p].name, map_paths_svg(*map, paths)));
   return figures;
 }
 
@@ -803,14 +834,16 @@ void add_problem(const Analysis& a, std::size_t p, FigureFiles& files, std::vect
 ReportDocument report_document(const Analysis& a, const std::filesystem::path& database) {
   ReportDocument d{"acobench report: " + a.name, "acobench: " + a.name, {}};
   std::vector<Block>& blocks = d.blocks;
-  blocks.emplace_back(Paragraph{
-      "Database `" + database.filename().string() + "`: " + std::to_string(a.trials.size()) + " runs, " +
-      std::to_string(a.configs.size()) + " configurations, " + std::to_string(a.problems.size()) +
-      " problems. Lengths are final path lengths of solved runs (after the smoother: any-angle when it shortcuts); gap is "
-      "the mean excess of the grid path (before smoothing) over the exact A* optimum on the baseline's graph, so that both "
-      "are lengths on the same grid; p is the two-sided Mann-Whitney U test against the baseline (`" +
-      (a.configs.empty() ? "" : a.configs[0].second.name) +
-      "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline."});
+  blocks.emplace_back(
+      Paragraph{"Database `" + database.filename().string() + "`: " + std::to_string(a.trials.size()) + " runs, " +
+                std::to_string(a.configs.size()) + " configurations, " + std::to_string(a.problems.size()) +
+                " problems. Lengths are final path lengths of solved runs (after the smoother: any-angle when it "
+                "shortcuts); gap is "
+                "the mean excess of the grid path (before smoothing) over the exact A* optimum on the baseline's "
+                "graph, so that both "
+                "are lengths on the same grid; p is the two-sided Mann-Whitney U test against the baseline (`" +
+                (a.configs.empty() ? "" : a.configs[0].second.name) +
+                "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline."});
   for (std::string& warning : build_warnings(a)) blocks.emplace_back(Warning{std::move(warning)});
   FigureFiles files;
   for (Table& t : summary_tables(a)) blocks.emplace_back(std::move(t));
@@ -818,29 +851,35 @@ ReportDocument report_document(const Analysis& a, const std::filesystem::path& d
     const bool reached = !t.rows.empty();
     blocks.emplace_back(std::move(t));
     if (reached)
-      blocks.emplace_back(Paragraph{"report.html plots the share of runs within each target against time (the ECDF) and, "
-                                    "per problem, the mean best-so-far gap against time and against walks.",
-                                    true});
+      blocks.emplace_back(
+          Paragraph{"report.html plots the share of runs within each target against time (the ECDF) and, "
+                    "per problem, the mean best-so-far gap against time and against walks.",
+                    true});
     for (Figure& figure : ecdf_charts(a, files)) blocks.emplace_back(std::move(figure));
   }
   for (std::size_t p = 0; p < a.problems.size(); ++p) add_problem(a, p, files, blocks);
   if (!a.average_rank.empty()) {
-    Table ranking{"Ranking across problems", "Average rank of the mean length (1 = best; Friedman/Demšar).",
-                  {"rank", "configuration", "average rank"}, {}, "rl"};
+    Table ranking{"Ranking across problems",
+                  "Average rank of the mean length (1 = best; Friedman/Demšar).",
+                  {"rank", "configuration", "average rank"},
+                  {},
+                  "rl"};
     std::vector<std::size_t> order(a.configs.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(), [&](auto x, auto y) { return a.average_rank[x] < a.average_rank[y]; });
     for (std::size_t i = 0; i < order.size(); ++i)
-      ranking.rows.push_back({std::to_string(i + 1), a.configs[order[i]].second.name, fixed(a.average_rank[order[i]], 2)});
+      ranking.rows.push_back(
+          {std::to_string(i + 1), a.configs[order[i]].second.name, fixed(a.average_rank[order[i]], 2)});
     blocks.emplace_back(std::move(ranking));
   }
   if (!a.ablation_path.empty()) {
-    Table steps{"Ablation path",
-                "From the baseline towards the target, one component at a time, keeping the best flip (Fawcett and Hoos). "
-                "Mean gap over all problems:",
-                {"step", "configuration", "mean gap %"},
-                {},
-                "rl"};
+    Table steps{
+        "Ablation path",
+        "From the baseline towards the target, one component at a time, keeping the best flip (Fawcett and Hoos). "
+        "Mean gap over all problems:",
+        {"step", "configuration", "mean gap %"},
+        {},
+        "rl"};
     Series gaps;
     gaps.name = "mean gap %";
     gaps.value = ablation_gaps(a);

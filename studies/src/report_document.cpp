@@ -18,7 +18,8 @@ void markdown_table(std::ostringstream& md, const Table& t) {
   md << "|";
   for (const auto& h : t.header) md << " " << h << " |";
   md << "\n|";
-  for (std::size_t i = 0; i < t.header.size(); ++i) md << (i < t.alignment.size() && t.alignment[i] == 'l' ? "---|" : "---:|");
+  for (std::size_t i = 0; i < t.header.size(); ++i)
+    md << (i < t.alignment.size() && t.alignment[i] == 'l' ? "---|" : "---:|");
   md << "\n";
   for (const auto& row : t.rows) {
     md << "|";
@@ -60,7 +61,8 @@ std::string render_markdown(const ReportDocument& document) {
 
 std::string render_html(const ReportDocument& document, const std::string& footer_html) {
   std::ostringstream out;
-  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << aco::xml_escape(document.short_title)
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>"
+      << aco::xml_escape(document.short_title)
       << "</title><style>body{font-family:sans-serif;margin:2em;max-width:1400px}table{border-collapse:collapse;"
          "margin:1em 0}td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}td:first-child,th:first-child{"
          "text-align:left}svg{margin:0.5em}.warning{background:#fff3cd;border:1px solid #e0a800;padding:0.5em}</style>"

@@ -36,11 +36,15 @@ bool upgradable(const std::string& version) {
 
 const char* sql_type(TrialCellType type) {
   switch (type) {
-    case TrialCellType::boolean: return "BOOLEAN";
+    case TrialCellType::boolean:
+      return "BOOLEAN";
     case TrialCellType::integer:
-    case TrialCellType::count: return "INTEGER";
-    case TrialCellType::real: return "REAL";
-    case TrialCellType::text: break;
+    case TrialCellType::count:
+      return "INTEGER";
+    case TrialCellType::real:
+      return "REAL";
+    case TrialCellType::text:
+      break;
   }
   return "TEXT";
 }
@@ -172,8 +176,7 @@ class Statement {
     return *this;
   }
   void finish() {
-    while (next()) {
-    }
+    while (next()) {}
   }
   // Whether the statement yields a row; reset at once so it holds no read open.
   bool any() {
@@ -186,20 +189,28 @@ class Statement {
   // A value of a column without a declared type, as SQLite stored it.
   aco::ParamValue value(int column) const {
     switch (sqlite3_column_type(stmt_, column)) {
-      case SQLITE_INTEGER: return integer(column);
-      case SQLITE_FLOAT: return real(column);
-      default: return text(column);
+      case SQLITE_INTEGER:
+        return integer(column);
+      case SQLITE_FLOAT:
+        return real(column);
+      default:
+        return text(column);
     }
   }
   // A column holding a trial field of `type`.
   TrialCell cell(int column, TrialCellType type) const {
     if (null(column)) return {};
     switch (type) {
-      case TrialCellType::boolean: return integer(column) != 0;
-      case TrialCellType::integer: return integer(column);
-      case TrialCellType::count: return from_sql(integer(column));
-      case TrialCellType::real: return real(column);
-      case TrialCellType::text: break;
+      case TrialCellType::boolean:
+        return integer(column) != 0;
+      case TrialCellType::integer:
+        return integer(column);
+      case TrialCellType::count:
+        return from_sql(integer(column));
+      case TrialCellType::real:
+        return real(column);
+      case TrialCellType::text:
+        break;
     }
     return text(column);
   }
@@ -227,8 +238,10 @@ class Statement {
   }
   template <class T>
   void bind(int i, const std::optional<T>& v) {
-    if (v) bind(i, *v);
-    else db_.check(sqlite3_bind_null(stmt_, i), sql_);
+    if (v)
+      bind(i, *v);
+    else
+      db_.check(sqlite3_bind_null(stmt_, i), sql_);
   }
 
   const Connection& db_;
@@ -303,7 +316,7 @@ struct ResultsDb::Impl {
   Connection db;
   mutable std::mutex mutex;
   std::vector<std::int64_t> experiment_ids;  // by problem index
-  std::map<std::int64_t, int> problem_of;    // by experiment id
+  std::map<std::int64_t, int> problem_of;  // by experiment id
   std::vector<ProblemRecord> problems;
   std::map<int, std::string> config_names;  // by id
   std::optional<Statement> find_run, insert_run, insert_progress, insert_property, add_time;
@@ -368,8 +381,9 @@ struct ResultsDb::Impl {
     Transaction transaction(db);
     for (const auto& [table, column] : missing) db.exec("ALTER TABLE " + table + " ADD COLUMN " + column);
     if (!current) {
-      db.exec("UPDATE runs SET failure = CASE WHEN stopped_by IN ('crashed', 'timed out', 'out of memory') THEN "
-              "stopped_by ELSE 'error' END WHERE error IS NOT NULL AND failure IS NULL");
+      db.exec(
+          "UPDATE runs SET failure = CASE WHEN stopped_by IN ('crashed', 'timed out', 'out of memory') THEN "
+          "stopped_by ELSE 'error' END WHERE error IS NOT NULL AND failure IS NULL");
       if (!has_properties) db.exec(kPropertiesTable);
       Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
       set.run(kFormatVersion).finish();
@@ -382,11 +396,13 @@ struct ResultsDb::Impl {
   void check_is_ours(const std::string& experiment_name, const std::string& fingerprint,
                      const std::vector<ProblemRecord>& given) {
     if (!tables().contains("acobench_meta"))
-      throw Error(file() + " is an SQLite database but not an acobench results database (it has no acobench_meta "
-                           "table); nothing in it was changed: give another results file");
+      throw Error(file() +
+                  " is an SQLite database but not an acobench results database (it has no acobench_meta "
+                  "table); nothing in it was changed: give another results file");
     const auto stored = meta();
     const auto value = [&](const std::string& key) { return stored.contains(key) ? stored.at(key) : "(missing)"; };
-    const std::string reuse = "; nothing in it was changed: give another results file, or delete this one to start again";
+    const std::string reuse =
+        "; nothing in it was changed: give another results file, or delete this one to start again";
     if (!upgradable(value("format_version")))
       throw Error(file() + " is an acobench results database of format version " + value("format_version") +
                   ", this acobench reads version " + kFormatVersion + reuse);
@@ -506,8 +522,7 @@ ResultsDb::ResultsDb(const std::filesystem::path& file) : impl_(std::make_unique
   bool ours = false;
   try {
     ours = d.tables().contains("acobench_meta");
-  } catch (const Error&) {
-  }
+  } catch (const Error&) {}
   if (!ours) throw Error(file.string() + " is not an acobench results database");
   const auto stored = d.meta();
   if (!stored.contains("format_version") || !upgradable(stored.at("format_version")))
@@ -533,9 +548,10 @@ void ResultsDb::Impl::load(const std::vector<ProblemRecord>* given) {
   find_run.emplace(db, "SELECT id FROM runs WHERE experimentid = ?1 AND plannerid = ?2 AND repetition = ?3");
   std::string parameters = "?1, ?2";  // experimentid, plannerid
   for (std::size_t i = 0; i < run_fields().size(); ++i) parameters += ", ?" + std::to_string(3 + i);
-  insert_run.emplace(db, "INSERT INTO runs (experimentid, plannerid" + column_names(run_fields()) + ") VALUES (" +
-                             parameters + ")");
-  insert_progress.emplace(db, "INSERT INTO progress (runid, time, iteration, best_cost, walks) VALUES (?1, ?2, ?3, ?4, ?5)");
+  insert_run.emplace(
+      db, "INSERT INTO runs (experimentid, plannerid" + column_names(run_fields()) + ") VALUES (" + parameters + ")");
+  insert_progress.emplace(
+      db, "INSERT INTO progress (runid, time, iteration, best_cost, walks) VALUES (?1, ?2, ?3, ?4, ?5)");
   insert_property.emplace(db, "INSERT INTO properties (runid, name, value) VALUES (?1, ?2, ?3)");
   add_time.emplace(db, "UPDATE experiments SET totaltime = totaltime + ?2 WHERE id = ?1");
 }
@@ -591,8 +607,8 @@ std::map<std::tuple<int, int, int>, std::pair<std::string, std::string>> Results
   read.run();
   while (read.next())
     if (const auto problem = d.problem_of.find(read.integer(0)); problem != d.problem_of.end())
-      failures[{problem->second, static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2))}] = {read.text(3),
-                                                                                                         read.text(4)};
+      failures[{problem->second, static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2))}] = {
+          read.text(3), read.text(4)};
   return failures;
 }
 
@@ -659,7 +675,8 @@ std::vector<TrialRecord> ResultsDb::trials() const {
     TrialRecord t;
     t.problem = problem->second;
     t.config = static_cast<int>(runs.integer(2));
-    for (std::size_t i = 0; i < fields.size(); ++i) fields[i]->set(t, runs.cell(static_cast<int>(3 + i), fields[i]->type));
+    for (std::size_t i = 0; i < fields.size(); ++i)
+      fields[i]->set(t, runs.cell(static_cast<int>(3 + i), fields[i]->type));
     progress.run(runs.integer(0));
     bool measured = true;
     while (progress.next()) {

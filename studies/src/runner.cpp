@@ -87,9 +87,12 @@ class Runner {
     if (e_.ablation_target && !options_.shard) components = ablation_components(e_.baseline, *e_.ablation_target);
     // The local planner drives simulations only: flipping it in planning trials would spend a
     // round on a change that changes nothing (a paper's preset names its local planner).
-    const bool simulations = std::any_of(e_.problems.begin(), e_.problems.end(), [](const Problem& p) { return p.simulation != nullptr; });
+    const bool simulations =
+        std::any_of(e_.problems.begin(), e_.problems.end(), [](const Problem& p) { return p.simulation != nullptr; });
     if (!simulations)
-      std::erase_if(components, [](const std::vector<std::string>& c) { return c.front() == "local" || c.front().rfind("local.", 0) == 0; });
+      std::erase_if(components, [](const std::vector<std::string>& c) {
+        return c.front() == "local" || c.front().rfind("local.", 0) == 0;
+      });
     summary.ablation_left = e_.ablation_target && options_.shard;
     const std::size_t n = components.size();
     total_ = (fixed.size() + n * (n + 1) / 2) * e_.problems.size() * e_.repetitions;
@@ -111,9 +114,9 @@ class Runner {
         candidates.push_back(add(c));
       }
       run_trials(candidates, summary);
-      const auto best = std::min_element(candidates.begin(), candidates.end(), [this](int a, int b) {
-        return score(a) < score(b);
-      }) - candidates.begin();
+      const auto best =
+          std::min_element(candidates.begin(), candidates.end(), [this](int a, int b) { return score(a) < score(b); }) -
+          candidates.begin();
       current = trials_.config(candidates[best]);
       path.push_back(current.name);
       components.erase(components.begin() + best);
@@ -139,14 +142,16 @@ class Runner {
       throw aco::Error(file + " holds trials of a run without --shard; shard " + wanted +
                        " writes its own database (give another --db)");
     throw aco::Error(file + " holds shard " + *stored + " of the experiment; run it with --shard " + *stored +
-                     (options_.shard ? ", give shard " + wanted + " its own --db," : "") + " or merge it (acobench merge)");
+                     (options_.shard ? ", give shard " + wanted + " its own --db," : "") +
+                     " or merge it (acobench merge)");
   }
 
   // Its database id, the configuration prepared for trials.
   int add(const Configuration& c) {
     Configuration resolved = c;
     if (!resolved.run) resolved.run = resolve(c, e_.problems, registry_);
-    const int id = db_->add_config({c.name, settings_json(c, *resolved.run, registry_), aco::plugins_json(*resolved.run, registry_)});
+    const int id = db_->add_config(
+        {c.name, settings_json(c, *resolved.run, registry_), aco::plugins_json(*resolved.run, registry_)});
     trials_.add_config(id, resolved);
     order_.push_back(id);
     return id;
@@ -167,8 +172,10 @@ class Runner {
     int failures = 0;
     double relative = 0.0;
     for (const auto& [trial, result] : scores_.at(config)) {
-      if (!result.first) ++failures;
-      else relative += result.second;
+      if (!result.first)
+        ++failures;
+      else
+        relative += result.second;
     }
     return {failures, relative};
   }

@@ -30,8 +30,8 @@ std::optional<int> whole_number(const std::string& text) {
 std::string results_text(const TrialRecord& t) {
   std::ostringstream text;
   text.precision(17);
-  text << t.seed << ' ' << t.solved << ' ' << t.length << ' ' << t.grid_length << ' ' << t.turns << ' ' << t.iterations << ' '
-       << t.best_iteration << ' ' << t.ant_steps << ' ' << t.stopped_by << ' ' << t.path_json << ' ' << t.error;
+  text << t.seed << ' ' << t.solved << ' ' << t.length << ' ' << t.grid_length << ' ' << t.turns << ' ' << t.iterations
+       << ' ' << t.best_iteration << ' ' << t.ant_steps << ' ' << t.stopped_by << ' ' << t.path_json << ' ' << t.error;
   for (const double b : t.best_so_far) text << ' ' << b;
   if (t.simulation)
     text << ' ' << t.simulation->outcome << ' ' << t.simulation->time_to_goal << ' ' << t.simulation->collisions << ' '
@@ -68,8 +68,8 @@ std::string label(const TrialKey& key) {
 
 Shard parse_shard(const std::string& text) {
   const auto slash = text.find('/');
-  const auto index = whole_number(text.substr(0, slash)), count = slash == std::string::npos ? std::nullopt
-                                                                                             : whole_number(text.substr(slash + 1));
+  const auto index = whole_number(text.substr(0, slash)),
+             count = slash == std::string::npos ? std::nullopt : whole_number(text.substr(slash + 1));
   if (!index || !count || *count < 1 || *index < 1 || *index > *count)
     throw Error("--shard '" + text + "': expected K/N, shard K of N with 1 <= K <= N (e.g. 2/8)");
   return {*index, *count};
@@ -105,21 +105,24 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
   std::map<std::string, std::string> settings;  // configuration name -> the first input's settings
   for (const Input& input : read) {
     if (input.name != first.name)
-      throw Error("cannot merge " + input.file.string() + " (experiment '" + input.name + "') with " + first.file.string() +
-                  " (experiment '" + first.name + "'): they hold different experiments");
+      throw Error("cannot merge " + input.file.string() + " (experiment '" + input.name + "') with " +
+                  first.file.string() + " (experiment '" + first.name + "'): they hold different experiments");
     auto conflicts = fingerprint_conflicts(fingerprint, input.fingerprint);
     for (auto& line : problem_conflicts(problems, input.problems)) conflicts.push_back(std::move(line));
     for (const auto& [id, config] : input.configs) {
       const auto [held, fresh] = settings.emplace(config.name, config.settings_json);
       if (!fresh)
-        for (auto& line : config_conflicts(config.name, held->second, config.settings_json)) conflicts.push_back(std::move(line));
+        for (auto& line : config_conflicts(config.name, held->second, config.settings_json))
+          conflicts.push_back(std::move(line));
     }
     if (!conflicts.empty()) {
       std::string lines;
       for (const auto& line : conflicts) lines += "\n  " + line;
-      throw Error("cannot merge " + input.file.string() + " with " + first.file.string() + ": experiment '" + first.name +
+      throw Error("cannot merge " + input.file.string() + " with " + first.file.string() + ": experiment '" +
+                  first.name +
                   "' was run with other trials, from another experiment file or other plugin binaries (taking the "
-                  "databases before it as stored):" + lines);
+                  "databases before it as stored):" +
+                  lines);
     }
     fingerprint = merged_fingerprint(fingerprint, input.fingerprint);
     for (const auto& p : input.problems)
@@ -132,7 +135,8 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
     shard_count = input.shard->count;
     const auto [given, fresh] = shard_files.emplace(to_string(*input.shard), input.file.string());
     if (!fresh)
-      throw Error("shard " + to_string(*input.shard) + " is given twice: " + given->second + " and " + input.file.string());
+      throw Error("shard " + to_string(*input.shard) + " is given twice: " + given->second + " and " +
+                  input.file.string());
   }
 
   // Before anything is written: every trial found, and two copies of one checked to agree.
@@ -181,9 +185,9 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
       if (results.at(key).first != i || present.contains(key)) continue;
       t.config = to_out.at(t.config);
       const std::string& problem = std::get<0>(key);
-      t.problem = static_cast<int>(std::find_if(problems.begin(), problems.end(),
-                                                [&](const ProblemRecord& p) { return p.name == problem; }) -
-                                   problems.begin());
+      t.problem = static_cast<int>(
+          std::find_if(problems.begin(), problems.end(), [&](const ProblemRecord& p) { return p.name == problem; }) -
+          problems.begin());
       out.store(t);
       ++summary.copied;
     }
@@ -216,9 +220,11 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
   for (const auto& [shard, counts] : by_shard) {
     if (counts.first == 0) continue;
     const std::string name = shard ? to_string(Shard{shard, *shard_count}) : "";
-    summary.missing_by_shard.push_back(
-        (shard ? "shard " + name + ": " : "") + std::to_string(counts.first) + " of " + std::to_string(counts.second) +
-        " trials missing" + (shard_files.contains(name) ? " (" + shard_files.at(name) + " is not complete)" : shard ? " (not given)" : ""));
+    summary.missing_by_shard.push_back((shard ? "shard " + name + ": " : "") + std::to_string(counts.first) + " of " +
+                                       std::to_string(counts.second) + " trials missing" +
+                                       (shard_files.contains(name) ? " (" + shard_files.at(name) + " is not complete)"
+                                        : shard                    ? " (not given)"
+                                                                   : ""));
   }
   return summary;
 }

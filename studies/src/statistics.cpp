@@ -82,7 +82,8 @@ double quantile(std::span<const double> sorted, double p) {
 double student_t_quantile(double p, double degrees_of_freedom) {
   if (!(p > 0.0 && p < 1.0)) throw aco::Error("Student t quantile: probability " + text(p) + " is outside (0, 1)");
   if (!(degrees_of_freedom > 0.0) || !std::isfinite(degrees_of_freedom))
-    throw aco::Error("Student t quantile: degrees of freedom " + text(degrees_of_freedom) + " must be positive and finite");
+    throw aco::Error("Student t quantile: degrees of freedom " + text(degrees_of_freedom) +
+                     " must be positive and finite");
   return boost::math::quantile(boost::math::students_t(degrees_of_freedom), p);
 }
 
@@ -195,10 +196,14 @@ EffectSize effect_size(double a12) {
 
 std::string_view to_string(EffectSize size) {
   switch (size) {
-    case EffectSize::negligible: return "negligible";
-    case EffectSize::small: return "small";
-    case EffectSize::medium: return "medium";
-    case EffectSize::large: return "large";
+    case EffectSize::negligible:
+      return "negligible";
+    case EffectSize::small:
+      return "small";
+    case EffectSize::medium:
+      return "medium";
+    case EffectSize::large:
+      return "large";
   }
   return "unknown";
 }

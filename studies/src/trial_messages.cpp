@@ -9,8 +9,10 @@ namespace {
 json to_json(const TrialCell& value) {
   return std::visit(
       [](const auto& v) -> json {
-        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>) return nullptr;
-        else return v;
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::monostate>)
+          return nullptr;
+        else
+          return v;
       },
       value);
 }
@@ -18,11 +20,16 @@ json to_json(const TrialCell& value) {
 TrialCell from_json(const json& value, TrialCellType type) {
   if (value.is_null()) return {};
   switch (type) {
-    case TrialCellType::boolean: return value.get<bool>();
-    case TrialCellType::integer: return value.get<std::int64_t>();
-    case TrialCellType::count: return value.get<std::uint64_t>();
-    case TrialCellType::real: return value.get<double>();
-    case TrialCellType::text: break;
+    case TrialCellType::boolean:
+      return value.get<bool>();
+    case TrialCellType::integer:
+      return value.get<std::int64_t>();
+    case TrialCellType::count:
+      return value.get<std::uint64_t>();
+    case TrialCellType::real:
+      return value.get<double>();
+    case TrialCellType::text:
+      break;
   }
   return value.get<std::string>();
 }
@@ -30,12 +37,16 @@ TrialCell from_json(const json& value, TrialCellType type) {
 }  // namespace
 
 nlohmann::json record_json(const TrialRecord& t) {
-  json j = {{"problem", t.problem}, {"config", t.config},     {"best_so_far", t.best_so_far},
-            {"elapsed_s", t.elapsed_s}, {"walks", t.walks}};
+  json j = {{"problem", t.problem},
+            {"config", t.config},
+            {"best_so_far", t.best_so_far},
+            {"elapsed_s", t.elapsed_s},
+            {"walks", t.walks}};
   for (const auto& f : trial_fields())
     if (f.use & kInMessage) j[f.name] = to_json(f.get(t, -1.0));
   json& properties = j["properties"] = json::object();
-  for (const auto& [name, value] : t.properties) properties[name] = std::visit([](const auto& v) { return json(v); }, value);
+  for (const auto& [name, value] : t.properties)
+    properties[name] = std::visit([](const auto& v) { return json(v); }, value);
   return j;
 }
 
@@ -49,10 +60,14 @@ TrialRecord record_from(const nlohmann::json& j) {
   for (const auto& f : trial_fields())
     if (f.use & kInMessage) f.set(t, from_json(j.at(f.name), f.type));
   for (const auto& [name, value] : j.at("properties").items()) {
-    if (value.is_boolean()) t.properties[name] = value.get<bool>();
-    else if (value.is_number_integer()) t.properties[name] = value.get<std::int64_t>();
-    else if (value.is_number()) t.properties[name] = value.get<double>();
-    else t.properties[name] = value.get<std::string>();
+    if (value.is_boolean())
+      t.properties[name] = value.get<bool>();
+    else if (value.is_number_integer())
+      t.properties[name] = value.get<std::int64_t>();
+    else if (value.is_number())
+      t.properties[name] = value.get<double>();
+    else
+      t.properties[name] = value.get<std::string>();
   }
   return t;
 }

@@ -11,11 +11,16 @@ namespace {
 
 template <class Member>
 constexpr TrialCellType type_of() {
-  if constexpr (std::is_same_v<Member, bool>) return TrialCellType::boolean;
-  else if constexpr (std::is_same_v<Member, std::uint64_t>) return TrialCellType::count;
-  else if constexpr (std::is_integral_v<Member>) return TrialCellType::integer;
-  else if constexpr (std::is_floating_point_v<Member>) return TrialCellType::real;
-  else return TrialCellType::text;
+  if constexpr (std::is_same_v<Member, bool>)
+    return TrialCellType::boolean;
+  else if constexpr (std::is_same_v<Member, std::uint64_t>)
+    return TrialCellType::count;
+  else if constexpr (std::is_integral_v<Member>)
+    return TrialCellType::integer;
+  else if constexpr (std::is_floating_point_v<Member>)
+    return TrialCellType::real;
+  else
+    return TrialCellType::text;
 }
 
 // NaN is NULL, as the database stores it.
@@ -24,8 +29,10 @@ TrialCell cell(const Member& value) {
   if constexpr (std::is_same_v<Member, bool> || std::is_same_v<Member, std::uint64_t> ||
                 std::is_same_v<Member, std::string>)
     return value;
-  else if constexpr (std::is_integral_v<Member>) return static_cast<std::int64_t>(value);
-  else return std::isnan(value) ? TrialCell() : TrialCell(value);
+  else if constexpr (std::is_integral_v<Member>)
+    return static_cast<std::int64_t>(value);
+  else
+    return std::isnan(value) ? TrialCell() : TrialCell(value);
 }
 
 template <class Member>
@@ -33,14 +40,19 @@ void assign(Member& member, const TrialCell& value) {
   if (std::holds_alternative<std::monostate>(value)) return;
   if constexpr (std::is_integral_v<Member> && !std::is_same_v<Member, bool> && !std::is_same_v<Member, std::uint64_t>)
     member = static_cast<Member>(std::get<std::int64_t>(value));
-  else member = std::get<Member>(value);
+  else
+    member = std::get<Member>(value);
 }
 
 // A member of the record; `column` names it in runs.csv and Python when not `name`.
 template <class Member>
 TrialField field(const char* name, Member TrialRecord::*member, unsigned use, const char* column = nullptr,
                  int csv_digits = 10) {
-  return {name, column ? column : name, type_of<Member>(), use, csv_digits,
+  return {name,
+          column ? column : name,
+          type_of<Member>(),
+          use,
+          csv_digits,
           [member](const TrialRecord& t, double) { return cell(t.*member); },
           [member](TrialRecord& t, const TrialCell& value) { assign(t.*member, value); }};
 }
@@ -62,7 +74,11 @@ TrialField text_or_null(const char* name, std::string TrialRecord::*member, unsi
 // A measure of simulation trials: NULL for planning trials.
 template <class Member>
 TrialField simulation_field(const char* name, Member SimulationRecord::*member) {
-  return {name, name, type_of<Member>(), kInMessage | kInRunsTable | kInPython, 10,
+  return {name,
+          name,
+          type_of<Member>(),
+          kInMessage | kInRunsTable | kInPython,
+          10,
           [member](const TrialRecord& t, double) { return t.simulation ? cell((*t.simulation).*member) : TrialCell(); },
           [member](TrialRecord& t, const TrialCell& value) {
             if (std::holds_alternative<std::monostate>(value)) return;
@@ -74,7 +90,11 @@ TrialField simulation_field(const char* name, Member SimulationRecord::*member) 
 // The excess of a solved trial's grid path over the optimum (exact A* on the same graph) times
 // `scale`: NULL if unsolved or the optimum is unknown.
 TrialField gap(const char* name, unsigned use, double scale, int csv_digits) {
-  return {name, name, TrialCellType::real, use, csv_digits,
+  return {name,
+          name,
+          TrialCellType::real,
+          use,
+          csv_digits,
           [scale](const TrialRecord& t, double optimal) {
             return t.solved && optimal > 0 ? TrialCell(scale * (t.grid_length / optimal - 1.0)) : TrialCell();
           },
@@ -98,12 +118,16 @@ std::string csv_cell(const TrialCell& value, int digits) {
   return std::visit(
       [digits](const auto& v) -> std::string {
         using Value = std::decay_t<decltype(v)>;
-        if constexpr (std::is_same_v<Value, std::monostate>) return "";
-        else if constexpr (std::is_same_v<Value, bool>) return v ? "1" : "0";
-        else if constexpr (std::is_same_v<Value, double>) return csv_real(v, digits);
+        if constexpr (std::is_same_v<Value, std::monostate>)
+          return "";
+        else if constexpr (std::is_same_v<Value, bool>)
+          return v ? "1" : "0";
+        else if constexpr (std::is_same_v<Value, double>)
+          return csv_real(v, digits);
         else if constexpr (std::is_same_v<Value, std::string>)
           return v.find_first_of(",\"\r\n") == std::string::npos ? v : quoted(v);
-        else return std::to_string(v);
+        else
+          return std::to_string(v);
       },
       value);
 }

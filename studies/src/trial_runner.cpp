@@ -21,8 +21,10 @@ std::string path_json(const aco::Waypoints& path) {
   const bool flat = std::all_of(path.begin(), path.end(), [](const auto& p) { return p.z() == 0.0; });
   nlohmann::json j = nlohmann::json::array();
   for (const auto& p : path) {
-    if (flat) j.push_back({p.x(), p.y()});
-    else j.push_back({p.x(), p.y(), p.z()});
+    if (flat)
+      j.push_back({p.x(), p.y()});
+    else
+      j.push_back({p.x(), p.y(), p.z()});
   }
   return j.dump();
 }
@@ -75,7 +77,8 @@ struct TrialRunner::Problems {
 struct TrialRunner::Prepared {
   Configuration config;
   aco::RunSpec run;
-  std::map<int, aco::simulation::Scenario> scenarios;  // per simulation problem: its scenario with this configuration's keys
+  std::map<int, aco::simulation::Scenario>
+      scenarios;  // per simulation problem: its scenario with this configuration's keys
 };
 
 TrialRunner::TrialRunner(const Experiment& experiment, aco::PluginRegistry& registry)
@@ -206,8 +209,9 @@ TrialRecord TrialRunner::simulate(const TrialOrder& t) {
   const std::uint64_t seed = trial_seed(experiment_.seed, problem.name, t.repetition);
   const auto began = std::chrono::steady_clock::now();
   // Variations are drawn on the scenario as written, so every configuration meets the same ones.
-  aco::simulation::Scenario scenario = problem.variations ? aco::simulation::variations(*problem.simulation, 1, seed, registry_).front()
-                                                 : *problem.simulation;
+  aco::simulation::Scenario scenario =
+      problem.variations ? aco::simulation::variations(*problem.simulation, 1, seed, registry_).front()
+                         : *problem.simulation;
   {
     const std::shared_lock lock(problems_->mutex);
     const aco::simulation::Scenario& configured = configs_.at(t.config)->scenarios.at(t.problem);
@@ -227,11 +231,16 @@ TrialRecord TrialRunner::simulate(const TrialOrder& t) {
   r.stopped_by = sim.outcome;
   aco::Waypoints trajectory;
   const std::size_t every = std::max<std::size_t>(1, sim.frames.size() / 500);  // at most ~500 points
-  for (std::size_t i = 0; i < sim.frames.size(); i += every) trajectory.emplace_back(sim.frames[i].robot.x, sim.frames[i].robot.y, 0.0);
+  for (std::size_t i = 0; i < sim.frames.size(); i += every)
+    trajectory.emplace_back(sim.frames[i].robot.x, sim.frames[i].robot.y, 0.0);
   trajectory.emplace_back(sim.frames.back().robot.x, sim.frames.back().robot.y, 0.0);
   r.path_json = path_json(trajectory);
-  r.simulation = SimulationRecord{sim.outcome, sim.reached ? sim.time : std::nan(""), sim.collisions, sim.replans,
-                                  std::isfinite(sim.min_clearance) ? sim.min_clearance : std::nan(""), sim.steps};
+  r.simulation = SimulationRecord{sim.outcome,
+                                  sim.reached ? sim.time : std::nan(""),
+                                  sim.collisions,
+                                  sim.replans,
+                                  std::isfinite(sim.min_clearance) ? sim.min_clearance : std::nan(""),
+                                  sim.steps};
   return r;
 }
 

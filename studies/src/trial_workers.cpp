@@ -37,7 +37,8 @@ std::vector<std::string> worker_command(const Experiment& experiment, const std:
 
 TrialWorkers::TrialWorkers(int lanes, std::vector<std::string> command, TrialLimits limits, std::string fingerprint)
     : limits_(limits), fingerprint_(std::move(fingerprint)) {
-  for (int i = 0; i < std::max(1, lanes); ++i) lanes_.push_back(std::unique_ptr<Lane>(new Lane{aco::WorkerProcess(command), {}}));
+  for (int i = 0; i < std::max(1, lanes); ++i)
+    lanes_.push_back(std::unique_ptr<Lane>(new Lane{aco::WorkerProcess(command), {}}));
 }
 
 TrialWorkers::~TrialWorkers() = default;

@@ -56,7 +56,8 @@ void matrix_map(std::string_view input) {
 void ros_map(std::string_view input) {
   const auto split = input.find(kRosSeparator);
   const std::string_view yaml = input.substr(0, split);
-  const std::string_view pgm = split == std::string_view::npos ? std::string_view() : input.substr(split + kRosSeparator.size());
+  const std::string_view pgm =
+      split == std::string_view::npos ? std::string_view() : input.substr(split + kRosSeparator.size());
   write_scratch_file("map.pgm", pgm);
   const auto file = write_scratch_file("map.yaml", yaml);
   expect_no_crash([&] { aco::load_ros_map(file); });

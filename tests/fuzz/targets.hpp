@@ -44,8 +44,7 @@ template <class Load>
 void expect_no_crash(Load load) {
   try {
     load();
-  } catch (const aco::Error&) {
-  }
+  } catch (const aco::Error&) {}
 }
 
 }  // namespace fuzz

@@ -2,7 +2,8 @@
 
 #include "support.hpp"
 
-TEST_CASE("backtrack_penalty: a stuck ant dies and the pheromone into its last h nodes is cut", "[plugin][backtrack_penalty]") {
+TEST_CASE("backtrack_penalty: a stuck ant dies and the pheromone into its last h nodes is cut",
+          "[plugin][backtrack_penalty]") {
   std::vector<std::string> rows(3, std::string(8, '.'));
   const auto map = test::grid(rows);
   const aco::Graph g = aco::build_graph(map, {});

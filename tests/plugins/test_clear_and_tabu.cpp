@@ -64,7 +64,9 @@ class Watch final : public aco::DeadlockPolicy {
  public:
   explicit Watch(aco::DeadlockPolicy& inner) : inner_(inner) {}
   void begin_run(const aco::Context& c) override { inner_.begin_run(c); }
-  int on_stuck(const aco::Context& c, std::span<const aco::NodeId> walk) const override { return inner_.on_stuck(c, walk); }
+  int on_stuck(const aco::Context& c, std::span<const aco::NodeId> walk) const override {
+    return inner_.on_stuck(c, walk);
+  }
   void after_iteration(const aco::Context& c, const aco::Iteration& it, aco::Trail& trail,
                        std::vector<std::uint8_t>& forbidden) override {
     for (const aco::Ant& ant : it.ants)

@@ -43,12 +43,12 @@ TEST_CASE("direction: eta = 1 / (d(next, goal) + gamma * |turn| / pi), raised to
     const double d = std::hypot(4 - to.x, 4 - to.y);
     return std::pow(d / (d + 3 * turn), 2.0);
   };
-  CHECK(f.at({2, 2}) == Approx(1.0));                               // straight on
-  CHECK(f.at({2, 3}) == Approx(expected({2, 3}, 0.25)));            // 45 degrees
-  CHECK(f.at({1, 3}) == Approx(expected({1, 3}, 0.5)));             // 90 degrees
-  CHECK(f.at({0, 3}) == Approx(expected({0, 3}, 0.75)));            // 135 degrees
-  CHECK(f.at({0, 2}) == Approx(expected({0, 2}, 1.0)));             // U-turn
-  CHECK(f.at({2, 1}) == Approx(f.at({2, 3})).epsilon(0.3));         // left and right turns: same angle
+  CHECK(f.at({2, 2}) == Approx(1.0));  // straight on
+  CHECK(f.at({2, 3}) == Approx(expected({2, 3}, 0.25)));  // 45 degrees
+  CHECK(f.at({1, 3}) == Approx(expected({1, 3}, 0.5)));  // 90 degrees
+  CHECK(f.at({0, 3}) == Approx(expected({0, 3}, 0.75)));  // 135 degrees
+  CHECK(f.at({0, 2}) == Approx(expected({0, 2}, 1.0)));  // U-turn
+  CHECK(f.at({2, 1}) == Approx(f.at({2, 3})).epsilon(0.3));  // left and right turns: same angle
   CHECK(f.at({2, 1}) == Approx(expected({2, 1}, 0.25)));
   // Before the first move there is no heading: every factor is 1.
   std::vector<aco::EdgeId> first{g.edges_begin(g.node({0, 2}))};
@@ -59,7 +59,8 @@ TEST_CASE("direction: eta = 1 / (d(next, goal) + gamma * |turn| / pi), raised to
   CHECK(one[0] == 1.0);
 }
 
-TEST_CASE("direction with gamma 0 is the distance heuristic, and distance=step uses the step length", "[plugin][direction]") {
+TEST_CASE("direction with gamma 0 is the distance heuristic, and distance=step uses the step length",
+          "[plugin][direction]") {
   const auto map = test::grid({"....", "....", "...."});
   const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::sixteen, false});
   const auto context = test::context(g, {0, 0}, {3, 2});

@@ -73,9 +73,9 @@ TEST_CASE("motion model: eq. 15-17 against values integrated by hand", "[dwa][ro
 TEST_CASE("path geometry: the foot of a point on a polyline, and the point at a length along it", "[dwa][robot]") {
   const std::vector<Eigen::Vector2d> path{{0, 0}, {4, 0}, {4, 3}};
   CHECK(aco::foot_on_path(path, {1, 2}) == Approx(1.0));
-  CHECK(aco::foot_on_path(path, {6, 2}) == Approx(6.0));    // on the second leg
-  CHECK(aco::foot_on_path(path, {-3, 1}) == Approx(0.0));   // before the start: the start
-  CHECK(aco::foot_on_path(path, {9, 9}) == Approx(7.0));    // beyond the end: the end
+  CHECK(aco::foot_on_path(path, {6, 2}) == Approx(6.0));  // on the second leg
+  CHECK(aco::foot_on_path(path, {-3, 1}) == Approx(0.0));  // before the start: the start
+  CHECK(aco::foot_on_path(path, {9, 9}) == Approx(7.0));  // beyond the end: the end
   CHECK(aco::foot_on_path(path, {6, 2}, 3.0) == Approx(4.0));  // the second leg not searched
   CHECK(aco::point_on_path(path, 2.5).isApprox(Eigen::Vector2d(2.5, 0)));
   CHECK(aco::point_on_path(path, 5.0).isApprox(Eigen::Vector2d(4, 1)));
@@ -125,7 +125,8 @@ TEST_CASE("dwa never takes a velocity that hits a cell, and stops rather than co
   SECTION("a box with no way out") {
     std::vector<Eigen::Vector2d> box;
     for (int i = -4; i <= 4; ++i)
-      for (const auto& c : {Eigen::Vector2d(i, -4), Eigen::Vector2d(i, 4), Eigen::Vector2d(-4, i), Eigen::Vector2d(4, i)})
+      for (const auto& c :
+           {Eigen::Vector2d(i, -4), Eigen::Vector2d(i, 4), Eigen::Vector2d(-4, i), Eigen::Vector2d(4, i)})
         box.push_back(c);
     aco::RobotState robot;
     robot.v = 1.0;  // braking distance 2.5: it must start braking at once

@@ -30,7 +30,7 @@ TEST_CASE("elite: Ant System deposits plus elite_q * (it/it_max)^3 / L for the b
   // Three edge-disjoint paths of different lengths, and an ant that did not arrive.
   std::vector<aco::Ant> ants{
       test::ant(g, {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {3, 1}, {3, 2}}),  // the longest
-      test::ant(g, {{0, 0}, {1, 1}, {2, 2}, {3, 2}}),                  // the shortest
+      test::ant(g, {{0, 0}, {1, 1}, {2, 2}, {3, 2}}),  // the shortest
       test::ant(g, {{0, 0}, {0, 1}, {0, 2}, {1, 2}, {2, 1}, {3, 2}}),
       test::ant(g, {{0, 0}, {1, 0}}),
   };
@@ -49,13 +49,14 @@ TEST_CASE("elite: Ant System deposits plus elite_q * (it/it_max)^3 / L for the b
     const auto with_elite = after_update(*elite, g, ants, it - 1);
     const auto plain = after_update(*baseline, g, ants, it - 1);
     const double shortest = ants[1].length;
-    for (aco::EdgeId e : ants[1].edges) CHECK(with_elite[e] - plain[e] == Approx(3.0 * std::pow(it / 100.0, 3) / shortest));
+    for (aco::EdgeId e : ants[1].edges)
+      CHECK(with_elite[e] - plain[e] == Approx(3.0 * std::pow(it / 100.0, 3) / shortest));
     for (std::size_t e = 0; e < plain.size(); ++e)
       if (std::find(ants[1].edges.begin(), ants[1].edges.end(), aco::EdgeId(e)) == ants[1].edges.end())
         CHECK(with_elite[e] == Approx(plain[e]));  // non-elite edges: Ant System exactly
     extra.push_back(with_elite[ants[1].edges[0]] - plain[ants[1].edges[0]]);
   }
-  CHECK(extra[1] / extra[0] == Approx(8.0));   // (50/25)^3
+  CHECK(extra[1] / extra[0] == Approx(8.0));  // (50/25)^3
   CHECK(extra[2] / extra[0] == Approx(64.0));  // (100/25)^3
 }
 
@@ -82,11 +83,12 @@ TEST_CASE("elite: max(1, floor(fraction * arrived)) shortest ants are elite", "[
   };
   CHECK(elite_deposit(50, 0) == Approx(1.0 / 10 + 1.0 / 11));  // 5 % of 50 = 2.5: 2 elites
   CHECK(elite_deposit(40, 10) == Approx(1.0 / 10 + 1.0 / 11));  // 5 % of the 40 arrived = 2
-  CHECK(elite_deposit(39, 0) == Approx(1.0 / 10));               // floor(1.95) = 1
-  CHECK(elite_deposit(5, 0) == Approx(1.0 / 10));                // floor(0.25) = 0, at least 1
+  CHECK(elite_deposit(39, 0) == Approx(1.0 / 10));  // floor(1.95) = 1
+  CHECK(elite_deposit(5, 0) == Approx(1.0 / 10));  // floor(0.25) = 0, at least 1
 }
 
-TEST_CASE("elite: local update pulls walked edges towards the start field, scaled to ants * Q / d(S, E)", "[plugin][elite]") {
+TEST_CASE("elite: local update pulls walked edges towards the start field, scaled to ants * Q / d(S, E)",
+          "[plugin][elite]") {
   const aco::Graph g = aco::build_graph(kMap, {});
   auto elite = test::make<aco::PheromoneUpdate>("update", "elite", {{"local_rho", "0.5"}, {"rho", "0"}, {"q", "2"}});
   const auto c = test::context(g, {0, 0}, {3, 2}, 0, 100);  // 10 ants

@@ -5,16 +5,19 @@
 #include "aco/rng.hpp"
 #include "support.hpp"
 
-TEST_CASE("fireworks init: tau0 everywhere, plus Q / L_best on the fireworks path's edges only", "[plugin][fireworks]") {
+TEST_CASE("fireworks init: tau0 everywhere, plus Q / L_best on the fireworks path's edges only",
+          "[plugin][fireworks]") {
   const auto map = test::classic_map(1);
   const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   aco::Context c = test::context(g, {0, 0}, {19, 19});
   c.seed = 7;
   std::vector<double> tau(g.num_edges(), 0.0);
-  test::make<aco::PheromoneInit>("init", "fireworks", {{"tau0", "2"}, {"q", "60"}, {"iterations", "8"}})->initialize(c, tau);
+  test::make<aco::PheromoneInit>("init", "fireworks", {{"tau0", "2"}, {"q", "60"}, {"iterations", "8"}})
+      ->initialize(c, tau);
 
   // The same search, run directly with the seed the plugin derives from the context's.
-  aco::FireworksSettings s = aco::fireworks_settings(aco::resolve(aco::fireworks_parameters(), {{"iterations", "8"}}, ""));
+  aco::FireworksSettings s =
+      aco::fireworks_settings(aco::resolve(aco::fireworks_parameters(), {{"iterations", "8"}}, ""));
   s.seed = aco::splitmix64(7);
   const auto best = aco::run_fireworks(g, c.start, c.goal, s);
   REQUIRE(best.solved);
@@ -29,7 +32,8 @@ TEST_CASE("fireworks init: tau0 everywhere, plus Q / L_best on the fireworks pat
   CHECK(raised == static_cast<int>(best.path.size()) - 1);  // the path's direction only
 }
 
-TEST_CASE("fireworks init: its table is tau0, q and the fireworks table, and bad values are rejected", "[plugin][fireworks]") {
+TEST_CASE("fireworks init: its table is tau0, q and the fireworks table, and bad values are rejected",
+          "[plugin][fireworks]") {
   const auto& d = test::plugins().load("init", "fireworks");
   const auto params = d.parameters();
   REQUIRE(params.size() == 2 + aco::fireworks_parameters().size());
@@ -39,7 +43,8 @@ TEST_CASE("fireworks init: its table is tau0, q and the fireworks table, and bad
     CHECK(std::string(params[2 + i].name) == aco::fireworks_parameters()[i].name);
   aco::check_table(params, "init/fireworks");
   CHECK_THROWS_WITH(test::make<aco::PheromoneInit>("init", "fireworks", {{"tau0", "0"}}), Catch::Contains("init.tau0"));
-  CHECK_THROWS_WITH(test::make<aco::PheromoneInit>("init", "fireworks", {{"radius", "-1"}}), Catch::Contains("init.radius"));
+  CHECK_THROWS_WITH(test::make<aco::PheromoneInit>("init", "fireworks", {{"radius", "-1"}}),
+                    Catch::Contains("init.radius"));
   CHECK_THROWS_AS(test::make<aco::PheromoneInit>("init", "fireworks", {{"a", "0.9"}}), aco::Error);
 }
 
@@ -47,6 +52,7 @@ TEST_CASE("fireworks init: an unreachable goal leaves tau0 everywhere", "[plugin
   const auto map = test::grid({"..#..", "..#..", "..#.."});
   const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   std::vector<double> tau(g.num_edges(), 0.0);
-  test::make<aco::PheromoneInit>("init", "fireworks", {{"iterations", "2"}})->initialize(test::context(g, {0, 0}, {4, 2}), tau);
+  test::make<aco::PheromoneInit>("init", "fireworks", {{"iterations", "2"}})
+      ->initialize(test::context(g, {0, 0}, {4, 2}), tau);
   for (double t : tau) CHECK(t == 8.0);
 }

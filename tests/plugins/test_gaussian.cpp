@@ -28,19 +28,21 @@ TEST_CASE("gaussian onto edges: each step, shifted by an offset o, gets Q/L * ps
   const std::vector<aco::Ant> ants{test::ant(g, {{2, 4}, {3, 4}, {4, 5}})};  // length 1 + sqrt 2
   update->update(test::context(g, {2, 4}, {4, 5}), {ants, &ants[0], &ants[0]}, tau);
   const double scale = 2.0 / (1 + std::sqrt(2.0));
-  CHECK(on(g, tau, {2, 4}, {3, 4}) == Approx(0.5 + scale * kernel(0)));          // the step itself
-  CHECK(on(g, tau, {2, 5}, {3, 5}) == Approx(0.5 + scale * kernel(1)));          // shifted by (0,1)
+  CHECK(on(g, tau, {2, 4}, {3, 4}) == Approx(0.5 + scale * kernel(0)));  // the step itself
+  CHECK(on(g, tau, {2, 5}, {3, 5}) == Approx(0.5 + scale * kernel(1)));  // shifted by (0,1)
   CHECK(on(g, tau, {1, 3}, {2, 3}) == Approx(0.5 + scale * kernel(std::sqrt(2.0))));  // by (-1,-1)
   CHECK(on(g, tau, {3, 5}, {4, 6}) == Approx(0.5 + scale * kernel(1)));  // the second step by (0,1)
-  CHECK(on(g, tau, {2, 6}, {3, 6}) == Approx(0.5));                               // (0,2) is beyond the cutoff
-  CHECK(on(g, tau, {3, 4}, {2, 4}) == Approx(0.5));                               // the reverse move gets nothing
+  CHECK(on(g, tau, {2, 6}, {3, 6}) == Approx(0.5));  // (0,2) is beyond the cutoff
+  CHECK(on(g, tau, {3, 4}, {2, 4}) == Approx(0.5));  // the reverse move gets nothing
 }
 
-TEST_CASE("gaussian onto cells: each path cell spreads Q/L * psi * N(x) to cells within the cutoff", "[plugin][gaussian]") {
+TEST_CASE("gaussian onto cells: each path cell spreads Q/L * psi * N(x) to cells within the cutoff",
+          "[plugin][gaussian]") {
   std::vector<std::string> rows(9, std::string(9, '.'));
   const auto map = test::grid(rows);
   const aco::Graph g = aco::build_graph(map, {});
-  auto update = test::make<aco::PheromoneUpdate>("update", "gaussian", {{"rho", "0.5"}, {"q", "2"}, {"cutoff", "1.5"}, {"onto", "cells"}});
+  auto update = test::make<aco::PheromoneUpdate>("update", "gaussian",
+                                                 {{"rho", "0.5"}, {"q", "2"}, {"cutoff", "1.5"}, {"onto", "cells"}});
   std::vector<double> tau(g.num_edges(), 1.0);
   const std::vector<aco::Ant> ants{test::ant(g, {{2, 4}, {3, 4}})};  // a two-cell path, length 1
   update->update(test::context(g, {2, 4}, {3, 4}), {ants, &ants[0], &ants[0]}, tau);
@@ -55,7 +57,8 @@ TEST_CASE("gaussian onto cells: each path cell spreads Q/L * psi * N(x) to cells
   CHECK(into(g, tau, {5, 4}) == Approx(0.5));
   // Every edge into a cell gets the same deposit.
   const aco::NodeId n = g.node({2, 5});
-  for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) CHECK(tau[g.reverse[e]] == Approx(into(g, tau, {2, 5})));
+  for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e)
+    CHECK(tau[g.reverse[e]] == Approx(into(g, tau, {2, 5})));
 }
 
 TEST_CASE("gaussian deposits more on the inside of a bend than on the outside", "[plugin][gaussian]") {

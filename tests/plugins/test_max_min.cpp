@@ -25,8 +25,8 @@ struct Fixture {
 
 TEST_CASE("max_min keeps tau within [tau_min, tau_max] and only the chosen ant deposits", "[plugin][max_min]") {
   Fixture f;
-  auto update = test::make<aco::PheromoneUpdate>("update", "max_min", {{"rho", "0.2"}, {"q", "1"}, {"p_best", "0.05"},
-                                                                       {"best_so_far_every", "1000"}});
+  auto update = test::make<aco::PheromoneUpdate>(
+      "update", "max_min", {{"rho", "0.2"}, {"q", "1"}, {"p_best", "0.05"}, {"best_so_far_every", "1000"}});
   std::vector<double> tau(f.graph.num_edges(), 5.0);
   update->begin_run(f.context);
   update->start(f.context, tau);

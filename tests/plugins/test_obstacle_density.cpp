@@ -2,7 +2,8 @@
 
 #include "support.hpp"
 
-TEST_CASE("obstacle_density: tau of every edge into j = gamma * free share of j's 8 neighbours", "[plugin][obstacle_density]") {
+TEST_CASE("obstacle_density: tau of every edge into j = gamma * free share of j's 8 neighbours",
+          "[plugin][obstacle_density]") {
   const auto map = test::grid({
       "....#",
       ".#...",
@@ -11,7 +12,8 @@ TEST_CASE("obstacle_density: tau of every edge into j = gamma * free share of j'
   });
   const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   std::vector<double> tau(g.num_edges(), 0.0);
-  test::make<aco::PheromoneInit>("init", "obstacle_density", {{"gamma", "4"}})->initialize(test::context(g, {0, 0}, {4, 3}), tau);
+  test::make<aco::PheromoneInit>("init", "obstacle_density", {{"gamma", "4"}})
+      ->initialize(test::context(g, {0, 0}, {4, 3}), tau);
   // Free neighbours counted by hand (cells outside the map count as blocked).
   const std::vector<std::pair<aco::Cell, int>> expected{
       {{0, 0}, 2},  // corner: (1,0) free, (0,1) free, (1,1) blocked
@@ -24,7 +26,8 @@ TEST_CASE("obstacle_density: tau of every edge into j = gamma * free share of j'
     const aco::NodeId j = g.node(cell);
     INFO("cell " << aco::to_string(cell));
     REQUIRE(g.degree(j) > 0);
-    for (aco::EdgeId e = g.edges_begin(j); e < g.edges_end(j); ++e) CHECK(tau[g.reverse[e]] == Approx(4.0 * free / 8.0));
+    for (aco::EdgeId e = g.edges_begin(j); e < g.edges_end(j); ++e)
+      CHECK(tau[g.reverse[e]] == Approx(4.0 * free / 8.0));
   }
   for (double t : tau) CHECK(t > 0.0);
 }

@@ -7,9 +7,9 @@ struct Fixture {
   aco::OccupancyGrid map = test::grid({"....", "....", "...."});
   aco::Graph graph = aco::build_graph(map, {});
   aco::Context context = test::context(graph, {0, 0}, {3, 2});
-  aco::Ant shortest = test::ant(graph, {{0, 0}, {1, 0}, {2, 1}, {3, 2}});          // 1 + 2 sqrt 2
-  aco::Ant middle = test::ant(graph, {{0, 0}, {1, 1}, {2, 1}, {3, 2}});            // 1 + 2 sqrt 2 too, other edges
-  aco::Ant longest = test::ant(graph, {{0, 0}, {0, 1}, {1, 2}, {2, 2}, {3, 2}});   // 3 + sqrt 2
+  aco::Ant shortest = test::ant(graph, {{0, 0}, {1, 0}, {2, 1}, {3, 2}});  // 1 + 2 sqrt 2
+  aco::Ant middle = test::ant(graph, {{0, 0}, {1, 1}, {2, 1}, {3, 2}});  // 1 + 2 sqrt 2 too, other edges
+  aco::Ant longest = test::ant(graph, {{0, 0}, {0, 1}, {1, 2}, {2, 2}, {3, 2}});  // 3 + sqrt 2
   double edge(const std::vector<double>& tau, aco::Cell u, aco::Cell v) const {
     return tau[graph.find_edge(graph.node(u), graph.node(v))];
   }
@@ -48,8 +48,8 @@ TEST_CASE("population: tau = 1 + (ratio - 1) / k per population path on the edge
 
 TEST_CASE("population by age: the last k iteration-best paths, duplicates included", "[plugin][population]") {
   Fixture f;
-  auto update = test::make<aco::PheromoneUpdate>("update", "population",
-                                                 {{"size", "2"}, {"ratio", "3"}, {"replace", "age"}});
+  auto update =
+      test::make<aco::PheromoneUpdate>("update", "population", {{"size", "2"}, {"ratio", "3"}, {"replace", "age"}});
   std::vector<double> tau(f.graph.num_edges(), 7.0);
   update->start(f.context, tau);
   f.offer(*update, f.shortest, tau);
@@ -85,8 +85,8 @@ TEST_CASE("population solves classic map1 bit-identically for any thread count",
   settings.iterations = 30;
   settings.q0 = 0.5;
   settings.local_search = "straighten";
-  const aco::ColonyResult result = test::run_on_thread_counts(graph, 0, graph.node({19, 19}), settings,
-                                                              {"uniform", "progress", "population", "backtrack"}, {{"size", "3"}});
+  const aco::ColonyResult result = test::run_on_thread_counts(
+      graph, 0, graph.node({19, 19}), settings, {"uniform", "progress", "population", "backtrack"}, {{"size", "3"}});
   REQUIRE(result.solved);
   CHECK(result.length < 1.05 * 34.3848);  // within 5 % of the optimum
 }

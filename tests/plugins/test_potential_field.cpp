@@ -100,7 +100,8 @@ TEST_CASE("potential field: on flat maps obstacles push like the highest ground"
   CHECK(force_at(forces, g, {2, 1}).norm() == 0.0);  // the obstacle itself
 }
 
-TEST_CASE("potential_field init: positive, finite, higher on moves that follow the force", "[plugin][potential_field]") {
+TEST_CASE("potential_field init: positive, finite, higher on moves that follow the force",
+          "[plugin][potential_field]") {
   const auto map = test::grid({".....", ".....", "....."});
   const aco::Graph g = aco::build_graph(map, {});
   std::vector<double> tau(g.num_edges(), 0.0);
@@ -119,12 +120,14 @@ TEST_CASE("potential_field init: positive, finite, higher on moves that follow t
   // On terrain, without attraction: away from the hill beats towards it.
   const aco::Graph& t = terrain_graph();
   std::vector<double> tau_t(t.num_edges(), 0.0);
-  test::make<aco::PheromoneInit>("init", "potential_field", {{"k", "0"}})->initialize(test::context(t, {0, 0}, {8, 2}), tau_t);
+  test::make<aco::PheromoneInit>("init", "potential_field", {{"k", "0"}})
+      ->initialize(test::context(t, {0, 0}, {8, 2}), tau_t);
   CHECK(edge_value(t, tau_t, {3, 1}, {4, 1}) > edge_value(t, tau_t, {3, 1}, {2, 1}));
   CHECK(edge_value(t, tau_t, {5, 1}, {6, 1}) == Approx(edge_value(t, tau_t, {5, 1}, {4, 1})));  // no force by the pit
 }
 
-TEST_CASE("potential_field heuristic: the force term fades as ((it_max - it) / it_max)^3", "[plugin][potential_field]") {
+TEST_CASE("potential_field heuristic: the force term fades as ((it_max - it) / it_max)^3",
+          "[plugin][potential_field]") {
   const auto map = test::grid({"......", "......", "......"});
   const aco::Graph g = aco::build_graph(map, {});
   auto h = test::make<aco::Heuristic>("heuristic", "potential_field", {{"a", "2"}});
@@ -148,7 +151,8 @@ TEST_CASE("potential_field heuristic: the force term fades as ((it_max - it) / i
   CHECK(eta == plain);
 }
 
-TEST_CASE("potential_field heuristic: fast eta^beta equals pow(eta, beta) in every iteration", "[plugin][potential_field]") {
+TEST_CASE("potential_field heuristic: fast eta^beta equals pow(eta, beta) in every iteration",
+          "[plugin][potential_field]") {
   for (double beta : {7.0, 7.3}) {
     auto h = test::make<aco::Heuristic>("heuristic", "potential_field", {{"a", "0.7"}});
     const aco::Graph& g = terrain_graph();
@@ -171,8 +175,8 @@ TEST_CASE("paper 000 plugins together solve classic map1, bit-identically for an
   aco::ColonySettings settings;
   settings.seed = 3;
   settings.q0 = 0.8;  // paper 000's exploitation
-  const aco::ColonyResult result = test::run_on_thread_counts(graph, 0, graph.node({19, 19}), settings,
-                                                              {"potential_field", "potential_field", "elite", "discard"});
+  const aco::ColonyResult result = test::run_on_thread_counts(
+      graph, 0, graph.node({19, 19}), settings, {"potential_field", "potential_field", "elite", "discard"});
   REQUIRE(result.solved);
   CHECK(result.length < 1.05 * 34.3848);  // within 5 % of the optimum
 }

@@ -88,8 +88,7 @@ std::vector<aco::NodeId> loop_free_walk(const aco::Graph& g, aco::NodeId start, 
   for (int s = 0; s < steps; ++s) {
     const aco::NodeId n = walk.back();
     if (g.degree(n) == 0) break;
-    const aco::NodeId next =
-        g.targets[g.edges_begin(n) + std::uniform_int_distribution<int>(0, g.degree(n) - 1)(rng)];
+    const aco::NodeId next = g.targets[g.edges_begin(n) + std::uniform_int_distribution<int>(0, g.degree(n) - 1)(rng)];
     if (position[next] >= 0) {
       while (walk.back() != next) {
         position[walk.back()] = -1;
@@ -127,8 +126,8 @@ TEST_CASE("prune: an open map turns a staircase into one segment", "[plugin][pru
   for (bool cc : {false, true}) {
     INFO("corner cutting " << cc);
     const auto g4 = aco::build_graph(map, {aco::Neighbourhood::four, cc});
-    const auto stairs =
-        nodes(g4, {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {3, 2}, {4, 2}, {4, 3}, {5, 3}, {6, 3}, {6, 4}, {7, 4}, {7, 5}});
+    const auto stairs = nodes(
+        g4, {{0, 0}, {1, 0}, {1, 1}, {2, 1}, {2, 2}, {3, 2}, {4, 2}, {4, 3}, {5, 3}, {6, 3}, {6, 4}, {7, 4}, {7, 5}});
     const auto r4 = prune(g4, stairs);
     CHECK(r4 == points({{0, 0}, {7, 5}}));
     CHECK(aco::polyline_length(r4) == Approx(std::hypot(7.0, 5.0)));
@@ -182,8 +181,7 @@ TEST_CASE("prune: an L-shaped corridor keeps its corner", "[plugin][prune]") {
     for (bool cc : {false, true}) {
       INFO("corner cutting " << cc);
       const auto g = aco::build_graph(map, {aco::Neighbourhood::four, cc});
-      const auto path =
-          nodes(g, {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}, {5, 1}, {5, 2}, {5, 3}, {5, 4}});
+      const auto path = nodes(g, {{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}, {5, 0}, {5, 1}, {5, 2}, {5, 3}, {5, 4}});
       const auto r = prune(g, path);
       CHECK(r.size() < path.size());
       CHECK(aco::polyline_length(r) < aco::path_length(g, path) - 0.5);

@@ -9,7 +9,8 @@ TEST_CASE("uniform sets every edge to tau0", "[plugin][uniform]") {
   std::vector<double> tau(graph.num_edges(), -1.0);
   test::make<aco::PheromoneInit>("init", "uniform")->initialize(test::context(graph, {0, 0}, {2, 2}), tau);
   for (double t : tau) CHECK(t == 8.0);  // the default, the MATLAB code's value
-  test::make<aco::PheromoneInit>("init", "uniform", {{"tau0", "0.25"}})->initialize(test::context(graph, {0, 0}, {2, 2}), tau);
+  test::make<aco::PheromoneInit>("init", "uniform", {{"tau0", "0.25"}})
+      ->initialize(test::context(graph, {0, 0}, {2, 2}), tau);
   for (double t : tau) CHECK(t == 0.25);
   CHECK_THROWS_AS(test::make<aco::PheromoneInit>("init", "uniform", {{"tau0", "0"}}), aco::Error);
 }

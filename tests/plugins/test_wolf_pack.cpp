@@ -9,10 +9,10 @@ struct Pack {
   aco::Context c = test::context(g, {0, 0}, {4, 2});
   // Four arrived ants of different lengths (sharing no edge), one dead ant.
   std::vector<aco::Ant> ants{
-      test::ant(g, {{0, 0}, {1, 0}, {2, 0}, {3, 1}, {4, 2}}),              // 2 + 2 sqrt 2 = 4.83 (second)
-      test::ant(g, {{0, 0}, {1, 1}, {2, 2}, {3, 2}, {4, 2}}),              // 4.83 too, ties keep order: third
+      test::ant(g, {{0, 0}, {1, 0}, {2, 0}, {3, 1}, {4, 2}}),  // 2 + 2 sqrt 2 = 4.83 (second)
+      test::ant(g, {{0, 0}, {1, 1}, {2, 2}, {3, 2}, {4, 2}}),  // 4.83 too, ties keep order: third
       test::ant(g, {{0, 0}, {0, 1}, {0, 2}, {1, 2}, {2, 1}, {3, 0}, {4, 1}, {4, 2}}),  // the longest
-      test::ant(g, {{0, 0}, {1, 0}, {2, 1}, {3, 2}, {4, 2}}),              // 4.83 as well
+      test::ant(g, {{0, 0}, {1, 0}, {2, 1}, {3, 2}, {4, 2}}),  // 4.83 as well
   };
 };
 double on(const std::vector<double>& tau, const aco::Ant& ant) { return tau[ant.edges[0]]; }
@@ -26,7 +26,8 @@ TEST_CASE("wolf_pack: best reinforced, worst weakened, ordinary ants (1-lambda)*
   dead.arrived = false;
   p.ants.push_back(dead);
   auto update = test::make<aco::PheromoneUpdate>(
-      "update", "wolf_pack", {{"rho", "0.5"}, {"q", "2"}, {"lambda", "0.1"}, {"a", "3"}, {"b", "0.5"}, {"c", "1.5"}, {"tau_min", "0.001"}});
+      "update", "wolf_pack",
+      {{"rho", "0.5"}, {"q", "2"}, {"lambda", "0.1"}, {"a", "3"}, {"b", "0.5"}, {"c", "1.5"}, {"tau_min", "0.001"}});
   std::vector<double> tau(p.g.num_edges(), 1.0);
   const double lb = p.ants[4].length, lw = p.ants[2].length;
   update->update(p.c, {p.ants, &p.ants[4], &p.ants[4]}, tau);
@@ -40,10 +41,12 @@ TEST_CASE("wolf_pack: best reinforced, worst weakened, ordinary ants (1-lambda)*
   CHECK(tau[p.g.find_edge(p.g.node({4, 0}), p.g.node({3, 0}))] == Approx(0.5));  // untouched: evaporation only
 }
 
-TEST_CASE("wolf_pack never lets tau fall below its floor, and ranks by length with ties in ant order", "[plugin][wolf_pack]") {
+TEST_CASE("wolf_pack never lets tau fall below its floor, and ranks by length with ties in ant order",
+          "[plugin][wolf_pack]") {
   Pack p;
   auto update = test::make<aco::PheromoneUpdate>(
-      "update", "wolf_pack", {{"rho", "0.9"}, {"b", "1000"}, {"best_count", "2"}, {"worst_count", "1"}, {"tau_min", "0.05"}});
+      "update", "wolf_pack",
+      {{"rho", "0.9"}, {"b", "1000"}, {"best_count", "2"}, {"worst_count", "1"}, {"tau_min", "0.05"}});
   std::vector<double> tau(p.g.num_edges(), 0.06);
   for (int it = 0; it < 20; ++it) update->update(p.c, {p.ants, nullptr, nullptr}, tau);
   for (double t : tau) CHECK(t >= 0.05);

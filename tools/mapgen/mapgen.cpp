@@ -53,7 +53,7 @@ struct PaperMap {
   OccupancyGrid grid;
   Cell start;
   Cell goal;
-  int margin = 0;         // cells within this Chebyshev distance of start and goal must be free
+  int margin = 0;  // cells within this Chebyshev distance of start and goal must be free
   std::string seed_note;  // how the random part was drawn, for the summary line
 };
 
@@ -188,19 +188,18 @@ std::string problem(const PaperMap& m) {
 
 // Paper 001 (fig. 1/2): 20x20, a filled ellipse, a filled rectangle and a parabola, every other
 // cell an obstacle with probability 15 %. The paper drops its three shapes at random places; here
-// they have fixed places so that the parabola always sits across the way. Start (0,20) and goal (20,0) of the paper (y up)
-// are the bottom-left and top-right cells. The parabola is a cup open downwards, towards the
-// start's side, across the start-goal diagonal: ants heading straight for the goal walk into it
-// and have to turn back. If a seed gives an invalid map (start or goal cut off), the next seed is
-// tried.
+// they have fixed places so that the parabola always sits across the way. Start (0,20) and goal (20,0) of the paper (y
+// up) are the bottom-left and top-right cells. The parabola is a cup open downwards, towards the start's side, across
+// the start-goal diagonal: ants heading straight for the goal walk into it and have to turn back. If a seed gives an
+// invalid map (start or goal cut off), the next seed is tried.
 PaperMap paper001() {
   constexpr std::uint64_t kFirstSeed = 1;
   constexpr int kAttempts = 1000;
   constexpr double kDensity = 0.15;
   for (std::uint64_t seed = kFirstSeed; seed < kFirstSeed + kAttempts; ++seed) {
     PaperMap m{"paper001", OccupancyGrid(20, 20, "paper001"), {0, 19}, {19, 0}, 1, ""};
-    fill_ellipse(m.grid, 4.5, 3.5, 3.6, 2.6);                  // upper left, rows 1-6
-    fill_rect(m.grid, 14, 15, 17, 17);                          // lower right, 4x3
+    fill_ellipse(m.grid, 4.5, 3.5, 3.6, 2.6);  // upper left, rows 1-6
+    fill_rect(m.grid, 14, 15, 17, 17);  // lower right, 4x3
     draw_parabola(m.grid, {12.0, 5.0}, {0.0, 1.0}, 0.4, 4.5);  // y = 5 + 0.4 (x-12)^2, |x-12| <= 4.5
     const int shape_cells = blocked_cells(m.grid);
     aco::Rng rng(seed);
@@ -249,16 +248,20 @@ PaperMap paper002() {
 PaperMap paper003_20() {
   constexpr std::uint64_t kSeed = 3;
   constexpr int kIsolated = 8;
-  PaperMap m{"paper003_20", OccupancyGrid(20, 20, "paper003_20"), {0, 0}, {19, 19}, 1,
+  PaperMap m{"paper003_20",
+             OccupancyGrid(20, 20, "paper003_20"),
+             {0, 0},
+             {19, 19},
+             1,
              std::to_string(kIsolated) + " isolated cells drawn with seed " + std::to_string(kSeed)};
   auto& g = m.grid;
-  fill_rect(g, 3, 2, 5, 4);      // 3x3
-  fill_rect(g, 9, 1, 10, 6);     // 2x6 column
-  fill_rect(g, 14, 3, 17, 4);    // 4x2
-  fill_rect(g, 2, 8, 7, 9);      // 6x2 bar
-  fill_rect(g, 12, 8, 13, 13);   // L: vertical leg
+  fill_rect(g, 3, 2, 5, 4);  // 3x3
+  fill_rect(g, 9, 1, 10, 6);  // 2x6 column
+  fill_rect(g, 14, 3, 17, 4);  // 4x2
+  fill_rect(g, 2, 8, 7, 9);  // 6x2 bar
+  fill_rect(g, 12, 8, 13, 13);  // L: vertical leg
   fill_rect(g, 12, 12, 17, 13);  //    horizontal leg
-  fill_rect(g, 4, 13, 8, 16);    // 5x4 block
+  fill_rect(g, 4, 13, 8, 16);  // 5x4 block
   fill_rect(g, 15, 16, 16, 17);  // 2x2
   fill_rect(g, 10, 17, 11, 19);  // 2x3 from the bottom edge
   aco::Rng rng(kSeed);
@@ -269,17 +272,21 @@ PaperMap paper003_20() {
 PaperMap paper003_15() {
   constexpr std::uint64_t kSeed = 4;
   constexpr int kIsolated = 5;
-  PaperMap m{"paper003_15", OccupancyGrid(15, 15, "paper003_15"), {0, 0}, {14, 14}, 1,
+  PaperMap m{"paper003_15",
+             OccupancyGrid(15, 15, "paper003_15"),
+             {0, 0},
+             {14, 14},
+             1,
              std::to_string(kIsolated) + " isolated cells drawn with seed " + std::to_string(kSeed)};
   auto& g = m.grid;
-  fill_rect(g, 2, 2, 4, 3);     // 3x2
-  fill_rect(g, 7, 1, 8, 4);     // 2x4 column
-  fill_rect(g, 3, 6, 6, 8);     // 4x3 block
-  fill_rect(g, 9, 6, 9, 10);    // L: vertical leg
+  fill_rect(g, 2, 2, 4, 3);  // 3x2
+  fill_rect(g, 7, 1, 8, 4);  // 2x4 column
+  fill_rect(g, 3, 6, 6, 8);  // 4x3 block
+  fill_rect(g, 9, 6, 9, 10);  // L: vertical leg
   fill_rect(g, 9, 10, 12, 10);  //    horizontal leg
-  fill_rect(g, 1, 11, 4, 12);   // 4x2
-  fill_rect(g, 12, 2, 13, 3);   // 2x2
-  fill_rect(g, 6, 12, 7, 14);   // 2x3 from the bottom edge
+  fill_rect(g, 1, 11, 4, 12);  // 4x2
+  fill_rect(g, 12, 2, 13, 3);  // 2x2
+  fill_rect(g, 6, 12, 7, 14);  // 2x3 from the bottom edge
   aco::Rng rng(kSeed);
   scatter_isolated(g, rng, kIsolated, m.start, m.goal, 2);
   return m;
@@ -291,18 +298,18 @@ PaperMap paper003_15() {
 PaperMap paper004() {
   PaperMap m{"paper004", OccupancyGrid(20, 20, "paper004"), {0, 0}, {19, 19}, 1, "no random cells"};
   auto& g = m.grid;
-  fill_rect(g, 2, 4, 9, 4);      // plus, upper left: horizontal bar
-  fill_rect(g, 6, 1, 6, 8);      //                    vertical bar
-  fill_rect(g, 10, 0, 10, 3);    // stub from the top edge
-  fill_rect(g, 14, 3, 18, 3);    // T, upper right: top bar
-  fill_rect(g, 16, 3, 16, 8);    //                 stem
-  fill_rect(g, 8, 10, 16, 10);   // plus, centre: horizontal bar
-  fill_rect(g, 12, 6, 12, 14);   //               vertical bar
-  fill_rect(g, 0, 8, 3, 8);      // bar from the left edge
-  fill_rect(g, 4, 11, 4, 17);    // plus, lower left: vertical bar
-  fill_rect(g, 1, 14, 8, 14);    //                   horizontal bar
-  fill_rect(g, 8, 17, 13, 17);   // L, bottom: horizontal leg
-  fill_rect(g, 8, 15, 8, 17);    //            vertical leg
+  fill_rect(g, 2, 4, 9, 4);  // plus, upper left: horizontal bar
+  fill_rect(g, 6, 1, 6, 8);  //                    vertical bar
+  fill_rect(g, 10, 0, 10, 3);  // stub from the top edge
+  fill_rect(g, 14, 3, 18, 3);  // T, upper right: top bar
+  fill_rect(g, 16, 3, 16, 8);  //                 stem
+  fill_rect(g, 8, 10, 16, 10);  // plus, centre: horizontal bar
+  fill_rect(g, 12, 6, 12, 14);  //               vertical bar
+  fill_rect(g, 0, 8, 3, 8);  // bar from the left edge
+  fill_rect(g, 4, 11, 4, 17);  // plus, lower left: vertical bar
+  fill_rect(g, 1, 14, 8, 14);  //                   horizontal bar
+  fill_rect(g, 8, 17, 13, 17);  // L, bottom: horizontal leg
+  fill_rect(g, 8, 15, 8, 17);  //            vertical leg
   fill_rect(g, 15, 14, 19, 14);  // bar into the right edge
   fill_rect(g, 16, 16, 16, 18);  // short post above the goal's corner
   return m;
@@ -413,8 +420,10 @@ OccupancyGrid room_map(int size, int room, double extra_doors, aco::Rng& rng, co
   // Wall between room (i, j) and its right (horizontal) or lower neighbour: open one cell of it.
   const auto open_door = [&](int i, int j, bool horizontal) {
     const int along = static_cast<int>(rng.below(room - 1));
-    if (horizontal) g.set_blocked({(i + 1) * room - 1, j * room + along}, false);
-    else g.set_blocked({i * room + along, (j + 1) * room - 1}, false);
+    if (horizontal)
+      g.set_blocked({(i + 1) * room - 1, j * room + along}, false);
+    else
+      g.set_blocked({i * room + along, (j + 1) * room - 1}, false);
   };
   const SpanningTree doors = random_spanning_tree(rooms, rng);
   for (int j = 0; j < rooms; ++j)
@@ -515,11 +524,13 @@ OccupancyGrid cave_map(int size, int scale, double loops, aco::Rng& rng, const s
   smooth(cells, coarse, 5);
   std::vector<char> fine(static_cast<std::size_t>(size) * size);
   for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) fine[y * size + x] = cells[std::min(y / scale, coarse - 1) * coarse + std::min(x / scale, coarse - 1)];
+    for (int x = 0; x < size; ++x)
+      fine[y * size + x] = cells[std::min(y / scale, coarse - 1) * coarse + std::min(x / scale, coarse - 1)];
   smooth(fine, size, 2);
   std::vector<std::vector<int>> caverns;
   for (auto& part : free_parts(fine, size)) {
-    if (static_cast<int>(part.size()) >= scale * scale * 8) caverns.push_back(std::move(part));
+    if (static_cast<int>(part.size()) >= scale * scale * 8)
+      caverns.push_back(std::move(part));
     else
       for (int c : part) fine[c] = 1;
   }
@@ -554,7 +565,9 @@ OccupancyGrid cave_map(int size, int scale, double loops, aco::Rng& rng, const s
   // no extra tunnel yet with probability `loops`.
   std::vector<std::size_t> root(caverns.size());
   std::iota(root.begin(), root.end(), std::size_t{0});
-  const std::function<std::size_t(std::size_t)> find = [&](std::size_t i) { return root[i] == i ? i : root[i] = find(root[i]); };
+  const std::function<std::size_t(std::size_t)> find = [&](std::size_t i) {
+    return root[i] == i ? i : root[i] = find(root[i]);
+  };
   std::vector<char> has_loop(caverns.size(), 0);
   const auto dig = [&](const Tunnel& t) {
     const double x0 = t.from % size, y0 = t.from / size, x1 = t.to % size, y1 = t.to / size;
@@ -564,7 +577,8 @@ OccupancyGrid cave_map(int size, int scale, double loops, aco::Rng& rng, const s
       const double x = x0 + (x1 - x0) * k / steps, y = y0 + (y1 - y0) * k / steps;
       for (int dy = 0; dy < width; ++dy)
         for (int dx = 0; dx < width; ++dx) {
-          const int u = static_cast<int>(std::lround(x)) + dx - width / 2, v = static_cast<int>(std::lround(y)) + dy - width / 2;
+          const int u = static_cast<int>(std::lround(x)) + dx - width / 2,
+                    v = static_cast<int>(std::lround(y)) + dy - width / 2;
           if (u > 0 && v > 0 && u < size - 1 && v < size - 1) fine[v * size + u] = 0;
         }
     }
@@ -601,12 +615,15 @@ OccupancyGrid hall_map(int size, int room, double loops, aco::Rng& rng, const st
     // Where the wall may stand: `room` cells on either side, not in front of a door.
     std::vector<int> places;
     for (int at = (vertical ? x0 : y0) + room; at <= (vertical ? x1 : y1) - room; ++at)
-      if (vertical ? closed(at, y0 - 1) && closed(at, y1 + 1) : closed(x0 - 1, at) && closed(x1 + 1, at)) places.push_back(at);
+      if (vertical ? closed(at, y0 - 1) && closed(at, y1 + 1) : closed(x0 - 1, at) && closed(x1 + 1, at))
+        places.push_back(at);
     if (places.empty()) return;
     const int at = places[rng.below(places.size())];
     const int length = vertical ? h : w;
-    if (vertical) fill_rect(g, at, y0, at, y1);
-    else fill_rect(g, x0, at, x1, at);
+    if (vertical)
+      fill_rect(g, at, y0, at, y1);
+    else
+      fill_rect(g, x0, at, x1, at);
     const int doors = rng.uniform() < loops ? 2 : 1;
     for (int d = 0; d < doors; ++d) {
       const int width = std::min(length, 1 + static_cast<int>(rng.below(3)));
@@ -715,7 +732,7 @@ void write_benchmark(const std::filesystem::path& dir, int first_seed, bool larg
   const std::vector<Spec> specs =
       large ? std::vector<Spec>{{"random", 1024}, {"random", 2048}, {"room", 1024}, {"room", 2048}, {"maze", 1024},
                                 {"maze", 2048},   {"cave", 1024},   {"cave", 2048}, {"hall", 1024}, {"hall", 2048}}
-            : std::vector<Spec>{{"random", 32}, {"random", 64}, {"random", 512}, {"room", 32}, {"room", 64},
+            : std::vector<Spec>{{"random", 32}, {"random", 64}, {"random", 512}, {"room", 32},  {"room", 64},
                                 {"room", 512},  {"maze", 32},   {"maze", 64},    {"maze", 512}, {"cave", 256},
                                 {"cave", 512},  {"hall", 256},  {"hall", 512}};
   if (!family.empty() && std::none_of(specs.begin(), specs.end(), [&](const Spec& s) { return s.family == family; }))
@@ -791,7 +808,7 @@ void write_ros_office(const std::filesystem::path& dir) {
   };
   fill({4, 4, 95, 65}, kOccupied);  // the outer walls, two cells thick, and the floor inside
   fill({6, 6, 93, 63}, kFree);
-  for (const Rect wall : {Rect{6, 28, 93, 29}, Rect{6, 40, 93, 41},                      // the corridor's walls
+  for (const Rect wall : {Rect{6, 28, 93, 29}, Rect{6, 40, 93, 41},  // the corridor's walls
                           Rect{35, 6, 36, 27}, Rect{65, 6, 66, 27}, Rect{50, 42, 51, 63}})  // between rooms
     fill(wall, kOccupied);
   for (const Rect door : {Rect{22, 28, 29, 29}, Rect{48, 28, 55, 29}, Rect{78, 28, 85, 29},  // 0.8 m doors
@@ -838,17 +855,18 @@ int main(int argc, char** argv) {
   // Any other option (--help) is not a folder to fill with maps.
   const bool option = argc > 1 && !benchmark && argv[1][0] == '-';
   if (option || (!benchmark && argc != 2 && argc != 3)) {
-    std::cerr << "usage: aco_mapgen OUTDIR [TERRAIN_OUTDIR]\n"
-                 "       aco_mapgen --benchmark OUTDIR [FIRST_SEED [FAMILY]]\n"
-                 "       aco_mapgen --large OUTDIR [FIRST_SEED [FAMILY]]\n"
-                 "       aco_mapgen --ros OUTDIR   (a ROS map_server office, office.yaml + office.pgm: data/maps/ros)\n"
-                 "       aco_mapgen --upsample MAP FACTOR OUTDIR [COUNT]   (a Moving AI map FACTOR times larger, COUNT\n"
-                 "                 scenarios, default 10: OUTDIR/<stem>-x<FACTOR>.map and .map.scen)\n"
-                 "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR,\n"
-                 "and paper004 into TERRAIN_OUTDIR if given (data/terrain); with --benchmark, the generated\n"
-                 "random, room, maze, cave and hall validation maps with 20 scenarios each (data/maps/generated);\n"
-                 "with --large, the same families at 1024x1024 and 2048x2048 with 10 scenarios each; FAMILY: only\n"
-                 "that family's maps (random, room, maze, cave or hall)\n";
+    std::cerr
+        << "usage: aco_mapgen OUTDIR [TERRAIN_OUTDIR]\n"
+           "       aco_mapgen --benchmark OUTDIR [FIRST_SEED [FAMILY]]\n"
+           "       aco_mapgen --large OUTDIR [FIRST_SEED [FAMILY]]\n"
+           "       aco_mapgen --ros OUTDIR   (a ROS map_server office, office.yaml + office.pgm: data/maps/ros)\n"
+           "       aco_mapgen --upsample MAP FACTOR OUTDIR [COUNT]   (a Moving AI map FACTOR times larger, COUNT\n"
+           "                 scenarios, default 10: OUTDIR/<stem>-x<FACTOR>.map and .map.scen)\n"
+           "writes paper001, paper002, paper003_20 and paper003_15 (.map and .map.scen) into OUTDIR,\n"
+           "and paper004 into TERRAIN_OUTDIR if given (data/terrain); with --benchmark, the generated\n"
+           "random, room, maze, cave and hall validation maps with 20 scenarios each (data/maps/generated);\n"
+           "with --large, the same families at 1024x1024 and 2048x2048 with 10 scenarios each; FAMILY: only\n"
+           "that family's maps (random, room, maze, cave or hall)\n";
     return 1;
   }
   try {

@@ -45,8 +45,8 @@ constexpr aco::ParamSpec kOptions[] = {
 };
 
 struct Hill {
-  double x, y;       // centre, in cells
-  double sigma;      // standard deviation, in cells
+  double x, y;  // centre, in cells
+  double sigma;  // standard deviation, in cells
   double amplitude;  // relative; the whole relief is scaled so the highest point is base + relief
 };
 
@@ -125,7 +125,8 @@ std::string esri_ascii(const TerrainSpec& s, const std::vector<double>& heights)
 // A binary PGM (P5; 16 bit big-endian, as the format says) of grey = height / height_scale.
 std::string height_pgm(const TerrainSpec& s, const std::vector<double>& heights) {
   const int maxval = s.bits == 8 ? 255 : 65535;
-  std::string pgm = "P5\n" + std::to_string(s.width) + " " + std::to_string(s.height) + "\n" + std::to_string(maxval) + "\n";
+  std::string pgm =
+      "P5\n" + std::to_string(s.width) + " " + std::to_string(s.height) + "\n" + std::to_string(maxval) + "\n";
   for (std::size_t i = 0; i < heights.size(); ++i) {
     const double grey = std::round(heights[i] / s.height_scale);
     if (grey < 0 || grey > maxval)
@@ -172,9 +173,10 @@ void write_paper000(const PaperMap& m, const std::filesystem::path& dir) {
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, false});
   const auto best = aco::astar(graph, graph.node(start), graph.node(goal));
   if (!best) throw aco::Error(m.name + ": goal not reachable");
-  const std::string scen = "version 1\n0\t" + m.name + "\t" + std::to_string(m.size) + "\t" + std::to_string(m.size) + "\t" +
-                           std::to_string(start.x) + "\t" + std::to_string(start.y) + "\t" + std::to_string(goal.x) + "\t" +
-                           std::to_string(goal.y) + "\t" + format("%.8g", best->length) + "\n";
+  const std::string scen = "version 1\n0\t" + m.name + "\t" + std::to_string(m.size) + "\t" + std::to_string(m.size) +
+                           "\t" + std::to_string(start.x) + "\t" + std::to_string(start.y) + "\t" +
+                           std::to_string(goal.x) + "\t" + std::to_string(goal.y) + "\t" +
+                           format("%.8g", best->length) + "\n";
   write_file(dir / m.name, text);
   write_file(dir / (m.name + ".scen"), scen);
   // What the hills cost: a shortest route of the same grid without heights, walked on the terrain.
@@ -186,8 +188,8 @@ void write_paper000(const PaperMap& m, const std::filesystem::path& dir) {
             << format("%.2f", map.elevation(start)) << ", goal " << aco::to_string(goal) << " at "
             << format("%.2f", map.elevation(goal)) << "\n  optimal length " << format("%.8g", best->length)
             << "; without the hills " << format("%.8g", flat_best->length * s.cellsize)
-            << "; that flat-optimal route walked over the hills " << format("%.8g", aco::path_length(graph, flat_best->nodes))
-            << "\n";
+            << "; that flat-optimal route walked over the hills "
+            << format("%.8g", aco::path_length(graph, flat_best->nodes)) << "\n";
 }
 
 constexpr const char* kUsage =
@@ -205,22 +207,26 @@ int main(int argc, char** argv) {
       const std::string key = argv[i];
       if (key.rfind("--", 0) != 0 || i + 1 >= argc) throw aco::Error(std::string("expected --OPTION VALUE\n") + kUsage);
       const std::string value = argv[i + 1];
-      if (key == "--out") out = value;
-      else if (key == "--paper000") paper_dir = value;
-      else given[key.substr(2)] = value;
+      if (key == "--out")
+        out = value;
+      else if (key == "--paper000")
+        paper_dir = value;
+      else
+        given[key.substr(2)] = value;
     }
     if (!paper_dir.empty()) {
       if (!given.empty() || !out.empty()) throw aco::Error("--paper000 takes no other option");
       std::filesystem::create_directories(paper_dir);
       // About one hill of radius 3 per 65 cells on each map, so the three look alike up close.
-      for (const PaperMap& m : {PaperMap{"epf20.asc", 20, 20, 6}, PaperMap{"epf30.asc", 30, 30, 14},
-                                PaperMap{"epf50.asc", 50, 50, 38}})
+      for (const PaperMap& m :
+           {PaperMap{"epf20.asc", 20, 20, 6}, PaperMap{"epf30.asc", 30, 30, 14}, PaperMap{"epf50.asc", 50, 50, 38}})
         write_paper000(m, paper_dir);
       return 0;
     }
     const std::string ending = std::filesystem::path(out).extension().string();
     if (ending != ".asc" && ending != ".pgm")
-      throw aco::Error("--out FILE.asc or FILE.pgm is required (the ending chooses the format)\n" + std::string(kUsage));
+      throw aco::Error("--out FILE.asc or FILE.pgm is required (the ending chooses the format)\n" +
+                       std::string(kUsage));
     const TerrainSpec spec = spec_from(aco::resolve(kOptions, given, "--"));
     write_file(out, ending == ".asc" ? esri_ascii(spec, generate(spec)) : height_pgm(spec, generate(spec)));
   } catch (const std::exception& e) {

@@ -18,10 +18,10 @@ struct RunPicture {
   NodeId goal = 0;
   std::vector<NodeId> grid_path;
   Waypoints path;
-  std::vector<double> pheromone;       // per edge, optional
-  std::vector<double> best_so_far;     // per iteration, optional
+  std::vector<double> pheromone;  // per edge, optional
+  std::vector<double> best_so_far;  // per iteration, optional
   std::vector<double> iteration_best;  // per iteration, optional
-  double optimal_length = 0.0;         // drawn as a reference line when > 0
+  double optimal_length = 0.0;  // drawn as a reference line when > 0
 };
 
 std::string render_svg(const Graph& graph, const RunPicture& picture);

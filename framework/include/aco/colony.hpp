@@ -73,10 +73,10 @@ struct Pipeline {
 
 struct ColonyResult : SearchResult {
   std::vector<double> iteration_best;  // per iteration (none if no ant arrived)
-  std::vector<int> arrived;            // per iteration: ants that reached the goal
-  std::uint64_t ant_steps = 0;         // moves made by all ants, backtracking included
+  std::vector<int> arrived;  // per iteration: ants that reached the goal
+  std::uint64_t ant_steps = 0;  // moves made by all ants, backtracking included
   std::string stopped_by = "iterations";  // or "stagnation", "same path", "time"
-  std::vector<double> pheromone;       // final tau per edge
+  std::vector<double> pheromone;  // final tau per edge
 };
 
 // Runs the colony in the calling thread's TBB arena. Throws Error if a strategy writes a

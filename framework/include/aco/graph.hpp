@@ -39,10 +39,10 @@ struct BOOST_SYMBOL_VISIBLE Graph {
   GraphOptions options;
   int width = 0;
   int height = 0;
-  std::vector<EdgeId> offsets;   // edges of node n: [offsets[n], offsets[n+1])
-  std::vector<NodeId> targets;   // per edge
-  std::vector<double> costs;     // per edge, Euclidean length between cell positions
-  std::vector<EdgeId> reverse;   // per edge: the edge target->source (every move here is reversible)
+  std::vector<EdgeId> offsets;  // edges of node n: [offsets[n], offsets[n+1])
+  std::vector<NodeId> targets;  // per edge
+  std::vector<double> costs;  // per edge, Euclidean length between cell positions
+  std::vector<EdgeId> reverse;  // per edge: the edge target->source (every move here is reversible)
   std::vector<Eigen::Vector3d> positions;  // per node
 
   int num_nodes() const { return width * height; }

@@ -10,7 +10,7 @@ namespace aco {
 struct InstallLayout {
   bool installed = false;
   std::filesystem::path plugins;  // the bundled plugins
-  std::filesystem::path data;     // the bundled maps and scenarios (data/ of the source tree)
+  std::filesystem::path data;  // the bundled maps and scenarios (data/ of the source tree)
 };
 
 // Found from where the running libaco file is.

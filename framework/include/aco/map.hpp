@@ -39,7 +39,7 @@ class BOOST_SYMBOL_VISIBLE Map {
 
 // World placement of a grid, as given by ROS map_server YAML; identity for other formats.
 struct GridGeometry {
-  double resolution = 1.0;           // metres per cell
+  double resolution = 1.0;  // metres per cell
   Eigen::Vector3d origin{0, 0, 0};  // world pose of the lower-left cell: x, y, yaw
 };
 

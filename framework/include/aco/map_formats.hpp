@@ -16,7 +16,7 @@
 namespace aco {
 
 struct BuiltinMapFormat {
-  std::string name;                     // as --map-format takes it, and listed as map/NAME
+  std::string name;  // as --map-format takes it, and listed as map/NAME
   std::vector<std::string> extensions;  // the file endings it claims (none: matrix, the fallback)
   std::string summary;
   std::unique_ptr<Map> (*read)(const std::filesystem::path& file, const TerrainOptions& terrain);
@@ -37,7 +37,8 @@ std::vector<std::string> map_format_names(const PluginRegistry& registry);
 // The map in `file`, read by `format` (map_format_of()) with `parameters` (a map plugin's table,
 // resolved; a built-in's is empty). A file no format claims is read as the 0/1 matrix, and if it
 // is none, the Error says that map plugins read other formats.
-std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain, PluginRegistry& registry,
-                              const std::string& format = "", const ParameterValues& parameters = {});
+std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain,
+                              PluginRegistry& registry, const std::string& format = "",
+                              const ParameterValues& parameters = {});
 
 }  // namespace aco

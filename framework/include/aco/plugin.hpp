@@ -79,7 +79,10 @@ std::span<const ParamSpec> parameter_rows(const SettingsTable<Settings>& table) 
 
 // The slots, by the identifier used in ACO_PLUGIN (aco/slots.hpp).
 namespace slot {
-#define ACO_SLOT_TYPE_(NAME, INTERFACE) struct NAME { using interface = INTERFACE; };
+#define ACO_SLOT_TYPE_(NAME, INTERFACE) \
+  struct NAME {                         \
+    using interface = INTERFACE;        \
+  };
 ACO_SLOTS(ACO_SLOT_TYPE_)
 #undef ACO_SLOT_TYPE_
 }  // namespace slot
@@ -93,17 +96,19 @@ ACO_SLOTS(ACO_SLOT_TYPE_)
 #define ACO_PLUGIN_STRINGIFY_(X) #X
 #define ACO_PLUGIN_STRINGIFY(X) ACO_PLUGIN_STRINGIFY_(X)
 
-#define ACO_PLUGIN(KIND, NAME, CLASS, VERSION, SUMMARY, PARAMS)                                           \
-  namespace {                                                                                             \
-  static_assert(std::is_base_of_v<::aco::slot::KIND::interface, CLASS>,                                   \
-                #CLASS " does not implement the interface of slot '" #KIND "'");                          \
-  ::aco::Strategy* aco_plugin_create(const ::aco::ParameterValues& values) { return new CLASS(values); } \
-  const ::std::span<const ::aco::ParamSpec> aco_plugin_params{::aco::parameter_rows(PARAMS)};                                    \
-  const ::aco::PluginDescriptor aco_plugin_descriptor{                                                    \
-      ::aco::kPluginMagic, ACO_PLUGIN_ABI_VERSION, #KIND, #NAME, VERSION, SUMMARY,                        \
-      aco_plugin_params.data(), aco_plugin_params.size(), &aco_plugin_create};                            \
-  [[gnu::used, gnu::section(ACO_PLUGIN_RECORD_SECTION)]] const char aco_plugin_record__##KIND##__##NAME[] =  \
-      ACO_PLUGIN_RECORD_MAGIC "\0" ACO_PLUGIN_STRINGIFY(ACO_PLUGIN_ABI_VERSION) "\0" ACO_PLUGIN_STDLIB "\0"  \
-      __VERSION__ "\0" ACO_BUILD_OPTIMISATION "\0" #KIND "\0" #NAME "\0" VERSION "\0" SUMMARY;                                        \
-  }                                                                                                       \
+#define ACO_PLUGIN(KIND, NAME, CLASS, VERSION, SUMMARY, PARAMS)                                                        \
+  namespace {                                                                                                          \
+  static_assert(std::is_base_of_v<::aco::slot::KIND::interface, CLASS>,                                                \
+                #CLASS " does not implement the interface of slot '" #KIND "'");                                       \
+  ::aco::Strategy* aco_plugin_create(const ::aco::ParameterValues& values) { return new CLASS(values); }               \
+  const ::std::span<const ::aco::ParamSpec> aco_plugin_params{::aco::parameter_rows(PARAMS)};                          \
+  const ::aco::PluginDescriptor aco_plugin_descriptor{                                                                 \
+      ::aco::kPluginMagic,      ACO_PLUGIN_ABI_VERSION, #KIND, #NAME, VERSION, SUMMARY, aco_plugin_params.data(),      \
+      aco_plugin_params.size(), &aco_plugin_create};                                                                   \
+  [[gnu::used, gnu::section(ACO_PLUGIN_RECORD_SECTION)]] const char aco_plugin_record__##KIND##__##NAME[] =            \
+      ACO_PLUGIN_RECORD_MAGIC                                                                                          \
+      "\0" ACO_PLUGIN_STRINGIFY(ACO_PLUGIN_ABI_VERSION) "\0" ACO_PLUGIN_STDLIB "\0" __VERSION__                        \
+                                                        "\0" ACO_BUILD_OPTIMISATION "\0" #KIND "\0" #NAME "\0" VERSION \
+                                                        "\0" SUMMARY;                                                  \
+  }                                                                                                                    \
   BOOST_DLL_ALIAS(aco_plugin_descriptor, aco_plugin__##KIND##__##NAME)

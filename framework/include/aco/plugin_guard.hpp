@@ -48,8 +48,8 @@ class PluginCallScope {
 };
 
 // Where the calling thread is: "plugin update/crash (FILE) in update() in iteration 3 (0-based,
-// as Context::iteration)", or "" outside every plugin. Async-signal-safe (a crash handler calls it): writes at most size - 1
-// characters and a NUL into `out` and returns how many.
+// as Context::iteration)", or "" outside every plugin. Async-signal-safe (a crash handler calls it): writes at most
+// size - 1 characters and a NUL into `out` and returns how many.
 std::size_t describe_plugin_call(char* out, std::size_t size) noexcept;
 
 // What the exception being handled says: what() of a std::exception, else its type ("int").
@@ -74,7 +74,8 @@ std::string describe_plugin(const Strategy& plugin, const char* slot);
 
 // `plugin` behind a decorator of its interface that calls it inside the boundary: one per slot.
 // (A map reader's Map is not behind it: its methods run in the graph's hot loops.)
-#define ACO_DECLARE_GUARD_(NAME, INTERFACE) std::unique_ptr<INTERFACE> guard(std::unique_ptr<INTERFACE> plugin, PluginIdentity who);
+#define ACO_DECLARE_GUARD_(NAME, INTERFACE) \
+  std::unique_ptr<INTERFACE> guard(std::unique_ptr<INTERFACE> plugin, PluginIdentity who);
 ACO_SLOTS(ACO_DECLARE_GUARD_)
 #undef ACO_DECLARE_GUARD_
 

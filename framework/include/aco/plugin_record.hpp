@@ -6,7 +6,8 @@
 // ACO_PLUGIN writes one record per plugin into the ELF section ".aco_plugins": NUL-separated
 // text fields
 //
-//   ACOP \0 <plugin ABI> \0 <standard library> \0 <compiler> \0 <build> \0 <kind> \0 <name> \0 <version> \0 <summary> \0
+//   ACOP \0 <plugin ABI> \0 <standard library> \0 <compiler> \0 <build> \0 <kind> \0 <name> \0 <version> \0 <summary>
+//   \0
 //
 // Records of several plugins in one library follow each other, perhaps with NUL padding between.
 // The first two fields keep their meaning in every ABI version; the others may change with it.
@@ -53,7 +54,7 @@ struct PluginRecord {
   std::string abi;  // as written: a number, unless the library is not what it claims
   std::string stdlib;
   std::string compiler;  // __VERSION__ of the compiler that built the plugin, for information
-  std::string build;     // ACO_BUILD_OPTIMISATION as the plugin was compiled
+  std::string build;  // ACO_BUILD_OPTIMISATION as the plugin was compiled
   std::string kind;
   std::string name;
   std::string version;

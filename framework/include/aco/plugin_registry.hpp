@@ -18,8 +18,8 @@ struct PluginFile {
   std::string kind;
   std::string name;
   std::filesystem::path file;
-  PluginRecord record;    // read from the file; empty fields if it has none
-  std::string unusable;   // why it must not be loaded (foreign ABI or standard library); empty if it may
+  PluginRecord record;  // read from the file; empty fields if it has none
+  std::string unusable;  // why it must not be loaded (foreign ABI or standard library); empty if it may
   // Files later in the search order exporting the same kind and name: this one hides them.
   std::vector<std::filesystem::path> shadowed;
 };
@@ -31,7 +31,7 @@ struct PluginProvenance {
   std::string version;
   std::string file;
   std::string sha256;  // of the library file's contents, hex
-  std::string build;   // "optimised", "unoptimised"...: the record's (ACO_BUILD_OPTIMISATION)
+  std::string build;  // "optimised", "unoptimised"...: the record's (ACO_BUILD_OPTIMISATION)
 };
 
 class BOOST_SYMBOL_VISIBLE PluginRegistry {

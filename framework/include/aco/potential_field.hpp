@@ -26,9 +26,9 @@
 namespace aco {
 
 struct PotentialFieldGains {
-  double k = 1.0;      // attraction gain
+  double k = 1.0;  // attraction gain
   double theta = 1.0;  // repulsion gain
-  double rho0 = 2.0;   // repulsion range, in map units (paper 000: 2)
+  double rho0 = 2.0;  // repulsion range, in map units (paper 000: 2)
 };
 
 // The parameters k, theta and rho0, for the tables of plugins that use the field (through

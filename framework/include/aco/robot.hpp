@@ -15,8 +15,8 @@ struct RobotState {
   double x = 0.0;
   double y = 0.0;
   double heading = 0.0;  // theta
-  double v = 0.0;        // forward velocity
-  double w = 0.0;        // angular velocity (yaw rate)
+  double v = 0.0;  // forward velocity
+  double w = 0.0;  // angular velocity (yaw rate)
 
   Eigen::Vector2d position() const { return {x, y}; }
 };
@@ -27,12 +27,12 @@ inline constexpr double kDegree = M_PI / 180.0;
 // degrees of the widely used MATLAB DWA code it follows (toRadian(20), toRadian(50)): at 20 rad/s
 // a robot at full speed turns on a 7.5 cm circle, and the planner prefers spinning to driving.
 struct RobotLimits {
-  double radius = 0.3;                     // the robot is a disc of this radius
-  double max_speed = 1.5;                  // v <= max_speed
-  double max_yaw_rate = 20.0 * kDegree;    // |w| <= max_yaw_rate
-  double max_accel = 0.2;                  // |dv/dt| <= max_accel, braking included
-  double max_yaw_accel = 50.0 * kDegree;   // |dw/dt| <= max_yaw_accel
-  double min_speed = 0.0;                  // v >= min_speed: below 0 the robot may back up (not in the paper)
+  double radius = 0.3;  // the robot is a disc of this radius
+  double max_speed = 1.5;  // v <= max_speed
+  double max_yaw_rate = 20.0 * kDegree;  // |w| <= max_yaw_rate
+  double max_accel = 0.2;  // |dv/dt| <= max_accel, braking included
+  double max_yaw_accel = 50.0 * kDegree;  // |dw/dt| <= max_yaw_accel
+  double min_speed = 0.0;  // v >= min_speed: below 0 the robot may back up (not in the paper)
 };
 
 struct VelocityCommand {
@@ -63,7 +63,8 @@ struct DynamicWindow {
   }
   // Whether c lies in the window, give or take `tolerance` (false for NaN).
   bool contains(const VelocityCommand& c, double tolerance) const {
-    return c.v >= v_low - tolerance && c.v <= v_high + tolerance && c.w >= w_low - tolerance && c.w <= w_high + tolerance;
+    return c.v >= v_low - tolerance && c.v <= v_high + tolerance && c.w >= w_low - tolerance &&
+           c.w <= w_high + tolerance;
   }
 };
 
@@ -72,7 +73,8 @@ struct DynamicWindow {
 inline constexpr double kWindowTolerance = 1e-9;
 
 inline DynamicWindow dynamic_window(const RobotState& s, const RobotLimits& limits, double period) {
-  return {std::max(limits.min_speed, s.v - limits.max_accel * period), std::min(limits.max_speed, s.v + limits.max_accel * period),
+  return {std::max(limits.min_speed, s.v - limits.max_accel * period),
+          std::min(limits.max_speed, s.v + limits.max_accel * period),
           std::max(-limits.max_yaw_rate, s.w - limits.max_yaw_accel * period),
           std::min(limits.max_yaw_rate, s.w + limits.max_yaw_accel * period)};
 }
@@ -116,7 +118,8 @@ inline Eigen::Vector2d point_on_path(std::span<const Eigen::Vector2d> path, doub
   for (std::size_t i = 0; i + 1 < path.size(); ++i) {
     const Eigen::Vector2d leg = path[i + 1] - path[i];
     const double leg_length = leg.norm();
-    if (length <= leg_length) return leg_length > 0.0 ? Eigen::Vector2d(path[i] + leg * (length / leg_length)) : path[i];
+    if (length <= leg_length)
+      return leg_length > 0.0 ? Eigen::Vector2d(path[i] + leg * (length / leg_length)) : path[i];
     length -= leg_length;
   }
   return path.empty() ? Eigen::Vector2d(0.0, 0.0) : path.back();

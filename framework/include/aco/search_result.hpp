@@ -20,8 +20,8 @@ struct SearchResult {
   static constexpr double none = std::numeric_limits<double>::infinity();
   bool solved = false;
   std::vector<NodeId> path;  // best path found, start to goal; every consecutive pair an edge
-  double length = none;      // path_length(graph, path)
-  int iterations = 0;        // iterations run
+  double length = none;  // path_length(graph, path)
+  int iterations = 0;  // iterations run
   // A count, as `iterations`: the iterations run when the final length was first found, so the
   // iteration that found it is Context::iteration = best_iteration - 1; 0 if unsolved.
   int best_iteration = 0;
@@ -37,7 +37,8 @@ struct SearchResult {
   // Sets best_iteration from the curve, once path and length are final.
   void finish() {
     if (!solved) return;
-    best_iteration = 1 + static_cast<int>(std::find(best_so_far.begin(), best_so_far.end(), length) - best_so_far.begin());
+    best_iteration =
+        1 + static_cast<int>(std::find(best_so_far.begin(), best_so_far.end(), length) - best_so_far.begin());
   }
 };
 
@@ -73,7 +74,8 @@ struct PlannerResult : SearchResult {
 inline void check_endpoints(const Graph& graph, NodeId start, NodeId goal, const std::string& planner) {
   for (const auto& [node, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
     if (node < 0 || node >= graph.num_nodes()) throw Error(planner + ": " + what + " node is outside the map");
-    if (!graph.passable(node)) throw Error(planner + ": " + what + " " + to_string(graph.cell(node)) + " is a blocked cell");
+    if (!graph.passable(node))
+      throw Error(planner + ": " + what + " " + to_string(graph.cell(node)) + " is a blocked cell");
   }
 }
 

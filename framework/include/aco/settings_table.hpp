@@ -121,7 +121,8 @@ class SettingsTable {
     defaults_.reserve(fields_.size());
     for (const auto& f : fields_) defaults_.push_back(to_string(f.get(defaults)));
     for (std::size_t i = 0; i < fields_.size(); ++i)
-      specs_.push_back({fields_[i].name, fields_[i].type, defaults_[i].c_str(), fields_[i].range.c_str(), fields_[i].help});
+      specs_.push_back(
+          {fields_[i].name, fields_[i].type, defaults_[i].c_str(), fields_[i].range.c_str(), fields_[i].help});
   }
   SettingsTable(const SettingsTable&) = delete;  // specs_ points into defaults_ and fields_
 

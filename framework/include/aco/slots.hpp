@@ -14,35 +14,34 @@
 #include <string_view>
 #include <utility>
 
-#define ACO_PIPELINE_SLOTS(X)        \
-  X(init, PheromoneInit)             \
-  X(heuristic, Heuristic)            \
-  X(update, PheromoneUpdate)         \
-  X(deadlock, DeadlockPolicy)        \
-  X(smoother, Smoother)              \
+#define ACO_PIPELINE_SLOTS(X) \
+  X(init, PheromoneInit)      \
+  X(heuristic, Heuristic)     \
+  X(update, PheromoneUpdate)  \
+  X(deadlock, DeadlockPolicy) \
+  X(smoother, Smoother)       \
   X(local, LocalPlanner)
-#define ACO_SLOTS(X)      \
-  ACO_PIPELINE_SLOTS(X)   \
+#define ACO_SLOTS(X)    \
+  ACO_PIPELINE_SLOTS(X) \
   X(map, MapReader)
 
 namespace aco {
 
 struct SlotInfo {
-  const char* name;            // the slot, as in ACO_PLUGIN(NAME, ...), "kind/name" and the plugin file name
-  const char* interface;       // the class a plugin of the slot implements
-  const char* option;          // the run key (acoplan option) choosing its plugin: "update", "map-format"
+  const char* name;  // the slot, as in ACO_PLUGIN(NAME, ...), "kind/name" and the plugin file name
+  const char* interface;  // the class a plugin of the slot implements
+  const char* option;  // the run key (acoplan option) choosing its plugin: "update", "map-format"
   const char* default_plugin;  // the plugin a run gets unless it chooses; "" if the map file decides
-  const char* method;          // the interface's one pure virtual
-  const char* hooks;           // its optional virtuals, comma separated ("" none)
-  const char* checked;         // what aco-plugin-check checks beyond constructing every parameter set
-  bool pipeline;               // one plugin per run in every run (ACO_PIPELINE_SLOTS)
+  const char* method;  // the interface's one pure virtual
+  const char* hooks;  // its optional virtuals, comma separated ("" none)
+  const char* checked;  // what aco-plugin-check checks beyond constructing every parameter set
+  bool pipeline;  // one plugin per run in every run (ACO_PIPELINE_SLOTS)
 };
 
 inline constexpr SlotInfo kSlotTable[] = {
     {"init", "PheromoneInit", "init", "uniform", "initialize", "",
      "pheromone > 0 and finite; deterministic; same on 1 and 4 threads; a colony run", true},
-    {"heuristic", "Heuristic", "heuristic", "distance", "compute",
-     "specs, compute_powered, update_node, step_factors",
+    {"heuristic", "Heuristic", "heuristic", "distance", "compute", "specs, compute_powered, update_node, step_factors",
      "eta and factors >= 0 and finite; update_node as compute_powered; deterministic; threads; a colony run", true},
     {"update", "PheromoneUpdate", "update", "ant_system", "update", "start, update_trail",
      "pheromone >= 0 and finite after each iteration case; deterministic; threads; a colony run", true},
@@ -90,12 +89,14 @@ inline constexpr std::pair<std::string_view, std::string_view> kSlotMacroRows[] 
 constexpr bool table_matches_macro() {
   if (std::size(kSlotMacroRows) != std::size(kSlotTable)) return false;
   for (std::size_t i = 0; i < std::size(kSlotTable); ++i)
-    if (kSlotMacroRows[i].first != kSlotTable[i].name || kSlotMacroRows[i].second != kSlotTable[i].interface) return false;
+    if (kSlotMacroRows[i].first != kSlotTable[i].name || kSlotMacroRows[i].second != kSlotTable[i].interface)
+      return false;
   return true;
 }
 #define ACO_SLOT_COUNT_(NAME, INTERFACE) +1
 // The pipeline's slots come first, as ACO_PIPELINE_SLOTS lists them.
-static_assert(count_pipeline_slots() == 0 ACO_PIPELINE_SLOTS(ACO_SLOT_COUNT_), "ACO_PIPELINE_SLOTS and kSlotTable's pipeline rows differ");
+static_assert(count_pipeline_slots() == 0 ACO_PIPELINE_SLOTS(ACO_SLOT_COUNT_),
+              "ACO_PIPELINE_SLOTS and kSlotTable's pipeline rows differ");
 #undef ACO_SLOT_COUNT_
 static_assert(table_matches_macro(), "kSlotTable and ACO_SLOTS list different slots");
 }  // namespace detail

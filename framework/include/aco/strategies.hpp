@@ -54,14 +54,14 @@ struct Context {
 struct Ant {
   std::vector<NodeId> nodes;  // start first; the goal last when the ant arrived
   std::vector<EdgeId> edges;  // edges[i] leads from nodes[i] to nodes[i+1]
-  double length = 0.0;        // sum of the step costs of `edges`
+  double length = 0.0;  // sum of the step costs of `edges`
   bool arrived = false;
 };
 
 // The ants of a finished iteration, in ant order.
 struct Iteration {
   std::span<const Ant> ants;
-  const Ant* best = nullptr;         // shortest arrived ant of this iteration, or null
+  const Ant* best = nullptr;  // shortest arrived ant of this iteration, or null
   const Ant* best_so_far = nullptr;  // shortest path of the run so far (this iteration included), or null
 };
 
@@ -223,11 +223,11 @@ struct MovingObstacle {
 struct LocalView {
   RobotState robot;
   RobotLimits limits;
-  double period = 0.1;                          // control period: the command is held this long
-  Eigen::Vector2d goal;                         // the current intermediate goal
-  std::span<const Eigen::Vector2d> cells;       // centres of sensed blocked cells
-  double cell_size = 1.0;                       // a cell is a square of this side
-  std::span<const MovingObstacle> moving;       // sensed moving obstacles
+  double period = 0.1;  // control period: the command is held this long
+  Eigen::Vector2d goal;  // the current intermediate goal
+  std::span<const Eigen::Vector2d> cells;  // centres of sensed blocked cells
+  double cell_size = 1.0;  // a cell is a square of this side
+  std::span<const MovingObstacle> moving;  // sensed moving obstacles
   // The rest of the global path: from the point on it nearest to the robot, through goal, to the
   // final goal (empty: only goal is known). A planner may follow it instead of heading for goal.
   std::span<const Eigen::Vector2d> path;

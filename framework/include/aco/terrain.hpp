@@ -17,8 +17,8 @@ namespace aco {
 
 struct TerrainOptions {
   double max_slope_deg = 90;  // steepest slope a step or a cell may have; 90 = no limit
-  double height_scale = 1;    // PGM height images: height = grey value * height_scale
-  double cell_size = 1;       // PGM height images: horizontal size of a cell (.asc files carry their own)
+  double height_scale = 1;  // PGM height images: height = grey value * height_scale
+  double cell_size = 1;  // PGM height images: horizontal size of a cell (.asc files carry their own)
 };
 
 class BOOST_SYMBOL_VISIBLE TerrainMap final : public Map {
@@ -42,8 +42,8 @@ class BOOST_SYMBOL_VISIBLE TerrainMap final : public Map {
   std::string blocked_reason(Cell c) const override;
   std::string name() const override { return name_; }
 
-  bool has_data(Cell c) const;                     // inside the map and not NODATA
-  double elevation(Cell c) const;                  // NaN where there is no data
+  bool has_data(Cell c) const;  // inside the map and not NODATA
+  double elevation(Cell c) const;  // NaN where there is no data
   double cell_size() const { return cell_size_; }
   double max_slope_deg() const { return max_slope_deg_; }
   // The cell's own slope in degrees (NaN without data): atan of the gradient's magnitude, the

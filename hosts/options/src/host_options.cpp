@@ -23,15 +23,15 @@ void HostOptions::add_plugin_dir(po::options_description& options) {
 void HostOptions::add_plugin_dir_and_max_memory(po::options_description& options) {
   add_plugin_dir(options);
   options.add_options()(
-      "max-memory", po::value<std::string>()->value_name("SIZE")->notifier([this](const std::string& size) { max_memory = size; }),
+      "max-memory",
+      po::value<std::string>()->value_name("SIZE")->notifier([this](const std::string& size) { max_memory = size; }),
       kMaxMemoryHelp);
 }
 
 void HostOptions::add_threads(po::options_description& options, const std::string& scope) {
-  options.add_options()("threads",
-                        po::value(&threads)->value_name("N")->default_value(0)->notifier([](int n) {
-                          if (n < 0) throw Error("--threads: must be 0 (all cores) or more, not " + std::to_string(n));
-                        }),
+  options.add_options()("threads", po::value(&threads)->value_name("N")->default_value(0)->notifier([](int n) {
+    if (n < 0) throw Error("--threads: must be 0 (all cores) or more, not " + std::to_string(n));
+  }),
                         (scope + kThreadsHelp).c_str());
 }
 

@@ -21,7 +21,8 @@ constexpr char kPercent = '\x01';
 std::string program_options_message(po::error& e) {
   auto* named = dynamic_cast<po::error_with_option_name*>(&e);
   if (!named) return e.what();  // its message was complete when thrown
-  for (auto& [placeholder, text] : named->*SubstitutionsOf::member()) std::replace(text.begin(), text.end(), '%', kPercent);
+  for (auto& [placeholder, text] : named->*SubstitutionsOf::member())
+    std::replace(text.begin(), text.end(), '%', kPercent);
   std::string message = named->what();
   std::replace(message.begin(), message.end(), kPercent, '%');
   return message;

@@ -24,8 +24,8 @@ struct PlanOutcome {
   NodeId start = 0;
   NodeId goal = 0;
   SearchResult search;  // the planner's best grid path, its length, iterations and curve
-  std::string reason;   // why not solved
-  Waypoints path;       // after the smoother
+  std::string reason;  // why not solved
+  Waypoints path;  // after the smoother
   double length = 0.0;  // of `path`
   int turns = 0;
   double time_ms = 0.0;
@@ -35,11 +35,11 @@ struct PlanOutcome {
   // or a real. Hosts write them all alike: acoplan's --json, acobench's database and runs.csv.
   std::map<std::string, ParamValue> properties;
   std::vector<double> iteration_best;  // aco: per iteration, for pictures
-  std::vector<double> pheromone;       // aco: final tau per edge, for pictures
+  std::vector<double> pheromone;  // aco: final tau per edge, for pictures
 
   bool solved() const { return search.solved; }
   std::int64_t count(const std::string& property) const;  // an integer property, 0 if absent
-  std::string text(const std::string& property) const;    // a text property, "" if absent
+  std::string text(const std::string& property) const;  // a text property, "" if absent
 };
 
 // What a planner's run function gets. `pipeline` is the run's plugins, instantiated (the

@@ -27,7 +27,7 @@
 namespace aco {
 
 struct ProblemSpec {
-  std::filesystem::path map;   // empty: none given (acoplan then plans its bundled demo)
+  std::filesystem::path map;  // empty: none given (acoplan then plans its bundled demo)
   std::filesystem::path scen;  // Moving AI scenario file; empty: start and goal are cells
   int scen_index = 0;
   std::optional<Cell> start;

@@ -31,7 +31,8 @@ void only_keys(const std::filesystem::path& file, const YAML::Node& map, const s
 // The run keys of a mapping; a slot may be given as {plugin: NAME, param: value, ...}, and
 // `config: FILE` (relative to `file`) or `preset: NAME` starts from an acoplan config file's keys,
 // which the mapping's own keys override. Keys listed in `skip` are not run keys (a configuration's name).
-aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node, const std::vector<std::string>& skip);
+aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::Node& node,
+                               const std::vector<std::string>& skip);
 // Whether a mapping of run keys names its pipeline (`config:` or `preset:`); one that does not
 // runs the recommended preset.
 bool names_pipeline(const YAML::Node& node);

@@ -9,8 +9,9 @@ struct Parameters {
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::field("steps", &Parameters::steps, "1:1000000",
-               "nodes a stuck ant steps back at once; 1 = depth-first back-off, which on a connected map always arrives"),
+    aco::field(
+        "steps", &Parameters::steps, "1:1000000",
+        "nodes a stuck ant steps back at once; 1 = depth-first back-off, which on a connected map always arrives"),
 });
 
 class Backtrack final : public aco::DeadlockPolicy {
@@ -29,5 +30,6 @@ class Backtrack final : public aco::DeadlockPolicy {
 }  // namespace
 
 ACO_PLUGIN(deadlock, backtrack, Backtrack, "1.0",
-           "paper 004: a stuck ant steps back and keeps the dead end tabu; with steps = 1 every ant arrives on a connected map",
+           "paper 004: a stuck ant steps back and keeps the dead end tabu; with steps = 1 every ant arrives on a "
+           "connected map",
            kParams)

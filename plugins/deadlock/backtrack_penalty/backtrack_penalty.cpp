@@ -12,7 +12,8 @@ struct Parameters {
 
 const aco::SettingsTable<Parameters> kParams({
     aco::field("h", &Parameters::h, "1:1000000", "how many of the dead ant's last nodes are penalised"),
-    aco::field("penalty", &Parameters::penalty, "0:1", "the pheromone of every edge into those nodes is multiplied by this"),
+    aco::field("penalty", &Parameters::penalty, "0:1",
+               "the pheromone of every edge into those nodes is multiplied by this"),
 });
 
 class BacktrackPenalty final : public aco::DeadlockPolicy {

@@ -96,14 +96,15 @@ class ClearAndTabu final : public aco::DeadlockPolicy {
 
   static constexpr std::size_t kNearby = 1024;  // nodes a repair search may visit
   static constexpr std::size_t kWholeMap = static_cast<std::size_t>(-1);
-  std::vector<aco::NodeId> witness_;         // an open start-goal path, or empty
-  std::vector<std::int32_t> on_witness_;     // per node: its position on the witness, or -1
-  aco::BreadthFirstSearch search_;          // its path() is that of the last successful search
+  std::vector<aco::NodeId> witness_;  // an open start-goal path, or empty
+  std::vector<std::int32_t> on_witness_;  // per node: its position on the witness, or -1
+  aco::BreadthFirstSearch search_;  // its path() is that of the last successful search
   Parameters p_;
 };
 
 }  // namespace
 
-ACO_PLUGIN(deadlock, clear_and_tabu, ClearAndTabu, "1.0",
-           "paper 002: a stuck ant is removed, its dead-end node becomes tabu for the run, its walk's pheromone cleared",
-           kParams)
+ACO_PLUGIN(
+    deadlock, clear_and_tabu, ClearAndTabu, "1.0",
+    "paper 002: a stuck ant is removed, its dead-end node becomes tabu for the run, its walk's pheromone cleared",
+    kParams)

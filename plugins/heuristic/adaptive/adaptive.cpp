@@ -12,9 +12,10 @@ struct Parameters {
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::choice("fade", &Parameters::exponent, {"exponent", "factor"}, {true, false},
-                "how w(Nc) applies: eta = base^w (exponent: the heuristic's weight halves over the run) or eta = base * w "
-                "(factor: eq. 9 read literally; w is the same for every candidate and cancels in the transition rule)"),
+    aco::choice(
+        "fade", &Parameters::exponent, {"exponent", "factor"}, {true, false},
+        "how w(Nc) applies: eta = base^w (exponent: the heuristic's weight halves over the run) or eta = base * w "
+        "(factor: eq. 9 read literally; w is the same for every candidate and cancels in the transition rule)"),
 });
 
 class AdaptiveHeuristic final : public aco::Heuristic {

@@ -16,10 +16,13 @@ struct Parameters {
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::field("gamma", &Parameters::gamma, "0:1000", "weight of the heading change, in cells: a U-turn adds gamma to d"),
-    aco::choice("distance", &Parameters::to_goal, {"goal", "step"}, {true, false},
-                "d: distance from the next node to the goal (goal), or the step length d_ab (step, eq. 6 read literally)"),
-    aco::field("min_distance", &Parameters::min_distance, "(0:1]", "floor of d, so stepping onto the goal stays finite"),
+    aco::field("gamma", &Parameters::gamma, "0:1000",
+               "weight of the heading change, in cells: a U-turn adds gamma to d"),
+    aco::choice(
+        "distance", &Parameters::to_goal, {"goal", "step"}, {true, false},
+        "d: distance from the next node to the goal (goal), or the step length d_ab (step, eq. 6 read literally)"),
+    aco::field("min_distance", &Parameters::min_distance, "(0:1]",
+               "floor of d, so stepping onto the goal stays finite"),
 });
 
 // Moves are told apart by (dx, dy) in [-2, 2]^2, the reach of a 16-neighbourhood.
@@ -88,7 +91,8 @@ class DirectionHeuristic final : public aco::Heuristic {
         double turn = std::fabs(tb - ta);
         if (turn > M_PI) turn = 2 * M_PI - turn;
         turn /= M_PI;
-        auto found = std::find_if(turn_values_.begin(), turn_values_.end(), [&](double v) { return std::fabs(v - turn) < 1e-9; });
+        auto found = std::find_if(turn_values_.begin(), turn_values_.end(),
+                                  [&](double v) { return std::fabs(v - turn) < 1e-9; });
         if (found == turn_values_.end()) found = turn_values_.insert(turn_values_.end(), turn);
         turn_class_[a * kMoveKinds + b] = static_cast<std::uint8_t>(found - turn_values_.begin());
       }
@@ -96,10 +100,10 @@ class DirectionHeuristic final : public aco::Heuristic {
   }
 
   Parameters p_;
-  std::vector<std::uint8_t> move_;         // per edge: its move kind
-  std::vector<double> turn_values_;        // |dtheta| / pi of each turn class
-  std::vector<std::uint8_t> turn_class_;   // [previous move kind][move kind] -> turn class
-  std::vector<double> factor_;             // [key][turn class] -> (d / (d + gamma * turn))^beta
+  std::vector<std::uint8_t> move_;  // per edge: its move kind
+  std::vector<double> turn_values_;  // |dtheta| / pi of each turn class
+  std::vector<std::uint8_t> turn_class_;  // [previous move kind][move kind] -> turn class
+  std::vector<double> factor_;  // [key][turn class] -> (d / (d + gamma * turn))^beta
 };
 
 }  // namespace

@@ -10,9 +10,10 @@ struct Parameters {
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::field("min_distance", &Parameters::min_distance, "(0:1]",
-               "d(j, goal) is floored at this value, so stepping onto the goal gets eta = 1/min_distance (100, as in the "
-               "MATLAB code)"),
+    aco::field(
+        "min_distance", &Parameters::min_distance, "(0:1]",
+        "d(j, goal) is floored at this value, so stepping onto the goal gets eta = 1/min_distance (100, as in the "
+        "MATLAB code)"),
 });
 
 class DistanceHeuristic final : public aco::Heuristic {
@@ -30,5 +31,5 @@ class DistanceHeuristic final : public aco::Heuristic {
 
 }  // namespace
 
-ACO_PLUGIN(heuristic, distance, DistanceHeuristic, "1.0", "eta = 1 / (straight-line distance from the next node to the goal)",
-           kParams)
+ACO_PLUGIN(heuristic, distance, DistanceHeuristic, "1.0",
+           "eta = 1 / (straight-line distance from the next node to the goal)", kParams)

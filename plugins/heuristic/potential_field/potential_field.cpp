@@ -95,13 +95,14 @@ class PotentialFieldHeuristic final : public aco::Heuristic {
 
   Parameters p_;
   double beta_ = 0.0;
-  std::vector<double> base_;       // per edge: 1 / d(j, goal)
-  std::vector<double> boost_;      // per edge: a * max(0, cos phi)
+  std::vector<double> base_;  // per edge: 1 / d(j, goal)
+  std::vector<double> boost_;  // per edge: a * max(0, cos phi)
   std::vector<double> base_beta_;  // per edge: base^beta
 };
 
 }  // namespace
 
 ACO_PLUGIN(heuristic, potential_field, PotentialFieldHeuristic, "1.0",
-           "paper 000: eta = (1 / d_jE) * (1 + a * ((it_max - it) / it_max)^3 * max(0, cos phi)), phi between the move and the force",
+           "paper 000: eta = (1 / d_jE) * (1 + a * ((it_max - it) / it_max)^3 * max(0, cos phi)), phi between the move "
+           "and the force",
            kParams)

@@ -13,8 +13,9 @@ struct Parameters {
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::field("floor", &Parameters::floor, "(0:1]",
-               "eta of a step straight away from the goal (a step straight at it has 1, a sideways step (1 + floor) / 2)"),
+    aco::field(
+        "floor", &Parameters::floor, "(0:1]",
+        "eta of a step straight away from the goal (a step straight at it has 1, a sideways step (1 + floor) / 2)"),
 });
 
 class ProgressHeuristic final : public aco::Heuristic {
@@ -39,5 +40,6 @@ class ProgressHeuristic final : public aco::Heuristic {
 }  // namespace
 
 ACO_PLUGIN(heuristic, progress, ProgressHeuristic, "1.0",
-           "eta = floor + (1 - floor) (1 + r) / 2, r = progress towards the goal per unit step cost: scale-free, for large maps",
+           "eta = floor + (1 - floor) (1 + r) / 2, r = progress towards the goal per unit step cost: scale-free, for "
+           "large maps",
            kParams)

@@ -20,10 +20,12 @@ struct Parameters {
 // The plugin's own parameters, then the whole fireworks table.
 const aco::SettingsTable<Parameters> kParams(
     {
-        aco::field("tau0", &Parameters::tau0, "(0:1e12]", "pheromone of every edge before the increment (uniform's default)"),
-        aco::field("q", &Parameters::q, "0:1e12",
-                   "increment constant Q: each edge of the fireworks' best path gets Q / L_best more (320: about tau0 on a "
-                   "20x20 map)"),
+        aco::field("tau0", &Parameters::tau0, "(0:1e12]",
+                   "pheromone of every edge before the increment (uniform's default)"),
+        aco::field(
+            "q", &Parameters::q, "0:1e12",
+            "increment constant Q: each edge of the fireworks' best path gets Q / L_best more (320: about tau0 on a "
+            "20x20 map)"),
     },
     aco::nested(&Parameters::search, aco::fireworks_table().fields()));
 
@@ -35,7 +37,8 @@ class FireworksInit final : public aco::PheromoneInit {
     std::fill(tau.begin(), tau.end(), p_.tau0);
     const aco::PlannerResult best = aco::run_fireworks(*c.graph, c.start, c.goal, settings(c));
     if (!best.solved || best.length <= 0.0) return;  // nothing to seed: unreachable goal, or start == goal
-    for (std::size_t i = 1; i < best.path.size(); ++i) tau[c.graph->find_edge(best.path[i - 1], best.path[i])] += p_.q / best.length;
+    for (std::size_t i = 1; i < best.path.size(); ++i)
+      tau[c.graph->find_edge(best.path[i - 1], best.path[i])] += p_.q / best.length;
   }
 
   // The search's seed is derived from the run's, so the fireworks and the ants (which key their
@@ -53,4 +56,5 @@ class FireworksInit final : public aco::PheromoneInit {
 }  // namespace
 
 ACO_PLUGIN(init, fireworks, FireworksInit, "1.0",
-           "paper 004: tau0 everywhere plus Q / L_best on the edges of the best path of a fireworks (IFWA) search", kParams)
+           "paper 004: tau0 everywhere plus Q / L_best on the edges of the best path of a fireworks (IFWA) search",
+           kParams)

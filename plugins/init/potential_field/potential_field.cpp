@@ -48,5 +48,6 @@ class PotentialFieldInit final : public aco::PheromoneInit {
 }  // namespace
 
 ACO_PLUGIN(init, potential_field, PotentialFieldInit, "1.0",
-           "paper 000: tau(0) of a move scaled by how well it follows the potential-field force (goal attracts, high ground repels)",
+           "paper 000: tau(0) of a move scaled by how well it follows the potential-field force (goal attracts, high "
+           "ground repels)",
            kParams)

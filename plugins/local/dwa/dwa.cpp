@@ -29,9 +29,11 @@ struct Parameters {
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::field("v_resolution", &Parameters::v_resolution, "(0:10]", "step between sampled velocities v (paper 003: 0.02)"),
+    aco::field("v_resolution", &Parameters::v_resolution, "(0:10]",
+               "step between sampled velocities v (paper 003: 0.02)"),
     aco::field("w_resolution", &Parameters::w_resolution, "(0:100]",
-               "step between sampled yaw rates w in rad/s (paper 003: 1 degree/s); w = 0 is always sampled when in the window"),
+               "step between sampled yaw rates w in rad/s (paper 003: 1 degree/s); w = 0 is always sampled when in the "
+               "window"),
     aco::field("heading", &Parameters::heading, "0:1000", "weight alpha of the heading term (paper 003: 0.15)"),
     aco::field("clearance", &Parameters::clearance, "0:1000", "weight beta of the dist term (paper 003: 0.1)"),
     aco::field("velocity", &Parameters::velocity, "0:1000", "weight gamma of the velocity term (paper 003: 0.3)"),
@@ -46,13 +48,16 @@ const aco::SettingsTable<Parameters> kParams({
                "(the MATLAB DWA code caps it at 2 x the obstacle radius)"),
     aco::field("margin", &Parameters::margin, "0:1e6", "the robot counts as touching an obstacle closer than this"),
     aco::field("predict", &Parameters::predict, "",
-               "roll moving obstacles forward with their sensed velocity (false: as in the paper, they stand where sensed; preset paper003)"),
-    aco::field("stop_at_goal", &Parameters::stop_at_goal, "",
-               "the velocity term counts v only up to sqrt(2 a_max d_goal), the speed the robot can stop from at the goal, "
-               "so it slows down and turns in instead of circling the goal (false: v, as in the paper)"),
+               "roll moving obstacles forward with their sensed velocity (false: as in the paper, they stand where "
+               "sensed; preset paper003)"),
+    aco::field(
+        "stop_at_goal", &Parameters::stop_at_goal, "",
+        "the velocity term counts v only up to sqrt(2 a_max d_goal), the speed the robot can stop from at the goal, "
+        "so it slows down and turns in instead of circling the goal (false: v, as in the paper)"),
     aco::field("follow", &Parameters::follow, "0:1e6",
                "the heading term aims at the point this far along the global path beyond the point nearest to the "
-               "rollout's end, so the robot keeps to the path (through one-cell doors); 0: at the intermediate goal, as in the paper "
+               "rollout's end, so the robot keeps to the path (through one-cell doors); 0: at the intermediate goal, "
+               "as in the paper "
                "(preset paper003)"),
 });
 
@@ -66,8 +71,9 @@ class Dwa final : public aco::LocalPlanner {
     candidates_.clear();
     for (double v : samples(window.v_low, window.v_high, p_.v_resolution))
       for (double w : samples(window.w_low, window.w_high, p_.w_resolution)) consider(view, {v, w});
-    const double goal_speed = p_.stop_at_goal ? std::sqrt(2.0 * view.limits.max_accel * (view.goal - view.robot.position()).norm())
-                                              : std::numeric_limits<double>::infinity();
+    const double goal_speed = p_.stop_at_goal
+                                  ? std::sqrt(2.0 * view.limits.max_accel * (view.goal - view.robot.position()).norm())
+                                  : std::numeric_limits<double>::infinity();
     // Measured from the slowest allowed speed, so that the term stays >= 0 for a robot that may
     // back up (and is v itself for one that may not).
     for (Candidate& c : candidates_) c.velocity = std::min(c.command.v, goal_speed) - view.limits.min_speed;
@@ -93,7 +99,7 @@ class Dwa final : public aco::LocalPlanner {
   struct Candidate {
     aco::VelocityCommand command;
     double heading;  // pi - |angle from the heading at the horizon to the goal|, in [0, pi]
-    double dist;     // free distance along the arc, at most dist_cap
+    double dist;  // free distance along the arc, at most dist_cap
     double velocity = 0.0;  // the velocity term
   };
 
@@ -104,9 +110,12 @@ class Dwa final : public aco::LocalPlanner {
     values.push_back(high);
     if (low > 0.0 || high < 0.0) return values;
     // Exactly 0, so that the robot can drive straight: a grid value within rounding of it is 0.
-    const auto nearest = std::min_element(values.begin(), values.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
-    if (std::abs(*nearest) < 1e-9 * step) *nearest = 0.0;
-    else values.insert(std::upper_bound(values.begin(), values.end(), 0.0), 0.0);
+    const auto nearest =
+        std::min_element(values.begin(), values.end(), [](double a, double b) { return std::abs(a) < std::abs(b); });
+    if (std::abs(*nearest) < 1e-9 * step)
+      *nearest = 0.0;
+    else
+      values.insert(std::upper_bound(values.begin(), values.end(), 0.0), 0.0);
     return values;
   }
 
@@ -128,7 +137,8 @@ class Dwa final : public aco::LocalPlanner {
     x0_ = y0_ = 0, columns_ = rows_ = 0;
     if (!near.empty()) {
       const auto [min_x, max_x] = std::minmax_element(near.begin(), near.end());
-      const auto [min_y, max_y] = std::minmax_element(near.begin(), near.end(), [](auto a, auto b) { return a.second < b.second; });
+      const auto [min_y, max_y] =
+          std::minmax_element(near.begin(), near.end(), [](auto a, auto b) { return a.second < b.second; });
       x0_ = min_x->first, y0_ = min_y->second;
       columns_ = max_x->first - x0_ + 1, rows_ = max_y->second - y0_ + 1;
     }
@@ -167,15 +177,15 @@ class Dwa final : public aco::LocalPlanner {
   double free_distance(const aco::LocalView& view, const aco::VelocityCommand& c) const {
     if (c.v == 0.0) return p_.lookahead;
     const aco::RobotState& r = view.robot;
-    const double step = std::max(view.limits.radius, 1e-3) / 10.0, curvature = c.w / c.v, direction = c.v > 0.0 ? 1.0 : -1.0;
+    const double step = std::max(view.limits.radius, 1e-3) / 10.0, curvature = c.w / c.v,
+                 direction = c.v > 0.0 ? 1.0 : -1.0;
     for (double s = step;; s += step) {
       const double length = std::min(s, p_.lookahead), arc = direction * length, turn = curvature * arc;
       // The exact arc: a straight segment when it does not turn.
       const Eigen::Vector2d at =
-          std::abs(turn) < 1e-9
-              ? Eigen::Vector2d(r.x + arc * std::cos(r.heading), r.y + arc * std::sin(r.heading))
-              : Eigen::Vector2d(r.x + (std::sin(r.heading + turn) - std::sin(r.heading)) / curvature,
-                                r.y - (std::cos(r.heading + turn) - std::cos(r.heading)) / curvature);
+          std::abs(turn) < 1e-9 ? Eigen::Vector2d(r.x + arc * std::cos(r.heading), r.y + arc * std::sin(r.heading))
+                                : Eigen::Vector2d(r.x + (std::sin(r.heading + turn) - std::sin(r.heading)) / curvature,
+                                                  r.y - (std::cos(r.heading + turn) - std::cos(r.heading)) / curvature);
       if (touches(view, at, arc / c.v)) return std::max(0.0, length - step);
       if (length >= p_.lookahead) return p_.lookahead;
     }
@@ -193,7 +203,8 @@ class Dwa final : public aco::LocalPlanner {
     const double reach = p_.follow > 0.0 ? dist : std::numeric_limits<double>::infinity();
     for (int k = 0; k < steps && speed * (k + 1) * view.period <= reach; ++k) s = aco::move(s, command, view.period);
     const Eigen::Vector2d to_goal = aim(view, s.position(), speed * p_.horizon) - s.position();
-    const double error = to_goal.squaredNorm() > 0.0 ? aco::wrap_angle(std::atan2(to_goal.y(), to_goal.x()) - s.heading) : 0.0;
+    const double error =
+        to_goal.squaredNorm() > 0.0 ? aco::wrap_angle(std::atan2(to_goal.y(), to_goal.x()) - s.heading) : 0.0;
     candidates_.push_back({command, M_PI - std::abs(error), std::min(dist, p_.dist_cap)});
   }
 
@@ -215,5 +226,6 @@ class Dwa final : public aco::LocalPlanner {
 }  // namespace
 
 ACO_PLUGIN(local, dwa, Dwa, "1.0",
-           "paper 003: Dynamic Window Approach, G(v,w) = alpha heading + beta dist + gamma velocity over the velocities that can still stop",
+           "paper 003: Dynamic Window Approach, G(v,w) = alpha heading + beta dist + gamma velocity over the "
+           "velocities that can still stop",
            kParams)

@@ -31,7 +31,8 @@ class Track final : public aco::LocalPlanner {
     // Drives only when roughly facing the goal, no faster than it can stop there: it follows the
     // path's corners exactly, as far as its limits allow.
     const double stop_speed = std::sqrt(2.0 * view.limits.max_accel * to_goal.norm());
-    const double v = std::abs(error) <= p_.turn_in_place * aco::kDegree ? std::min(view.limits.max_speed, stop_speed) : 0.0;
+    const double v =
+        std::abs(error) <= p_.turn_in_place * aco::kDegree ? std::min(view.limits.max_speed, stop_speed) : 0.0;
     const aco::VelocityCommand wanted{v, p_.gain * error};
     return aco::dynamic_window(r, view.limits, view.period).clamp(wanted);
   }
@@ -42,6 +43,7 @@ class Track final : public aco::LocalPlanner {
 
 }  // namespace
 
-ACO_PLUGIN(local, track, Track, "1.0",
-           "blind tracking: heads for the intermediate goal and ignores obstacles (the baseline without a local planner)",
-           kParams)
+ACO_PLUGIN(
+    local, track, Track, "1.0",
+    "blind tracking: heads for the intermediate goal and ignores obstacles (the baseline without a local planner)",
+    kParams)

@@ -32,8 +32,9 @@ const aco::SettingsTable<Parameters> kParams({
 double distance_to_cell(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
   double d = std::min(aco::distance_to_square(a, c, 1.0), aco::distance_to_square(b, c, 1.0));
   const Eigen::Vector2d ab = b - a;
-  for (const Eigen::Vector2d& corner : {Eigen::Vector2d(c.x() - 0.5, c.y() - 0.5), Eigen::Vector2d(c.x() + 0.5, c.y() - 0.5),
-                                       Eigen::Vector2d(c.x() - 0.5, c.y() + 0.5), Eigen::Vector2d(c.x() + 0.5, c.y() + 0.5)}) {
+  for (const Eigen::Vector2d& corner :
+       {Eigen::Vector2d(c.x() - 0.5, c.y() - 0.5), Eigen::Vector2d(c.x() + 0.5, c.y() - 0.5),
+        Eigen::Vector2d(c.x() - 0.5, c.y() + 0.5), Eigen::Vector2d(c.x() + 0.5, c.y() + 0.5)}) {
     const double t = ab.squaredNorm() > 0.0 ? std::clamp((corner - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
     d = std::min(d, (a + t * ab - corner).norm());
   }

@@ -24,12 +24,14 @@ struct Parameters {
 const aco::SettingsTable<Parameters> kParams({
     aco::field("rho", &Parameters::rho, "0:1", "global evaporation rate (paper 000: 0.2)"),
     aco::field("q", &Parameters::q, "(0:1e12]", "deposit constant Q: every arrived ant deposits Q / L"),
-    aco::field("elite_fraction", &Parameters::elite_fraction, "0:1",
-               "share of the arrived ants (the shortest) that are elite: max(1, floor(fraction * arrived)); 0 = no elite"),
+    aco::field(
+        "elite_fraction", &Parameters::elite_fraction, "0:1",
+        "share of the arrived ants (the shortest) that are elite: max(1, floor(fraction * arrived)); 0 = no elite"),
     aco::field("elite_q", &Parameters::elite_q, "0:1e12",
                "elite deposit constant: an elite ant also deposits elite_q * (it / it_max)^3 / L"),
-    aco::field("local_rho", &Parameters::local_rho, "0:1",
-               "local evaporation: every edge an ant walked moves towards its starting value by this much (paper 000: 0.1)"),
+    aco::field(
+        "local_rho", &Parameters::local_rho, "0:1",
+        "local evaporation: every edge an ant walked moves towards its starting value by this much (paper 000: 0.1)"),
     aco::field("tau0", &Parameters::tau0, "0:1e12",
                "mean starting pheromone; 0 = ants * Q / d(start, goal), the grid analogue of Ant System's m / C_nn"),
 });
@@ -70,5 +72,6 @@ class EliteUpdate final : public aco::PheromoneUpdate {
 }  // namespace
 
 ACO_PLUGIN(update, elite, EliteUpdate, "1.0",
-           "paper 000 (with --q0 0.8): ACS-style local update; every arrived ant deposits Q/L, the best 5 % also (it/it_max)^3 / L",
+           "paper 000 (with --q0 0.8): ACS-style local update; every arrived ant deposits Q/L, the best 5 % also "
+           "(it/it_max)^3 / L",
            kParams)

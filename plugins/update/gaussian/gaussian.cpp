@@ -23,7 +23,8 @@ struct Parameters {
 
 const aco::SettingsTable<Parameters> kParams({
     aco::field("rho", &Parameters::rho, "0:1", "evaporation rate (paper 002: 0.3)"),
-    aco::field("q", &Parameters::q, "(0:1e12]", "deposit constant Q: ant k's spread is scaled by Q / L_k (paper 002: 1)"),
+    aco::field("q", &Parameters::q, "(0:1e12]",
+               "deposit constant Q: ant k's spread is scaled by Q / L_k (paper 002: 1)"),
     aco::field("psi", &Parameters::psi, "0:1e12", "balance factor psi (paper 002: 300)"),
     aco::field("mu", &Parameters::mu, "-100:100", "mean mu of the Gaussian (paper 002: 0)"),
     aco::field("sigma", &Parameters::sigma, "(0:100]", "spread sigma of the Gaussian (paper 002: 1)"),
@@ -43,7 +44,8 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
       for (int dx = -r; dx <= r; ++dx) {
         const double x = std::hypot(dx, dy);
         if (x <= cutoff)
-          kernel_.push_back({dx, dy, psi / std::sqrt(2 * M_PI * sigma) * std::exp(-(x - mu) * (x - mu) / (2 * sigma * sigma))});
+          kernel_.push_back(
+              {dx, dy, psi / std::sqrt(2 * M_PI * sigma) * std::exp(-(x - mu) * (x - mu) / (2 * sigma * sigma))});
       }
   }
 
@@ -51,8 +53,10 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
     aco::evaporate(tau, p_.rho);
     for (const aco::Ant& ant : it.ants) {
       if (!ant.arrived) continue;
-      if (p_.onto_edges) spread_onto_edges(*c.graph, ant, tau);
-      else spread_onto_cells(*c.graph, ant, tau);
+      if (p_.onto_edges)
+        spread_onto_edges(*c.graph, ant, tau);
+      else
+        spread_onto_cells(*c.graph, ant, tau);
     }
   }
 
@@ -101,11 +105,12 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
 
   Parameters p_;
   std::vector<Offset> kernel_;
-  std::vector<double> spread_;        // per node, zero between ants (cells mode)
+  std::vector<double> spread_;  // per node, zero between ants (cells mode)
   std::vector<aco::NodeId> touched_;  // nodes with a non-zero spread_
 };
 
 }  // namespace
 
 ACO_PLUGIN(update, gaussian, GaussianUpdate, "1.0",
-           "paper 002: evaporate, then every arrived ant spreads Q/L_k * psi * N(x; mu, sigma) around its path", kParams)
+           "paper 002: evaporate, then every arrived ant spreads Q/L_k * psi * N(x; mu, sigma) around its path",
+           kParams)

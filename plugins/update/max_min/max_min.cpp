@@ -22,9 +22,10 @@ const aco::SettingsTable<Parameters> kParams({
     aco::field("q", &Parameters::q, "(0:1e12]", "deposit constant Q: the depositing ant adds Q / L"),
     aco::field("p_best", &Parameters::p_best, "(0:1)",
                "probability that a converged colony rebuilds the best path; sets tau_min relative to tau_max"),
-    aco::field("best_so_far_every", &Parameters::best_so_far_every, "0:1000000",
-               "the best-so-far ant deposits every n-th iteration, the iteration best otherwise; 0 = ACOTSP's schedule "
-               "(every 25th iteration before iteration 25, 5th before 75, 3rd before 125, 2nd before 250, then always)"),
+    aco::field(
+        "best_so_far_every", &Parameters::best_so_far_every, "0:1000000",
+        "the best-so-far ant deposits every n-th iteration, the iteration best otherwise; 0 = ACOTSP's schedule "
+        "(every 25th iteration before iteration 25, 5th before 75, 3rd before 125, 2nd before 250, then always)"),
     aco::field("restart_after", &Parameters::restart_after, "0:1000000",
                "reset every edge to tau_max after this many iterations without a shorter best-so-far path (0 = never)"),
 });
@@ -72,7 +73,8 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
       c.add("restarts");
       return;
     }
-    const aco::Ant& depositor = it.best == nullptr || (c.iteration + 1) % best_so_far_period(c.iteration) == 0 ? best : *it.best;
+    const aco::Ant& depositor =
+        it.best == nullptr || (c.iteration + 1) % best_so_far_period(c.iteration) == 0 ? best : *it.best;
     // ACOTSP's order, evaporate every edge, deposit, then bound every edge: the depositor's
     // edges get their evaporated values (within the last bounds) plus the deposit, bounded with
     // the rest by bound().
@@ -92,7 +94,8 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
       trail.evaporate(p_.rho);
     }
     trail.bound(tau_min, tau_max);
-    for (std::size_t i = 0; i < depositor.edges.size(); ++i) trail.set(depositor.edges[i], evaporated_[i] + p_.q / depositor.length);
+    for (std::size_t i = 0; i < depositor.edges.size(); ++i)
+      trail.set(depositor.edges[i], evaporated_[i] + p_.q / depositor.length);
   }
 
   // The same rule on plain values (callers other than the engine): every edge evaporated and
@@ -119,6 +122,7 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
 
 }  // namespace
 
-ACO_PLUGIN(update, max_min, MaxMinUpdate, "1.0",
-           "MAX-MIN Ant System: only the iteration-best (or best-so-far) ant deposits; tau bounded in [tau_min, tau_max]",
-           kParams)
+ACO_PLUGIN(
+    update, max_min, MaxMinUpdate, "1.0",
+    "MAX-MIN Ant System: only the iteration-best (or best-so-far) ant deposits; tau bounded in [tau_min, tau_max]",
+    kParams)

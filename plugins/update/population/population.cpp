@@ -22,7 +22,8 @@ const aco::SettingsTable<Parameters> kParams({
     aco::field("ratio", &Parameters::ratio, "(1:1e6]",
                "tau_max / tau_init: an edge on every population path has `ratio` times its initial pheromone"),
     aco::choice("replace", &Parameters::by_age, {"quality", "age"}, {false, true},
-                "quality = the k shortest distinct paths found so far; age = the last k iteration-best paths (first in, first out)"),
+                "quality = the k shortest distinct paths found so far; age = the last k iteration-best paths (first "
+                "in, first out)"),
 });
 
 class PopulationUpdate final : public aco::PheromoneUpdate {
@@ -77,5 +78,6 @@ class PopulationUpdate final : public aco::PheromoneUpdate {
 }  // namespace
 
 ACO_PLUGIN(update, population, PopulationUpdate, "1.0",
-           "population-based ACO: init field plus a fixed deposit per path of a population of k paths (bounded, scale-free trail)",
+           "population-based ACO: init field plus a fixed deposit per path of a population of k paths (bounded, "
+           "scale-free trail)",
            kParams)

@@ -22,14 +22,14 @@
 namespace aco {
 
 struct WorkerLimits {
-  double timeout_s = 0.0;         // per request; 0: none
+  double timeout_s = 0.0;  // per request; 0: none
   std::uint64_t memory_bytes = 0;  // growth of the worker's resident memory during a request; 0: none
 };
 
 struct WorkerReply {
   enum class Status { replied, crashed, timed_out, out_of_memory };
   Status status = Status::replied;
-  std::string bytes;    // the worker's reply (replied)
+  std::string bytes;  // the worker's reply (replied)
   // Otherwise why it failed: "crashed: SIGSEGV in plugin update/x (FILE) in update() in iteration
   // 3", "timed out after 5 s in plugin ...", "out of memory (over 512 MiB) in plugin ...".
   std::string failure;
@@ -72,8 +72,8 @@ class WorkerProcess {
   pid_t pid_ = -1;
   int socket_ = -1;
   std::string received_;  // bytes read, not yet a whole frame
-  std::string note_;      // where the worker said it was (its signal handler's note)
-  bool ready_ = false;    // the worker said it has loaded what it serves
+  std::string note_;  // where the worker said it was (its signal handler's note)
+  bool ready_ = false;  // the worker said it has loaded what it serves
 };
 
 // How many lanes (threads, worker processes) --threads N means: N, or for 0 every CPU this

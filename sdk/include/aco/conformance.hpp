@@ -38,7 +38,7 @@ namespace aco::conformance {
 
 // A standard tiny map with its graph (8-neighbourhood, no corner cutting), start and goal.
 struct Problem {
-  std::string name;                          // "open", "obstacles", "dead end", "corridor"
+  std::string name;  // "open", "obstacles", "dead end", "corridor"
   std::shared_ptr<const OccupancyGrid> map;  // shared: graph.map points to it
   Graph graph;
   NodeId start = 0;
@@ -61,8 +61,8 @@ Problem make_problem(const std::string& name, const std::vector<std::string>& ro
 struct IterationCase {
   std::string name;
   std::vector<Ant> ants;
-  int best = -1;                     // index into ants, or -1
-  std::optional<Ant> earlier_best;   // best_so_far from an earlier iteration, if any
+  int best = -1;  // index into ants, or -1
+  std::optional<Ant> earlier_best;  // best_so_far from an earlier iteration, if any
 
   Iteration view() const;
 };
@@ -110,11 +110,11 @@ struct Options {
 };
 
 struct CheckResult {
-  std::string plugin;      // "update/ant_system"
+  std::string plugin;  // "update/ant_system"
   std::string parameters;  // ParameterSet::label
-  std::string check;       // "values", "deterministic", "threads" ("constructs" when skipped or failed)
+  std::string check;  // "values", "deterministic", "threads" ("constructs" when skipped or failed)
   enum class Status { pass, fail, skip } status = Status::pass;
-  std::string detail;      // what failed, where (map, iteration, value)
+  std::string detail;  // what failed, where (map, iteration, value)
 
   // "PASS update/ant_system [rho=0] deterministic", "FAIL ... values: open, ...: tau[3] = nan"
   std::string line() const;
@@ -141,7 +141,10 @@ std::string bad_value(std::span<const double> values, const std::string& what, d
 // The slot whose interface is Interface: "init" for PheromoneInit, ... (aco/slots.hpp)
 template <class Interface>
 constexpr const char* slot_of() {
-#define ACO_SLOT_OF_(NAME, INTERFACE) if constexpr (std::is_same_v<Interface, INTERFACE>) return #NAME; else
+#define ACO_SLOT_OF_(NAME, INTERFACE)                 \
+  if constexpr (std::is_same_v<Interface, INTERFACE>) \
+    return #NAME;                                     \
+  else
   ACO_SLOTS(ACO_SLOT_OF_) {
     static_assert(!std::is_same_v<Interface, Interface>, "not a slot interface");
     return "";
@@ -156,12 +159,14 @@ std::pair<PluginRegistry*, PluginFile> find_in(const std::filesystem::path& file
 // The file's plugin of Interface's slot, behind the error boundary, its defaults overridden by
 // `given` ({{"rho", "0.2"}}).
 template <class Interface>
-std::unique_ptr<Interface> create(const std::filesystem::path& file, const std::map<std::string, std::string>& given = {}) {
+std::unique_ptr<Interface> create(const std::filesystem::path& file,
+                                  const std::map<std::string, std::string>& given = {}) {
   const auto found = find_in(file, slot_of<Interface>());
   PluginRegistry& registry = *found.first;
   const PluginFile& plugin = found.second;
   const PluginDescriptor& descriptor = registry.load(plugin.kind, plugin.name);
-  return registry.create<Interface>(plugin.kind, plugin.name, resolve(descriptor.parameters(), given, plugin.kind + "."));
+  return registry.create<Interface>(plugin.kind, plugin.name,
+                                    resolve(descriptor.parameters(), given, plugin.kind + "."));
 }
 
 }  // namespace aco::conformance

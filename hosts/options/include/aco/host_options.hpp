@@ -17,8 +17,8 @@ namespace aco {
 
 // The exit statuses of every command; README's "Exit status" table explains them.
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitError = 1;   // the command failed; the message on stderr says why
-inline constexpr int kExitUsage = 2;   // aco-plugin-check, aco-new-plugin: the command line cannot be read
+inline constexpr int kExitError = 1;  // the command failed; the message on stderr says why
+inline constexpr int kExitUsage = 2;  // aco-plugin-check, aco-new-plugin: the command line cannot be read
 inline constexpr int kExitNoPath = 3;  // acoplan: no path found; acosim: the robot did not reach the goal
 inline constexpr int kExitTrialsFailed = 3;  // acobench: a trial failed (now or in an earlier run of the study)
 
@@ -28,7 +28,7 @@ inline constexpr const char* kThreadsHelp = "worker threads, 0 = all cores; resu
 struct HostOptions {
   std::vector<std::string> plugin_dirs;  // --plugin-dir, repeatable, searched first
   std::optional<std::string> max_memory;  // --max-memory as given; none: the default limit
-  int threads = 0;                       // --threads; 0: all cores
+  int threads = 0;  // --threads; 0: all cores
 
   // Adds --plugin-dir DIR to `options`, stored here.
   void add_plugin_dir(boost::program_options::options_description& options);

@@ -23,10 +23,10 @@ namespace aco::simulation {
 struct RobotSettings {
   double radius = 0.3;
   double max_speed = 1.5;
-  double max_yaw_rate = 20.0;   // degrees/s
+  double max_yaw_rate = 20.0;  // degrees/s
   double max_accel = 0.2;
   double max_yaw_accel = 50.0;  // degrees/s^2
-  double min_speed = 0.0;       // below 0: may back up
+  double min_speed = 0.0;  // below 0: may back up
 
   aco::RobotLimits limits() const {
     return {radius, max_speed, max_yaw_rate * aco::kDegree, max_accel, max_yaw_accel * aco::kDegree, min_speed};
@@ -34,13 +34,13 @@ struct RobotSettings {
 };
 
 struct SimulationSettings {
-  double period = 0.1;             // control period, s
-  double sensor_range = 7.0;       // cells (and moving discs) within this distance are seen
-  double time_limit = 300.0;       // s
-  double goal_tolerance = 0.3;     // reached when the robot's centre is this close to the goal
-  double waypoint_tolerance = 0.6; // an intermediate goal this close is passed
-  double stall_time = 8.0;         // no progress for this long: replan
-  double stall_distance = 0.3;     // progress = the distance to the intermediate goal shrinking by this much
+  double period = 0.1;  // control period, s
+  double sensor_range = 7.0;  // cells (and moving discs) within this distance are seen
+  double time_limit = 300.0;  // s
+  double goal_tolerance = 0.3;  // reached when the robot's centre is this close to the goal
+  double waypoint_tolerance = 0.6;  // an intermediate goal this close is passed
+  double stall_time = 8.0;  // no progress for this long: replan
+  double stall_distance = 0.3;  // progress = the distance to the intermediate goal shrinking by this much
   int max_replans = 10;
 };
 
@@ -82,7 +82,7 @@ struct Frame {
   double t = 0.0;
   aco::RobotState robot;
   int goal_index = 0;  // into the current plan's intermediate goals
-  int plan = 0;        // which plan the robot follows
+  int plan = 0;  // which plan the robot follows
   std::vector<Eigen::Vector2d> moving;
 };
 
@@ -96,9 +96,9 @@ struct SimulationResult {
   int collisions = 0;
   int replans = 0;
   int steps = 0;
-  std::vector<Frame> frames;                      // the start, then one per control step
+  std::vector<Frame> frames;  // the start, then one per control step
   std::vector<std::vector<Eigen::Vector2d>> plans;  // each global plan's intermediate goals, start first
-  std::vector<aco::Cell> sensed;                  // unknown cells the robot has seen
+  std::vector<aco::Cell> sensed;  // unknown cells the robot has seen
 };
 
 // Runs the scenario to the goal, a collision, the time limit, or a plan that cannot be made.

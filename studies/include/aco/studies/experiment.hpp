@@ -20,8 +20,8 @@
 namespace aco::studies {
 
 struct Problem {
-  std::string name;             // unique within the experiment
-  std::filesystem::path map;    // resolved against the experiment file's folder
+  std::string name;  // unique within the experiment
+  std::filesystem::path map;  // resolved against the experiment file's folder
   // Its reader, as aco::ProblemSpec has it: map-format (or the map plugin claiming the file's
   // ending; "" for a built-in format by its ending) and a map plugin's map.NAME parameters.
   std::string map_format;
@@ -56,8 +56,8 @@ struct Experiment {
   std::string name;
   std::filesystem::path file;
   std::vector<Problem> problems;
-  Configuration baseline;                      // common settings + the baseline's own keys
-  std::vector<Configuration> configurations;   // baseline first, then named, then factorial
+  Configuration baseline;  // common settings + the baseline's own keys
+  std::vector<Configuration> configurations;  // baseline first, then named, then factorial
   std::optional<Configuration> ablation_target;
   int repetitions = 10;
   std::uint64_t seed = 1;

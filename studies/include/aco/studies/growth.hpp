@@ -18,7 +18,8 @@ namespace aco::studies {
 std::vector<std::string> fingerprint_conflicts(const std::string& stored, const std::string& now);
 
 // The same for problems of the same name (their setups and optimal lengths).
-std::vector<std::string> problem_conflicts(const std::vector<ProblemRecord>& stored, const std::vector<ProblemRecord>& now);
+std::vector<std::string> problem_conflicts(const std::vector<ProblemRecord>& stored,
+                                           const std::vector<ProblemRecord>& now);
 
 // The same for configurations' settings as the database stores them (settings_json): the same
 // when their resolved runs and plugin binaries are, whatever keys wrote them.
@@ -43,6 +44,7 @@ struct Growth {
 Growth growth(const std::string& stored, const std::string& now);
 
 // How to read a refusal: the database file, the lines, what to do.
-std::string conflicts_message(const std::string& file, const std::string& experiment, const std::vector<std::string>& lines);
+std::string conflicts_message(const std::string& file, const std::string& experiment,
+                              const std::vector<std::string>& lines);
 
 }  // namespace aco::studies

@@ -24,7 +24,7 @@ struct NamedSample {
 // the most extreme values within 1.5 IQR of the box, the values beyond are drawn as dots.
 struct BoxPlot {
   std::string title;
-  std::string value_label;          // the y axis, e.g. "path length"
+  std::string value_label;  // the y axis, e.g. "path length"
   std::vector<NamedSample> samples;
   std::optional<double> reference;  // a dashed horizontal line, e.g. the optimal length
   std::string reference_label = "optimum";
@@ -50,9 +50,9 @@ std::string stroke_attributes(std::size_t k);
 struct Series {
   std::string name;
   std::vector<double> value;
-  std::vector<double> band_low;   // empty, or as long as value
+  std::vector<double> band_low;  // empty, or as long as value
   std::vector<double> band_high;  // empty, or as long as value
-  std::vector<double> x;          // empty, or as long as value and non-decreasing
+  std::vector<double> x;  // empty, or as long as value and non-decreasing
   // Its series_style(); by default its position in the chart. A report gives each configuration
   // its own, the same in every chart, whichever series a chart leaves out.
   std::optional<std::size_t> style = {};
@@ -72,7 +72,8 @@ struct StepCurve {
 // value only once every run with any finite value has one by then (runs without are left out):
 // the mean of one set of runs throughout, which never rises for best-so-far curves, instead of a
 // mean that jumps up whenever a run finds its first, poor, path.
-Series mean_series(std::string name, const std::vector<StepCurve>& runs, std::vector<double> at, bool same_runs = false);
+Series mean_series(std::string name, const std::vector<StepCurve>& runs, std::vector<double> at,
+                   bool same_runs = false);
 
 // The same per iteration: run[i] is the value of iteration i + 1 (x empty: the chart's iteration).
 Series convergence_series(std::string name, const std::vector<std::vector<double>>& runs);

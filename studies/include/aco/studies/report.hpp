@@ -17,7 +17,8 @@ namespace aco::studies {
 // also added to `warnings`, for the caller to print. The map plugins of problems whose maps a
 // plugin reads are looked for in `plugin_dirs` (default: ACO_PLUGIN_PATH's and the bundled folder).
 std::vector<std::filesystem::path> write_report(
-    const std::filesystem::path& database, const std::filesystem::path& out, std::vector<std::string>* warnings = nullptr,
+    const std::filesystem::path& database, const std::filesystem::path& out,
+    std::vector<std::string>* warnings = nullptr,
     const std::vector<std::filesystem::path>& plugin_dirs = aco::PluginRegistry::default_search_dirs());
 
 }  // namespace aco::studies

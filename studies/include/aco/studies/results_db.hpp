@@ -110,8 +110,8 @@ class ResultsDb {
   // For reports.
   std::vector<ProblemRecord> problems() const;
   std::vector<std::pair<int, ConfigRecord>> configs() const;  // (id, record) in insertion order
-  std::vector<TrialRecord> trials() const;                    // ordered by (problem, config, repetition)
-  std::string meta(const std::string& key) const;             // Error if the key is not stored
+  std::vector<TrialRecord> trials() const;  // ordered by (problem, config, repetition)
+  std::string meta(const std::string& key) const;  // Error if the key is not stored
   std::optional<std::string> find_meta(const std::string& key) const;
   // Stores a key of acobench_meta beyond those open() writes (e.g. the ablation path).
   void set_meta(const std::string& key, const std::string& value);

@@ -40,7 +40,7 @@ class ThreadExecutor : public TrialExecutor {
 // What a run is about to do, known before its first trial: the experiment's size and how much of
 // it the database holds already.
 struct TrialPlan {
-  std::size_t configurations = 0;           // the experiment's (factorial ones and null-model twins included)
+  std::size_t configurations = 0;  // the experiment's (factorial ones and null-model twins included)
   std::size_t ablation_configurations = 0;  // those of the ablation path, n(n+1)/2 for n components
   std::size_t problems = 0;
   int repetitions = 0;
@@ -65,13 +65,13 @@ struct RunOptions {
 // A trial of the experiment that failed, in this run or (earlier) stored as failed by another.
 struct TrialFailure {
   std::string configuration;
-  std::string kind;     // one of kFailureKinds
+  std::string kind;  // one of kFailureKinds
   std::string message;  // the trial's error, naming it
   bool earlier = false;
 };
 
 struct RunSummary {
-  std::size_t trials = 0;   // trials of the experiment (of the shard)
+  std::size_t trials = 0;  // trials of the experiment (of the shard)
   std::size_t skipped = 0;  // already in the database
   std::size_t ran = 0;
   // Every failed trial of the experiment (of the shard): those run now and those stored as failed
@@ -79,7 +79,7 @@ struct RunSummary {
   std::vector<TrialFailure> failures;
   double seconds = 0.0;
   bool ablation_left = false;  // a shard: the experiment's ablation path was not run
-  Growth growth;               // what the experiment added to an existing database
+  Growth growth;  // what the experiment added to an existing database
 };
 
 // The failures counted by kind, then by configuration, with one example message each: the lines

@@ -28,10 +28,10 @@ std::size_t fixed_trial_index(std::size_t config_position, std::size_t problem, 
                               std::size_t problems, std::size_t repetitions);
 
 struct MergeSummary {
-  std::size_t copied = 0;      // trials written to the output
+  std::size_t copied = 0;  // trials written to the output
   std::size_t duplicates = 0;  // trials held by more than one input (or already in the output), identical
-  std::size_t expected = 0;    // trials of the experiment's configurations
-  std::size_t missing = 0;     // of those, in no input
+  std::size_t expected = 0;  // trials of the experiment's configurations
+  std::size_t missing = 0;  // of those, in no input
   // Per shard (or "unsharded input"): how many of its trials are missing, with the command
   // that runs them, for the messages.
   std::vector<std::string> missing_by_shard;

@@ -25,8 +25,8 @@ struct Summary {
   double median = undefined;
   double q1 = undefined;
   double q3 = undefined;
-  double iqr = undefined;      // q3 - q1
-  double ci_low = undefined;   // 95 % confidence interval of the mean: mean -+ t(0.975, n - 1) stddev / sqrt(n)
+  double iqr = undefined;  // q3 - q1
+  double ci_low = undefined;  // 95 % confidence interval of the mean: mean -+ t(0.975, n - 1) stddev / sqrt(n)
   double ci_high = undefined;
   double min = undefined;
   double max = undefined;
@@ -48,8 +48,8 @@ std::vector<double> ranks(std::span<const double> values);
 // sample has at most 8 values, else the normal approximation with tie-corrected variance and a
 // continuity correction of 1/2. Both samples must be non-empty.
 struct MannWhitney {
-  double u = 0.0;      // U of the first sample: pairs (x, y) with x > y, ties counting 1/2; U2 = n1 n2 - u
-  double p = 1.0;      // two-sided p value, at most 1
+  double u = 0.0;  // U of the first sample: pairs (x, y) with x > y, ties counting 1/2; U2 = n1 n2 - u
+  double p = 1.0;  // two-sided p value, at most 1
   bool exact = false;  // whether p comes from the exact distribution
 };
 

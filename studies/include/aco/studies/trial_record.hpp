@@ -23,7 +23,7 @@ namespace aco::studies {
 struct ProblemRecord {
   std::string name;
   std::string setup_json;  // the problem: map file, start, goal, neighbourhood...
-  double optimal_length;   // < 0: unknown (read back as -1)
+  double optimal_length;  // < 0: unknown (read back as -1)
 };
 
 struct ConfigRecord {
@@ -47,7 +47,7 @@ struct SimulationRecord {
 
 struct TrialRecord {
   int problem = 0;  // index into the problems given to the constructor
-  int config = 0;   // id returned by add_config()
+  int config = 0;  // id returned by add_config()
   int repetition = 0;
   std::uint64_t seed = 0;
   bool solved = false;
@@ -56,7 +56,7 @@ struct TrialRecord {
   double time_s = 0;
   std::uint64_t ant_steps = 0;
   std::string stopped_by;
-  std::string path_json;            // "[[x,y],...]" or "[[x,y,z],...]"
+  std::string path_json;  // "[[x,y],...]" or "[[x,y,z],...]"
   std::vector<double> best_so_far;  // one per iteration; +infinity until solved (stored as NULL)
   // The anytime curves (aco::SearchResult's), one value per iteration each; both empty for a trial
   // read from rows without them (stored by an acobench of format 3 or earlier).
@@ -86,19 +86,19 @@ enum class TrialCellType { boolean, integer, count, real, text };  // count: 64 
 
 // Where a field goes (a bit set).
 enum TrialFieldUse : unsigned {
-  kInMessage = 1,    // the JSON a worker process or an MPI rank sends (trial_messages.hpp)
+  kInMessage = 1,  // the JSON a worker process or an MPI rank sends (trial_messages.hpp)
   kInRunsTable = 2,  // a column of the results database's runs table (results_db.hpp)
-  kInRunsCsv = 4,    // a column of the report's runs.csv, after problem and configuration
-  kInPython = 8,     // a column of Python's read_database()
+  kInRunsCsv = 4,  // a column of the report's runs.csv, after problem and configuration
+  kInPython = 8,  // a column of Python's read_database()
   kEverywhere = 15,
 };
 
 struct TrialField {
-  const char* name;    // its JSON key and runs column
+  const char* name;  // its JSON key and runs column
   const char* column;  // its runs.csv and Python column
   TrialCellType type;
-  unsigned use;        // TrialFieldUse bits
-  int csv_digits;      // significant digits of a real in runs.csv
+  unsigned use;  // TrialFieldUse bits
+  int csv_digits;  // significant digits of a real in runs.csv
   // The value of a trial, whose problem's optimal length (< 0: unknown) derived fields need.
   std::function<TrialCell(const TrialRecord&, double optimal_length)> get;
   // Sets the member from a value; NULL leaves the record's default. Empty for derived fields,
@@ -125,7 +125,8 @@ std::string runs_csv(const std::vector<TrialRecord>& trials, const std::vector<P
 // memory limit, a plugin that threw, a value a plugin wrote that the engine refused (aco::
 // InvalidValueError), anything else (the host's own errors, and every failure stored by an
 // acobench of format 4 or earlier that threw).
-inline constexpr const char* kFailureKinds[] = {"crashed", "timed out", "out of memory", "plugin error", "invalid value", "error"};
+inline constexpr const char* kFailureKinds[] = {"crashed",      "timed out",     "out of memory",
+                                                "plugin error", "invalid value", "error"};
 
 // What a failure kind means, for the summary at the end of a run.
 std::string describe_failure(const std::string& kind);

@@ -15,7 +15,7 @@
 namespace aco::studies {
 
 struct TrialLimits {
-  double timeout_s = 0.0;          // 0: none
+  double timeout_s = 0.0;  // 0: none
   std::uint64_t memory_bytes = 0;  // 0: none
 };
 

@@ -532,7 +532,7 @@ TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acopl
   CHECK_THAT(text.out, Contains("runs:     3 seeds (1..3), 3 solved") && Contains("best_iteration mean"));
 }
 
-// The recommended pipelines users start from (data/presets, README "Large maps") must keep loading
+// The recommended pipelines users start from (data/presets, docs/large-maps.md) must keep loading
 // and planning; what they are worth is measured in docs/results.md, not here.
 TEST_CASE("the shipped presets load and plan with the pipeline they document", "[acoplan][presets]") {
   const std::string room = (test::data_dir() / "maps/generated/room64-8-s2.map.scen").string();

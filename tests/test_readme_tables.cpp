@@ -1,6 +1,6 @@
-// README.md's reference parts kept true to the programs and the tree: the option table of
-// "Planning with acoplan" names every option of `acoplan --help`, and the Layout section
-// describes every top-level folder and no folder that is not there.
+// The documentation's reference parts kept true to the programs and the tree: the option table of
+// docs/planning.md ("Options") names every option of `acoplan --help`, and README.md's Layout
+// section describes every top-level folder and no folder that is not there.
 #include <catch2/catch.hpp>
 #include <fstream>
 #include <regex>
@@ -15,18 +15,19 @@ namespace {
 
 const std::filesystem::path kProjectDir = test::data_dir().parent_path();
 
-std::vector<std::string> readme_lines() {
-  std::ifstream in(kProjectDir / "README.md");
+std::vector<std::string> file_lines(const std::string& file) {
+  INFO(file);
+  std::ifstream in(kProjectDir / file);
   REQUIRE(in);
   std::vector<std::string> lines;
   for (std::string line; std::getline(in, line);) lines.push_back(line);
   return lines;
 }
 
-// The lines of the section under `heading` (a whole line such as "## Layout"), to the next heading
-// of the same or a higher level.
-std::vector<std::string> section(const std::string& heading) {
-  const auto lines = readme_lines();
+// The lines of the section of `file` under `heading` (a whole line such as "## Layout"), to the
+// next heading of the same or a higher level.
+std::vector<std::string> section(const std::string& file, const std::string& heading) {
+  const auto lines = file_lines(file);
   const auto level = heading.find(' ');
   std::vector<std::string> body;
   bool inside = false;
@@ -39,6 +40,7 @@ std::vector<std::string> section(const std::string& heading) {
     if (inside && hashes > 0 && hashes <= level && hashes != std::string::npos && line[hashes] == ' ') break;
     if (inside) body.push_back(line);
   }
+  INFO(file << " has no section " << heading);
   REQUIRE(!body.empty());
   return body;
 }
@@ -48,7 +50,7 @@ std::vector<std::string> section(const std::string& heading) {
 std::vector<std::string> option_cells() {
   std::vector<std::string> cells;
   bool table = false;
-  for (const auto& line : section("## Planning with `acoplan`")) {
+  for (const auto& line : section("docs/planning.md", "## Options")) {
     if (line == "| option | meaning |") {
       table = true;
       continue;
@@ -79,13 +81,13 @@ std::set<std::string> help_options() {
 
 }  // namespace
 
-TEST_CASE("README's option table names every option of acoplan --help", "[readme]") {
+TEST_CASE("docs/planning.md's option table names every option of acoplan --help", "[readme]") {
   std::set<std::string> documented;
   const std::regex option(R"(--([a-z0-9<][a-z0-9.<>-]*))");
   for (const auto& cell : option_cells())
     for (std::sregex_iterator it(cell.begin(), cell.end(), option), end; it != end; ++it) documented.insert((*it)[1]);
   for (const auto& name : help_options()) {
-    INFO("--" << name << " is in acoplan --help but not in README.md's option table (\"Planning with acoplan\")");
+    INFO("--" << name << " is in acoplan --help but not in docs/planning.md's option table (\"Options\")");
     const auto dot = name.find('.');
     if (dot == std::string::npos) {
       CHECK(documented.count(name) == 1);
@@ -100,7 +102,7 @@ TEST_CASE("README's option table names every option of acoplan --help", "[readme
   const auto options = help_options();
   for (const auto& name : documented) {
     if (name.find('.') != std::string::npos) continue;
-    INFO("--" << name << " is in README.md's option table but not in acoplan --help");
+    INFO("--" << name << " is in docs/planning.md's option table but not in acoplan --help");
     CHECK(options.count(name) == 1);
   }
 }
@@ -109,7 +111,7 @@ TEST_CASE("README's Layout describes every top-level folder and no other", "[rea
   std::set<std::string> described;
   const std::regex entry(R"(^([A-Za-z0-9._-]+)/\s)");
   std::smatch match;
-  for (const auto& line : section("## Layout"))
+  for (const auto& line : section("README.md", "## Layout"))
     if (std::regex_search(line, match, entry)) described.insert(match[1]);
   // Folders that are not the project's: git's own and what .gitignore keeps out at the top (build/).
   std::set<std::string> ignored{".git"};

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerates the figures README.md and docs/results.md quote, and the pictures in docs/images/.
+"""Regenerates the figures the pages of docs/ quote, and the pictures in docs/images/.
 
 Each figure lives in a region of a tracked Markdown file between two markers,
 
@@ -42,7 +42,12 @@ ACOPLAN = BUILD / "hosts/acoplan/acoplan"
 ACOBENCH = BUILD / "hosts/acobench/acobench"
 ACOSIM = BUILD / "hosts/acosim/acosim"
 ACO_BENCH = BUILD / "bench/aco_bench"
-README = Path("README.md")
+# The pages whose figures the sections write (and data/experiments/README.md, docs/learning.md).
+BENCHMARKS = Path("docs/benchmarks.md")
+LARGE_MAPS = Path("docs/large-maps.md")
+BASELINES = Path("docs/baseline-planners.md")
+STUDIES = Path("docs/studies.md")
+GETTING_STARTED = Path("docs/getting-started.md")
 RESULTS = Path("docs/results.md")
 IMAGES = Path("docs/images")
 
@@ -269,7 +274,7 @@ def aco_bench(run: Run, only: str, *extra) -> str:
 
 
 @section("engine", "10 s", "the colony's speed on classic map1 against exact A*",
-         [(README, "engine")])
+         [(BENCHMARKS, "engine")])
 def engine(run: Run):
     c = parse_classic(aco_bench(run, "classic"))
     astar = json.loads(run.tool(ACOPLAN, "--planner", "astar", "--scen", "data/maps/classic20/map1.txt.scen",
@@ -284,11 +289,11 @@ def engine(run: Run):
     text = (run.stamp() + "\n\nClassic map1, corner cutting, 50 ants x 100 iterations, alpha 1, beta 7, 1 thread, medians "
             "of 30 runs (seeds 1-30); ns per ant step = total time / moves made by all ants; A\\* on the same graph:\n\n"
             + table(["update", "median run", "ns per ant step", "time / Ant System", "time / A\\*", "mean length"], rows))
-    return {(README, "engine"): text}
+    return {(BENCHMARKS, "engine"): text}
 
 
 @section("plugins", "20 s", "each plugin's cost per ant step against ant_system, two benchmark runs",
-         [(README, "plugins")])
+         [(BENCHMARKS, "plugins")])
 def plugins(run: Run):
     runs = [parse_classic(aco_bench(run, "classic")) for _ in range(2)]
     names = [n for n in runs[0]["plugins"] if n != "(baseline)"]
@@ -301,11 +306,11 @@ def plugins(run: Run):
             f"`smoother/prune` runs once per plan: {span([r['prune_us'] for r in runs], 1)} us on the "
             f"{runs[0]['prune_cells']}-cell map1 path.\n\n"
             + table(["slot/plugin", "ns per step / ant_system's", "mean length"], rows))
-    return {(README, "plugins"): text}
+    return {(BENCHMARKS, "plugins"): text}
 
 
 @section("terrain-fireworks", "15 s", "plain ACO and EPF on paper 000's terrains, fireworks seeding",
-         [(README, "terrain-fireworks")])
+         [(BENCHMARKS, "terrain-fireworks")])
 def terrain_fireworks(run: Run):
     t = parse_terrain(aco_bench(run, "terrain,fireworks"))
     rows = []
@@ -326,10 +331,10 @@ def terrain_fireworks(run: Run):
                      "step cost / plain's", "mean length", "mean gap"], rows)
             + f"\n\nFireworks seeding (IFWA with paper 004's settings on `data/terrain/paper004.map`, corner cutting, 1 "
             f"thread, median of 30): {f['median']:.1f} ms, {f['us']:.0f} us per evaluation, mean best length {f['length']:.2f}.")
-    return {(README, "terrain-fireworks"): text}
+    return {(BENCHMARKS, "terrain-fireworks"): text}
 
 
-@section("large", "30 s", "1 against 2 threads on Moving AI's Berlin_0_512", [(README, "large")])
+@section("large", "30 s", "1 against 2 threads on Moving AI's Berlin_0_512", [(BENCHMARKS, "large")])
 def large(run: Run):
     d = parse_large(aco_bench(run, "large"))
     one, two = d["rows"][1], d["rows"][2]
@@ -349,11 +354,11 @@ def large(run: Run):
              f"the slowest of the generated 512x512 scenarios, seeds 1-3: {ms['1'] / 1000:.2f} s per run with 1 thread, "
              f"{ms['2'] / 1000:.2f} s with 2 (median), speedup {ms['1'] / ms['2']:.2f}; the same lengths: "
              f"{'yes' if same else 'NO (a bug)'}.")
-    return {(README, "large"): text}
+    return {(BENCHMARKS, "large"): text}
 
 
 @section("large-plugins", "5 min", "every plugin and engine option per ant step on Berlin_0_512",
-         [(README, "large-plugins")])
+         [(LARGE_MAPS, "large-plugins")])
 def large_plugins(run: Run):
     out = aco_bench(run, "large-plugins", "--large-plugin-repeats", "3")
     rows, bases, current = [], {}, ""
@@ -382,11 +387,11 @@ def large_plugins(run: Run):
                      for n in names])
             + f"\n\nThe recommended pipeline (`data/presets/robust.ini`): {robust[1]} ms with 1 thread, {robust[2]} ms with 2, "
             f"speedup {robust[3]}, results {'bit-identical' if robust[4] == 'yes' else 'DIFFERENT (a bug)'}.")
-    return {(README, "large-plugins"): text}
+    return {(LARGE_MAPS, "large-plugins"): text}
 
 
 @section("throughput", "2-4 min", "acobench trials per second, worker processes against --in-process",
-         [(README, "throughput")])
+         [(BENCHMARKS, "throughput")])
 def throughput(run: Run):
     rates = {"workers": [], "in-process": []}
     with tempfile.TemporaryDirectory() as tmp:
@@ -404,7 +409,7 @@ def throughput(run: Run):
             f"100 iterations, Ant System) on {os.cpu_count()} threads, every trial committed to the results database, twice "
             f"in each mode, in turn: in worker processes (the default) {span(w, 0)} trials per second, `--in-process` "
             f"{span(p, 0)}: the workers run at {span([a / b for a, b in zip(w, p)], 2)} times the in-process rate.")
-    return {(README, "throughput"): text}
+    return {(BENCHMARKS, "throughput"): text}
 
 
 PAPER004 = ["--scen", "data/terrain/paper004.map.scen", "--corner-cutting", "--repeat", "10", "--json"]
@@ -413,7 +418,7 @@ PAPER004_ACO = ["--preset", "ant-system", "--ants", "50", "--iterations", "50", 
                 "--update.rho", "0.5", "--update.q", "5"]
 
 
-@section("baselines", "5 s", "IFWA, PSO, Ant System and the hybrid on paper004.map", [(README, "baselines")])
+@section("baselines", "5 s", "IFWA, PSO, Ant System and the hybrid on paper004.map", [(BASELINES, "baselines")])
 def baselines(run: Run):
     configs = {
         "ifwa": ("`--planner ifwa`", ["--planner", "ifwa"]),
@@ -443,17 +448,17 @@ def baselines(run: Run):
             "(`--repeat 10`); length mean +- standard deviation; time per run also as a multiple of Ant System's:\n\n"
             + table(["planner", "solved", "length", "best at iteration (mean)", "time per run", "time / Ant System's"], rows)
             + "\n\n" + verdict)
-    return {(README, "baselines"): text}
+    return {(BASELINES, "baselines"): text}
 
 
 @section("default-pipeline", "3-5 min", "the bare command on fresh maps (tools/default-pipeline-check.sh 7321)",
-         [(README, "default-pipeline")])
+         [(LARGE_MAPS, "default-pipeline")])
 def default_pipeline(run: Run):
     out = run.tool("tools/default-pipeline-check.sh", "7321")
     lines = [l for l in out.splitlines() if l.startswith("|")]
     if not lines:
         raise FiguresError("tools/default-pipeline-check.sh printed no table")
-    # The check prints option names bare; the README writes them as code.
+    # The check prints option names bare; the page writes them as code.
     lines = [re.sub(r"(?<![-\w])(--[a-z][a-z-]*(?: [a-z][a-z-]*)?)", r"`\1`", l) for l in lines]
     # The colony beats its null models where its mean and worst gap are below both twins'.
     cells = [[c.strip() for c in l.strip("|").split("|")] for l in lines[2:]]
@@ -469,7 +474,7 @@ def default_pipeline(run: Run):
     text = (run.stamp() + "\n\n" + "\n".join(lines) + "\n\n" + verdict[0].upper() + verdict[1:]
             + " (where it does, the pheromone matters on these maps; on other map shapes it may not: "
             "docs/learning-findings.md).")
-    return {(README, "default-pipeline"): text}
+    return {(LARGE_MAPS, "default-pipeline"): text}
 
 
 # The report's plots that go beside an experiment's tables (file names in build/results/NAME/plots/).
@@ -553,22 +558,22 @@ def timed_experiment(run: Run, experiment: Path, tmp: Path) -> tuple[int, float]
     return int(m[1]), seconds
 
 
-README_EXAMPLE = "name: my-study"  # the first line of the README's example experiment
+STUDIES_EXAMPLE = "name: my-study"  # the first line of docs/studies.md's example experiment
 
 
 @section("durations", "6 min", "how long the example experiments and the fast tests take",
-         [(README, "paper003-time"), (README, "paper001-time"), (README, "example-time"), (README, "fast-tests"),
+         [(STUDIES, "paper003-time"), (STUDIES, "paper001-time"), (STUDIES, "example-time"), (GETTING_STARTED, "fast-tests"),
           (Path("data/experiments/README.md"), "paper003-time"), (Path("docs/learning.md"), "learning-time")])
 def durations(run: Run):
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
         times = {name: timed_experiment(run, Path(f"data/experiments/{name}.yaml"), tmp)
                  for name in ("paper003", "paper001", "learning")}
-        # The README's example names its maps relative to data/experiments/: run it from a copy of
+        # docs/studies.md's example names its maps relative to data/experiments/: run it from a copy of
         # that layout.
-        block = re.search(r"^```yaml\n(" + re.escape(README_EXAMPLE) + r"\n.*?)^```", (ROOT / README).read_text(), re.M | re.S)
+        block = re.search(r"^```yaml\n(" + re.escape(STUDIES_EXAMPLE) + r"\n.*?)^```", (ROOT / STUDIES).read_text(), re.M | re.S)
         if not block:
-            raise FiguresError(f"README.md: no yaml block starting '{README_EXAMPLE}'; update tools/figures.py")
+            raise FiguresError(f"{STUDIES}: no yaml block starting '{STUDIES_EXAMPLE}'; update tools/figures.py")
         (tmp / "experiments").mkdir()
         for folder in ("maps", "presets", "scenarios", "terrain"):
             (tmp / folder).symlink_to(ROOT / "data" / folder)
@@ -582,14 +587,14 @@ def durations(run: Run):
     if not passed or passed[1] != "0":
         raise FiguresError("ctest -L fast: not every test passed")
     said = {name: f"{trials:,} trials, {about(seconds)} on 2 threads" for name, (trials, seconds) in times.items()}
-    return {(README, "paper003-time"): said["paper003"], (README, "paper001-time"): said["paper001"],
-            (README, "example-time"): said["example"], (Path("data/experiments/README.md"), "paper003-time"): said["paper003"],
+    return {(STUDIES, "paper003-time"): said["paper003"], (STUDIES, "paper001-time"): said["paper001"],
+            (STUDIES, "example-time"): said["example"], (Path("data/experiments/README.md"), "paper003-time"): said["paper003"],
             (Path("docs/learning.md"), "learning-time"): said["learning"],
-            (README, "fast-tests"): f"{int(passed[2])} tests, {about(seconds)} with `-j2`"}
+            (GETTING_STARTED, "fast-tests"): f"{int(passed[2])} tests, {about(seconds)} with `-j2`"}
 
 
 @section("pictures", "15 s", "the SVGs of docs/images/: a route, a terrain, an acosim run, report plots",
-         [(README, "pictures")])
+         [(BENCHMARKS, "pictures")])
 def pictures(run: Run):
     (ROOT / IMAGES).mkdir(parents=True, exist_ok=True)
     # A scenario whose best length falls over the iterations, so that the convergence chart shows it.
@@ -609,22 +614,22 @@ def pictures(run: Run):
         shutil.copy(plot, ROOT / IMAGES / f"report-{kind}.svg")
     sizes = sorted((p.stat().st_size, p) for p in (ROOT / IMAGES).rglob("*.svg"))
     total = sum(s for s, _ in sizes)
-    return {(README, "pictures"): run.stamp() + f"\n\n{len(sizes)} pictures in `docs/images/`, {total / 1024:.0f} KiB in all."}
+    return {(BENCHMARKS, "pictures"): run.stamp() + f"\n\n{len(sizes)} pictures in `docs/images/`, {total / 1024:.0f} KiB in all."}
 
 
-# The configurations the README's large-map table shows, per experiment (None: every one).
+# The configurations docs/large-maps.md's table shows, per experiment (None: every one).
 LARGE_MAP_CONFIGS = {"movingai": ["default", "robust preset"], "generated": None, "terrain": None}
 
 
 def map_group(experiment: str, problem: str) -> str:
-    """The group a problem's map belongs to in the README's table: the Moving AI map, the generated
+    """The group a problem's map belongs to in docs/large-maps.md's table: the Moving AI map, the generated
     map's kind and size (random64-25-s2#3 -> random64), the terrain's size (hills40#s101a -> hills40)."""
     name = problem.split("#")[0]
     return name.split("-")[0] if experiment == "generated" else name
 
 
-@section("large-maps", "1 s", "the README's large-map table, from the movingai, terrain and generated databases",
-         [(README, "large-maps")])
+@section("large-maps", "1 s", "docs/large-maps.md's table, from the movingai, terrain and generated databases",
+         [(LARGE_MAPS, "large-maps")])
 def large_maps(run: Run):
     import csv
     rows = []
@@ -653,7 +658,7 @@ def large_maps(run: Run):
             "mean gap of the solved runs to the optimum in %, and time per run (the range of the maps' means / the "
             "slowest run), as the experiments measured them: their stamps in docs/results.md give the machine and its "
             "load then:\n\n" + table(["experiment", "configuration", "solved", "mean gap % by map", "time per run"], rows))
-    return {(README, "large-maps"): text}
+    return {(LARGE_MAPS, "large-maps"): text}
 
 
 # ---------------------------------------------------------------------------------------------

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the figures README.md and docs/results.md quote, and the pictures in docs/images/,
+# Regenerates the figures the pages of docs/ quote (docs/benchmarks.md, docs/results.md, ...) and the pictures in docs/images/,
 # section by section: each section replaces only its own regions (between
 # <!-- figures:NAME begin ... --> and <!-- figures:NAME end -->) and stamps them with the machine,
 # its load, the date, the commit and the commands it ran.

@@ -65,7 +65,7 @@ class ReplaceRegions(unittest.TestCase):
             figures.replace_regions(page + page, {"t": "x"}, "durations", "README.md")
 
     def test_every_section_names_its_regions_in_the_tracked_files(self):
-        # The tracked README.md and docs/results.md hold every region a section writes.
+        # The tracked pages (docs/*.md, data/experiments/README.md) hold every region a section writes.
         for section in figures.SECTIONS.values():
             for file, region in section.regions:
                 figures.find_region((figures.ROOT / file).read_text(), region, section.name, str(file))

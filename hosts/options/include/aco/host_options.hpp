@@ -15,7 +15,7 @@
 
 namespace aco {
 
-// The exit statuses of every command; README's "Exit status" table explains them.
+// The exit statuses of every command; docs/planning.md's "Exit status" table explains them.
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitError = 1;  // the command failed; the message on stderr says why
 inline constexpr int kExitUsage = 2;  // aco-plugin-check, aco-new-plugin: the command line cannot be read

@@ -28,6 +28,17 @@ namespace test {
 
 std::filesystem::path data_dir() { return ACO_TEST_DATA_DIR; }
 
+std::vector<std::string> map1_acoplan_args(const std::string& plugin_dir, const std::vector<std::string>& more) {
+  std::vector<std::string> args{"--map",        (data_dir() / "maps/classic20/map1.txt").string(),
+                                "--start",      "0,0",
+                                "--goal",       "19,19",
+                                "--ants",       "10",
+                                "--iterations", "6",
+                                "--plugin-dir", plugin_dir};
+  args.insert(args.end(), more.begin(), more.end());
+  return args;
+}
+
 aco::OccupancyGrid classic_map(int n) {
   const auto file = data_dir() / "maps/classic20" / ("map" + std::to_string(n) + ".txt");
   std::ifstream in(file);

@@ -24,6 +24,8 @@ std::filesystem::path data_dir();  // the project's data/
 
 // data/maps/classic20/map<n>.txt, the 20x20 maps of the papers' MATLAB code.
 aco::OccupancyGrid classic_map(int n);
+// acoplan's arguments for a short run on classic map 1 with the plugins of `plugin_dir`, then `more`.
+std::vector<std::string> map1_acoplan_args(const std::string& plugin_dir, const std::vector<std::string>& more);
 
 // A map from rows of text: '#' blocked, anything else free. Row 0 is the top.
 aco::OccupancyGrid grid(const std::vector<std::string>& rows);

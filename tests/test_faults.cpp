@@ -26,14 +26,7 @@ std::string plugin(const std::string& slot, const std::string& name) {
 }
 
 std::vector<std::string> map1_run(const std::vector<std::string>& more) {
-  std::vector<std::string> args{"--map",        (test::data_dir() / "maps/classic20/map1.txt").string(),
-                                "--start",      "0,0",
-                                "--goal",       "19,19",
-                                "--ants",       "10",
-                                "--iterations", "6",
-                                "--plugin-dir", kFaulty};
-  args.insert(args.end(), more.begin(), more.end());
-  return args;
+  return test::map1_acoplan_args(kFaulty, more);
 }
 
 // acoplan ends with exit status 1 and exactly this message.

@@ -28,14 +28,7 @@ const std::string kFixtureFile = kFigures + "/aco_deadlock_figures.so";
 const std::string kIteration = " (0-based, as Context::iteration)";
 
 std::vector<std::string> map1_run(const std::vector<std::string>& more) {
-  std::vector<std::string> args{"--map",        (test::data_dir() / "maps/classic20/map1.txt").string(),
-                                "--start",      "0,0",
-                                "--goal",       "19,19",
-                                "--ants",       "10",
-                                "--iterations", "6",
-                                "--plugin-dir", kFigures};
-  args.insert(args.end(), more.begin(), more.end());
-  return args;
+  return test::map1_acoplan_args(kFigures, more);
 }
 
 nlohmann::json acoplan_json(const std::vector<std::string>& args) {

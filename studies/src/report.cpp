@@ -727,8 +727,9 @@ std::unique_ptr<aco::Map> load_problem_map(const Analysis& a, const ProblemRecor
   const auto setup = nlohmann::json::parse(problem.setup_json);
   aco::Keys keys{{"map", (a.experiment_dir / setup.at("map").get<std::string>()).string()}};
   if (setup.contains("map-format")) keys["map-format"] = setup.at("map-format").get<std::string>();
-  for (const auto& [name, value] : setup.value("map-parameters", nlohmann::json::object()).items())
-    keys["map." + name] = value.get<std::string>();
+  // Held by name: items() of a temporary would dangle in the loop.
+  const nlohmann::json map_parameters = setup.value("map-parameters", nlohmann::json::object());
+  for (const auto& [name, value] : map_parameters.items()) keys["map." + name] = value.get<std::string>();
   const auto run = nlohmann::json::parse(config.settings_json).value("run", nlohmann::json::object());
   for (const aco::ParamSpec& terrain : aco::problem_parameters())
     if (run.contains(terrain.name) && run.at(terrain.name).is_number())

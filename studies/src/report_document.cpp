@@ -11,6 +11,9 @@ template <class... F>
 struct Overloaded : F... {
   using F::operator()...;
 };
+// Clang 14 (the fuzz preset) deduces no aggregate's template arguments without it.
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
 
 void markdown_table(std::ostringstream& md, const Table& t) {
   md << "## " << t.title << "\n\n";

@@ -227,8 +227,8 @@ cat > "$work/library_user/main.cpp" <<'CPP'
 
 int main(int, char** argv) {
   aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
-  const acosim::Scenario scenario = acosim::load_scenario(argv[1], registry);
-  std::cout << acosim::summary_json(scenario, acosim::simulate(scenario, registry), registry) << "\n";
+  const aco::simulation::Scenario scenario = aco::simulation::load_scenario(argv[1], registry);
+  std::cout << aco::simulation::summary_json(scenario, aco::simulation::simulate(scenario, registry), registry) << "\n";
 }
 CPP
 cmake -S "$work/library_user" -B "$work/library_user/build" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null

@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <map>
-#include <regex>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -42,23 +42,34 @@ std::string unescaped(std::string text) {
   return text;
 }
 
+// The text between `open` and the next `close` from `at` on (`at` moves past it), if it comes
+// before `limit`. Plain searches: std::regex recurses once per character and overflows the stack
+// on a page of plots.
+std::optional<std::string> next_between(const std::string& text, std::size_t& at, const std::string& open,
+                                        const std::string& close, std::size_t limit = std::string::npos) {
+  const std::size_t from = text.find(open, at);
+  if (from == std::string::npos || from >= limit) return std::nullopt;
+  const std::size_t to = text.find(close, from + open.size());
+  if (to == std::string::npos) return std::nullopt;
+  at = to + close.size();
+  return text.substr(from + open.size(), to - from - open.size());
+}
+
 // HTML's tables by the <h2> above them.
 std::map<std::string, Cells> html_tables(const std::string& html) {
   std::map<std::string, Cells> tables;
-  const std::regex heading("<h2>(.*?)</h2>"), table("<table>([\\s\\S]*?)</table>"), row("<tr>(.*?)</tr>"),
-      cell("<t[hd]>(.*?)</t[hd]>");
-  for (auto h = std::sregex_iterator(html.begin(), html.end(), heading); h != std::sregex_iterator(); ++h) {
-    const auto after = html.begin() + h->position() + h->length();
-    const auto next = html.find("<h2>", h->position() + h->length());
-    std::smatch t;
-    if (!std::regex_search(after, next == std::string::npos ? html.end() : html.begin() + next, t, table)) continue;
-    Cells& cells = tables[unescaped((*h)[1])];
-    const std::string body = t[1];
-    for (auto r = std::sregex_iterator(body.begin(), body.end(), row); r != std::sregex_iterator(); ++r) {
+  std::size_t at = 0;
+  while (const auto title = next_between(html, at, "<h2>", "</h2>")) {
+    const std::size_t next_heading = html.find("<h2>", at);
+    const auto table = next_between(html, at, "<table>", "</table>", next_heading);
+    if (!table) continue;
+    Cells& cells = tables[unescaped(*title)];
+    std::size_t in_table = 0;
+    while (const auto row = next_between(*table, in_table, "<tr>", "</tr>")) {
       std::vector<std::string> values;
-      const std::string text = (*r)[1];
-      for (auto c = std::sregex_iterator(text.begin(), text.end(), cell); c != std::sregex_iterator(); ++c)
-        values.push_back(unescaped((*c)[1]));
+      std::size_t in_row = 0;
+      for (std::optional<std::string> cell; (cell = next_between(*row, in_row, "<t", "</t"));)
+        values.push_back(unescaped(cell->substr(cell->find('>') + 1)));
       cells.push_back(values);
     }
   }

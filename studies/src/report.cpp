@@ -719,11 +719,10 @@ std::vector<Figure> anytime_charts(const Analysis& a, std::size_t p, FigureFiles
   return figures;
 }
 
-// The problem's map as the configuration's trials planned on it: the file and reader the problem
-// recorded, with the terrain options of the configuration's run (max-slope decides which cells of
-// a height map are blocked, cell-size where a path's points lie).
-std::unique_ptr<aco::Map> load_problem_map(const Analysis& a, const ProblemRecord& problem,
-                                           const ConfigRecord& config) {
+// The keys of the problem's map as the configuration's trials planned on it: the file, reader and
+// map parameters the problem recorded, with the terrain options of the configuration's run
+// (max-slope decides which cells of a height map are blocked, cell-size where a path's points lie).
+aco::Keys problem_map_keys(const Analysis& a, const ProblemRecord& problem, const ConfigRecord& config) {
   const auto setup = nlohmann::json::parse(problem.setup_json);
   aco::Keys keys{{"map", (a.experiment_dir / setup.at("map").get<std::string>()).string()}};
   if (setup.contains("map-format")) keys["map-format"] = setup.at("map-format").get<std::string>();
@@ -735,7 +734,7 @@ std::unique_ptr<aco::Map> load_problem_map(const Analysis& a, const ProblemRecor
     if (run.contains(terrain.name) && run.at(terrain.name).is_number())
       keys[terrain.name] = run.at(terrain.name).dump();
   keys.erase("scen-index");
-  return aco::load_problem_map(aco::resolve_problem(keys, *a.registry), a.registry);
+  return keys;
 }
 
 // Whether two maps draw alike: the same cells blocked, the same cell size.
@@ -748,37 +747,46 @@ bool same_picture(const aco::Map& x, const aco::Map& y) {
 }
 
 // The problem's map with each configuration's best path: one picture per map the configurations
-// planned on (terrain options that block other cells of a height map make another).
+// planned on (terrain options that block other cells of a height map make another). Each set of
+// map keys is loaded once: configurations with the same terrain options share the map.
 std::vector<Figure> path_pictures(const Analysis& a, std::size_t p, FigureFiles& files) {
-  std::vector<std::pair<std::unique_ptr<aco::Map>, std::vector<MapPath>>> pictures;
+  struct Picture {
+    std::vector<aco::Keys> keys;  // every set of map keys that loads a map drawn alike
+    std::unique_ptr<aco::Map> map;
+    std::vector<MapPath> paths;
+  };
+  std::vector<Picture> pictures;
+  const auto picture_of = [&](const ConfigRecord& config) -> Picture& {
+    aco::Keys keys = problem_map_keys(a, a.problems[p], config);
+    for (Picture& picture : pictures)
+      if (std::find(picture.keys.begin(), picture.keys.end(), keys) != picture.keys.end()) return picture;
+    auto map = aco::load_problem_map(aco::resolve_problem(keys, *a.registry), a.registry);
+    for (Picture& picture : pictures)
+      if (same_picture(*picture.map, *map)) {
+        picture.keys.push_back(std::move(keys));
+        return picture;
+      }
+    return pictures.emplace_back(Picture{{std::move(keys)}, std::move(map), {}});
+  };
+  std::vector<std::pair<const ConfigRecord*, MapPath>> paths;
   for (const Result& r : a.results[p]) {
     if (!r.best) continue;
-    std::unique_ptr<aco::Map> map;
-    try {
-      map = load_problem_map(a, a.problems[p], a.configs[r.config].second);
-    } catch (const std::exception& e) {
-      return {{"", "", "map not drawn: " + std::string(e.what())}};
-    }
     MapPath path{
         a.configs[r.config].second.name + " " + fixed(r.best->length, 2), static_cast<std::size_t>(r.config), {}};
     for (const auto& point : nlohmann::json::parse(r.best->path_json))
       path.points.push_back({point[0].get<double>(), point[1].get<double>()});
-    auto same = std::find_if(pictures.begin(), pictures.end(),
-                             [&](const auto& picture) { return same_picture(*picture.first, *map); });
-    if (same == pictures.end()) same = pictures.emplace(pictures.end(), std::move(map), std::vector<MapPath>{});
-    same->second.push_back(std::move(path));
+    paths.emplace_back(&a.configs[r.config].second, std::move(path));
   }
-  // A problem no configuration solved still shows its map.
-  if (pictures.empty() && !a.configs.empty()) {
-    try {
-      pictures.emplace_back(load_problem_map(a, a.problems[p], a.configs.front().second), std::vector<MapPath>{});
-    } catch (const std::exception& e) {
-      return {{"", "", "map not drawn: " + std::string(e.what())}};
-    }
+  try {
+    for (auto& [config, path] : paths) picture_of(*config).paths.push_back(std::move(path));
+    // A problem no configuration solved still shows its map.
+    if (pictures.empty() && !a.configs.empty()) picture_of(a.configs.front().second);
+  } catch (const std::exception& e) {
+    return {{"", "", "map not drawn: " + std::string(e.what())}};
   }
   std::vector<Figure> figures;
-  for (const auto& [map, paths] : pictures)
-    figures.push_back(files.add("paths-" + a.problems[p].name, map_paths_svg(*map, paths)));
+  for (const Picture& picture : pictures)
+    figures.push_back(files.add("paths-" + a.problems[p].name, map_paths_svg(*picture.map, picture.paths)));
   return figures;
 }
 

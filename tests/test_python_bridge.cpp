@@ -89,10 +89,18 @@ TEST_CASE("python plugins give the same run on 1 and 2 threads", "[python][acopl
 }
 
 TEST_CASE("a python update sees the context and the iteration as the engine has them", "[python][acoplan]") {
-  // bridge_fixtures.Checks asserts on each call: any failure would end the run with exit 1.
-  const auto r = test::acoplan({"--map", classic_map(1), "--start", "0,0", "--goal", "19,19", "--ants", "6",
-                                "--iterations", "4", "--seed", "9", "--update", "python", "--update.class",
-                                "bridge_fixtures:Checks", "--update.path", fixtures});
+  // bridge_fixtures.checks asserts on each call: any failure would end the run with exit 1. Two
+  // repeats on one Python object: its begin_run() starts each run afresh (seeds 9 and 10).
+  const auto r = test::acoplan({"--map",          classic_map(1),
+                                "--start",        "0,0",
+                                "--goal",         "19,19",
+                                "--ants",         "6",
+                                "--iterations",   "4",
+                                "--seed",         "9",
+                                "--repeat",       "2",
+                                "--update",       "python",
+                                "--update.class", "bridge_fixtures:checks",
+                                "--update.path",  fixtures});
   INFO(r.err);
   CHECK(r.exit_code == 0);
 }

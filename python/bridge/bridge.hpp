@@ -26,8 +26,8 @@ class Object {
  public:
   virtual ~Object() = default;
   // object.method(context, field), or object.method(context, iteration, field) when `iteration`
-  // is given. `field` goes over as a writable float64 array on its memory, which the method
-  // fills in place (or it returns a float64 array of the same length, copied in).
+  // is given, or object.method(context) when `field` is empty (begin_run). `field` goes over as a writable float64
+  // array on its memory, which the method fills in place (or it returns a float64 array of the same length, copied in).
   virtual void call(const char* method, const Context& context, const Iteration* iteration,
                     std::span<double> field) = 0;
   virtual bool has(const char* method) const = 0;
@@ -46,8 +46,16 @@ template <class Interface>
 class Adapter : public Interface {
  protected:
   Adapter(const std::string& slot, const ParameterValues& values, std::initializer_list<const char*> required)
-      : object_(make_object(slot, values, required)) {}
+      : object_(make_object(slot, values, required)), has_begin_run_(object_->has("begin_run")) {}
+  // The object's optional begin_run(self, context): where it resets what it keeps from a run, since
+  // one object may serve several runs (the lifecycle of docs/writing-plugins.md).
+  void begin_run(const Context& context) override {
+    if (has_begin_run_) object_->call("begin_run", context, nullptr, {});
+  }
   std::unique_ptr<Object> object_;
+
+ private:
+  bool has_begin_run_;
 };
 
 // The helper's entry point (dlsym name "aco_python_make_object").

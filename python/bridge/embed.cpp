@@ -81,9 +81,16 @@ class PythonObject final : public Object {
   void call(const char* method, const Context& context, const Iteration* iteration, std::span<double> field) override {
     py::gil_scoped_acquire gil;
     try {
-      const py::object owner = py::capsule(field.data(), "aco engine memory");
-      py::array values(py::dtype::of<double>(), {static_cast<py::ssize_t>(field.size())}, {}, field.data(), owner);
+      // The arrays are views whose owner is a capsule: over the field, or (no field) the graph.
+      const bool has_field = field.data() != nullptr;
+      const py::object owner =
+          py::capsule(has_field ? static_cast<const void*>(field.data()) : context.graph, "aco engine memory");
       const py::object c = make_context(context, owner);
+      if (!has_field) {
+        object_.attr(method)(c);
+        return;
+      }
+      py::array values(py::dtype::of<double>(), {static_cast<py::ssize_t>(field.size())}, {}, field.data(), owner);
       const py::object result = iteration ? object_.attr(method)(c, make_iteration(*iteration, owner), values)
                                           : object_.attr(method)(c, values);
       write_back(method, result, values, field.size());

@@ -1,16 +1,10 @@
 #pragma once
-// The error boundary between the host and a plugin. Whatever a plugin throws, from its factory or
-// from any hook, on any thread (a std::exception or not: `throw 42`), leaves it as an aco::Error
-// that names the slot, the plugin, its file, the hook and the iteration, so a host reports it and
-// exits 1 (or acobench records the trial as failed) instead of std::terminate.
+// Which plugin call a thread is in, and how messages name a plugin, a hook and an iteration.
+// In the core library because what a plugin calls back (Context::record(), add()) needs to know
+// which plugin called; the boundary itself, a decorator per slot, is the engine's
+// (aco/plugin_guard.hpp).
 #include <cstddef>
-#include <memory>
 #include <string>
-
-#include "aco/error.hpp"
-#include "aco/map_reader.hpp"
-#include "aco/slots.hpp"
-#include "aco/strategies.hpp"
 
 namespace aco {
 
@@ -63,20 +57,9 @@ std::string describe_hook(const char* hook, int iteration);
 // "plugin update/max_min (FILE)" (the file left out when unknown).
 std::string describe(const PluginIdentity& who);
 
-// "plugin update/max_min (FILE)" for a plugin made by the registry (behind the guard); "the
-// update plugin" (the slot given) for an object made otherwise, such as a test's own strategy.
-std::string describe_plugin(const Strategy& plugin, const char* slot);
-
 // Throws the Error for the exception being handled, thrown by `who` in `hook` (iteration < 0:
 // none to name); a PluginFault, which names the plugin already, passes unchanged. Call inside a
 // catch block only.
 [[noreturn]] void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration = -1);
-
-// `plugin` behind a decorator of its interface that calls it inside the boundary: one per slot.
-// (A map reader's Map is not behind it: its methods run in the graph's hot loops.)
-#define ACO_DECLARE_GUARD_(NAME, INTERFACE) \
-  std::unique_ptr<INTERFACE> guard(std::unique_ptr<INTERFACE> plugin, PluginIdentity who);
-ACO_SLOTS(ACO_DECLARE_GUARD_)
-#undef ACO_DECLARE_GUARD_
 
 }  // namespace aco

@@ -53,7 +53,7 @@ Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::
     settings.seed = same_seed ? 1 : static_cast<std::uint64_t>(i + 1);
     const auto began = std::chrono::steady_clock::now();
     arena.execute([&] {
-      t.last = aco::run_colony(registry, spec, pipeline, graph, graph.node(start), graph.node(goal), settings);
+      t.last = aco::run_pipeline(registry, spec, pipeline, graph, graph.node(start), graph.node(goal), settings);
     });
     const double elapsed = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
     ms.push_back(elapsed);

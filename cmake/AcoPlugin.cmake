@@ -1,9 +1,9 @@
-# aco_add_plugin(<kind> <name> <sources>...)
-# Builds one plugin as its own shared library, aco_<kind>_<name>.so. Plugins hide every symbol
+# aco_add_plugin(<slot> <name> <sources>...)
+# Builds one plugin as its own shared library, aco_<slot>_<name>.so. Plugins hide every symbol
 # but the Boost.DLL descriptor alias. Used by this project and, after installation, by
 # out-of-tree plugin projects (find_package(aco) provides it).
-function(aco_add_plugin kind name)
-  set(target aco_${kind}_${name})
+function(aco_add_plugin slot name)
+  set(target aco_${slot}_${name})
   add_library(${target} MODULE ${ARGN})
   target_link_libraries(${target} PRIVATE aco::aco)
   if(DEFINED ACO_BUILD_PLUGIN_DIR)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SDK check: install the framework into a temporary prefix, then with the installed tools only:
-# scaffold one out-of-tree plugin of every kind with aco-new-plugin, build them and run their
+# scaffold one out-of-tree plugin of every slot with aco-new-plugin, build them and run their
 # generated unit tests, build examples/ against the prefix and run their tests, run
 # aco-plugin-check on the example and on every installed bundled plugin, and plan with all of
 # them in installed acoplan (acosim's local slot included), and link the installed libraries
@@ -27,18 +27,18 @@ for tool in acoplan aco-new-plugin aco-plugin-check aco-irace; do
   [ -n "$("$bin/$tool" --help)" ] || { echo "sdk: $tool --help printed nothing" >&2; exit 1; }
 done
 
-# One scaffold of every kind, built together, each with its generated unit test.
+# One scaffold of every slot, built together, each with its generated unit test.
 mkdir -p "$work/plugins"
 printf 'cmake_minimum_required(VERSION 3.25)\nproject(my_plugins LANGUAGES CXX)\nenable_testing()\n' > "$work/plugins/CMakeLists.txt"
-for kind in init heuristic update deadlock smoother local map; do
-  "$bin/aco-new-plugin" "$kind" "my_$kind" "$work/plugins/$kind" >/dev/null
-  echo "add_subdirectory($kind)" >> "$work/plugins/CMakeLists.txt"
+for slot in init heuristic update deadlock smoother local map; do
+  "$bin/aco-new-plugin" "$slot" "my_$slot" "$work/plugins/$slot" >/dev/null
+  echo "add_subdirectory($slot)" >> "$work/plugins/CMakeLists.txt"
 done
 cmake -S "$work/plugins" -B "$work/build" -DCMAKE_PREFIX_PATH="$prefix" "${flags[@]}" >/dev/null
 cmake --build "$work/build" -j 2 >/dev/null
 ctest --test-dir "$work/build" --output-on-failure > "$work/scaffold-tests.log" || { cat "$work/scaffold-tests.log" >&2; exit 1; }
 grep -q "100% tests passed, 0 tests failed out of 14" "$work/scaffold-tests.log"
-# Each Catch2 case is a ctest test labelled with its tags: the conformance case of each kind.
+# Each Catch2 case is a ctest test labelled with its tags: the conformance case of each slot.
 [ "$(ctest --test-dir "$work/build" -N -L conformance | grep -c "Test *#")" = 7 ]
 [ "$(ctest --test-dir "$work/build" -N -L update | grep -c "Test *#")" = 2 ]
 

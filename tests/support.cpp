@@ -291,7 +291,7 @@ aco::ColonyResult run_on_thread_counts(const aco::Graph& graph, aco::NodeId star
     auto heuristic = make<aco::Heuristic>("heuristic", plugins[1]);
     auto update = make<aco::PheromoneUpdate>("update", plugins[2], update_params);
     auto deadlock = make<aco::DeadlockPolicy>("deadlock", plugins[3]);
-    const aco::Pipeline pipeline{init.get(), heuristic.get(), update.get(), deadlock.get()};
+    const aco::ColonyStrategies pipeline{init.get(), heuristic.get(), update.get(), deadlock.get()};
     tbb::task_arena arena(threads);
     arena.execute([&] { results.push_back(aco::run_colony(graph, start, goal, pipeline, settings)); });
   }

@@ -35,10 +35,10 @@ aco::PluginRegistry& plugins();
 
 // One plugin instantiated with its defaults overridden by `params`.
 template <class Interface>
-std::unique_ptr<Interface> make(const std::string& kind, const std::string& name,
+std::unique_ptr<Interface> make(const std::string& slot, const std::string& name,
                                 const std::map<std::string, std::string>& params = {}) {
-  const auto& descriptor = plugins().load(kind, name);
-  return plugins().create<Interface>(kind, name, aco::resolve(descriptor.parameters(), params, kind + "."));
+  const auto& descriptor = plugins().load(slot, name);
+  return plugins().create<Interface>(slot, name, aco::resolve(descriptor.parameters(), params, slot + "."));
 }
 
 // A w x h map whose cells are blocked with a density drawn uniformly from [0, 0.4).
@@ -89,7 +89,7 @@ struct Baseline {
   std::unique_ptr<aco::Heuristic> heuristic = make<aco::Heuristic>("heuristic", "distance");
   std::unique_ptr<aco::PheromoneUpdate> update = make<aco::PheromoneUpdate>("update", "ant_system");
   std::unique_ptr<aco::DeadlockPolicy> deadlock = make<aco::DeadlockPolicy>("deadlock", "discard");
-  aco::Pipeline pipeline() { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
+  aco::ColonyStrategies pipeline() { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
 };
 
 // Wraps a real update rule and keeps a copy of every iteration's ants for inspection.

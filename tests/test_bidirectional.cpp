@@ -28,13 +28,13 @@ aco::ColonySettings bidirectional(int ants, int iterations, std::uint64_t seed =
 struct TwoColonies {
   Baseline forward, backward;
   RecordingUpdate forward_ants{*forward.update}, backward_ants{*backward.update};
-  aco::Pipeline forward_pipeline() {
-    aco::Pipeline p = forward.pipeline();
+  aco::ColonyStrategies forward_pipeline() {
+    aco::ColonyStrategies p = forward.pipeline();
     p.update = &forward_ants;
     return p;
   }
-  aco::Pipeline backward_pipeline() {
-    aco::Pipeline p = backward.pipeline();
+  aco::ColonyStrategies backward_pipeline() {
+    aco::ColonyStrategies p = backward.pipeline();
     p.update = &backward_ants;
     return p;
   }
@@ -63,7 +63,7 @@ TEST_CASE("every joined bidirectional path is a valid start-to-goal path", "[bid
       f_back = test::make<aco::DeadlockPolicy>("deadlock", "backtrack_penalty");
       b_back = test::make<aco::DeadlockPolicy>("deadlock", "backtrack_penalty");
     }
-    aco::Pipeline fp = c.forward_pipeline(), bp = c.backward_pipeline();
+    aco::ColonyStrategies fp = c.forward_pipeline(), bp = c.backward_pipeline();
     if (f_back) fp.deadlock = f_back.get(), bp.deadlock = b_back.get();
     const auto result = aco::run_colony(graph, start, goal, fp, bidirectional(12, 8, trial), &bp);
     REQUIRE(c.forward_ants.ants.size() == c.backward_ants.ants.size());
@@ -100,7 +100,7 @@ TEST_CASE("the bidirectional search is bit-identical for any thread count", "[bi
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
   for (int threads : {1, 2, 4}) {
     Baseline forward, backward;
-    const aco::Pipeline bp = backward.pipeline();
+    const aco::ColonyStrategies bp = backward.pipeline();
     tbb::task_arena arena(threads);
     arena.execute([&] {
       results.push_back(aco::run_colony(graph, graph.node({3, 3}), graph.node({44, 40}), forward.pipeline(),
@@ -123,7 +123,7 @@ TEST_CASE("the bidirectional search finds the classic map's paths and composes w
       return b.pipeline();
     };
     Baseline forward, backward;
-    const aco::Pipeline fp = make_pipeline(forward), bp = make_pipeline(backward);
+    const aco::ColonyStrategies fp = make_pipeline(forward), bp = make_pipeline(backward);
     aco::ColonySettings s = bidirectional(50, 60);
     if (std::string(update) == "acs") s.q0 = 0.7;
     const auto result = aco::run_colony(graph, 0, graph.node({19, 19}), fp, s, &bp);
@@ -138,7 +138,7 @@ TEST_CASE("the bidirectional search counts both ants of a pair as walks", "[bidi
   const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   Baseline forward, backward;
-  const aco::Pipeline bp = backward.pipeline();
+  const aco::ColonyStrategies bp = backward.pipeline();
   const auto result = aco::run_colony(graph, 0, graph.node({19, 19}), forward.pipeline(), bidirectional(9, 12), &bp);
   REQUIRE(result.iterations == 12);
   test::check_anytime_curves(result, 2u * 9u * 12u);
@@ -149,7 +149,7 @@ TEST_CASE("the bidirectional search refuses a missing or shared backward pipelin
   const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {});
   Baseline b;
-  const aco::Pipeline p = b.pipeline();
+  const aco::ColonyStrategies p = b.pipeline();
   CHECK_THROWS_WITH(aco::run_colony(graph, 0, graph.node({19, 19}), p, bidirectional(5, 2)),
                     Contains("second, complete set of strategy objects"));
   CHECK_THROWS_WITH(aco::run_colony(graph, 0, graph.node({19, 19}), p, bidirectional(5, 2), &p),

@@ -78,7 +78,7 @@ TEST_CASE("every ant walks a loop-free chain of edges from the start", "[colony]
   const aco::Graph graph = aco::build_graph(map, {});
   Baseline b;
   RecordingUpdate recorder(*b.update);
-  aco::Pipeline p = b.pipeline();
+  aco::ColonyStrategies p = b.pipeline();
   p.update = &recorder;
   aco::ColonySettings s;
   s.ants = 30;
@@ -195,7 +195,7 @@ TEST_CASE("a backtracking deadlock policy lets ants out of dead ends", "[colony]
   const auto dropped = aco::run_colony(graph, start, goal, discard.pipeline(), s);
   Baseline with_backtrack;
   BacktrackOne backtrack;
-  aco::Pipeline p = with_backtrack.pipeline();
+  aco::ColonyStrategies p = with_backtrack.pipeline();
   p.deadlock = &backtrack;
   RecordingUpdate recorder(*with_backtrack.update);
   p.update = &recorder;
@@ -216,7 +216,7 @@ TEST_CASE("nodes a deadlock policy forbids are never entered again", "[colony][d
   const aco::NodeId banned = graph.node({2, 1});
   ForbidNode forbid(banned);
   RecordingUpdate recorder(*b.update);
-  aco::Pipeline p = b.pipeline();
+  aco::ColonyStrategies p = b.pipeline();
   p.deadlock = &forbid;
   p.update = &recorder;
   aco::ColonySettings s;
@@ -249,7 +249,7 @@ TEST_CASE("bad inputs and bad strategy output are reported, not run", "[colony]"
   REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, 8, b.pipeline(), s), Contains("ants must be at least 1"));
   s.ants = 5;
   PoisonUpdate poison;
-  aco::Pipeline p = b.pipeline();
+  aco::ColonyStrategies p = b.pipeline();
   p.update = &poison;
   REQUIRE_THROWS_WITH(aco::run_colony(graph, 0, 8, p, s),
                       Contains("the update plugin wrote nan to the pheromone of edge") &&
@@ -265,7 +265,7 @@ TEST_CASE("the same-path rule stops once that fraction of an iteration's ants sh
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   Baseline b;
   RecordingUpdate recorder(*b.update);
-  aco::Pipeline p = b.pipeline();
+  aco::ColonyStrategies p = b.pipeline();
   p.update = &recorder;
   aco::ColonySettings s;
   s.iterations = 300;
@@ -293,7 +293,7 @@ TEST_CASE("q0: with probability q0 an ant takes its best candidate (q0 = 1: ever
   auto paths_of_first_iteration = [&](double q0) {
     Baseline b;
     RecordingUpdate recording(*b.update);
-    aco::Pipeline p = b.pipeline();
+    aco::ColonyStrategies p = b.pipeline();
     p.update = &recording;
     aco::ColonySettings s;
     s.ants = 20;
@@ -336,12 +336,12 @@ TEST_CASE("strategy objects reused for runs on other maps give the runs fresh ob
   for (const aco::Keys& keys : pipelines) {
     INFO(keys.at("heuristic") << ", " << keys.at("update") << ", " << keys.at("deadlock"));
     const aco::PipelineSpec spec = test::pipeline(keys);
-    const auto on_arena = [&](const aco::LoadedPipeline& p) {
-      return aco::run_colony(arena, arena.node({3, 3}), arena.node({44, 40}), p.colony(), settings);
+    const auto on_arena = [&](const aco::PipelinePlugins& p) {
+      return aco::run_colony(arena, arena.node({3, 3}), arena.node({44, 40}), p.strategies(), settings);
     };
-    const aco::LoadedPipeline reused = aco::instantiate(test::plugins(), spec);
+    const aco::PipelinePlugins reused = aco::instantiate(test::plugins(), spec);
     on_arena(reused);
-    aco::run_colony(other, other.node({0, 0}), other.node({19, 19}), reused.colony(), settings);
+    aco::run_colony(other, other.node({0, 0}), other.node({19, 19}), reused.strategies(), settings);
     const aco::ColonyResult again = on_arena(reused);
     REQUIRE(again.solved);
     test::check_same_run(again, on_arena(aco::instantiate(test::plugins(), spec)));

@@ -73,7 +73,7 @@ TEST_CASE("plugins of papers 001, 002 and 003 compose in any slot", "[compositio
       aco::ColonySettings s;
       s.iterations = 40;
       const aco::NodeId start = g.node(problem.start), goal = g.node(problem.goal);
-      const auto r = aco::run_colony(g, start, goal, p.colony(), s);
+      const auto r = aco::run_colony(g, start, goal, p.strategies(), s);
       auto context = test::context(g, problem.start, problem.goal);
       INFO(combination.init << " " << combination.heuristic << " " << combination.update << " " << combination.deadlock
                             << " " << combination.smoother << " on " << problem.map->name() << ", "

@@ -14,7 +14,7 @@
 #include "acobench_support.hpp"
 #include "aco/error.hpp"
 #include "aco/figures.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/plugin_call.hpp"
 #include "aco/studies/plots.hpp"
 #include "aco/studies/results_db.hpp"
 #include "support.hpp"

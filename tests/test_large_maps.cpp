@@ -201,7 +201,7 @@ TEST_CASE("local search: every shortened walk on random maps is valid and never 
     test::Baseline b;
     auto backtrack = test::make<aco::DeadlockPolicy>("deadlock", "backtrack");
     test::RecordingUpdate recorder(*b.update);
-    aco::Pipeline p = b.pipeline();
+    aco::ColonyStrategies p = b.pipeline();
     p.deadlock = backtrack.get();
     p.update = &recorder;
     aco::ColonySettings s;
@@ -240,7 +240,7 @@ TEST_CASE("the walk limit bounds the moves of every ant once a path is known", "
   auto run = [&](int iterations, double limit) {
     test::Baseline b;
     auto backtrack = test::make<aco::DeadlockPolicy>("deadlock", "backtrack");
-    aco::Pipeline p = b.pipeline();
+    aco::ColonyStrategies p = b.pipeline();
     p.deadlock = backtrack.get();
     aco::ColonySettings s;
     s.ants = 20;
@@ -283,7 +283,7 @@ TEST_CASE("the large-map options give bit-identical results for any thread count
       tbb::task_arena arena(threads);
       arena.execute([&] {
         results.push_back(
-            aco::run_colony(test::plugins(), spec, pipeline, graph, graph.node({1, 10}), graph.node({46, 30}), s));
+            aco::run_pipeline(test::plugins(), spec, pipeline, graph, graph.node({1, 10}), graph.node({46, 30}), s));
       });
     }
     REQUIRE(results[0].solved);
@@ -326,7 +326,7 @@ TEST_CASE("heuristics updated node by node give the runs of a whole table per it
       REQUIRE(heuristic->specs().updates_by_node);
       WholeTableEachIteration whole(*heuristic);
       auto backtrack = test::make<aco::DeadlockPolicy>("deadlock", "backtrack");
-      aco::Pipeline p = b.pipeline();
+      aco::ColonyStrategies p = b.pipeline();
       p.heuristic = by_node ? heuristic.get() : &whole;
       p.deadlock = backtrack.get();
       aco::ColonySettings s;

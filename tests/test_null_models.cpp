@@ -47,7 +47,7 @@ struct Strategies {
         update(test::make<aco::PheromoneUpdate>("update", update_name)),
         deadlock(test::make<aco::DeadlockPolicy>("deadlock", deadlock_name)),
         counting(*update) {}
-  aco::Pipeline pipeline() { return {init.get(), heuristic.get(), &counting, deadlock.get()}; }
+  aco::ColonyStrategies pipeline() { return {init.get(), heuristic.get(), &counting, deadlock.get()}; }
   std::unique_ptr<aco::PheromoneInit> init;
   std::unique_ptr<aco::Heuristic> heuristic;
   std::unique_ptr<aco::PheromoneUpdate> update;
@@ -139,7 +139,7 @@ TEST_CASE("the restart twin's walks are independent: the same result however the
       s.iterations = iterations;
       s.bidirectional = bidirectional;
       Strategies p("uniform", "progress", "acs", "backtrack"), back("uniform", "progress", "acs", "backtrack");
-      const aco::Pipeline backward = back.pipeline();
+      const aco::ColonyStrategies backward = back.pipeline();
       tbb::task_arena arena(threads);
       arena.execute([&] { runs.push_back(aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), s, &backward)); });
       CHECK(p.counting.updates == 0);

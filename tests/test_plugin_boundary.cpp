@@ -73,7 +73,7 @@ TEST_CASE("plugin records are read from the library file without loading it", "[
   REQUIRE(records.size() == 1);
   const auto& r = records[0];
   CHECK(r.abi == std::to_string(aco::kPluginAbiVersion));
-  CHECK(r.kind == "update");
+  CHECK(r.slot == "update");
   CHECK(r.name == "ant_system");
   CHECK(r.version == "1.0");
   CHECK_THAT(r.summary, Contains("Ant System"));

@@ -25,7 +25,7 @@ aco::ColonyResult plan(const Problem& p, aco::Cell start, aco::Cell goal, const 
   aco::ColonySettings s;  // 50 ants, 100 iterations, alpha 1, beta 7
   s.seed = seed;
   if (update == "acs") s.q0 = 0.7;
-  return aco::run_colony(p.graph, p.graph.node(start), p.graph.node(goal), pipeline.colony(), s);
+  return aco::run_colony(p.graph, p.graph.node(start), p.graph.node(goal), pipeline.strategies(), s);
 }
 
 constexpr double kMap1CornerCutting = 34.3848;

@@ -14,17 +14,17 @@ TEST_CASE("plugins are listed from their export tables, one library each", "[reg
   const std::vector<std::pair<std::string, std::string>> baseline{
       {"init", "uniform"}, {"heuristic", "distance"}, {"update", "ant_system"}, {"update", "max_min"},
       {"update", "acs"},   {"deadlock", "discard"},   {"smoother", "none"}};
-  for (const auto& [kind, name] : baseline) {
-    const auto* found = registry.find(kind, name);
+  for (const auto& [slot, name] : baseline) {
+    const auto* found = registry.find(slot, name);
     REQUIRE(found != nullptr);
-    CHECK(found->file.filename() == "aco_" + kind + "_" + name + ".so");
+    CHECK(found->file.filename() == "aco_" + slot + "_" + name + ".so");
   }
   const auto updates = registry.names("update");
   CHECK(std::is_sorted(updates.begin(), updates.end()));
   for (const char* name : {"acs", "ant_system", "max_min"})
     CHECK(std::count(updates.begin(), updates.end(), name) == 1);
   const auto& d = registry.load("update", "ant_system");
-  CHECK(std::string(d.kind) == "update");
+  CHECK(std::string(d.slot) == "update");
   CHECK(std::string(d.name) == "ant_system");
   CHECK(d.abi_version == aco::kPluginAbiVersion);
   CHECK(d.param_count == 2);

@@ -244,17 +244,17 @@ TEST_CASE("aco-new-plugin scaffolds every slot of the table and names them all",
   const std::string script = read_text(std::filesystem::path(ACO_TEST_SOURCE_DIR) / "tools/new-plugin.sh");
   // Its case labels: "  init) interface=PheromoneInit; ...".
   const std::regex label(R"(\n  ([a-z]+)\) interface=([A-Za-z]+);)");
-  std::vector<std::pair<std::string, std::string>> kinds;
+  std::vector<std::pair<std::string, std::string>> scaffolded;
   for (auto it = std::sregex_iterator(script.begin(), script.end(), label); it != std::sregex_iterator(); ++it)
-    kinds.emplace_back((*it)[1], (*it)[2]);
+    scaffolded.emplace_back((*it)[1], (*it)[2]);
   std::vector<std::pair<std::string, std::string>> table;
   std::string names;
   for (const aco::SlotInfo& slot : aco::kSlotTable) {
     table.emplace_back(slot.name, slot.interface);
     names += (names.empty() ? "" : ", ") + std::string(slot.name);
   }
-  CHECK(kinds == table);
-  // The usage line and the message for an unknown KIND list them in the table's order.
-  CHECK(script.find("(KIND: " + names + ")") != std::string::npos);
-  CHECK(script.find("unknown KIND '$kind' (" + names + ")") != std::string::npos);
+  CHECK(scaffolded == table);
+  // The usage line and the message for an unknown SLOT list them in the table's order.
+  CHECK(script.find("(SLOT: " + names + ")") != std::string::npos);
+  CHECK(script.find("unknown SLOT '$slot' (" + names + ")") != std::string::npos);
 }

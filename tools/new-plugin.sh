@@ -1,26 +1,26 @@
 #!/usr/bin/env bash
 # Scaffolds an out-of-tree plugin project that builds against an installed aco SDK; installed as
 # <prefix>/bin/aco-new-plugin:
-#   aco-new-plugin KIND NAME DIR      (KIND: init, heuristic, update, deadlock, smoother, local, map)
+#   aco-new-plugin SLOT NAME DIR      (SLOT: init, heuristic, update, deadlock, smoother, local, map)
 # then: cmake -S DIR -B DIR/build -DCMAKE_PREFIX_PATH=<aco prefix> && cmake --build DIR/build
 #       ctest --test-dir DIR/build                  (the generated unit test: Catch2, aco/testing.hpp)
-#       acoplan --plugin-dir DIR/build/plugins --KIND NAME     (a map plugin: --map FILE.NAME)
+#       acoplan --plugin-dir DIR/build/plugins --SLOT NAME     (a map plugin: --map FILE.NAME)
 # The generated class and its test compile and pass as they are; replace its one method with
 # your idea and the test's example with what your idea must do.
 set -euo pipefail
 me=$(basename "$0")
-usage="usage: $me KIND NAME DIR
-Writes an out-of-tree plugin project into DIR: NAME.cpp (a working KIND plugin to replace with your
+usage="usage: $me SLOT NAME DIR
+Writes an out-of-tree plugin project into DIR: NAME.cpp (a working SLOT plugin to replace with your
 idea), test_NAME.cpp (its Catch2 unit test, with aco-plugin-check's checks), CMakeLists.txt and
-README.md. KIND: init, heuristic, update, deadlock, smoother, local; NAME: lower_case_with_underscores.
+README.md. SLOT: init, heuristic, update, deadlock, smoother, local; NAME: lower_case_with_underscores.
 Then: cmake -S DIR -B DIR/build -DCMAKE_PREFIX_PATH=<aco prefix> && cmake --build DIR/build
-      ctest --test-dir DIR/build && acoplan --plugin-dir DIR/build/plugins --KIND NAME
+      ctest --test-dir DIR/build && acoplan --plugin-dir DIR/build/plugins --SLOT NAME
 Exit status: 0 written, 2 a wrong command line (nothing written)."
 if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then echo "$usage"; exit 0; fi
 if [ $# -ne 3 ]; then echo "$usage" >&2; exit 2; fi
-kind=$1 name=$2 dir=$3
+slot=$1 name=$2 dir=$3
 [[ "$name" =~ ^[a-z][a-z0-9_]*$ ]] || { echo "$me: NAME must be lower_case_with_underscores" >&2; exit 2; }
-case "$kind" in
+case "$slot" in
   init) interface=PheromoneInit; method='  void initialize(const aco::Context&, std::span<double> tau) override {
     for (double& t : tau) t = p_.value;
   }'
@@ -120,11 +120,11 @@ case "$kind" in
   CHECK(map->width() == problem.map->width());
   CHECK(map->height() == problem.map->height());
   CHECK(map->passable({0, 0}));' ;;
-  *) echo "$me: unknown KIND '$kind' (init, heuristic, update, deadlock, smoother, local, map)" >&2; exit 2 ;;
+  *) echo "$me: unknown SLOT '$slot' (init, heuristic, update, deadlock, smoother, local, map)" >&2; exit 2 ;;
 esac
 # Where a run's state goes (a map reader has no runs).
 lifecycle=""
-[ "$kind" = map ] || lifecycle='  // One object may serve several runs: what your hooks keep from one call to the next during a
+[ "$slot" = map ] || lifecycle='  // One object may serve several runs: what your hooks keep from one call to the next during a
   // run, set it in begin_run(const aco::Context&), which every run calls first
   // (docs/writing-plugins.md, "The lifecycle").
 '
@@ -136,20 +136,20 @@ fi
 # A bundled plugin of the same name would be shadowed by this one in --plugin-dir.
 # Run from a checkout (tools/) the bundled plugins are sources, installed (bin/) they are libraries.
 here=$(dirname "$(readlink -f "$0")")
-if [ -d "$here/../plugins/$kind/$name" ] || [ -e "$here/../lib/aco/plugins/aco_${kind}_${name}.so" ]; then
-  echo "$me: warning: $kind/$name is also a bundled plugin; with --plugin-dir yours replaces it" >&2
+if [ -d "$here/../plugins/$slot/$name" ] || [ -e "$here/../lib/aco/plugins/aco_${slot}_${name}.so" ]; then
+  echo "$me: warning: $slot/$name is also a bundled plugin; with --plugin-dir yours replaces it" >&2
 fi
 mkdir -p "$dir"
 cat > "$dir/CMakeLists.txt" <<CMAKE
 cmake_minimum_required(VERSION 3.25)
-project(aco_${kind}_${name} LANGUAGES CXX)
+project(aco_${slot}_${name} LANGUAGES CXX)
 set(CMAKE_CXX_STANDARD 20)
 # Optimised unless asked otherwise: an unoptimised plugin runs several times slower.
 if(NOT CMAKE_BUILD_TYPE AND NOT CMAKE_CONFIGURATION_TYPES)
   set(CMAKE_BUILD_TYPE Release CACHE STRING "Debug, Release, RelWithDebInfo or MinSizeRel" FORCE)
 endif()
 find_package(aco REQUIRED)
-aco_add_plugin(${kind} ${name} ${name}.cpp)
+aco_add_plugin(${slot} ${name} ${name}.cpp)
 
 # The unit test: the plugin's own example and every check of aco-plugin-check, one ctest test per
 # Catch2 case, labelled with its tags (ctest -L conformance).
@@ -157,12 +157,12 @@ enable_testing()
 find_package(Catch2 REQUIRED)
 add_executable(test_${name} test_${name}.cpp)
 target_link_libraries(test_${name} PRIVATE aco::conformance Catch2::Catch2)
-target_compile_definitions(test_${name} PRIVATE PLUGIN_FILE="\$<TARGET_FILE:aco_${kind}_${name}>")
-add_dependencies(test_${name} aco_${kind}_${name})
+target_compile_definitions(test_${name} PRIVATE PLUGIN_FILE="\$<TARGET_FILE:aco_${slot}_${name}>")
+add_dependencies(test_${name} aco_${slot}_${name})
 aco_discover_tests(test_${name})
 CMAKE
 cat > "$dir/${name}.cpp" <<CPP
-// ${kind}/${name}: describe the idea and cite its source here.
+// ${slot}/${name}: describe the idea and cite its source here.
 #include <fstream>
 
 #include "aco/error.hpp"
@@ -178,7 +178,7 @@ struct Parameters {
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::field("value", &Parameters::value, "(0:1e6]", "an example parameter (--${kind}.value)"),
+    aco::field("value", &Parameters::value, "(0:1e6]", "an example parameter (--${slot}.value)"),
 });
 
 class Plugin final : public aco::${interface} {
@@ -192,31 +192,31 @@ ${lifecycle}${method}
 
 }  // namespace
 
-ACO_PLUGIN(${kind}, ${name}, Plugin, "0.1", "describe ${name} in one line", kParams)
+ACO_PLUGIN(${slot}, ${name}, Plugin, "0.1", "describe ${name} in one line", kParams)
 CPP
 cat > "$dir/test_${name}.cpp" <<CPP
-// The unit test of ${kind}/${name}: it loads the plugin from the library the build made.
+// The unit test of ${slot}/${name}: it loads the plugin from the library the build made.
 #define CATCH_CONFIG_MAIN
 #include <fstream>
 
 #include "aco/path.hpp"
 #include "aco/testing.hpp"
 
-TEST_CASE("${kind}/${name} passes the conformance checks", "[${kind}][${name}][conformance]") {
+TEST_CASE("${slot}/${name} passes the conformance checks", "[${slot}][${name}][conformance]") {
   // Defaults and parameter range ends, on tiny maps and edge-case iterations: finite values,
   // same output for the same seed, same output on 1 and 4 threads, a reused object's run the same
   // as a fresh one's (as aco-plugin-check).
   aco::testing::check_conformance(PLUGIN_FILE);
 }
 
-TEST_CASE("${kind}/${name} ${example}", "[${kind}][${name}]") {
+TEST_CASE("${slot}/${name} ${example}", "[${slot}][${name}]") {
   const aco::testing::Problem problem = aco::testing::standard_problems().front();  // open 8x6, (0,0) to (7,5)
 ${test}
 }
 CPP
 cat > "$dir/README.md" <<MD
-# ${kind}/${name}
+# ${slot}/${name}
 
 What it does, the formula it implements, the source it comes from, and its parameters.
 MD
-echo "$me: wrote $dir (${kind}/${name})"
+echo "$me: wrote $dir (${slot}/${name})"

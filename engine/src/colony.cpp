@@ -123,8 +123,8 @@ using ScratchPool = tbb::enumerable_thread_specific<Scratch>;
 // The plain search runs one; the bidirectional search runs two, the second from goal to start.
 class Colony {
  public:
-  Colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline, const ColonySettings& settings,
-         bool check_every_hook)
+  Colony(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
+         const ColonySettings& settings, bool check_every_hook)
       : g_(graph),
         p_(pipeline),
         s_(settings),
@@ -460,7 +460,7 @@ class Colony {
   }
 
   const Graph& g_;
-  Pipeline p_;
+  ColonyStrategies p_;
   ColonySettings s_;
   bool check_every_hook_;
   Context context_;
@@ -619,7 +619,7 @@ ColonyResult iterate(const ColonySettings& s, Clock::time_point started, std::sp
   return result;
 }
 
-ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
+ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
                         const ColonySettings& s, bool check_every_hook, Clock::time_point started) {
   Colony colony(graph, start, goal, pipeline, s, check_every_hook);
   std::vector<std::vector<Ant>> ants(1, std::vector<Ant>(s.ants));
@@ -637,9 +637,9 @@ ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Pip
   });
 }
 
-ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, const Pipeline& forward_pipeline,
-                               const Pipeline& backward_pipeline, const ColonySettings& s, bool check_every_hook,
-                               Clock::time_point started) {
+ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& forward_pipeline,
+                               const ColonyStrategies& backward_pipeline, const ColonySettings& s,
+                               bool check_every_hook, Clock::time_point started) {
   Colony forward(graph, start, goal, forward_pipeline, s, check_every_hook);
   Colony backward(graph, goal, start, backward_pipeline, s, check_every_hook);
   std::vector<std::vector<Ant>> ants(2, std::vector<Ant>(s.ants));
@@ -659,7 +659,7 @@ ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, co
   });
 }
 
-void check_inputs(const Graph& graph, NodeId start, NodeId goal, const Pipeline& p, const ColonySettings& s) {
+void check_inputs(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& p, const ColonySettings& s) {
   for (const auto& [node, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}}) {
     if (node < 0 || node >= graph.num_nodes()) throw Error(std::string(what) + " node is outside the map");
     if (!graph.passable(node))
@@ -680,8 +680,8 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const Pipeline&
 
 }  // namespace
 
-ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
-                        const ColonySettings& settings, const Pipeline* backward) {
+ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
+                        const ColonySettings& settings, const ColonyStrategies* backward) {
   check_inputs(graph, start, goal, pipeline, settings);
   if (start == goal) {
     ColonyResult trivial;

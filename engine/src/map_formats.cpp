@@ -94,7 +94,7 @@ std::string map_format_of(const std::filesystem::path& file, const std::string& 
   for (const auto& f : builtin_map_formats())
     if (claims(f.extensions, file)) claimants.push_back("the built-in format " + f.name), chosen = f.name;
   for (const auto& plugin : registry.available()) {
-    if (plugin.kind != "map" || !plugin.unusable.empty() || registry.find("map", plugin.name) != &plugin) continue;
+    if (plugin.slot != "map" || !plugin.unusable.empty() || registry.find("map", plugin.name) != &plugin) continue;
     if (claims(make_reader(registry, plugin.name, defaults_of(registry, plugin.name))->extensions(), file))
       claimants.push_back("plugin map/" + plugin.name + " (" + plugin.file.string() + ")"), chosen = plugin.name;
   }

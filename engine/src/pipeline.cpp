@@ -12,8 +12,8 @@ const char* default_plugin(const std::string& slot) {
   return info->default_plugin;
 }
 
-LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec) {
-  LoadedPipeline loaded;
+PipelinePlugins instantiate(PluginRegistry& registry, const PipelineSpec& spec) {
+  PipelinePlugins loaded;
   auto make = [&](const char* slot, auto& target) {
     using Interface = typename std::remove_reference_t<decltype(target)>::element_type;
     const auto it = spec.find(slot);
@@ -26,14 +26,14 @@ LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec) {
   return loaded;
 }
 
-ColonyResult run_colony(PluginRegistry& registry, const PipelineSpec& spec, const LoadedPipeline& pipeline,
-                        const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings,
-                        FigureSink* figures) {
-  Pipeline forward = pipeline.colony();
+ColonyResult run_pipeline(PluginRegistry& registry, const PipelineSpec& spec, const PipelinePlugins& pipeline,
+                          const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings,
+                          FigureSink* figures) {
+  ColonyStrategies forward = pipeline.strategies();
   forward.figures = figures;
   if (!settings.bidirectional) return run_colony(graph, start, goal, forward, settings);
-  const LoadedPipeline backward = instantiate(registry, spec);
-  Pipeline backward_colony = backward.colony();
+  const PipelinePlugins backward = instantiate(registry, spec);
+  ColonyStrategies backward_colony = backward.strategies();
   backward_colony.figures = figures;
   return run_colony(graph, start, goal, forward, settings, &backward_colony);
 }

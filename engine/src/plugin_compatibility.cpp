@@ -102,7 +102,7 @@ std::vector<PluginRecord> read_plugin_records(const fs::path& file) {
     r.stdlib = field();
     r.compiler = field();
     r.build = field();
-    r.kind = field();
+    r.slot = field();
     r.name = field();
     r.version = field();
     r.summary = field();

@@ -39,8 +39,8 @@ Loaded& loaded() {
   return *instance;
 }
 
-std::string alias_of(const PluginFile& p) { return kPluginAliasPrefix + p.kind + "__" + p.name; }
-std::string label(const PluginFile& p) { return p.kind + "/" + p.name + " (" + p.file.string() + ")"; }
+std::string alias_of(const PluginFile& p) { return kPluginAliasPrefix + p.slot + "__" + p.name; }
+std::string label(const PluginFile& p) { return p.slot + "/" + p.name + " (" + p.file.string() + ")"; }
 
 // Plugins exported by a library file, read from its "boostdll" section without loading it.
 std::vector<PluginFile> exported_plugins(const fs::path& file) {
@@ -59,7 +59,7 @@ std::vector<PluginFile> exported_plugins(const fs::path& file) {
     const auto split = rest.find("__");
     if (split == std::string::npos || split == 0 || split + 2 >= rest.size()) continue;
     PluginFile plugin;
-    plugin.kind = rest.substr(0, split);
+    plugin.slot = rest.substr(0, split);
     plugin.name = rest.substr(split + 2);
     plugin.file = file;
     found.push_back(std::move(plugin));
@@ -75,7 +75,7 @@ std::vector<PluginFile> exported_plugins(const fs::path& file) {
   }
   for (auto& plugin : found) {
     const auto record = std::find_if(records.begin(), records.end(), [&](const PluginRecord& r) {
-      return (r.kind == plugin.kind && r.name == plugin.name) || r.abi != std::to_string(kPluginAbiVersion);
+      return (r.slot == plugin.slot && r.name == plugin.name) || r.abi != std::to_string(kPluginAbiVersion);
     });
     if (!unreadable.empty())
       plugin.unusable = "its plugin record cannot be read: " + unreadable;
@@ -141,7 +141,7 @@ PluginRegistry::PluginRegistry(std::vector<fs::path> search_dirs) : dirs_(std::m
     for (const auto& file : libraries)
       for (auto& plugin : exported_plugins(file)) {
         const auto first = std::find_if(files_.begin(), files_.end(), [&](const PluginFile& p) {
-          return p.kind == plugin.kind && p.name == plugin.name;
+          return p.slot == plugin.slot && p.name == plugin.name;
         });
         if (first == files_.end())
           files_.push_back(std::move(plugin));
@@ -173,34 +173,34 @@ std::vector<fs::path> PluginRegistry::default_search_dirs(const std::vector<fs::
   return dirs;
 }
 
-std::vector<std::string> PluginRegistry::names(const std::string& kind) const {
+std::vector<std::string> PluginRegistry::names(const std::string& slot) const {
   std::vector<std::string> result;
   for (const auto& p : files_)
-    if (p.kind == kind) result.push_back(p.name);
+    if (p.slot == slot) result.push_back(p.name);
   std::sort(result.begin(), result.end());
   return result;
 }
 
-const PluginFile* PluginRegistry::find(const std::string& kind, const std::string& name) const {
+const PluginFile* PluginRegistry::find(const std::string& slot, const std::string& name) const {
   for (const auto& p : files_)
-    if (p.kind == kind && p.name == name) return &p;
+    if (p.slot == slot && p.name == name) return &p;
   return nullptr;
 }
 
-const PluginFile& PluginRegistry::get(const std::string& kind, const std::string& name) const {
-  if (const PluginFile* plugin = find(kind, name)) return *plugin;
-  std::string message = "unknown " + kind + " plugin '" + name + "'";
-  const auto known = names(kind);
+const PluginFile& PluginRegistry::get(const std::string& slot, const std::string& name) const {
+  if (const PluginFile* plugin = find(slot, name)) return *plugin;
+  std::string message = "unknown " + slot + " plugin '" + name + "'";
+  const auto known = names(slot);
   if (const auto near = nearest(name, known); !near.empty()) message += "; did you mean '" + near + "'?";
-  message += known.empty() ? " (no " + kind + " plugins found" : " (available: ";
+  message += known.empty() ? " (no " + slot + " plugins found" : " (available: ";
   for (std::size_t i = 0; i < known.size(); ++i) message.append(i ? ", " : "").append(known[i]);
   message += "; searched:";
   for (const auto& dir : dirs_) message.append(" ").append(dir.string());
   throw Error(message + ")");
 }
 
-const PluginDescriptor& PluginRegistry::load(const std::string& kind, const std::string& name) {
-  const PluginFile* plugin = &get(kind, name);
+const PluginDescriptor& PluginRegistry::load(const std::string& slot, const std::string& name) {
+  const PluginFile* plugin = &get(slot, name);
   if (!plugin->unusable.empty()) throw Error("plugin " + label(*plugin) + ": " + plugin->unusable);
 
   Loaded& state = loaded();
@@ -232,45 +232,45 @@ const PluginDescriptor& PluginRegistry::load(const std::string& kind, const std:
   if (descriptor.abi_version != kPluginAbiVersion)
     throw Error("plugin " + label(*plugin) + ": ABI " + std::to_string(descriptor.abi_version) + ", host expects " +
                 std::to_string(kPluginAbiVersion) + " (rebuild the plugin against this framework)");
-  if (kind != descriptor.kind || name != descriptor.name || descriptor.create == nullptr)
-    throw Error("plugin " + label(*plugin) + ": descriptor says " + descriptor.kind + "/" + descriptor.name);
-  check_table(descriptor.parameters(), "plugin " + kind + "/" + name);
+  if (slot != descriptor.slot || name != descriptor.name || descriptor.create == nullptr)
+    throw Error("plugin " + label(*plugin) + ": descriptor says " + descriptor.slot + "/" + descriptor.name);
+  check_table(descriptor.parameters(), "plugin " + slot + "/" + name);
   state.descriptors[key] = &descriptor;
   // Allowed (a user may mean to replace a bundled plugin), but never silently.
   for (const auto& hidden : plugin->shadowed)
-    std::cerr << "warning: plugin " << kind << "/" << name << " from " << plugin->file.string() << " shadows "
+    std::cerr << "warning: plugin " << slot << "/" << name << " from " << plugin->file.string() << " shadows "
               << hidden.string() << " (the first in the plugin search order wins)\n";
   return descriptor;
 }
 
-std::unique_ptr<Strategy> PluginRegistry::create(const std::string& kind, const std::string& name,
+std::unique_ptr<Strategy> PluginRegistry::create(const std::string& slot, const std::string& name,
                                                  const ParameterValues& values) {
-  const PluginDescriptor& descriptor = load(kind, name);
+  const PluginDescriptor& descriptor = load(slot, name);
   std::unique_ptr<Strategy> strategy;
-  const PluginIdentity who = identity(kind, name);
+  const PluginIdentity who = identity(slot, name);
   try {
     const PluginCallScope scope(who, "its factory", -1);
     strategy.reset(descriptor.create(values));
   } catch (...) {
     rethrow_from_plugin(who, "its factory");
   }
-  if (!strategy) throw Error("plugin " + kind + "/" + name + ": factory returned nothing");
+  if (!strategy) throw Error("plugin " + slot + "/" + name + ": factory returned nothing");
   return strategy;
 }
 
-PluginProvenance PluginRegistry::provenance(const std::string& kind, const std::string& name) const {
-  const PluginFile& plugin = get(kind, name);
+PluginProvenance PluginRegistry::provenance(const std::string& slot, const std::string& name) const {
+  const PluginFile& plugin = get(slot, name);
   const std::string file = plugin.file.string();
   Loaded& state = loaded();
   std::lock_guard lock(state.mutex);
   auto hash = state.sha256.find(file);
   if (hash == state.sha256.end()) hash = state.sha256.emplace(file, sha256_of(plugin.file)).first;
-  return {kind, name, plugin.record.version, file, hash->second, plugin.record.build};
+  return {slot, name, plugin.record.version, file, hash->second, plugin.record.build};
 }
 
-PluginIdentity PluginRegistry::identity(const std::string& kind, const std::string& name) const {
-  const PluginFile* file = find(kind, name);
-  return {kind, name, file ? file->file.string() : std::string()};
+PluginIdentity PluginRegistry::identity(const std::string& slot, const std::string& name) const {
+  const PluginFile* file = find(slot, name);
+  return {slot, name, file ? file->file.string() : std::string()};
 }
 
 }  // namespace aco

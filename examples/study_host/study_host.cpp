@@ -3,7 +3,7 @@
 //   study_host EXPERIMENT.yaml DATABASE.db REPORT_FOLDER
 #include <iostream>
 
-#include "aco/plugin_guard.hpp"
+#include "aco/plugin_call.hpp"
 #include "aco/plugin_registry.hpp"
 #include "aco/studies/report.hpp"
 #include "aco/studies/runner.hpp"

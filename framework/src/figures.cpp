@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "aco/error.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/plugin_call.hpp"
 #include "aco/strategies.hpp"
 
 namespace aco {

@@ -1,13 +1,14 @@
 #include "aco/plugin_call.hpp"
 
-#include "aco/plugin_error.hpp"
-
 #include <cxxabi.h>
 
 #include <cstdlib>
 #include <exception>
+#include <memory>
 #include <new>
 #include <typeinfo>
+
+#include "aco/plugin_error.hpp"
 
 namespace aco {
 namespace {

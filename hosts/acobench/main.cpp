@@ -17,7 +17,7 @@
 
 #include "aco/error.hpp"
 #include "aco/host_options.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/plugin_call.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/studies/experiment.hpp"
 #include "aco/studies/mpi.hpp"

@@ -19,7 +19,7 @@ std::span<const ParamSpec> no_parameters() { return {}; }
 
 void run_aco(const PlanContext& c, PlanOutcome& o) {
   ColonyResult colony =
-      run_colony(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony, &c.figures);
+      run_pipeline(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony, &c.figures);
   o.properties["ant_steps"] = static_cast<std::int64_t>(colony.ant_steps);
   o.properties["stopped_by"] = colony.stopped_by;
   o.iteration_best = std::move(colony.iteration_best);
@@ -109,7 +109,7 @@ std::span<const ParamSpec> planner_parameters(const std::string& planner) { retu
 
 PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const RunSpec& run) {
   const Planner& planner = find_planner(run.planner);
-  const LoadedPipeline pipeline = instantiate(registry, run.pipeline);
+  const PipelinePlugins pipeline = instantiate(registry, run.pipeline);
   FigureSink figures;
   PlanOutcome o;
   o.seed = run.colony.seed;

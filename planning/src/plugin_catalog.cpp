@@ -33,16 +33,16 @@ std::string extensions_line(const std::vector<std::string>& extensions) {
 // From the plugin records alone: listing runs no plugin code.
 std::string list_plugins(aco::PluginRegistry& registry) {
   std::ostringstream out;
-  out << "plugins (kind/name, version, summary, file):\n";
-  for (const aco::SlotInfo& slot : aco::kSlotTable) {
-    const std::string kind = slot.name;
-    if (kind == "map")
+  out << "plugins (slot/name, version, summary, file):\n";
+  for (const aco::SlotInfo& info : aco::kSlotTable) {
+    const std::string slot = info.name;
+    if (slot == "map")
       for (const auto& format : aco::builtin_map_formats())
         out << "  map/" << format.name << "  built-in  " << format.summary << "\n      "
             << extensions_line(format.extensions);
-    for (const auto& name : registry.names(kind)) {
-      const auto& plugin = registry.get(kind, name);
-      out << "  " << kind << "/" << name;
+    for (const auto& name : registry.names(slot)) {
+      const auto& plugin = registry.get(slot, name);
+      out << "  " << slot << "/" << name;
       if (plugin.unusable.empty())
         out << "  " << plugin.record.version << "  " << plugin.record.summary;
       else
@@ -69,32 +69,32 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
   std::vector<const aco::PluginFile*> matches;
   for (const aco::SlotInfo& slot : aco::kSlotTable)
     for (const auto& p : registry.available())
-      if (p.kind == slot.name && (p.name == name || p.kind + "/" + p.name == name)) matches.push_back(&p);
+      if (p.slot == slot.name && (p.name == name || p.slot + "/" + p.name == name)) matches.push_back(&p);
   if (matches.empty()) {
     std::string message = "--describe: no plugin named '" + name + "'";
     std::vector<std::string> names;
     for (const auto& p : registry.available())
-      names.push_back(name.find('/') == std::string::npos ? p.name : p.kind + "/" + p.name);
+      names.push_back(name.find('/') == std::string::npos ? p.name : p.slot + "/" + p.name);
     if (const auto near = aco::nearest(name, names); !near.empty())
       for (const auto& p : registry.available())
-        if (p.name == near || p.kind + "/" + p.name == near)
-          message += "; did you mean '" + p.kind + "/" + p.name + "'?";
+        if (p.name == near || p.slot + "/" + p.name == near)
+          message += "; did you mean '" + p.slot + "/" + p.name + "'?";
     throw aco::Error(message);
   }
   if (matches.size() > 1) {
     std::string message = "--describe: '" + name + "' names a plugin in " + std::to_string(matches.size()) +
                           " slots; give its slot too, as SLOT/NAME:";
     for (std::size_t i = 0; i < matches.size(); ++i)
-      message += (i == 0 ? " " : i + 1 == matches.size() ? " or " : ", ") + matches[i]->kind + "/" + matches[i]->name;
+      message += (i == 0 ? " " : i + 1 == matches.size() ? " or " : ", ") + matches[i]->slot + "/" + matches[i]->name;
     throw aco::Error(message);
   }
-  const auto& d = registry.load(matches[0]->kind, matches[0]->name);
+  const auto& d = registry.load(matches[0]->slot, matches[0]->name);
   std::ostringstream out;
-  out << d.kind << "/" << d.name << " " << d.version << ": " << d.summary << "\n"
+  out << d.slot << "/" << d.name << " " << d.version << ": " << d.summary << "\n"
       << "file: " << matches[0]->file.string() << "\n"
       << shadow_lines(*matches[0]) << "built by: " << matches[0]->record.compiler << ", " << matches[0]->record.stdlib
       << ", " << matches[0]->record.build << "\n";
-  if (d.kind == std::string("map")) {
+  if (d.slot == std::string("map")) {
     const auto values = aco::resolve(d.parameters(), {}, "map.");
     out << extensions_line(registry.create<aco::MapReader>("map", d.name, values)->extensions());
   }
@@ -102,7 +102,7 @@ std::string describe_plugin(aco::PluginRegistry& registry, const std::string& na
     out << "no parameters\n";
     return out.str();
   }
-  out << "parameters (--" << d.kind << ".NAME VALUE):\n";
+  out << "parameters (--" << d.slot << ".NAME VALUE):\n";
   for (const auto& spec : d.parameters())
     out << "  " << spec.name << "  " << aco::to_string(spec.type) << "  default " << aco::shown_default(spec)
         << (spec.range && *spec.range ? std::string("  range ") + spec.range : std::string()) << "\n      " << spec.help

@@ -26,7 +26,7 @@ _extra_dirs: list = []
 
 
 def plugins() -> list:
-    """Every plugin found: dicts with kind, name, version, summary, file, unusable (why it cannot
+    """Every plugin found: dicts with slot, name, version, summary, file, unusable (why it cannot
     be loaded, or "") and parameters (name, type, default, range, help)."""
     return _aco.plugins()
 

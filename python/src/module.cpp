@@ -136,7 +136,7 @@ py::list plugins() {
   py::list list;
   for (const auto& file : registry().available()) {
     py::dict plugin;
-    plugin["kind"] = file.kind;
+    plugin["slot"] = file.slot;
     plugin["name"] = file.name;
     plugin["version"] = file.record.version;
     plugin["summary"] = file.record.summary;
@@ -144,7 +144,7 @@ py::list plugins() {
     plugin["unusable"] = file.unusable;
     py::list parameters;
     if (file.unusable.empty())
-      for (const auto& spec : registry().load(file.kind, file.name).parameters())
+      for (const auto& spec : registry().load(file.slot, file.name).parameters())
         parameters.append(py::dict(py::arg("name") = spec.name, py::arg("type") = aco::to_string(spec.type),
                                    py::arg("default") = spec.default_value,
                                    py::arg("range") = spec.range ? spec.range : "", py::arg("help") = spec.help));

@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "aco/plugin_guard.hpp"
+#include "aco/plugin_call.hpp"
 
 namespace aco {
 namespace {

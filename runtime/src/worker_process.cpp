@@ -27,7 +27,7 @@
 #include "aco/crash_report.hpp"
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/plugin_call.hpp"
 
 extern char** environ;
 

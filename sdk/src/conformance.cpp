@@ -237,11 +237,11 @@ std::unique_ptr<Interface> default_instance(const std::string& slot) {
 
 std::vector<PluginFile> plugins_in(const fs::path& file) { return plugins_of(file).second; }
 
-std::pair<PluginRegistry*, PluginFile> find_in(const fs::path& file, const std::string& kind) {
+std::pair<PluginRegistry*, PluginFile> find_in(const fs::path& file, const std::string& slot) {
   auto [registry, plugins] = plugins_of(file);
   for (const auto& plugin : plugins)
-    if (plugin.kind == kind) return {registry, plugin};
-  throw Error(file.string() + ": exports no " + kind + " plugin");
+    if (plugin.slot == slot) return {registry, plugin};
+  throw Error(file.string() + ": exports no " + slot + " plugin");
 }
 
 // --- Running a plugin --------------------------------------------------------------------------
@@ -515,7 +515,7 @@ void run_colony_with(Interface& plugin, const Problem& problem, const ColonySett
   auto heuristic = default_instance<Heuristic>("heuristic");
   auto update = default_instance<PheromoneUpdate>("update");
   auto deadlock = default_instance<DeadlockPolicy>("deadlock");
-  Pipeline pipeline{init.get(), heuristic.get(), update.get(), deadlock.get()};
+  ColonyStrategies pipeline{init.get(), heuristic.get(), update.get(), deadlock.get()};
   if constexpr (std::is_same_v<Interface, PheromoneInit>) pipeline.init = &plugin;
   if constexpr (std::is_same_v<Interface, Heuristic>) pipeline.heuristic = &plugin;
   if constexpr (std::is_same_v<Interface, PheromoneUpdate>) pipeline.update = &plugin;
@@ -573,9 +573,9 @@ struct Pass {
 
 template <class Interface>
 void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Options& options, const Report& report) {
-  const PluginDescriptor& descriptor = registry.load(plugin.kind, plugin.name);
-  const PluginIdentity who{plugin.kind, plugin.name, plugin.file.string()};
-  const std::string label = plugin.kind + "/" + plugin.name;
+  const PluginDescriptor& descriptor = registry.load(plugin.slot, plugin.name);
+  const PluginIdentity who{plugin.slot, plugin.name, plugin.file.string()};
+  const std::string label = plugin.slot + "/" + plugin.name;
   const std::vector<Problem> problems = standard_problems();
   const bool colony = !std::is_same_v<Interface, Smoother> && !std::is_same_v<Interface, LocalPlanner> &&
                       !std::is_same_v<Interface, MapReader>;
@@ -600,7 +600,7 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
       given.insert(other.given.begin(), other.given.end());
       given.insert(options.fixed.begin(), options.fixed.end());
       try {
-        std::unique_ptr<Strategy>(descriptor.create(resolve(descriptor.parameters(), given, plugin.kind + ".")));
+        std::unique_ptr<Strategy>(descriptor.create(resolve(descriptor.parameters(), given, plugin.slot + ".")));
         return true;
       } catch (const Error&) {}
     }
@@ -612,12 +612,12 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
     };
     std::map<std::string, std::string> given = set.given;
     given.insert(options.fixed.begin(), options.fixed.end());  // the set's own value wins
-    const ParameterValues values = resolve(descriptor.parameters(), given, plugin.kind + ".");
+    const ParameterValues values = resolve(descriptor.parameters(), given, plugin.slot + ".");
     // A fresh instance per pass; the factory refusing a value with aco::Error is its right.
     auto make = [&]() -> std::unique_ptr<Interface> {
       std::unique_ptr<Strategy> strategy(descriptor.create(values));
       auto* typed = dynamic_cast<Interface*>(strategy.get());
-      if (!typed) throw Error("the factory made an object that does not implement the " + plugin.kind + " interface");
+      if (!typed) throw Error("the factory made an object that does not implement the " + plugin.slot + " interface");
       strategy.release();
       return guard(std::unique_ptr<Interface>(typed), who);
     };
@@ -683,10 +683,10 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
 void check_plugin(const PluginFile& plugin, const Options& options, const Report& report) {
   PluginRegistry& registry = *plugins_of(plugin.file).first;
 #define ACO_CHECK_SLOT_(NAME, INTERFACE) \
-  if (plugin.kind == #NAME) return check_typed<INTERFACE>(registry, plugin, options, report);
+  if (plugin.slot == #NAME) return check_typed<INTERFACE>(registry, plugin, options, report);
   ACO_SLOTS(ACO_CHECK_SLOT_)
 #undef ACO_CHECK_SLOT_
-  throw Error("plugin " + plugin.kind + "/" + plugin.name + ": unknown slot '" + plugin.kind + "'");
+  throw Error("plugin " + plugin.slot + "/" + plugin.name + ": unknown slot '" + plugin.slot + "'");
 }
 
 int check_file(const fs::path& file, const Options& options, const Report& report) {

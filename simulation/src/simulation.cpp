@@ -125,7 +125,7 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
   const SimulationSettings& sim = scenario.simulation;
   const aco::RobotLimits limits = scenario.robot.limits();
   World world(*scenario.map, scenario.unknown);
-  const aco::LoadedPipeline pipeline = aco::instantiate(registry, run.pipeline);
+  const aco::PipelinePlugins pipeline = aco::instantiate(registry, run.pipeline);
   // The simulation is the local planner's run; it sees the world through LocalView, not a graph.
   aco::Context local_run;
   local_run.seed = run.colony.seed;

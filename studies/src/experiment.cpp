@@ -381,7 +381,7 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
   for (const auto* run : runs)
     for (const char* slot : aco::kSlots) {
       const auto p = registry.provenance(slot, run->pipeline.at(slot).plugin);
-      j["plugins"][p.kind + "/" + p.name] = {{"version", p.version}, {"sha256", p.sha256}};
+      j["plugins"][p.slot + "/" + p.name] = {{"version", p.version}, {"sha256", p.sha256}};
     }
   return j.dump();
 }

@@ -11,7 +11,7 @@
 #include "aco/error.hpp"
 #include "aco/plugin_error.hpp"
 #include "aco/map_io.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/plugin_call.hpp"
 #include "aco/simulation/batch.hpp"
 
 namespace aco::studies {

@@ -37,7 +37,7 @@ TEST_CASE("backtrack: on a comb of dead ends every ant arrives on a loop-free pa
     auto backtrack = test::make<aco::DeadlockPolicy>("deadlock", "backtrack");
     auto progress = test::make<aco::Heuristic>("heuristic", "progress");
     test::RecordingUpdate recorder(*b.update);
-    aco::Pipeline p = b.pipeline();
+    aco::ColonyStrategies p = b.pipeline();
     p.deadlock = backtrack.get();
     p.update = &recorder;
     aco::ColonySettings s;
@@ -57,7 +57,7 @@ TEST_CASE("backtrack: on a comb of dead ends every ant arrives on a loop-free pa
     CHECK(result.ant_steps > std::uint64_t(s.ants * s.iterations) * result.path.size());  // they did walk into some
     // The same map with ants that die: most of them are lost in the teeth.
     test::Baseline dying;
-    aco::Pipeline q = dying.pipeline();
+    aco::ColonyStrategies q = dying.pipeline();
     q.heuristic = progress.get();
     p.heuristic = progress.get();
     const auto dropped = aco::run_colony(graph, start, goal, q, s);

@@ -101,7 +101,7 @@ TEST_CASE("with clear_and_tabu no ant ever enters a tabu node", "[plugin][clear_
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     auto p = aco::instantiate(test::plugins(), spec);
     Watch watch(*p.deadlock);
-    aco::Pipeline colony = p.colony();
+    aco::ColonyStrategies colony = p.strategies();
     colony.deadlock = &watch;
     aco::ColonySettings s;
     s.seed = seed;

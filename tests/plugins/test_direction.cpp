@@ -91,7 +91,7 @@ TEST_CASE("direction gives fewer turns than distance on an open map", "[plugin][
       aco::ColonySettings s;
       s.seed = seed;
       s.iterations = 50;
-      const auto r = aco::run_colony(g, g.node({0, 2}), g.node({29, 17}), p.colony(), s);
+      const auto r = aco::run_colony(g, g.node({0, 2}), g.node({29, 17}), p.strategies(), s);
       REQUIRE(r.solved);
       turns += aco::count_turns(aco::to_waypoints(g, r.path));
     }

@@ -63,7 +63,7 @@ ParameterValues colony_values(const ColonySettings& settings);
 // Borrowed strategies; init, heuristic, update and deadlock are all required. `figures`, if set,
 // keeps what they record (Context::record(), add()); the two colonies of the bidirectional search
 // may share one: their counts add up, and of two values the backward colony's, recorded last, stays.
-struct Pipeline {
+struct ColonyStrategies {
   PheromoneInit* init = nullptr;
   Heuristic* heuristic = nullptr;
   PheromoneUpdate* update = nullptr;
@@ -86,7 +86,7 @@ struct ColonyResult : SearchResult {
 // the writer: docs/writing-plugins.md, "What the engine checks"). With settings.bidirectional, `backward`
 // is the backward colony's pipeline: separate objects of the same (or other) plugins, since
 // strategies keep per-run state. Its result is the forward colony's view (its pheromone).
-ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Pipeline& pipeline,
-                        const ColonySettings& settings, const Pipeline* backward = nullptr);
+ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
+                        const ColonySettings& settings, const ColonyStrategies* backward = nullptr);
 
 }  // namespace aco

@@ -22,21 +22,21 @@ struct SlotSpec {
 using PipelineSpec = std::map<std::string, SlotSpec>;  // slot -> plugin, for every slot of kSlots
 
 // One member per pipeline slot, named as the slot (local drives acosim's robot along the path).
-struct LoadedPipeline {
+struct PipelinePlugins {
 #define ACO_PIPELINE_MEMBER_(NAME, INTERFACE) std::unique_ptr<INTERFACE> NAME;
   ACO_PIPELINE_SLOTS(ACO_PIPELINE_MEMBER_)
 #undef ACO_PIPELINE_MEMBER_
 
-  Pipeline colony() const { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
+  ColonyStrategies strategies() const { return {init.get(), heuristic.get(), update.get(), deadlock.get()}; }
 };
 
 // Instantiates every slot's plugin with its resolved parameters (see resolve_run()).
-LoadedPipeline instantiate(PluginRegistry& registry, const PipelineSpec& spec);
+PipelinePlugins instantiate(PluginRegistry& registry, const PipelineSpec& spec);
 
-// run_colony with a loaded pipeline. The bidirectional search's backward colony gets its own
+// run_colony() with a pipeline's plugins. The bidirectional search's backward colony gets its own
 // instances of the same plugins, instantiated here from `spec`. Both record into `figures`.
-ColonyResult run_colony(PluginRegistry& registry, const PipelineSpec& spec, const LoadedPipeline& pipeline,
-                        const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings,
-                        FigureSink* figures = nullptr);
+ColonyResult run_pipeline(PluginRegistry& registry, const PipelineSpec& spec, const PipelinePlugins& pipeline,
+                          const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings,
+                          FigureSink* figures = nullptr);
 
 }  // namespace aco

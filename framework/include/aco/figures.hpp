@@ -1,6 +1,6 @@
 #pragma once
 // Where the figures plugins record about their run go (Context::record() and Context::add(), see
-// strategies.hpp). The host that runs the colony owns one per run, puts it in Pipeline::figures
+// strategies.hpp). The host that runs the colony owns one per run, puts it in ColonyStrategies::figures
 // (or Context::figures for a hook it calls itself, as plan() does for the smoother) and reads it
 // afterwards: aco::plan() adds them to PlanOutcome::properties, beside the planner's own.
 //

@@ -13,7 +13,7 @@
 // - a plugin record: plain text in the library's ".aco_plugins" section (plugin_record.hpp).
 //   Hosts list plugins and check their ABI and standard library from the file alone, without
 //   loading it, so no plugin code runs before a plugin is chosen and found compatible;
-// - under the Boost.DLL alias aco_plugin__<kind>__<name>, the descriptor: the parameter table
+// - under the Boost.DLL alias aco_plugin__<slot>__<name>, the descriptor: the parameter table
 //   and the factory, read once the library is loaded.
 #include <boost/dll/alias.hpp>
 #include <cstdint>
@@ -40,7 +40,7 @@ namespace aco {
 //    record's standard-library marker replaces it).
 // 9: ParamType::text (free-text parameters, the python bridge's class and path): a value a
 //    parameter table, and so the descriptor, may hold that older hosts cannot read.
-// 10: the seventh slot, map (MapReader): a descriptor's kind may be "map", whose factory makes a
+// 10: the seventh slot, map (MapReader): a descriptor's slot may be "map", whose factory makes a
 //     MapReader, and Map objects made by a plugin's code reach the host.
 // 11: Context::figures, record() and add() (a plugin's own figures); the record's build field.
 // 12: Trail (a pheromone with a lazy scale and bounds): PheromoneUpdate::update_trail(), and
@@ -57,7 +57,7 @@ struct PluginDescriptor {
   // magic and abi_version are the first two fields in every ABI version.
   std::uint32_t magic;
   std::uint32_t abi_version;
-  const char* kind;
+  const char* slot;
   const char* name;
   const char* version;
   const char* summary;
@@ -96,19 +96,19 @@ ACO_SLOTS(ACO_SLOT_TYPE_)
 #define ACO_PLUGIN_STRINGIFY_(X) #X
 #define ACO_PLUGIN_STRINGIFY(X) ACO_PLUGIN_STRINGIFY_(X)
 
-#define ACO_PLUGIN(KIND, NAME, CLASS, VERSION, SUMMARY, PARAMS)                                                        \
+#define ACO_PLUGIN(SLOT, NAME, CLASS, VERSION, SUMMARY, PARAMS)                                                        \
   namespace {                                                                                                          \
-  static_assert(std::is_base_of_v<::aco::slot::KIND::interface, CLASS>,                                                \
-                #CLASS " does not implement the interface of slot '" #KIND "'");                                       \
+  static_assert(std::is_base_of_v<::aco::slot::SLOT::interface, CLASS>,                                                \
+                #CLASS " does not implement the interface of slot '" #SLOT "'");                                       \
   ::aco::Strategy* aco_plugin_create(const ::aco::ParameterValues& values) { return new CLASS(values); }               \
   const ::std::span<const ::aco::ParamSpec> aco_plugin_params{::aco::parameter_rows(PARAMS)};                          \
   const ::aco::PluginDescriptor aco_plugin_descriptor{                                                                 \
-      ::aco::kPluginMagic,      ACO_PLUGIN_ABI_VERSION, #KIND, #NAME, VERSION, SUMMARY, aco_plugin_params.data(),      \
+      ::aco::kPluginMagic,      ACO_PLUGIN_ABI_VERSION, #SLOT, #NAME, VERSION, SUMMARY, aco_plugin_params.data(),      \
       aco_plugin_params.size(), &aco_plugin_create};                                                                   \
-  [[gnu::used, gnu::section(ACO_PLUGIN_RECORD_SECTION)]] const char aco_plugin_record__##KIND##__##NAME[] =            \
+  [[gnu::used, gnu::section(ACO_PLUGIN_RECORD_SECTION)]] const char aco_plugin_record__##SLOT##__##NAME[] =            \
       ACO_PLUGIN_RECORD_MAGIC                                                                                          \
       "\0" ACO_PLUGIN_STRINGIFY(ACO_PLUGIN_ABI_VERSION) "\0" ACO_PLUGIN_STDLIB "\0" __VERSION__                        \
-                                                        "\0" ACO_BUILD_OPTIMISATION "\0" #KIND "\0" #NAME "\0" VERSION \
+                                                        "\0" ACO_BUILD_OPTIMISATION "\0" #SLOT "\0" #NAME "\0" VERSION \
                                                         "\0" SUMMARY;                                                  \
   }                                                                                                                    \
-  BOOST_DLL_ALIAS(aco_plugin_descriptor, aco_plugin__##KIND##__##NAME)
+  BOOST_DLL_ALIAS(aco_plugin_descriptor, aco_plugin__##SLOT##__##NAME)

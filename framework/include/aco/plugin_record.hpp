@@ -6,16 +6,14 @@
 // ACO_PLUGIN writes one record per plugin into the ELF section ".aco_plugins": NUL-separated
 // text fields
 //
-//   ACOP \0 <plugin ABI> \0 <standard library> \0 <compiler> \0 <build> \0 <kind> \0 <name> \0 <version> \0 <summary>
+//   ACOP \0 <plugin ABI> \0 <standard library> \0 <compiler> \0 <build> \0 <slot> \0 <name> \0 <version> \0 <summary>
 //   \0
 //
 // Records of several plugins in one library follow each other, perhaps with NUL padding between.
 // The first two fields keep their meaning in every ABI version; the others may change with it.
 #include <cstddef>  // defines the standard library's identifying macros used below
 #include <cstdint>
-#include <filesystem>
 #include <string>
-#include <vector>
 
 #define ACO_PLUGIN_RECORD_SECTION ".aco_plugins"
 #define ACO_PLUGIN_RECORD_MAGIC "ACOP"
@@ -55,7 +53,7 @@ struct PluginRecord {
   std::string stdlib;
   std::string compiler;  // __VERSION__ of the compiler that built the plugin, for information
   std::string build;  // ACO_BUILD_OPTIMISATION as the plugin was compiled
-  std::string kind;
+  std::string slot;
   std::string name;
   std::string version;
   std::string summary;
@@ -63,13 +61,5 @@ struct PluginRecord {
 
 // The standard-library marker of this framework's build.
 inline constexpr const char* kHostStdlib = ACO_PLUGIN_STDLIB;
-
-// The records in a library file, read from its section headers without loading it. Empty if the
-// file has no ".aco_plugins" section (a plugin built for ABI 7 or earlier); Error if the file is
-// not a readable ELF shared object for this machine or its records are malformed.
-std::vector<PluginRecord> read_plugin_records(const std::filesystem::path& file);
-
-// Why a host of this build must not load the plugin of `record`; empty if it may.
-std::string incompatibility(const PluginRecord& record);
 
 }  // namespace aco

@@ -2,7 +2,7 @@
 // The slots, written once. Everything that lists slots comes from here: the export macro's check
 // (plugin.hpp), the pipeline (pipeline.hpp), the error boundary's decorators (plugin_guard.hpp),
 // the conformance checks' dispatch (sdk conformance), the hosts' options, --list-plugins; and a
-// test (tests/test_slots.cpp) compares aco-new-plugin's kinds and docs/writing-plugins.md's slot
+// test (tests/test_slots.cpp) compares aco-new-plugin's slots and docs/writing-plugins.md's slot
 // table with kSlotTable. A new slot is one line here plus the code where it really differs: its
 // interface, its guard's decorator, its conformance runs, its scaffold template and docs row.
 //
@@ -28,7 +28,7 @@
 namespace aco {
 
 struct SlotInfo {
-  const char* name;  // the slot, as in ACO_PLUGIN(NAME, ...), "kind/name" and the plugin file name
+  const char* name;  // the slot, as in ACO_PLUGIN(NAME, ...), "slot/name" and the plugin file name
   const char* interface;  // the class a plugin of the slot implements
   const char* option;  // the run key (acoplan option) choosing its plugin: "update", "map-format"
   const char* default_plugin;  // the plugin a run gets unless it chooses; "" if the map file decides

@@ -7,7 +7,7 @@
 #include "aco/crash_report.hpp"
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/plugin_call.hpp"
 #include "aco/plugin_registry.hpp"
 #include "aco/program_options_error.hpp"
 #include "aco/worker_process.hpp"

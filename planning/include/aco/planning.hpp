@@ -50,7 +50,7 @@ struct PlanContext {
   NodeId start;
   NodeId goal;
   const RunSpec& run;
-  const LoadedPipeline& pipeline;
+  const PipelinePlugins& pipeline;
   FigureSink& figures;  // where the plugins' figures go (plan() adds them to the properties)
 };
 

@@ -153,8 +153,8 @@ constexpr const char* slot_of() {
 }
 
 // The registry over a file's folder (one per folder, kept for the process) and the file's plugin
-// of slot `kind` (the first, if it holds several). Throws Error if it has none.
-std::pair<PluginRegistry*, PluginFile> find_in(const std::filesystem::path& file, const std::string& kind);
+// of slot `slot` (the first, if it holds several). Throws Error if it has none.
+std::pair<PluginRegistry*, PluginFile> find_in(const std::filesystem::path& file, const std::string& slot);
 
 // The file's plugin of Interface's slot, behind the error boundary, its defaults overridden by
 // `given` ({{"rho", "0.2"}}).
@@ -164,9 +164,9 @@ std::unique_ptr<Interface> create(const std::filesystem::path& file,
   const auto found = find_in(file, slot_of<Interface>());
   PluginRegistry& registry = *found.first;
   const PluginFile& plugin = found.second;
-  const PluginDescriptor& descriptor = registry.load(plugin.kind, plugin.name);
-  return registry.create<Interface>(plugin.kind, plugin.name,
-                                    resolve(descriptor.parameters(), given, plugin.kind + "."));
+  const PluginDescriptor& descriptor = registry.load(plugin.slot, plugin.name);
+  return registry.create<Interface>(plugin.slot, plugin.name,
+                                    resolve(descriptor.parameters(), given, plugin.slot + "."));
 }
 
 }  // namespace aco::conformance

@@ -338,7 +338,7 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
     for (const char* option : {"fill-dead-ends", "local-search straighten", "walk-limit 4"}) {
       Row row{std::string("option ") + option, baseline, {}};
       row.settings.fill_dead_ends = std::string(option) == "fill-dead-ends";
-      if (std::string(option) == "local-search straighten") row.settings.local_search = "straighten";
+      if (std::string(option) == "local-search straighten") row.settings.local_search = aco::LocalSearch::straighten;
       if (std::string(option) == "walk-limit 4") row.settings.walk_limit = 4;
       rows.push_back(row);
     }

@@ -474,7 +474,7 @@ TEST_CASE("failed trials are stored named and counted by reason and acobench exi
   std::map<std::string, int> failures;
   for (const auto& t : aco::studies::ResultsDb(db).trials()) {
     if (!t.error.empty()) {
-      ++failures[t.failure];
+      ++failures[aco::studies::to_string(t.failure)];
       CHECK_FALSE(t.solved);
       CHECK(t.stopped_by == "error");
     }

@@ -138,7 +138,7 @@ TEST_CASE("a time limit stops the run at an iteration boundary with the best pat
   // Any run outlasts a nanosecond: the first iteration boundary ends it, whatever the machine.
   s.time_limit = 1e-9;
   const auto limited = aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s);
-  CHECK(limited.stopped_by == "time");
+  CHECK(limited.stopped_by == aco::StopReason::time);
   CHECK(limited.iterations == 1);
   CHECK(limited.best_so_far.size() == 1);
   REQUIRE(limited.solved);
@@ -146,10 +146,10 @@ TEST_CASE("a time limit stops the run at an iteration boundary with the best pat
   // A limit that is never reached, and the budget's last iteration past the limit, are the
   // iteration budget's stop.
   s.time_limit = 1e6;
-  CHECK(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s).stopped_by == "iterations");
+  CHECK(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s).stopped_by == aco::StopReason::iterations);
   s.iterations = 1;
   s.time_limit = 1e-9;
-  CHECK(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s).stopped_by == "iterations");
+  CHECK(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s).stopped_by == aco::StopReason::iterations);
   for (const double bad : {-1.0, std::numeric_limits<double>::infinity(), std::nan("")}) {
     s.time_limit = bad;
     CHECK_THROWS_WITH(aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s),
@@ -272,7 +272,7 @@ TEST_CASE("the same-path rule stops once that fraction of an iteration's ants sh
   s.same_path_stop = true;
   s.same_path_fraction = 0.5;
   const auto result = aco::run_colony(graph, 0, graph.node({19, 19}), p, s);
-  REQUIRE(result.stopped_by == "same path");
+  REQUIRE(result.stopped_by == aco::StopReason::same_path);
   REQUIRE(result.iterations < 300);
   // The last iteration met the rule and none before it did.
   auto largest = [](const std::vector<aco::Ant>& ants) {

@@ -274,7 +274,7 @@ TEST_CASE("the large-map options give bit-identical results for any thread count
     s.beta = 3;
     s.seed = 3;
     s.fill_dead_ends = true;
-    s.local_search = "straighten";
+    s.local_search = aco::LocalSearch::straighten;
     s.walk_limit = 2;
     s.bidirectional = bidirectional;
     std::vector<aco::ColonyResult> results;

@@ -69,7 +69,7 @@ aco::ColonySettings twin_settings(aco::NullModel model) {
   s.beta = 3;
   s.seed = 5;
   s.walk_limit = 4;
-  s.local_search = "straighten";
+  s.local_search = aco::LocalSearch::straighten;
   s.null_model = model;
   return s;
 }

@@ -356,10 +356,12 @@ TEST_CASE("a format-4 database gains runs.failure from how its failed trials sto
   sql_exec(file, "UPDATE acobench_meta SET value = '4' WHERE key = 'format_version'");
   auto db = open(file);
   CHECK(db.meta("format_version") == "6");
-  std::map<int, std::string> failures;
+  std::map<int, aco::studies::FailureKind> failures;
   for (const auto& t : db.trials()) failures[t.repetition * 10 + t.problem] = t.failure;
   // Which of a plugin or the engine's checks threw was not recorded: "error".
-  CHECK(failures == std::map<int, std::string>{{0, ""}, {11, "crashed"}, {21, "error"}});
+  using aco::studies::FailureKind;
+  CHECK(failures ==
+        std::map<int, FailureKind>{{0, FailureKind::none}, {11, FailureKind::crashed}, {21, FailureKind::error}});
 }
 
 TEST_CASE("a database grows by the problems an experiment adds, and leaves out those it no longer names",

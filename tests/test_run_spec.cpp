@@ -122,13 +122,13 @@ TEST_CASE("a settings table reads and writes its struct and takes its defaults f
   aco::ColonySettings s;
   s.ants = 7;
   s.walk_limit = 2.5;
-  s.local_search = "loops";
+  s.local_search = aco::LocalSearch::loops;
   s.bidirectional = true;
   s.seed = 123456789012345;
   const aco::ColonySettings back = aco::colony_settings(aco::colony_values(s));
   CHECK(back.ants == 7);
   CHECK(back.walk_limit == 2.5);
-  CHECK(back.local_search == "loops");
+  CHECK(back.local_search == aco::LocalSearch::loops);
   CHECK(back.bidirectional);
   CHECK(back.seed == 123456789012345u);
   CHECK(aco::to_string(aco::colony_values(s).all().at("search")) == "bidirectional");

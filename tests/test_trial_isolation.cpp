@@ -80,7 +80,7 @@ std::map<std::string, int> check_failures(const std::filesystem::path& db) {
     CHECK(t.stopped_by == (kind == "plugin error" ? "error" : kind));
     CHECK_FALSE(t.solved);
     CHECK_THAT(t.error, Contains(message));
-    ++kinds[t.failure];
+    ++kinds[aco::studies::to_string(t.failure)];
   }
   return kinds;
 }

@@ -51,7 +51,10 @@ aco::studies::TrialRecord sample_trial(int config) {
   t.config = config;
   const auto& fields = aco::studies::trial_fields();
   for (std::size_t i = 0; i < fields.size(); ++i)
-    if (fields[i].set) fields[i].set(t, sample(fields[i].type, static_cast<int>(i)));
+    if (fields[i].set)
+      fields[i].set(t, fields[i].values.empty()
+                           ? sample(fields[i].type, static_cast<int>(i))
+                           : aco::studies::TrialCell(fields[i].values[i % fields[i].values.size()]));
   t.best_so_far.assign(static_cast<std::size_t>(t.iterations), 40.0);
   t.properties = {
       {"ant_steps", std::int64_t{7}}, {"stopped_by", std::string("time")}, {"update/x.restarts", std::int64_t{2}}};
@@ -176,4 +179,15 @@ TEST_CASE("a process's peak memory rises with what it touches and starts over wh
   REQUIRE(munmap(block, size) == 0);
   REQUIRE(aco::studies::reset_peak_memory());  // the block is given back: the peak is what is resident now
   CHECK(aco::studies::peak_memory_mib() < before + kBlockMib / 2);
+}
+
+TEST_CASE("a failure's kind is an enum in C++ and its text at the edges", "[trialrecord]") {
+  using aco::studies::FailureKind;
+  for (FailureKind kind : {FailureKind::none, FailureKind::crashed, FailureKind::timed_out, FailureKind::out_of_memory,
+                           FailureKind::plugin_error, FailureKind::invalid_value, FailureKind::error})
+    CHECK(aco::studies::failure_kind(aco::studies::to_string(kind)) == kind);
+  CHECK(std::string(aco::studies::to_string(FailureKind::timed_out)) == "timed out");
+  CHECK_THROWS_WITH(aco::studies::failure_kind("exploded"),
+                    Catch::Matchers::Contains("unknown failure 'exploded'") &&
+                        Catch::Matchers::Contains("'crashed', 'timed out', 'out of memory'"));
 }

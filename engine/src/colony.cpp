@@ -129,7 +129,7 @@ class Colony {
         p_(pipeline),
         s_(settings),
         check_every_hook_(check_every_hook),
-        shortener_(graph, forbidden_, settings.local_search == "loops" ? 0 : settings.local_search_window) {
+        shortener_(graph, forbidden_, settings.local_search == LocalSearch::loops ? 0 : settings.local_search_window) {
     context_.graph = &graph;
     context_.start = start;
     context_.goal = goal;
@@ -142,7 +142,7 @@ class Colony {
     forbidden_.assign(graph.num_nodes(), 0);
     if (settings.fill_dead_ends) forbidden_ = dead_ends(graph, start, goal);
     known_forbidden_ = forbidden_;
-    local_search_ = settings.local_search != "none";
+    local_search_ = settings.local_search != LocalSearch::none;
     int max_degree = 1;
     for (NodeId n = 0; n < graph.num_nodes(); ++n) max_degree = std::max(max_degree, graph.degree(n));
     scratch_ = std::make_unique<ScratchPool>([this, max_degree] { return Scratch(known_forbidden_, max_degree); });
@@ -600,16 +600,16 @@ ColonyResult iterate(const ColonySettings& s, Clock::time_point started, std::sp
                  static_cast<std::uint64_t>(result.iterations) * static_cast<std::uint64_t>(s.ants) * colonies.size());
 
     if (s.stagnation > 0 && it + 1 - last_improvement >= s.stagnation) {
-      result.stopped_by = "stagnation";
+      result.stopped_by = StopReason::stagnation;
       break;
     }
     if (s.same_path_stop && largest_same_path(ants[0]) >= s.same_path_fraction * s.ants) {
-      result.stopped_by = "same path";
+      result.stopped_by = StopReason::same_path;
       break;
     }
     if (s.time_limit > 0.0 && it + 1 < s.iterations &&
         std::chrono::duration<double>(Clock::now() - started).count() >= s.time_limit) {
-      result.stopped_by = "time";
+      result.stopped_by = StopReason::time;
       break;
     }
   }

@@ -29,8 +29,9 @@ const SettingsTable<ColonySettings>& colony_table() {
       field("fill-dead-ends", &S::fill_dead_ends, "",
             "forbid, before the first iteration, every cell that lies on no loop-free start-goal path (dead-end "
             "filling)"),
-      field("local-search", &S::local_search, "none,loops,straighten",
-            "shorten each arrived ant's walk before the update: cut its loops, or also straighten stretches of it"),
+      choice("local-search", &S::local_search, {"none", "loops", "straighten"},
+             {LocalSearch::none, LocalSearch::loops, LocalSearch::straighten},
+             "shorten each arrived ant's walk before the update: cut its loops, or also straighten stretches of it"),
       field("local-search-window", &S::local_search_window, "2:4096",
             "longest stretch of a walk, in nodes, that straighten replaces by one straight segment"),
       field("walk-limit", &S::walk_limit, "0:1e6",
@@ -49,5 +50,19 @@ const SettingsTable<ColonySettings>& colony_table() {
 std::span<const ParamSpec> colony_parameters() { return colony_table().parameters(); }
 ColonySettings colony_settings(const ParameterValues& values) { return colony_table().read(values); }
 ParameterValues colony_values(const ColonySettings& settings) { return colony_table().write(settings); }
+
+const char* to_string(StopReason reason) {
+  switch (reason) {
+    case StopReason::stagnation:
+      return "stagnation";
+    case StopReason::same_path:
+      return "same path";
+    case StopReason::time:
+      return "time";
+    case StopReason::iterations:
+      break;
+  }
+  return "iterations";
+}
 
 }  // namespace aco

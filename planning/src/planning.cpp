@@ -21,7 +21,7 @@ void run_aco(const PlanContext& c, PlanOutcome& o) {
   ColonyResult colony =
       run_pipeline(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony, &c.figures);
   o.properties["ant_steps"] = static_cast<std::int64_t>(colony.ant_steps);
-  o.properties["stopped_by"] = colony.stopped_by;
+  o.properties["stopped_by"] = std::string(to_string(colony.stopped_by));
   o.iteration_best = std::move(colony.iteration_best);
   o.pheromone = std::move(colony.pheromone);
   o.search = std::move(static_cast<SearchResult&>(colony));

@@ -173,9 +173,11 @@ py::dict run_experiment(const std::filesystem::path& file, const std::filesystem
   py::list failures;
   py::dict by_reason;
   for (const auto& f : summary.failures) {
-    failures.append(py::dict(py::arg("configuration") = f.configuration, py::arg("reason") = f.kind,
-                             py::arg("message") = f.message, py::arg("earlier") = f.earlier));
-    by_reason[py::str(f.kind)] = by_reason.attr("get")(f.kind, 0).cast<int>() + 1;
+    failures.append(py::dict(py::arg("configuration") = f.configuration,
+                             py::arg("reason") = aco::studies::to_string(f.kind), py::arg("message") = f.message,
+                             py::arg("earlier") = f.earlier));
+    const char* reason = aco::studies::to_string(f.kind);
+    by_reason[py::str(reason)] = by_reason.attr("get")(reason, 0).cast<int>() + 1;
   }
   return py::dict(py::arg("trials") = summary.trials, py::arg("skipped") = summary.skipped,
                   py::arg("ran") = summary.ran, py::arg("failures") = failures,

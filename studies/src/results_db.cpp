@@ -599,16 +599,16 @@ std::set<std::tuple<int, int, int>> ResultsDb::finished() const {
   return done;
 }
 
-std::map<std::tuple<int, int, int>, std::pair<std::string, std::string>> ResultsDb::failed() const {
+std::map<std::tuple<int, int, int>, std::pair<FailureKind, std::string>> ResultsDb::failed() const {
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
-  std::map<std::tuple<int, int, int>, std::pair<std::string, std::string>> failures;
+  std::map<std::tuple<int, int, int>, std::pair<FailureKind, std::string>> failures;
   Statement read(d.db, "SELECT experimentid, plannerid, repetition, failure, error FROM runs WHERE error IS NOT NULL");
   read.run();
   while (read.next())
     if (const auto problem = d.problem_of.find(read.integer(0)); problem != d.problem_of.end())
       failures[{problem->second, static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2))}] = {
-          read.text(3), read.text(4)};
+          failure_kind(read.text(3)), read.text(4)};
   return failures;
 }
 

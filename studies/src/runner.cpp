@@ -246,7 +246,7 @@ class Runner {
   std::unique_ptr<ResultsDb> db_;
   std::vector<int> order_;  // configuration ids in the order they were added
   std::set<std::tuple<int, int, int>> finished_;
-  std::map<std::tuple<int, int, int>, std::pair<std::string, std::string>> failed_before_;
+  std::map<std::tuple<int, int, int>, std::pair<FailureKind, std::string>> failed_before_;
   std::vector<double> optimal_;  // per problem; < 0 unknown
   // Per configuration id: (solved, length / optimum) of each (problem, repetition).
   std::map<int, std::map<std::pair<int, int>, std::pair<bool, double>>> scores_;
@@ -258,7 +258,7 @@ class Runner {
 
 std::vector<std::string> describe_failures(const std::vector<TrialFailure>& failures) {
   // kind -> configuration -> (count, the first message)
-  std::map<std::string, std::map<std::string, std::pair<std::size_t, std::string>>> by_kind;
+  std::map<FailureKind, std::map<std::string, std::pair<std::size_t, std::string>>> by_kind;
   for (const auto& f : failures) {
     // The smallest message, not the first to arrive: the same lines whatever the trials' order.
     auto& [count, example] = by_kind[f.kind][f.configuration];

@@ -6,8 +6,14 @@
 #include <type_traits>
 #include <utility>
 
+#include "aco/error.hpp"
+
 namespace aco::studies {
 namespace {
+
+// FailureKind's texts, in the enum's order.
+constexpr const char* kFailureTexts[] = {
+    "", "crashed", "timed out", "out of memory", "plugin error", "invalid value", "error"};
 
 template <class Member>
 constexpr TrialCellType type_of() {
@@ -54,7 +60,8 @@ TrialField field(const char* name, Member TrialRecord::*member, unsigned use, co
           use,
           csv_digits,
           [member](const TrialRecord& t, double) { return cell(t.*member); },
-          [member](TrialRecord& t, const TrialCell& value) { assign(t.*member, value); }};
+          [member](TrialRecord& t, const TrialCell& value) { assign(t.*member, value); },
+          {}};
 }
 
 // A length: NULL unless solved.
@@ -84,7 +91,8 @@ TrialField simulation_field(const char* name, Member SimulationRecord::*member) 
             if (std::holds_alternative<std::monostate>(value)) return;
             if (!t.simulation) t.simulation.emplace();
             assign((*t.simulation).*member, value);
-          }};
+          },
+          {}};
 }
 
 // The excess of a solved trial's grid path over the optimum (exact A* on the same graph) times
@@ -98,6 +106,7 @@ TrialField gap(const char* name, unsigned use, double scale, int csv_digits) {
           [scale](const TrialRecord& t, double optimal) {
             return t.solved && optimal > 0 ? TrialCell(scale * (t.grid_length / optimal - 1.0)) : TrialCell();
           },
+          {},
           {}};
 }
 
@@ -165,7 +174,18 @@ const std::vector<TrialField>& trial_fields() {
       simulation_field("clearance", &SimulationRecord::clearance),
       simulation_field("control_steps", &SimulationRecord::control_steps),
       text_or_null("error", &TrialRecord::error, kStored | kInPython),
-      text_or_null("failure", &TrialRecord::failure, kStored),
+      {"failure",
+       "failure",
+       TrialCellType::text,
+       kStored,
+       10,
+       [](const TrialRecord& t, double) {
+         return t.failure == FailureKind::none ? TrialCell() : TrialCell(std::string(to_string(t.failure)));
+       },
+       [](TrialRecord& t, const TrialCell& value) {
+         if (const auto* text = std::get_if<std::string>(&value)) t.failure = failure_kind(*text);
+       },
+       {std::begin(kFailureTexts) + 1, std::end(kFailureTexts)}},
       field("peak_memory_mib", &TrialRecord::peak_memory_mib, kEverywhere),
   };
   return fields;
@@ -209,6 +229,17 @@ std::string runs_csv(const std::vector<TrialRecord>& trials, const std::vector<P
     out << "\n";
   }
   return out.str();
+}
+
+const char* to_string(FailureKind kind) { return kFailureTexts[static_cast<int>(kind)]; }
+
+FailureKind failure_kind(std::string_view text) {
+  std::string known;
+  for (int i = 0; i < static_cast<int>(std::size(kFailureTexts)); ++i) {
+    if (text == kFailureTexts[i]) return static_cast<FailureKind>(i);
+    if (i > 0) known += std::string(known.empty() ? "" : ", ") + "'" + kFailureTexts[i] + "'";
+  }
+  throw aco::Error("unknown failure '" + std::string(text) + "' (known: " + known + ")");
 }
 
 }  // namespace aco::studies

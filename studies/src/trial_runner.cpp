@@ -137,30 +137,31 @@ TrialRecord TrialRunner::run(const TrialOrder& t) {
     try {
       return experiment_.problems[t.problem].simulation ? simulate(t) : plan(t);
     } catch (const aco::OutOfMemoryError& e) {
-      return failed(t, "out of memory", e.what());
+      return failed(t, FailureKind::out_of_memory, e.what());
     } catch (const std::bad_alloc&) {
-      return failed(t, "out of memory", "out of memory (std::bad_alloc)");
+      return failed(t, FailureKind::out_of_memory, "out of memory (std::bad_alloc)");
     } catch (const aco::InvalidValueError& e) {
-      return failed(t, "invalid value", e.what());
+      return failed(t, FailureKind::invalid_value, e.what());
     } catch (const aco::PluginError& e) {
-      return failed(t, "plugin error", e.what());
+      return failed(t, FailureKind::plugin_error, e.what());
     } catch (...) {
-      return failed(t, "error", aco::describe_current_exception());
+      return failed(t, FailureKind::error, aco::describe_current_exception());
     }
   }();
   r.peak_memory_mib = peak_memory_mib();
   return r;
 }
 
-TrialRecord TrialRunner::failed(const TrialOrder& t, const std::string& kind, const std::string& reason) const {
+TrialRecord TrialRunner::failed(const TrialOrder& t, FailureKind kind, const std::string& reason) const {
   TrialRecord r;
   r.problem = t.problem;
   r.config = t.config;
   r.repetition = t.repetition;
   r.seed = trial_seed(experiment_.seed, experiment_.problems[t.problem].name, t.repetition);
   // stopped_by keeps the four values the report's table of failures counts.
-  const bool threw = kind == "plugin error" || kind == "invalid value" || kind == "error";
-  r.stopped_by = threw ? "error" : kind;
+  const bool threw =
+      kind == FailureKind::plugin_error || kind == FailureKind::invalid_value || kind == FailureKind::error;
+  r.stopped_by = threw ? "error" : to_string(kind);
   r.failure = kind;
   r.path_json = "[]";
   r.error = "configuration '" + config(t.config).name + "', problem '" + experiment_.problems[t.problem].name +
@@ -257,12 +258,22 @@ bool reset_peak_memory() {
   return bool(clear);
 }
 
-std::string describe_failure(const std::string& kind) {
-  if (kind == "crashed") return "crashed (a signal)";
-  if (kind == "timed out") return "over the trial time limit";
-  if (kind == "out of memory") return "out of memory";
-  if (kind == "plugin error") return "a plugin threw";
-  if (kind == "invalid value") return "a plugin wrote an invalid value";
+std::string describe_failure(FailureKind kind) {
+  switch (kind) {
+    case FailureKind::crashed:
+      return "crashed (a signal)";
+    case FailureKind::timed_out:
+      return "over the trial time limit";
+    case FailureKind::out_of_memory:
+      return "out of memory";
+    case FailureKind::plugin_error:
+      return "a plugin threw";
+    case FailureKind::invalid_value:
+      return "a plugin wrote an invalid value";
+    case FailureKind::none:
+    case FailureKind::error:
+      break;
+  }
   return "other error";
 }
 

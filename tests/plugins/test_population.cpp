@@ -84,7 +84,7 @@ TEST_CASE("population solves classic map1 bit-identically for any thread count",
   settings.ants = 20;
   settings.iterations = 30;
   settings.q0 = 0.5;
-  settings.local_search = "straighten";
+  settings.local_search = aco::LocalSearch::straighten;
   const aco::ColonyResult result = test::run_on_thread_counts(
       graph, 0, graph.node({19, 19}), settings, {"uniform", "progress", "population", "backtrack"}, {{"size", "3"}});
   REQUIRE(result.solved);

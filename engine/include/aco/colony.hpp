@@ -21,6 +21,10 @@ namespace aco {
 //   pheromone; they share nothing but the best result.
 enum class NullModel { none, no_learning, restarts };
 
+// Local search on every arrived ant's walk before the update (aco/local_search.hpp): none, cut
+// loops only, or also replace straight-line-visible stretches up to the window by one segment.
+enum class LocalSearch { none, loops, straighten };
+
 struct ColonySettings {
   int ants = 50;
   int iterations = 100;
@@ -44,9 +48,7 @@ struct ColonySettings {
   // Before the first iteration, forbid the cells that lie on no loop-free start-goal path
   // (aco/dead_ends.hpp).
   bool fill_dead_ends = false;
-  // Local search on every arrived ant's walk before the update (aco/local_search.hpp):
-  // none, loops (cut loops only) or straighten (also straight segments up to the window).
-  std::string local_search = "none";
+  LocalSearch local_search = LocalSearch::none;
   int local_search_window = 64;
   // An ant that has made walk_limit times as many moves as the best path so far has steps dies
   // (0 = no limit): on large maps a lost ant can otherwise fill whole rooms before it backs out.
@@ -71,11 +73,16 @@ struct ColonyStrategies {
   FigureSink* figures = nullptr;
 };
 
+// Why a colony stopped: its iteration budget, stagnation, paper 001's same-path rule, the time limit.
+enum class StopReason { iterations, stagnation, same_path, time };
+// "iterations", "stagnation", "same path", "time": the run property stopped_by.
+const char* to_string(StopReason reason);
+
 struct ColonyResult : SearchResult {
   std::vector<double> iteration_best;  // per iteration (none if no ant arrived)
   std::vector<int> arrived;  // per iteration: ants that reached the goal
   std::uint64_t ant_steps = 0;  // moves made by all ants, backtracking included
-  std::string stopped_by = "iterations";  // or "stagnation", "same path", "time"
+  StopReason stopped_by = StopReason::iterations;
   std::vector<double> pheromone;  // final tau per edge
 };
 

@@ -97,7 +97,7 @@ class ResultsDb {
   // (problem, config id, repetition) of every stored trial.
   std::set<std::tuple<int, int, int>> finished() const;
   // (problem, config id, repetition) -> (failure, error) of every stored trial that failed.
-  std::map<std::tuple<int, int, int>, std::pair<std::string, std::string>> failed() const;
+  std::map<std::tuple<int, int, int>, std::pair<FailureKind, std::string>> failed() const;
   // What the experiment given to the constructor added to the database (empty if it made it).
   Growth growth() const;
 

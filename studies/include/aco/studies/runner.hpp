@@ -65,7 +65,7 @@ struct RunOptions {
 // A trial of the experiment that failed, in this run or (earlier) stored as failed by another.
 struct TrialFailure {
   std::string configuration;
-  std::string kind;  // one of kFailureKinds
+  FailureKind kind = FailureKind::error;
   std::string message;  // the trial's error, naming it
   bool earlier = false;
 };

@@ -13,6 +13,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -45,6 +46,18 @@ struct SimulationRecord {
   int control_steps = 0;
 };
 
+// Why a trial failed: a crash (a signal), the trial time limit, the trial memory limit, a plugin
+// that threw, a value a plugin wrote that the engine refused (aco::InvalidValueError), anything
+// else (the host's own errors, and every failure stored by an acobench of format 4 or earlier that
+// threw).
+enum class FailureKind { none, crashed, timed_out, out_of_memory, plugin_error, invalid_value, error };
+
+// As runs.failure, the JSON messages and Python write it: "crashed", "timed out", "out of memory",
+// "plugin error", "invalid value", "error"; "" for none.
+const char* to_string(FailureKind kind);
+// The kind that text names ("" none); an Error naming the text and the kinds for any other.
+FailureKind failure_kind(std::string_view text);
+
 struct TrialRecord {
   int problem = 0;  // index into the problems given to the constructor
   int config = 0;  // id returned by add_config()
@@ -64,9 +77,9 @@ struct TrialRecord {
   std::vector<std::uint64_t> walks;
   std::optional<SimulationRecord> simulation;  // simulation trials only (NULL columns otherwise)
   // A trial that failed: the message (solved false; stopped_by "error", "crashed", "timed out" or
-  // "out of memory") and why (one of kFailureKinds); both "" otherwise.
+  // "out of memory") and why; "" and none otherwise.
   std::string error;
-  std::string failure;
+  FailureKind failure = FailureKind::none;
   // The run's properties (aco::PlanOutcome::properties): the planner's ("ant_steps",
   // "evaluations"...) and the plugins' figures ("update/max_min.restarts").
   std::map<std::string, aco::ParamValue> properties;
@@ -104,6 +117,8 @@ struct TrialField {
   // Sets the member from a value; NULL leaves the record's default. Empty for derived fields,
   // which are not in messages.
   std::function<void(TrialRecord&, const TrialCell&)> set;
+  // A text field's only values when it has a fixed set (failure: FailureKind's texts); else empty.
+  std::vector<std::string> values;
 };
 
 // Every field, in the order of the runs table's columns (after id, experimentid, plannerid) and
@@ -121,14 +136,7 @@ std::vector<std::string> property_columns(const std::vector<TrialRecord>& trials
 std::string runs_csv(const std::vector<TrialRecord>& trials, const std::vector<ProblemRecord>& problems,
                      const std::vector<std::pair<int, ConfigRecord>>& configs);
 
-// Why trials fail, as runs.failure stores it: a crash (a signal), the trial time limit, the trial
-// memory limit, a plugin that threw, a value a plugin wrote that the engine refused (aco::
-// InvalidValueError), anything else (the host's own errors, and every failure stored by an
-// acobench of format 4 or earlier that threw).
-inline constexpr const char* kFailureKinds[] = {"crashed",      "timed out",     "out of memory",
-                                                "plugin error", "invalid value", "error"};
-
 // What a failure kind means, for the summary at the end of a run.
-std::string describe_failure(const std::string& kind);
+std::string describe_failure(FailureKind kind);
 
 }  // namespace aco::studies

@@ -45,7 +45,7 @@ class TrialRunner {
   TrialRecord run(const TrialOrder& trial);
   // The record of a trial that failed: `kind` is its failure (one of kFailureKinds), `reason` its
   // error after the trial's name.
-  TrialRecord failed(const TrialOrder& trial, const std::string& kind, const std::string& reason) const;
+  TrialRecord failed(const TrialOrder& trial, FailureKind kind, const std::string& reason) const;
 
  private:
   struct Problems;

@@ -19,6 +19,7 @@
 #include "aco/plugin_record.hpp"
 #include "aco/run_spec.hpp"
 #include "aco/studies/plots.hpp"
+#include "report_analysis.hpp"
 #include "aco/studies/report_document.hpp"
 #include "aco/studies/results_db.hpp"
 #include "aco/studies/statistics.hpp"
@@ -38,127 +39,6 @@ std::string fixed(double v, int decimals) {
   char text[64];
   std::snprintf(text, sizeof text, "%.*f", decimals, v);
   return text;
-}
-
-// One configuration on one problem.
-struct Result {
-  int config = 0;  // index into Analysis::configs
-  std::vector<const TrialRecord*> runs;
-  std::vector<double> lengths;  // solved runs only
-  std::vector<double> gaps;  // solved runs only, when the optimum is known: gap_percent()
-  Summary length;
-  double success = 0.0;
-  double gap = NAN;  // mean of gaps
-  double turns = NAN, best_iteration = NAN, time_ms = NAN;
-  double p = NAN, p_holm = NAN, a12 = NAN;  // against the baseline on this problem
-  const TrialRecord* best = nullptr;
-};
-
-struct Analysis {
-  std::string name;
-  std::vector<ProblemRecord> problems;
-  std::vector<std::pair<int, ConfigRecord>> configs;
-  std::vector<TrialRecord> trials;
-  std::vector<std::vector<Result>> results;  // [problem][config]
-  std::vector<double> average_rank;  // per config
-  std::vector<std::string> ablation_path;
-  std::filesystem::path experiment_dir;  // the maps are relative to it
-  aco::PluginRegistry* registry = nullptr;  // the map plugins
-  std::vector<int> buckets;  // per problem: Moving AI bucket, or -1
-  std::size_t unmeasured = 0;  // runs stored without anytime curves (by an older acobench)
-  std::string host_version, host_build;  // of the acobench that ran the trials ("" if not recorded)
-};
-
-// The excess of a solved trial over the problem's optimum, %. The optimum is exact A* on the
-// grid graph, so the trial's grid path (before any smoothing) is what is compared with it: a
-// smoothed (any-angle) path may be shorter than the grid optimum, and its "gap" would be
-// negative without being better than optimal. (A simulation trial's grid length is the distance
-// driven.)
-double gap_percent(double grid_length, double optimal) { return 100.0 * (grid_length / optimal - 1.0); }
-double gap_percent(const TrialRecord& t, double optimal) { return gap_percent(t.grid_length, optimal); }
-
-// A planning run whose rows lack the anytime curves: stored by an acobench of format 3 or earlier.
-bool unmeasured(const TrialRecord& t) { return !t.simulation && t.iterations > 0 && t.elapsed_s.empty(); }
-
-double mean_of(const std::vector<double>& v) {
-  if (v.empty()) return NAN;
-  double s = 0;
-  for (double x : v) s += x;
-  return s / v.size();
-}
-
-double largest(const std::vector<double>& v) { return v.empty() ? NAN : *std::max_element(v.begin(), v.end()); }
-
-Analysis analyse(const ResultsDb& db) {
-  Analysis a;
-  a.name = db.meta("experiment_name");
-  a.problems = db.problems();
-  a.configs = db.configs();
-  a.trials = db.trials();
-  a.experiment_dir = std::filesystem::path(db.meta("experiment_file")).parent_path();
-  a.host_version = db.find_meta("host_version").value_or("");
-  a.host_build = db.find_meta("host_build").value_or("");
-  std::map<int, int> index;  // config id -> position
-  for (std::size_t c = 0; c < a.configs.size(); ++c) index[a.configs[c].first] = static_cast<int>(c);
-  a.results.assign(a.problems.size(), std::vector<Result>(a.configs.size()));
-  for (const auto& problem : a.problems) {
-    const auto setup = nlohmann::json::parse(problem.setup_json);
-    a.buckets.push_back(setup.value("bucket", -1));
-  }
-  for (std::size_t p = 0; p < a.problems.size(); ++p)
-    for (std::size_t c = 0; c < a.configs.size(); ++c) a.results[p][c].config = static_cast<int>(c);
-  for (const auto& t : a.trials) a.results[t.problem][index.at(t.config)].runs.push_back(&t);
-  a.unmeasured = static_cast<std::size_t>(std::count_if(a.trials.begin(), a.trials.end(), unmeasured));
-
-  std::vector<double> raw_p;
-  std::vector<Result*> compared;
-  for (std::size_t p = 0; p < a.problems.size(); ++p) {
-    const double optimal = a.problems[p].optimal_length;
-    for (auto& r : a.results[p]) {
-      std::vector<double> turns, best_iterations, times;
-      for (const auto* t : r.runs) {
-        times.push_back(t->time_s * 1000.0);
-        if (!t->solved) continue;
-        r.lengths.push_back(t->length);
-        turns.push_back(t->turns);
-        best_iterations.push_back(t->best_iteration);
-        if (optimal > 0) r.gaps.push_back(gap_percent(*t, optimal));
-        if (!r.best || t->length < r.best->length) r.best = t;
-      }
-      r.length = summarize(r.lengths);
-      r.success = r.runs.empty() ? NAN : double(r.lengths.size()) / r.runs.size();
-      r.gap = mean_of(r.gaps);
-      r.turns = mean_of(turns);
-      r.best_iteration = mean_of(best_iterations);
-      r.time_ms = mean_of(times);
-    }
-    const Result& baseline = a.results[p][0];
-    for (std::size_t c = 1; c < a.configs.size(); ++c) {
-      Result& r = a.results[p][c];
-      if (r.lengths.empty() || baseline.lengths.empty()) continue;
-      r.p = mann_whitney_u(r.lengths, baseline.lengths).p;
-      r.a12 = vargha_delaney_a12(r.lengths, baseline.lengths);
-      raw_p.push_back(r.p);
-      compared.push_back(&r);
-    }
-  }
-  const auto adjusted = holm_adjust(raw_p);
-  for (std::size_t i = 0; i < compared.size(); ++i) compared[i]->p_holm = adjusted[i];
-
-  // Ranking by mean length; a configuration that never solved a problem ranks last on it.
-  std::vector<std::vector<double>> scores(a.configs.size(), std::vector<double>(a.problems.size()));
-  for (std::size_t p = 0; p < a.problems.size(); ++p)
-    for (std::size_t c = 0; c < a.configs.size(); ++c) {
-      const double m = a.results[p][c].length.mean;
-      scores[c][p] = std::isfinite(m) ? m : std::numeric_limits<double>::max();
-    }
-  if (!a.problems.empty() && !a.configs.empty()) a.average_rank = average_ranks(scores);
-  try {
-    a.ablation_path = nlohmann::json::parse(db.meta("ablation_path")).get<std::vector<std::string>>();
-  } catch (const aco::Error&) {
-    // No ablation in this experiment.
-  }
-  return a;
 }
 
 struct Column {
@@ -533,48 +413,6 @@ std::vector<Table> summary_tables(const Analysis& a) {
   return tables;
 }
 
-// The fixed targets of the anytime view, gap to the optimum in %.
-constexpr std::array kTargets{1.0, 5.0};
-
-// One run on a problem with a known optimum, for the anytime view: when it first came within each
-// target, in seconds and in walks (infinity: never), and what it spent in all.
-struct Reach {
-  std::array<double, kTargets.size()> seconds{}, walks{};
-  double seconds_spent = 0.0;
-};
-
-// The best-so-far gap per iteration, % (infinity before the first path).
-std::vector<double> gap_curve(const TrialRecord& t, double optimal) {
-  std::vector<double> gaps;
-  for (const double b : t.best_so_far) gaps.push_back(std::isfinite(b) ? gap_percent(b, optimal) : b);
-  return gaps;
-}
-
-std::vector<double> as_reals(const std::vector<std::uint64_t>& counts) { return {counts.begin(), counts.end()}; }
-
-// Per configuration: its runs on every problem with a known optimum. A run that failed or never
-// started counts as one that never reached a target; a run without measured curves is left out.
-std::vector<std::vector<Reach>> reaches(const Analysis& a) {
-  std::vector<std::vector<Reach>> all(a.configs.size());
-  for (std::size_t p = 0; p < a.problems.size(); ++p) {
-    const double optimal = a.problems[p].optimal_length;
-    if (!(optimal > 0)) continue;
-    for (const Result& r : a.results[p])
-      for (const TrialRecord* t : r.runs) {
-        if (t->simulation || unmeasured(*t)) continue;
-        const std::vector<double> gaps = gap_curve(*t, optimal), walks = as_reals(t->walks);
-        Reach reach;
-        for (std::size_t k = 0; k < kTargets.size(); ++k) {
-          reach.seconds[k] = hitting_time(t->elapsed_s, gaps, kTargets[k]);
-          reach.walks[k] = hitting_time(walks, gaps, kTargets[k]);
-        }
-        reach.seconds_spent = t->elapsed_s.empty() ? t->time_s : t->elapsed_s.back();
-        all[static_cast<std::size_t>(r.config)].push_back(reach);
-      }
-  }
-  return all;
-}
-
 std::string target_name(double target) { return "gap <= " + fixed(target, 0) + " %"; }
 
 std::string unmeasured_note(const Analysis& a) {
@@ -788,19 +626,6 @@ std::vector<Figure> path_pictures(const Analysis& a, std::size_t p, FigureFiles&
   for (const Picture& picture : pictures)
     figures.push_back(files.add("paths-" + a.problems[p].name, map_paths_svg(*picture.map, picture.paths)));
   return figures;
-}
-
-// The mean gap over all problems of each step of the ablation path.
-std::vector<double> ablation_gaps(const Analysis& a) {
-  std::vector<double> means;
-  for (const std::string& step : a.ablation_path) {
-    std::vector<double> gaps;
-    for (std::size_t p = 0; p < a.problems.size(); ++p)
-      for (const auto& r : a.results[p])
-        if (a.configs[r.config].second.name == step && std::isfinite(r.gap)) gaps.push_back(r.gap);
-    means.push_back(mean_of(gaps));
-  }
-  return means;
 }
 
 // Per problem: every configuration's summary, then its pictures.

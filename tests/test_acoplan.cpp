@@ -402,7 +402,7 @@ TEST_CASE("acoplan names a bad config line, and shows '%' placeholders in any in
   const auto section = test::temp_file("section.ini", "ants = 3\n[]\n").string();
   expect_error({"--config", section}, section + ":2: '[]' names no section");
   const auto json = test::temp_file("json.ini", "json = %value%\n").string();
-  expect_error({"--config", json}, json + ": the argument ('%value%') for option 'json' is invalid");
+  expect_error({"--config", json}, "--json: '%value%' is not a boolean (use true or false)");
   expect_error({"--config", test::temp_file("key.ini", "[%x%]\n%canonical_option% = 1\n").string()},
                "unknown option '--%x%.%canonical_option%'");
   expect_error({"--config", test::temp_file("value.ini", "beta = %value%\n").string()},
@@ -567,7 +567,8 @@ TEST_CASE("acoplan in-process: the command line resolves into one RunSpec, run()
   CHECK(request.run.pipeline.at("update").parameters.real("rho") == 0.05);
   CHECK(request.run.colony.ants == 12);
   CHECK(request.run.problem.goal == aco::Cell{19, 19});
-  CHECK(request.host.integer("threads") == 1);
+  CHECK(request.host.threads == 1);
+  CHECK(request.output.json);
   std::ostringstream out;
   const int status = acoplan::run(request, out);
   CHECK((status == 0 || status == aco::kExitNoPath));

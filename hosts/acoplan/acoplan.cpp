@@ -27,7 +27,7 @@ void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco
   picture.goal = o.goal;
   picture.grid_path = o.search.path;
   picture.path = o.path;
-  if (r.host.boolean("svg-pheromone")) picture.pheromone = o.pheromone;
+  if (r.host.svg_pheromone) picture.pheromone = o.pheromone;
   picture.best_so_far = o.search.best_so_far;
   picture.iteration_best = o.iteration_best;
   picture.optimal_length = o.optimal_length.value_or(0.0);
@@ -36,14 +36,14 @@ void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco
 
 // --irace: the mean cost over the runs, an unsolved run counting as kIraceUnsolvedCost, in the
 // shortest text that reads back as the same double (so a length equals --json's length).
-std::string irace_cost(const std::vector<aco::PlanRun>& runs, Request::IraceCost kind, double effort_weight) {
+std::string irace_cost(const std::vector<aco::PlanRun>& runs, OutputSettings::IraceCost kind, double effort_weight) {
   const auto quality = [kind](const aco::PlanRun& o) {
-    if (kind == Request::IraceCost::length) return o.length;
+    if (kind == OutputSettings::IraceCost::length) return o.length;
     if (!o.optimal_length) throw aco::Error("--irace-cost gap: A* found no path where the colony found one");
     // A path as long as A*'s may differ from it in the last bits (another order of the sums).
     const double gap = std::max(0.0, 100.0 * (o.search.length / *o.optimal_length - 1.0));
     if (gap < 1e-9) return 0.0;
-    return kind == Request::IraceCost::gap ? gap : gap * (1.0 + gap);
+    return kind == OutputSettings::IraceCost::gap ? gap : gap * (1.0 + gap);
   };
   // The ants' moves per walk over the optimal path's length: about 1 for walks as long as it.
   const auto effort = [](const aco::PlanRun& o) {
@@ -76,20 +76,20 @@ int plan(const acoplan::Request& r, std::ostream& out) {
   const aco::MemoryLimit memory(r.max_memory);
   const aco::LoadedProblem problem = aco::load_problem(r.run.problem, r.registry.get());
   const aco::Graph graph = aco::build_graph(*problem.map, r.run.graph);
-  const aco::ThreadLimit threads(r.host.integer("threads"));
+  const aco::ThreadLimit threads(r.host.threads);
 
   // --repeat N: the same problem with seeds seed, seed+1, ..., seed+N-1.
-  const std::vector<aco::PlanRun> runs = aco::plan_runs(*r.registry, graph, graph.node(problem.start),
-                                                        graph.node(problem.goal), r.run, r.host.integer("repeat"));
+  const std::vector<aco::PlanRun> runs =
+      aco::plan_runs(*r.registry, graph, graph.node(problem.start), graph.node(problem.goal), r.run, r.host.repeat);
   const aco::PlanReport report{r.run, *r.registry, graph, r.pipeline_source};
 
-  if (r.irace) {
+  if (r.output.irace) {
     // irace reads the last line of stdout; an unsolved run has its cost, so it is no failure.
-    out << irace_cost(runs, r.irace_cost, r.irace_effort) << "\n";
+    out << irace_cost(runs, r.output.irace_cost, r.output.irace_effort) << "\n";
   } else if (runs.size() == 1) {
-    out << (r.json ? aco::to_json(report, runs[0]) + "\n" : aco::summary(report, runs[0]));
+    out << (r.output.json ? aco::to_json(report, runs[0]) + "\n" : aco::summary(report, runs[0]));
   } else {
-    out << (r.json ? aco::to_json(report, runs) + "\n" : aco::summary(report, runs));
+    out << (r.output.json ? aco::to_json(report, runs) + "\n" : aco::summary(report, runs));
   }
   // The picture shows the best run: the shortest solved one, else the first.
   const auto best = std::min_element(runs.begin(), runs.end(), [](const auto& a, const auto& b) {
@@ -97,7 +97,7 @@ int plan(const acoplan::Request& r, std::ostream& out) {
   });
   if (r.svg) write_picture(r, graph, *best);
   const bool all_solved = std::all_of(runs.begin(), runs.end(), [](const auto& o) { return o.solved(); });
-  return all_solved || r.irace ? aco::kExitOk : aco::kExitNoPath;
+  return all_solved || r.output.irace ? aco::kExitOk : aco::kExitNoPath;
 }
 
 }  // namespace

@@ -14,18 +14,45 @@
 #include "aco/planning.hpp"
 #include "aco/presets.hpp"
 #include "aco/program_options_error.hpp"
+#include "aco/settings_table.hpp"
 
 namespace acoplan {
 namespace po = boost::program_options;
 namespace {
 
-// acoplan's own settings; everything else is a run key (aco/run_spec.hpp).
-constexpr aco::ParamSpec kHostParameters[] = {
-    {"threads", aco::ParamType::integer, "0", "0:1024", aco::kThreadsHelp},
-    {"svg-pheromone", aco::ParamType::boolean, "false", "", "also draw the final pheromone field in the --svg picture"},
-    {"repeat", aco::ParamType::integer, "1", "1:1000000",
-     "plan N times with seeds seed, seed+1, ...; print mean and standard deviation (--svg shows the best run)"},
-};
+// acoplan's own settings and its output's form; everything else is a run key (aco/run_spec.hpp).
+// Options that name a file or an action (--map, --config, --svg FILE, --help, --print-config,
+// --describe ...) stay plain options: they are not settings with a range and a default.
+const aco::SettingsTable<HostSettings>& host_settings_table() {
+  using S = HostSettings;
+  static const aco::SettingsTable<S> table({
+      aco::field("threads", &S::threads, "0:1024", aco::kThreadsHelp),
+      aco::field("svg-pheromone", &S::svg_pheromone, "", "also draw the final pheromone field in the --svg picture"),
+      aco::field("repeat", &S::repeat, "1:1000000",
+                 "plan N times with seeds seed, seed+1, ...; print mean and standard deviation (--svg shows the best "
+                 "run)"),
+  });
+  return table;
+}
+
+const aco::SettingsTable<OutputSettings>& output_settings_table() {
+  using S = OutputSettings;
+  using Cost = OutputSettings::IraceCost;
+  static const aco::SettingsTable<S> table({
+      aco::field("json", &S::json, "", "print one JSON object instead of the readable summary"),
+      aco::field("irace", &S::irace, "",
+                 "for irace's target runner: print only the cost, the mean over --repeat of --irace-cost (1e9 for an "
+                 "unsolved run), and exit 0 unless there is an error"),
+      aco::choice("irace-cost", &S::irace_cost, {"length", "gap", "gap-penalised"},
+                  {Cost::length, Cost::gap, Cost::gap_penalised},
+                  "with --irace: length = the final path's length; gap = the grid path's gap to A*'s optimum in %; "
+                  "gap-penalised = that gap g plus its square, g (1 + g), which punishes the worst runs"),
+      aco::field("irace-effort", &S::irace_effort, "0:1e12",
+                 "with --irace: add X times the colony's effort, its ant moves per walk over the optimal path's "
+                 "length (about 1 for walks as long as the optimum): effort stands for time, deterministically"),
+  });
+  return table;
+}
 
 std::string type_hint(const aco::ParamSpec& spec) {
   switch (spec.type) {
@@ -64,6 +91,14 @@ void collect(const po::variables_map& vm, std::span<const aco::ParamSpec> table,
              aco::Keys& keys) {
   for (const auto& spec : table)
     if (vm.count(prefix + spec.name)) keys[prefix + spec.name] = vm[prefix + spec.name].as<std::string>();
+}
+
+// The settings of `table` from the options given (the others at their defaults), checked.
+template <class Settings>
+Settings read_settings(const po::variables_map& vm, const aco::SettingsTable<Settings>& table) {
+  aco::Keys given;
+  collect(vm, table.parameters(), "", given);
+  return table.read(aco::resolve(table.parameters(), given, "--"));
 }
 
 std::optional<std::string> text(const po::variables_map& vm, const char* key) {
@@ -196,7 +231,8 @@ std::string unknown_option_message(const po::unknown_option& e, const po::option
 std::string config_file(const Request& r) {
   std::ostringstream out;
   out << "# acoplan configuration; run it again with: acoplan --config FILE\n";
-  for (const auto& [name, value] : r.host.all()) out << name << " = " << aco::to_string(value) << "\n";
+  const aco::ParameterValues host = host_settings_table().write(r.host);
+  for (const auto& [name, value] : host.all()) out << name << " = " << aco::to_string(value) << "\n";
   const auto values = aco::run_values(r.run);
   std::string section;
   for (const auto& [key, value] : values)
@@ -229,16 +265,6 @@ Request parse_command_line(int argc, const char* const* argv) {
       "goal", po::value<std::string>()->value_name("X,Y"), "goal cell")(
       "scen", po::value<std::string>()->value_name("FILE"),
       "Moving AI scenario file; start and goal come from --scen-index, the map from FILE minus .scen unless --map")(
-      "json", po::bool_switch(), "print one JSON object instead of the readable summary")(
-      "irace", po::bool_switch(),
-      "for irace's target runner: print only the cost, the mean over --repeat of --irace-cost (1e9 for an unsolved "
-      "run), and exit 0 unless there is an error")(
-      "irace-cost", po::value<std::string>()->value_name("KIND")->default_value("length"),
-      "with --irace: length = the final path's length; gap = the grid path's gap to A*'s optimum in %; "
-      "gap-penalised = that gap g plus its square, g (1 + g), which punishes the worst runs")(
-      "irace-effort", po::value<double>()->value_name("X")->default_value(0.0),
-      "with --irace: add X times the colony's effort, its ant moves per walk over the optimal path's length "
-      "(about 1 for walks as long as the optimum): effort stands for time, deterministically")(
       "dump-irace-params", po::value<std::string>()->value_name("FILE"),
       "write irace's parameter file (colony and plugin parameters) to FILE (- = stdout) and exit")(
       "irace-slots", po::value<std::string>()->value_name("SLOTS"),
@@ -258,7 +284,8 @@ Request parse_command_line(int argc, const char* const* argv) {
       "describe", po::value<std::string>()->value_name("SLOT/NAME"),
       "print a plugin's parameter table and exit (e.g. init/potential_field; the NAME alone if one slot only has it)");
   host_options.add_plugin_dir_and_max_memory(general);
-  add_table(general, kHostParameters, "");
+  add_table(general, host_settings_table().parameters(), "");
+  add_table(general, output_settings_table().parameters(), "");
   po::options_description problem("Problem and graph");
   add_table(problem, std::span(&aco::planner_parameter(), 1), "");
   add_table(problem, aco::problem_parameters(), "");
@@ -374,9 +401,8 @@ Request parse_command_line(int argc, const char* const* argv) {
     if (!keys.count("scen") && (!keys.count("start") || !keys.count("goal")))
       throw aco::Error("--start and --goal are required with --map (or use --scen)");
     r.run = aco::resolve_run(keys, *r.registry, "--");
-    aco::Keys host;
-    collect(vm, kHostParameters, "", host);
-    r.host = aco::resolve(kHostParameters, host, "--");
+    r.host = read_settings(vm, host_settings_table());
+    r.output = read_settings(vm, output_settings_table());
     if (auto v = text(vm, "svg")) r.svg = *v;
     r.max_memory = host_options.max_memory_bytes();
     if (vm.count("preset"))
@@ -388,20 +414,6 @@ Request parse_command_line(int argc, const char* const* argv) {
       r.pipeline_source = preset + " (the default for " + (preset == "terrain" ? "height" : "2D") +
                           " maps; --preset NAME for another, --list-presets for the papers')";
     }
-    r.json = vm["json"].as<bool>();
-    r.irace = vm["irace"].as<bool>();
-    const std::string cost = vm["irace-cost"].as<std::string>();
-    if (cost == "length")
-      r.irace_cost = Request::IraceCost::length;
-    else if (cost == "gap")
-      r.irace_cost = Request::IraceCost::gap;
-    else if (cost == "gap-penalised")
-      r.irace_cost = Request::IraceCost::gap_penalised;
-    else
-      throw aco::Error("--irace-cost: '" + cost + "' is not one of length, gap, gap-penalised");
-    r.irace_effort = vm["irace-effort"].as<double>();
-    if (!(r.irace_effort >= 0.0 && std::isfinite(r.irace_effort)))
-      throw aco::Error("--irace-effort must be finite and >= 0");
     if (vm["print-config"].as<bool>()) {
       r.action = Request::Action::print_config;
       r.config = config_file(r);

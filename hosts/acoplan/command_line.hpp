@@ -15,6 +15,29 @@
 
 namespace acoplan {
 
+// acoplan's own settings, not keys of the run; each declared once, with its option's name, range
+// and help, in host_settings_table() (command_line.cpp). --print-config writes them with the run.
+struct HostSettings {
+  int threads = 0;
+  bool svg_pheromone = false;
+  int repeat = 1;
+};
+
+// How acoplan reports its runs (output_settings_table()): no part of a configuration, so
+// --print-config leaves them out.
+struct OutputSettings {
+  bool json = false;
+  bool irace = false;  // print only the cost (irace_cost, kIraceUnsolvedCost if unsolved) and exit 0
+  // What a run costs irace. length: the final path's length; gap: the grid path's gap to A*'s
+  // optimum in percent; gap_penalised: that gap g plus its square, g (1 + g), so that a
+  // configuration is judged by its worst runs too, not by its mean alone.
+  enum class IraceCost { length, gap, gap_penalised };
+  IraceCost irace_cost = IraceCost::length;
+  // X times the ants' moves per walk over the optimal path's length is added to the cost, so
+  // that irace weighs effort (which time follows) against quality, deterministically.
+  double irace_effort = 0.0;
+};
+
 struct Request {
   enum class Action { plan, help, version, list_plugins, list_presets, describe, print_config, dump_irace_params };
   Action action = Action::plan;
@@ -27,19 +50,10 @@ struct Request {
   std::string irace_plugin;  // --irace-plugin SLOT/NAME: only its parameters ("" = the slots')
 
   std::optional<std::filesystem::path> svg;
-  bool json = false;
-  bool irace = false;  // print only the cost (--irace-cost, kIraceUnsolvedCost if unsolved) and exit 0
-  // --irace-cost: what a run costs irace. length: the final path's length; gap: the grid path's
-  // gap to A*'s optimum in percent; gap-penalised: that gap g plus its square, g (1 + g), so that
-  // a configuration is judged by its worst runs too, not by its mean alone.
-  enum class IraceCost { length, gap, gap_penalised };
-  IraceCost irace_cost = IraceCost::length;
-  // --irace-effort X: X times the ants' moves per walk over the optimal path's length is added to
-  // the cost, so that irace weighs effort (which time follows) against quality, deterministically.
-  double irace_effort = 0.0;
   std::optional<std::uint64_t> max_memory;  // --max-memory in bytes; none: the default limit
 
-  aco::ParameterValues host;  // acoplan's own settings: threads, svg-pheromone, repeat
+  HostSettings host;
+  OutputSettings output;
   aco::RunSpec run;  // everything else, resolved once
   std::unique_ptr<aco::PluginRegistry> registry;
 };

@@ -401,8 +401,11 @@ TEST_CASE("acoplan names a bad config line, and shows '%' placeholders in any in
   expect_error({"--config", hang}, hang + ":2: '%invalid_line%x' is not a 'key = value' line");
   const auto section = test::temp_file("section.ini", "ants = 3\n[]\n").string();
   expect_error({"--config", section}, section + ":2: '[]' names no section");
-  const auto json = test::temp_file("json.ini", "json = %value%\n").string();
-  expect_error({"--config", json}, "--json: '%value%' is not a boolean (use true or false)");
+  // A value Boost checks (a switch) and one acoplan's settings table checks.
+  const auto flag = test::temp_file("flag.ini", "print-config = %value%\n").string();
+  expect_error({"--config", flag}, flag + ": the argument ('%value%') for option 'print-config' is invalid");
+  expect_error({"--config", test::temp_file("json.ini", "json = %value%\n").string()},
+               "--json: '%value%' is not a boolean (use true or false)");
   expect_error({"--config", test::temp_file("key.ini", "[%x%]\n%canonical_option% = 1\n").string()},
                "unknown option '--%x%.%canonical_option%'");
   expect_error({"--config", test::temp_file("value.ini", "beta = %value%\n").string()},
@@ -446,6 +449,11 @@ TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range val
   expect_error({"--update.rho", "1.5"}, "--update.rho: 1.5 is outside the range (0, 1]");
   expect_error({"--update.rho", "-0.1"}, "--update.rho: -0.1 is outside the range (0, 1]");
   expect_error({"--neighbourhood", "6"}, "--neighbourhood: '6' is not one of 4,8,16");
+  // acoplan's own settings are checked by their tables.
+  expect_error({"--repeat", "0"}, "--repeat: 0 is outside the range [1, 1000000]");
+  expect_error({"--threads", "-1"}, "--threads: -1 is outside the range [0, 1024]");
+  expect_error({"--json=maybe"}, "--json: 'maybe' is not a boolean (use true or false)");
+  expect_error({"--irace-effort", "-1"}, "--irace-effort: -1 is outside the range [0, 1e+12]");
   expect_error({"stray"}, "stray");
   const auto config = test::temp_file("bad.ini", "ants = 10\n[update]\nrhoo = 0.2\n");
   expect_error({"--config", config.string()}, "unknown option '--update.rhoo'; did you mean '--update.rho'?");

@@ -11,9 +11,29 @@
 namespace aco::studies {
 namespace {
 
-// FailureKind's texts, in the enum's order.
-constexpr const char* kFailureTexts[] = {
-    "", "crashed", "timed out", "out of memory", "plugin error", "invalid value", "error"};
+// Each FailureKind, in the enum's order: its text (runs.failure, JSON, Python) and what it means
+// in the summary at the end of a run.
+struct FailureName {
+  const char* text;
+  const char* description;
+};
+constexpr FailureName kFailureNames[] = {
+    {"", "other error"},
+    {"crashed", "crashed (a signal)"},
+    {"timed out", "over the trial time limit"},
+    {"out of memory", "out of memory"},
+    {"plugin error", "a plugin threw"},
+    {"invalid value", "a plugin wrote an invalid value"},
+    {"error", "other error"},
+};
+
+// The texts of the kinds of failure (FailureKind::none's "" left out).
+std::vector<std::string> failure_texts() {
+  std::vector<std::string> texts;
+  for (const FailureName& name : kFailureNames)
+    if (*name.text) texts.push_back(name.text);
+  return texts;
+}
 
 template <class Member>
 constexpr TrialCellType type_of() {
@@ -174,18 +194,14 @@ const std::vector<TrialField>& trial_fields() {
       simulation_field("clearance", &SimulationRecord::clearance),
       simulation_field("control_steps", &SimulationRecord::control_steps),
       text_or_null("error", &TrialRecord::error, kStored | kInPython),
-      {"failure",
-       "failure",
-       TrialCellType::text,
-       kStored,
-       10,
+      {"failure", "failure", TrialCellType::text, kStored, 10,
        [](const TrialRecord& t, double) {
          return t.failure == FailureKind::none ? TrialCell() : TrialCell(std::string(to_string(t.failure)));
        },
        [](TrialRecord& t, const TrialCell& value) {
          if (const auto* text = std::get_if<std::string>(&value)) t.failure = failure_kind(*text);
        },
-       {std::begin(kFailureTexts) + 1, std::end(kFailureTexts)}},
+       failure_texts()},
       field("peak_memory_mib", &TrialRecord::peak_memory_mib, kEverywhere),
   };
   return fields;
@@ -231,14 +247,15 @@ std::string runs_csv(const std::vector<TrialRecord>& trials, const std::vector<P
   return out.str();
 }
 
-const char* to_string(FailureKind kind) { return kFailureTexts[static_cast<int>(kind)]; }
+const char* to_string(FailureKind kind) { return kFailureNames[static_cast<int>(kind)].text; }
+
+std::string describe_failure(FailureKind kind) { return kFailureNames[static_cast<int>(kind)].description; }
 
 FailureKind failure_kind(std::string_view text) {
   std::string known;
-  for (int i = 0; i < static_cast<int>(std::size(kFailureTexts)); ++i) {
-    if (text == kFailureTexts[i]) return static_cast<FailureKind>(i);
-    if (i > 0) known += std::string(known.empty() ? "" : ", ") + "'" + kFailureTexts[i] + "'";
-  }
+  for (int i = 0; i < static_cast<int>(std::size(kFailureNames)); ++i)
+    if (text == kFailureNames[i].text) return static_cast<FailureKind>(i);
+  for (const std::string& name : failure_texts()) known += (known.empty() ? "'" : ", '") + name + "'";
   throw aco::Error("unknown failure '" + std::string(text) + "' (known: " + known + ")");
 }
 

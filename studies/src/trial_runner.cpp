@@ -258,25 +258,6 @@ bool reset_peak_memory() {
   return bool(clear);
 }
 
-std::string describe_failure(FailureKind kind) {
-  switch (kind) {
-    case FailureKind::crashed:
-      return "crashed (a signal)";
-    case FailureKind::timed_out:
-      return "over the trial time limit";
-    case FailureKind::out_of_memory:
-      return "out of memory";
-    case FailureKind::plugin_error:
-      return "a plugin threw";
-    case FailureKind::invalid_value:
-      return "a plugin wrote an invalid value";
-    case FailureKind::none:
-    case FailureKind::error:
-      break;
-  }
-  return "other error";
-}
-
 std::string settings_json(const Configuration& config, const aco::RunSpec& run, const aco::PluginRegistry& registry) {
   nlohmann::json j;
   j["keys"] = config.keys;

@@ -8,6 +8,7 @@
 #include <thread>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 #include "aco/studies/results_db.hpp"
 
@@ -101,7 +102,7 @@ std::vector<std::string> query_rows(sqlite3* handle, const std::string& sql) {
   std::vector<std::string> rows;
   sqlite3_stmt* statement = nullptr;
   if (sqlite3_prepare_v2(handle, sql.c_str(), -1, &statement, nullptr) != SQLITE_OK)
-    return {std::string("cannot query: ") + sqlite3_errmsg(handle)};
+    throw std::runtime_error(std::string("cannot query ") + sql + ": " + sqlite3_errmsg(handle));
   while (sqlite3_step(statement) == SQLITE_ROW) {
     std::ostringstream row;
     row.precision(17);
@@ -134,31 +135,83 @@ std::vector<std::string> database_rows(const std::filesystem::path& db) {
   sqlite3* handle = nullptr;
   if (sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) != SQLITE_OK) {
     sqlite3_close(handle);
-    return {"cannot open " + db.string()};
+    throw std::runtime_error("cannot open " + db.string());
   }
   const std::string trial = "e.name, c.name, r.repetition";
+  // Every column of runs (those added when used included) but the ids and what a rerun measures
+  // anew; memorylimit is each worker's share of the machine.
+  std::string run_columns;
+  for (const auto& row : query_rows(handle,
+                                    "SELECT name FROM pragma_table_info('runs') WHERE name NOT IN "
+                                    "('id', 'experimentid', 'plannerid', 'repetition', 'time', 'memory')"))
+    run_columns += ", r." + row.substr(1, row.size() - 3);  // "name"| -> name
   std::vector<std::string> all;
   for (const std::string& sql : std::vector<std::string>{
-           "SELECT 'problem', name, version, setup, optimal_length FROM experiments",
+           "SELECT 'problem', name, version, setup, optimal_length, timelimit, runcount, seed "
+           "FROM experiments",
            "SELECT 'config', id, name, settings FROM plannerConfigs",
-           "SELECT 'run', " + trial +
-               ", r.seed, r.solved, r.length, r.grid_length, r.gap, r.turns, r.iterations, "
-               "r.best_iteration, r.ant_steps, r.stopped_by, r.path, r.outcome, r.time_to_goal, r.collisions, "
-               "r.replans, "
-               "r.clearance, r.control_steps, r.error FROM runs r JOIN experiments e ON e.id = r.experimentid "
-               "JOIN plannerConfigs c ON c.id = r.plannerid",
+           "SELECT 'run', " + trial + run_columns +
+               ", t.path, t.error FROM runs r JOIN experiments e ON e.id = r.experimentid "
+               "JOIN plannerConfigs c ON c.id = r.plannerid LEFT JOIN run_texts t ON t.runid = r.id",
            "SELECT 'progress', " + trial +
                ", p.iteration, p.best_cost, p.walks FROM progress p JOIN runs r ON r.id = p.runid "
                "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
            "SELECT 'property', " + trial +
                ", p.name, p.value, typeof(p.value) FROM properties p JOIN runs r ON r.id = p.runid "
                "JOIN experiments e ON e.id = r.experimentid JOIN plannerConfigs c ON c.id = r.plannerid",
+           "SELECT 'enum', name, value, description FROM enums",
            "SELECT 'meta', key, value FROM acobench_meta WHERE key NOT IN ('experiment_file', 'shard')"}) {
     const auto rows = query_rows(handle, sql);
     all.insert(all.end(), rows.begin(), rows.end());
   }
   sqlite3_close(handle);
   return all;
+}
+
+void downgrade_to_format_6(const std::filesystem::path& db) {
+  sqlite3* handle = nullptr;
+  if (sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READWRITE, nullptr) != SQLITE_OK) {
+    sqlite3_close(handle);
+    throw std::runtime_error("cannot open " + db.string());
+  }
+  std::string sql = R"(
+ALTER TABLE runs RENAME COLUMN trial_seed TO seed;
+ALTER TABLE runs RENAME COLUMN solution_length TO length;
+ALTER TABLE runs RENAME COLUMN memory TO peak_memory_mib;
+ALTER TABLE runs DROP COLUMN status;
+)";
+  const auto columns = query_rows(handle, "SELECT name FROM pragma_table_info('runs')");
+  const auto has = [&](const std::string& c) {
+    return std::find(columns.begin(), columns.end(), '"' + c + "\"|") != columns.end();
+  };
+  for (const char* added : {"outcome TEXT", "time_to_goal REAL", "collisions INTEGER", "replans INTEGER",
+                            "clearance REAL", "control_steps INTEGER", "failure TEXT"}) {
+    const std::string name = std::string(added).substr(0, std::string(added).find(' '));
+    if (!has(name)) sql += "ALTER TABLE runs ADD COLUMN " + std::string(added) + ";\n";
+  }
+  // Format 6 kept the text of what are ENUMs now.
+  for (const char* text : {"stopped_by", "outcome", "failure"})
+    sql += std::string("UPDATE runs SET ") + text + " = (SELECT description FROM enums WHERE name = '" + text +
+           "' AND value = runs." + text + ");\n";
+  sql += R"(
+ALTER TABLE runs ADD COLUMN path TEXT;
+ALTER TABLE runs ADD COLUMN error TEXT;
+UPDATE runs SET path = (SELECT path FROM run_texts WHERE runid = runs.id),
+  error = (SELECT error FROM run_texts WHERE runid = runs.id);
+DROP TABLE run_texts;
+ALTER TABLE plannerConfigs ADD COLUMN plugins TEXT;
+UPDATE plannerConfigs SET plugins = (SELECT plugins FROM plannerPlugins WHERE plannerid = plannerConfigs.id);
+DROP TABLE plannerPlugins;
+DELETE FROM enums;
+UPDATE experiments SET timelimit = NULL, memorylimit = NULL, runcount = NULL, seed = NULL;
+UPDATE acobench_meta SET value = '6' WHERE key = 'format_version';
+)";
+  char* error = nullptr;
+  const int rc = sqlite3_exec(handle, sql.c_str(), nullptr, nullptr, &error);
+  const std::string message = error ? error : "";
+  sqlite3_free(error);
+  sqlite3_close(handle);
+  if (rc != SQLITE_OK) throw std::runtime_error("downgrading " + db.string() + ": " + message);
 }
 
 int count_runs(const std::filesystem::path& db) {

@@ -41,6 +41,11 @@ std::vector<std::string> database_rows(const std::filesystem::path& db);
 
 int count_runs(const std::filesystem::path& db);
 
+// Rewrites a database this acobench made into the layout of format 6 (before OMPL's layout: the
+// text of ENUMs, the free text and plugins in their old columns, no limits), as an acobench of
+// format 6 would have stored the same trials. Tests of older formats start from it.
+void downgrade_to_format_6(const std::filesystem::path& db);
+
 #ifdef ACO_TEST_MPIEXEC
 // mpirun refuses to start as root unless told twice; CI runs as root.
 extern const std::vector<std::string> kMpiEnvironment;

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "aco/studies/results_db.hpp"
+#include "acobench_support.hpp"
 #include "aco/error.hpp"
 #include "support.hpp"
 
@@ -174,7 +175,7 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
   CHECK(configs[1].second.settings_json == config("max_min", 0.02).settings_json);
   CHECK(db.meta("experiment_name") == kName);
   CHECK(db.meta("fingerprint") == kFingerprint);
-  CHECK(db.meta("format_version") == "6");
+  CHECK(db.meta("format_version") == "7");
   REQUIRE_THROWS_WITH(db.meta("colour"), Contains("no 'colour'"));
 
   const auto read = db.trials();
@@ -191,7 +192,8 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
   CHECK(sql_value(file, "SELECT count(*) FROM experiments") == "2");
   CHECK(sql_value(file, "SELECT totaltime FROM experiments WHERE name = 'map1'") ==
         "0.75");  // 2 configs x (0.125 + 0.25)
-  CHECK(sql_value(file, "SELECT count(*) FROM runs WHERE length IS NULL AND gap IS NULL AND solved = 0") == "2");
+  CHECK(sql_value(file, "SELECT count(*) FROM runs WHERE solution_length IS NULL AND gap IS NULL AND solved = 0") ==
+        "2");
   CHECK(sql_value(file,
                   "SELECT count(*) FROM runs r JOIN experiments e ON r.experimentid = e.id "
                   "WHERE e.name = 'arena' AND r.gap IS NULL") == "4");  // optimum unknown
@@ -282,7 +284,7 @@ TEST_CASE("a database of another format version or a bad problem is refused", "[
   const fs::path file = fresh_db();
   open(file);  // creates it
   sql_value(file, "UPDATE acobench_meta SET value = '0' WHERE key = 'format_version' RETURNING value");
-  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 6"));
+  REQUIRE_THROWS_WITH(open(file), Contains("format version 0, this acobench reads version 7"));
 
   const fs::path missing = fresh_db();
   auto problems = kProblems;
@@ -298,6 +300,7 @@ TEST_CASE("simulation and failed trials store their measures, and a format-1 dat
   const int id = with_one_trial(file);
   // What acobench before simulations wrote: no simulation columns, format 1.
   const auto make_format_1 = [&] {
+    test::acobench_helpers::downgrade_to_format_6(file);
     for (const char* column :
          {"outcome", "time_to_goal", "collisions", "replans", "clearance", "control_steps", "error", "failure"})
       sql_exec(file, std::string("ALTER TABLE runs DROP COLUMN ") + column);
@@ -307,11 +310,11 @@ TEST_CASE("simulation and failed trials store their measures, and a format-1 dat
     sql_exec(file, "UPDATE acobench_meta SET value = '1' WHERE key = 'format_version'");
   };
   make_format_1();
-  CHECK(aco::studies::ResultsDb(file).meta("format_version") == "6");  // a report upgrades it too
+  CHECK(aco::studies::ResultsDb(file).meta("format_version") == "7");  // a report upgrades it too
   make_format_1();
 
   auto db = open(file);
-  CHECK(db.meta("format_version") == "6");
+  CHECK(db.meta("format_version") == "7");
   auto reached = trial(0, id, 1, true, 0);
   reached.simulation = aco::studies::SimulationRecord{"reached", 87.5, 0, 1, 0.047, 875};
   auto hit = trial(1, id, 0, false, 0);
@@ -337,7 +340,9 @@ TEST_CASE("simulation and failed trials store their measures, and a format-1 dat
   CHECK(read[2].simulation->outcome == "collision");
   CHECK(std::isnan(read[2].simulation->time_to_goal));
   CHECK(read[2].simulation->collisions == 1);
-  CHECK(sql_value(file, "SELECT time_to_goal FROM runs WHERE outcome = 'collision'") == "NULL");
+  CHECK(sql_value(file,
+                  "SELECT time_to_goal FROM runs WHERE outcome = (SELECT value FROM enums WHERE name = 'outcome' AND "
+                  "description = 'collision')") == "NULL");
 }
 
 TEST_CASE("a format-4 database gains runs.failure from how its failed trials stopped", "[resultsdb]") {
@@ -352,10 +357,11 @@ TEST_CASE("a format-4 database gains runs.failure from how its failed trials sto
       db.store(failed);
     }
   }
+  test::acobench_helpers::downgrade_to_format_6(file);
   sql_exec(file, "ALTER TABLE runs DROP COLUMN failure");
   sql_exec(file, "UPDATE acobench_meta SET value = '4' WHERE key = 'format_version'");
   auto db = open(file);
-  CHECK(db.meta("format_version") == "6");
+  CHECK(db.meta("format_version") == "7");
   std::map<int, aco::studies::FailureKind> failures;
   for (const auto& t : db.trials()) failures[t.repetition * 10 + t.problem] = t.failure;
   // Which of a plugin or the engine's checks threw was not recorded: "error".
@@ -389,12 +395,13 @@ TEST_CASE("a format-3 database gains progress.walks: its runs read back without 
   const fs::path file = fresh_db();
   const int id = with_one_trial(file);
   // What acobench before the measured times wrote: no walks, an estimated time, format 3.
+  test::acobench_helpers::downgrade_to_format_6(file);
   sql_exec(file, "ALTER TABLE progress DROP COLUMN walks");
   sql_exec(file, "UPDATE progress SET time = iteration * (SELECT time FROM runs WHERE runs.id = progress.runid) / 6");
   sql_exec(file, "UPDATE acobench_meta SET value = '3' WHERE key = 'format_version'");
 
   auto db = open(file);
-  CHECK(db.meta("format_version") == "6");
+  CHECK(db.meta("format_version") == "7");
   db.store(trial(0, id, 1));
   const auto read = db.trials();
   REQUIRE(read.size() == 2);
@@ -514,12 +521,13 @@ TEST_CASE(
   CHECK(sql_value(file, "SELECT typeof(value) FROM properties WHERE name = 'heuristic/mine.share'") == "real");
   CHECK(sql_value(file, "SELECT value FROM properties WHERE name = 'stopped_by'") == "stagnation");
   // What acobench before the properties wrote: no properties table, no plugins of a configuration.
+  test::acobench_helpers::downgrade_to_format_6(file);
   sql_exec(file, "DROP TABLE properties");
   sql_exec(file, "ALTER TABLE plannerConfigs DROP COLUMN plugins");
   sql_exec(file, "UPDATE acobench_meta SET value = '4' WHERE key = 'format_version'");
 
   auto db = open(file);
-  CHECK(db.meta("format_version") == "6");
+  CHECK(db.meta("format_version") == "7");
   aco::studies::ConfigRecord same = config("ant_system", 0.1);
   same.plugins_json = R"({"update":{"name":"ant_system","build":"optimised"}})";
   CHECK(db.add_config(same) == id);  // the same configuration, now with its plugins
@@ -529,4 +537,113 @@ TEST_CASE(
   REQUIRE(read.size() == 2);
   CHECK(read[0].properties.empty());  // stored before properties were
   check_equal(read[1], trial(0, id, 1));
+}
+
+TEST_CASE("the database is OMPL's layout: limits, ENUMs, and names its tools and Planner Arena read",
+          "[resultsdb][ompl]") {
+  const fs::path file = fresh_db();
+  int id = 0;
+  {
+    auto db = open(file);
+    id = db.add_config(config("ant_system", 0.1));
+    db.store(trial(0, id, 0));
+    auto crashed = trial(0, id, 1, false, 0);
+    crashed.stopped_by = "crashed";
+    crashed.failure = aco::studies::FailureKind::crashed;
+    crashed.error = "signal 11";
+    db.store(crashed);
+    db.store(trial(1, id, 0, false));
+    db.record_limits({2.5, 512.0, 10, 42});
+    const auto limits = db.limits();
+    CHECK(limits.time_limit_s == 2.5);
+    CHECK(limits.memory_limit_mib == 512.0);
+    CHECK(limits.runs == 10);
+    CHECK(limits.seed == 42);
+  }
+  // What OMPL's script prints on its last page: no NULL.
+  CHECK(sql_value(file,
+                  "SELECT count(*) FROM experiments WHERE timelimit = 2.5 AND memorylimit = 512 AND "
+                  "runcount = 10 AND seed = '42'") == "2");
+  // The planner status, as OMPL's PlannerStatus names it.
+  const auto status_of = [&](int experiment, int repetition) {
+    return sql_value(file,
+                     "SELECT e.description FROM runs r JOIN enums e ON e.name = 'status' AND e.value = r.status "
+                     "WHERE r.experimentid = " +
+                         std::to_string(experiment) + " AND r.repetition = " + std::to_string(repetition));
+  };
+  CHECK(status_of(1, 0) == "Exact solution");
+  CHECK(status_of(1, 1) == "Crash");
+  CHECK(status_of(2, 0) == "Timeout");
+  CHECK(sql_value(file,
+                  "SELECT description FROM enums WHERE name = 'failure' AND value = "
+                  "(SELECT failure FROM runs WHERE repetition = 1)") == "crashed");
+  CHECK(sql_value(file, "SELECT error FROM run_texts JOIN runs ON runid = id WHERE repetition = 1") == "signal 11");
+  // OMPL's script plots every runs column declared BOOLEAN, ENUM, INTEGER or REAL; the identities are INT.
+  CHECK(sql_value(file,
+                  "SELECT group_concat(name) FROM pragma_table_info('runs') WHERE cid >= 3 AND type NOT IN "
+                  "('BOOLEAN', 'ENUM', 'INTEGER', 'REAL')") == "repetition,trial_seed");
+  // OMPL's -a inserts plannerConfigs rows by position: three columns.
+  CHECK(sql_value(file, "SELECT group_concat(name) FROM pragma_table_info('plannerConfigs')") == "id,name,settings");
+  // Planner Arena joins runs with plannerConfigs' name (as planner) and the experiments' columns
+  // but totaltime..runcount and hostname..setup (id and name renamed): no runs column may clash.
+  CHECK(sql_value(file,
+                  "SELECT count(*) FROM pragma_table_info('runs') WHERE name IN ('planner', 'experiment') OR name IN "
+                  "(SELECT name FROM pragma_table_info('experiments') WHERE name NOT IN ('id', 'name', 'totaltime', "
+                  "'timelimit', 'memorylimit', 'runcount', 'hostname', 'cpuinfo', 'date', 'seed', 'setup'))") == "0");
+
+  // An OMPL log appended as ompl_benchmark_statistics -a does it.
+  sql_exec(file,
+           "INSERT INTO experiments (name, totaltime, timelimit, memorylimit, runcount, version, hostname, cpuinfo, "
+           "date, seed, setup) VALUES ('wall', 1.5, 0.1, 100, 2, 'OMPL 1.5.2', 'vm', 'cpu', '2026-11-27', '7', "
+           "'Properties of the state space');"
+           "INSERT INTO plannerConfigs VALUES (NULL, 'geometric_RRTConnect', 'range = 0;');"
+           "ALTER TABLE runs ADD graph_states INTEGER;"
+           "INSERT INTO runs (experimentid, plannerid, solved, time, solution_length, status, memory, graph_states) "
+           "VALUES (3, 2, 1, 0.01, 12.5, 6, 0.5, 40), (3, 2, 0, 0.1, NULL, 4, 0.5, 90);"
+           "INSERT INTO progress (runid, time, best_cost) VALUES (4, 0.005, 13.0);");
+  const aco::studies::ResultsDb report(file);
+  CHECK(report.problems().size() == 2);
+  CHECK(report.configs().size() == 1);
+  CHECK(report.trials().size() == 3);
+  const auto appended = report.appended_runs();
+  REQUIRE(appended.size() == 2);
+  CHECK(appended[0].experiment == "wall");
+  CHECK(appended[0].planner == "geometric_RRTConnect");
+  CHECK(appended[0].solved);
+  CHECK(appended[0].length == 12.5);
+  CHECK_FALSE(appended[1].solved);
+  CHECK(std::isnan(appended[1].length));
+  auto resumed = open(file);  // and the experiment goes on
+  resumed.store(trial(1, id, 1));
+  CHECK(resumed.trials().size() == 4);
+}
+
+TEST_CASE("a format-6 database is migrated to OMPL's layout with the same trials", "[resultsdb][ompl]") {
+  const fs::path file = fresh_db();
+  std::vector<aco::studies::TrialRecord> stored;
+  {
+    auto db = open(file);
+    const int id = db.add_config(config("ant_system", 0.1));
+    stored = {trial(0, id, 0), trial(0, id, 1, false), trial(1, id, 0)};
+    stored[2].simulation = aco::studies::SimulationRecord{"stuck", std::nan(""), 0, 3, 0.5, 90};
+    for (const auto& t : stored) db.store(t);
+  }
+  test::acobench_helpers::downgrade_to_format_6(file);
+  CHECK(sql_value(file, "SELECT stopped_by FROM runs WHERE repetition = 0 LIMIT 1") == "stagnation");
+  sql_exec(file, "UPDATE runs SET stopped_by = 'exhausted' WHERE repetition = 1");
+  const std::string before = bytes(file);
+  REQUIRE_THROWS_WITH(aco::studies::ResultsDb(file), Contains("runs.stopped_by cannot hold 'exhausted'"));
+  CHECK(bytes(file) == before);  // rolled back
+  sql_exec(file, "UPDATE runs SET stopped_by = 'iterations' WHERE repetition = 1");
+
+  auto db = open(file);
+  CHECK(db.meta("format_version") == "7");
+  const auto read = db.trials();
+  REQUIRE(read.size() == stored.size());
+  for (std::size_t i = 0; i < read.size(); ++i) check_equal(read[i], stored[i]);
+  CHECK(read[2].simulation->outcome == "stuck");
+  CHECK(sql_value(file, "SELECT count(*) FROM enums WHERE name = 'status'") == "9");
+  CHECK(sql_value(file, "SELECT timelimit || ',' || memorylimit || ',' || runcount FROM experiments LIMIT 1") ==
+        "0.0,0.0,0");
+  CHECK(sql_value(file, "SELECT count(*) FROM pragma_foreign_key_check") == "0");
 }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -61,19 +62,23 @@ aco::studies::TrialRecord sample_trial(int config) {
   return t;
 }
 
-std::set<std::string> runs_columns(const fs::path& file) {
+// A table's columns and their declared types.
+std::map<std::string, std::string> table_columns(const fs::path& file, const std::string& table = "runs") {
   sqlite3* raw = nullptr;
   REQUIRE(sqlite3_open_v2(file.c_str(), &raw, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
   std::unique_ptr<sqlite3, decltype(&sqlite3_close)> db(raw, sqlite3_close);
   sqlite3_stmt* raw_statement = nullptr;
-  REQUIRE(sqlite3_prepare_v2(raw, "SELECT name FROM pragma_table_info('runs')", -1, &raw_statement, nullptr) ==
-          SQLITE_OK);
+  const std::string sql = "SELECT name, type FROM pragma_table_info('" + table + "')";
+  REQUIRE(sqlite3_prepare_v2(raw, sql.c_str(), -1, &raw_statement, nullptr) == SQLITE_OK);
   std::unique_ptr<sqlite3_stmt, decltype(&sqlite3_finalize)> statement(raw_statement, sqlite3_finalize);
-  std::set<std::string> names;
+  std::map<std::string, std::string> columns;
   while (sqlite3_step(raw_statement) == SQLITE_ROW)
-    names.insert(reinterpret_cast<const char*>(sqlite3_column_text(raw_statement, 0)));
-  return names;
+    columns[reinterpret_cast<const char*>(sqlite3_column_text(raw_statement, 0))] =
+        reinterpret_cast<const char*>(sqlite3_column_text(raw_statement, 1));
+  return columns;
 }
+
+bool has_column(const fs::path& file, const std::string& name) { return table_columns(file).contains(name); }
 
 std::vector<std::string> csv_line(const std::string& line) {
   std::vector<std::string> cells;
@@ -100,7 +105,7 @@ TEST_CASE("every trial field reaches the messages, the runs table and runs.csv f
   db.store(trial);
   const aco::studies::TrialRecord sent = aco::studies::record_from(aco::studies::record_json(trial));
   const aco::studies::TrialRecord stored = db.trials().at(0);
-  const std::set<std::string> columns = runs_columns(file);
+  const auto columns = table_columns(file), texts = table_columns(file, "run_texts");
 
   std::istringstream csv(aco::studies::runs_csv({trial}, kProblems, db.configs()));
   std::string header_line, row_line;
@@ -117,8 +122,20 @@ TEST_CASE("every trial field reaches the messages, the runs table and runs.csv f
     CHECK_FALSE(std::holds_alternative<std::monostate>(value));
     CHECK(bool(f.use & aco::studies::kInMessage) == bool(f.set));  // a derived field is not sent
     if (f.use & aco::studies::kInMessage) CHECK(f.get(sent, optimal) == value);
-    CHECK(columns.contains(f.name) == bool(f.use & aco::studies::kInRunsTable));
-    if ((f.use & aco::studies::kInRunsTable) && f.set) CHECK(f.get(stored, optimal) == value);
+    CHECK(columns.contains(f.stored_as) == bool(f.use & aco::studies::kInRunsTable));
+    CHECK(texts.contains(f.stored_as) == bool(f.use & aco::studies::kInRunTexts));
+    if ((f.use & (aco::studies::kInRunsTable | aco::studies::kInRunTexts)) && f.set)
+      CHECK(f.get(stored, optimal) == value);
+    // OMPL's types: its script plots BOOLEAN, ENUM, INTEGER and REAL columns, and an identity is none of them.
+    if (columns.contains(f.stored_as)) {
+      const std::string type = columns.at(f.stored_as);
+      if (!f.values.empty())
+        CHECK(type == "ENUM");
+      else if (!f.measure)
+        CHECK(type == "INT");
+      else
+        CHECK((type == "BOOLEAN" || type == "INTEGER" || type == "REAL"));
+    }
     const auto at = std::find(header.begin(), header.end(), f.column);
     CHECK((at != header.end()) == bool(f.use & aco::studies::kInRunsCsv));
     if (at != header.end()) CHECK_FALSE(row[static_cast<std::size_t>(at - header.begin())].empty());
@@ -133,8 +150,11 @@ TEST_CASE("every trial field reaches the messages, the runs table and runs.csv f
 TEST_CASE("a database made before a field was added gains its column, NULL for its runs, and resumes",
           "[trialrecord]") {
   const fs::path file = test::temp_file("unused", "").parent_path() / "older.db";
-  const auto& newest = aco::studies::trial_fields().back();
-  REQUIRE((newest.use & aco::studies::kInRunsTable));
+  // The newest field read back from a column every database has.
+  const auto& fields = aco::studies::trial_fields();
+  const auto& newest = *std::find_if(fields.rbegin(), fields.rend(), [](const aco::studies::TrialField& f) {
+    return (f.use & aco::studies::kInRunsTable) && !(f.use & aco::studies::kWhenUsed) && f.set;
+  });
   int config = 0;
   {
     aco::studies::ResultsDb db(file, "older", "fingerprint", kProblems);
@@ -145,14 +165,14 @@ TEST_CASE("a database made before a field was added gains its column, NULL for i
     sqlite3* raw = nullptr;
     REQUIRE(sqlite3_open_v2(file.c_str(), &raw, SQLITE_OPEN_READWRITE, nullptr) == SQLITE_OK);
     std::unique_ptr<sqlite3, decltype(&sqlite3_close)> db(raw, sqlite3_close);
-    const std::string drop = std::string("ALTER TABLE runs DROP COLUMN ") + newest.name;
+    const std::string drop = std::string("ALTER TABLE runs DROP COLUMN ") + newest.stored_as;
     REQUIRE(sqlite3_exec(raw, drop.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
   }
-  REQUIRE_FALSE(runs_columns(file).contains(newest.name));
+  REQUIRE_FALSE(has_column(file, newest.stored_as));
 
   const aco::studies::ResultsDb report(file);  // a report reads it
-  CHECK(runs_columns(file).contains(newest.name));
-  CHECK(report.meta("format_version") == "6");  // an older acobench reads it still
+  CHECK(has_column(file, newest.stored_as));
+  CHECK(report.meta("format_version") == "7");  // an older acobench reads it still
   CHECK(std::holds_alternative<std::monostate>(newest.get(report.trials().at(0), -1)));
 
   aco::studies::ResultsDb resumed(file, "older", "fingerprint", kProblems);

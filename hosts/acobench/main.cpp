@@ -315,6 +315,7 @@ int run(const std::vector<std::string>& args) {
         lanes, aco::studies::worker_command(experiment, host.plugin_dirs, max_memory), lane_limits,
         experiment.fingerprint(registry));
   };
+  if (!in_process) run.limits = limits;  // as given: MPI ranks' workers apply their own default memory share
 #ifdef ACOBENCH_WITH_MPI
   std::optional<aco::studies::mpi::Session> session;
   if (aco::studies::mpi::started_by_launcher()) session.emplace();
@@ -324,7 +325,10 @@ int run(const std::vector<std::string>& args) {
 #endif
   const auto workers = make_workers(aco::lane_count(threads));
   std::optional<aco::studies::WorkerExecutor> executor;
-  if (workers) run.executor = &executor.emplace(*workers);
+  if (workers) {
+    run.executor = &executor.emplace(*workers);
+    run.limits = workers->limits();
+  }
   warn_same_runs(experiment);
   run.progress = Progress();
   run.starting = announce_trials(experiment, run);

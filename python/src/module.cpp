@@ -323,8 +323,9 @@ PYBIND11_MODULE(_aco, m) {
   m.def("trial_fields", [] {
     py::list fields;
     for (const auto& f : aco::studies::trial_fields())
-      fields.append(py::dict(py::arg("name") = f.name, py::arg("column") = f.column,
+      fields.append(py::dict(py::arg("name") = f.name, py::arg("column") = f.column, py::arg("stored_as") = f.stored_as,
                              py::arg("in_runs_table") = bool(f.use & aco::studies::kInRunsTable),
+                             py::arg("when_used") = bool(f.use & aco::studies::kWhenUsed),
                              py::arg("in_runs_csv") = bool(f.use & aco::studies::kInRunsCsv),
                              py::arg("in_python") = bool(f.use & aco::studies::kInPython)));
     return fields;

@@ -664,6 +664,38 @@ void add_problem(const Analysis& a, std::size_t p, FigureFiles& files, std::vect
   for (Figure& figure : path_pictures(a, p, files)) blocks.emplace_back(std::move(figure));
 }
 
+// The runs of OMPL benchmark logs appended to the database (ompl_benchmark_statistics -a), per
+// experiment and planner, in the measures every planner has.
+std::vector<Table> appended_tables(const Analysis& a) {
+  Table t{"Planners of appended OMPL logs",
+          "Runs that OMPL's own benchmark wrote and `ompl_benchmark_statistics -a` appended to this database: "
+          "each OMPL experiment is its own problem. Length is OMPL's solution_length of solved runs.",
+          {"OMPL experiment", "planner", "runs", "solved %", "mean time s", "mean length", "longest"},
+          {},
+          "llrrrrr"};
+  for (std::size_t first = 0; first < a.appended.size();) {
+    std::size_t end = first;
+    std::vector<double> times, lengths;
+    int solved = 0;
+    for (; end < a.appended.size() && a.appended[end].experiment == a.appended[first].experiment &&
+           a.appended[end].planner == a.appended[first].planner;
+         ++end) {
+      const AppendedRun& run = a.appended[end];
+      times.push_back(run.time_s);
+      solved += run.solved;
+      if (run.solved && std::isfinite(run.length)) lengths.push_back(run.length);
+    }
+    const auto runs = static_cast<double>(end - first);
+    t.rows.push_back({a.appended[first].experiment, a.appended[first].planner, std::to_string(end - first),
+                      fixed(100.0 * solved / runs, 1), fixed(mean_of(times), 4),
+                      lengths.empty() ? "" : fixed(mean_of(lengths), 3),
+                      lengths.empty() ? "" : fixed(largest(lengths), 3)});
+    first = end;
+  }
+  if (t.rows.empty()) return {};
+  return {t};
+}
+
 // The whole report: what the analysis found, in the order a reader wants it.
 ReportDocument report_document(const Analysis& a, const std::filesystem::path& database) {
   ReportDocument d{"acobench report: " + a.name, "acobench: " + a.name, {}};
@@ -691,6 +723,7 @@ ReportDocument report_document(const Analysis& a, const std::filesystem::path& d
                     true});
     for (Figure& figure : ecdf_charts(a, files)) blocks.emplace_back(std::move(figure));
   }
+  for (Table& t : appended_tables(a)) blocks.emplace_back(std::move(t));
   for (std::size_t p = 0; p < a.problems.size(); ++p) add_problem(a, p, files, blocks);
   if (!a.average_rank.empty()) {
     Table ranking{"Ranking across problems",

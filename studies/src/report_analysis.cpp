@@ -30,6 +30,7 @@ Analysis analyse(const ResultsDb& db) {
   a.problems = db.problems();
   a.configs = db.configs();
   a.trials = db.trials();
+  a.appended = db.appended_runs();
   a.experiment_dir = std::filesystem::path(db.meta("experiment_file")).parent_path();
   a.host_version = db.find_meta("host_version").value_or("");
   a.host_build = db.find_meta("host_build").value_or("");

@@ -44,6 +44,7 @@ struct Analysis {
   std::vector<int> buckets;  // per problem: Moving AI bucket, or -1
   std::size_t unmeasured = 0;  // runs stored without anytime curves (by an older acobench)
   std::string host_version, host_build;  // of the acobench that ran the trials ("" if not recorded)
+  std::vector<AppendedRun> appended;  // runs of OMPL logs appended to the database
 };
 
 // The excess of a solved trial over the problem's optimum, %. The optimum is exact A* on the

@@ -25,22 +25,26 @@ using aco::Error;
 
 // Bumped whenever the tables change in a way older readers would misread.
 // 2: the simulation columns of runs; 3: runs.error; 4: progress.walks, progress.time measured;
-// 5: runs.failure; 6: the properties table, plannerConfigs.plugins.
-const std::string kFormatVersion = "6";
+// 5: runs.failure; 6: the properties table, plannerConfigs.plugins; 7: OMPL's layout (ENUMs,
+// OMPL's column names, run_texts, plannerPlugins, the experiments' limits).
+const std::string kFormatVersion = "7";
 
 // This version, or an earlier one upgrade() brings to it.
 bool upgradable(const std::string& version) {
-  return version == kFormatVersion || version == "1" || version == "2" || version == "3" || version == "4" ||
-         version == "5";
+  for (const char* v : {"1", "2", "3", "4", "5", "6"})
+    if (version == v) return true;
+  return version == kFormatVersion;
 }
 
-const char* sql_type(TrialCellType type) {
-  switch (type) {
+// The declared type: OMPL's script plots the columns declared BOOLEAN, ENUM, INTEGER or REAL.
+std::string sql_type(const TrialField& f) {
+  if (!f.values.empty() && (f.use & kInRunsTable)) return "ENUM";
+  switch (f.type) {
     case TrialCellType::boolean:
       return "BOOLEAN";
     case TrialCellType::integer:
     case TrialCellType::count:
-      return "INTEGER";
+      return f.measure ? "INTEGER" : "INT";
     case TrialCellType::real:
       return "REAL";
     case TrialCellType::text:
@@ -49,30 +53,25 @@ const char* sql_type(TrialCellType type) {
   return "TEXT";
 }
 
-// The fields that are columns of the runs table; `read_back`: only those a record is read from,
-// not the derived ones.
-std::vector<const TrialField*> run_fields(bool read_back = false) {
+// The fields of a table (kInRunsTable or kInRunTexts); `read_back`: only those a record is read
+// from, not the derived ones.
+std::vector<const TrialField*> fields_in(unsigned table, bool read_back = false) {
   std::vector<const TrialField*> fields;
   for (const auto& f : trial_fields())
-    if ((f.use & kInRunsTable) && (f.set || !read_back)) fields.push_back(&f);
+    if ((f.use & table) && (f.set || !read_back)) fields.push_back(&f);
   return fields;
 }
 
-// ", name, name..." of the fields.
+// ", name, name..." of the fields' columns.
 std::string column_names(const std::vector<const TrialField*>& fields) {
   std::string names;
-  for (const TrialField* f : fields) names += std::string(", ") + f->name;
+  for (const TrialField* f : fields) names += std::string(", ") + f->stored_as;
   return names;
 }
 
-// The runs table's field columns, "name TYPE" each.
-std::vector<std::string> run_field_columns() {
-  std::vector<std::string> columns;
-  for (const TrialField* f : run_fields()) columns.push_back(std::string(f->name) + " " + sql_type(f->type));
-  return columns;
-}
+std::string column_definition(const TrialField& f) { return std::string(f.stored_as) + " " + sql_type(f); }
 
-// The runs table's field columns as lines of schema(): at most 100 characters, indented.
+// The lines of a CREATE TABLE's columns: at most 100 characters, indented.
 std::string wrapped(const std::vector<std::string>& columns) {
   std::string text, line;
   for (const auto& column : columns) {
@@ -82,25 +81,62 @@ std::string wrapped(const std::vector<std::string>& columns) {
   return text + line + "\n";
 }
 
-// OMPL's tables (as ompl_benchmark_statistics.py creates them) with our run and progress
-// attributes as columns; see the header for what each holds.
+// The runs table (named `table`) with the field columns but those added when used, and the
+// columns in `with`.
+std::string runs_table(const std::string& table, const std::set<std::string>& with = {}) {
+  std::vector<std::string> columns;
+  for (const TrialField* f : fields_in(kInRunsTable))
+    if (!(f->use & kWhenUsed) || with.contains(f->stored_as)) columns.push_back(column_definition(*f));
+  return "CREATE TABLE " + table +
+         " (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, plannerid INTEGER,\n" + wrapped(columns) +
+         R"(  FOREIGN KEY (experimentid) REFERENCES experiments(id) ON DELETE CASCADE,
+  FOREIGN KEY (plannerid) REFERENCES plannerConfigs(id) ON DELETE CASCADE,
+  UNIQUE (experimentid, plannerid, repetition));
+)";
+}
+
+std::string run_texts_table() {
+  std::vector<std::string> columns;
+  for (const TrialField* f : fields_in(kInRunTexts)) columns.push_back(column_definition(*f));
+  return "CREATE TABLE run_texts (runid INTEGER PRIMARY KEY,\n" + wrapped(columns) +
+         "  FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);\n";
+}
+
+const char* const kPlannerPluginsTable = R"(
+CREATE TABLE plannerPlugins (plannerid INTEGER PRIMARY KEY, plugins TEXT,
+  FOREIGN KEY (plannerid) REFERENCES plannerConfigs(id) ON DELETE CASCADE);
+)";
+
+// OMPL's tables (as ompl_benchmark_statistics creates them, plannerConfigs with its three
+// columns, which its -a fills by position) with our run and progress attributes as columns; see
+// the header for what each holds.
 std::string schema() {
   return R"(
 CREATE TABLE experiments (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512), totaltime REAL,
   timelimit REAL, memorylimit REAL, runcount INTEGER, version VARCHAR(128), hostname VARCHAR(1024),
   cpuinfo TEXT, date DATETIME, seed VARCHAR(24), setup TEXT, optimal_length REAL);
-CREATE TABLE plannerConfigs (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512) NOT NULL, settings TEXT,
-  plugins TEXT);
+CREATE TABLE plannerConfigs (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512) NOT NULL, settings TEXT);
 CREATE TABLE enums (name VARCHAR(512), value INTEGER, description TEXT, PRIMARY KEY (name, value));
-CREATE TABLE runs (id INTEGER PRIMARY KEY AUTOINCREMENT, experimentid INTEGER, plannerid INTEGER,
-)" + wrapped(run_field_columns()) +
-         R"(  FOREIGN KEY (experimentid) REFERENCES experiments(id) ON DELETE CASCADE,
-  FOREIGN KEY (plannerid) REFERENCES plannerConfigs(id) ON DELETE CASCADE,
-  UNIQUE (experimentid, plannerid, repetition));
+)" + runs_table("runs") +
+         run_texts_table() + kPlannerPluginsTable + R"(
 CREATE TABLE progress (runid INTEGER, time REAL, iteration INTEGER, best_cost REAL, walks INTEGER,
   PRIMARY KEY (runid, iteration), FOREIGN KEY (runid) REFERENCES runs(id) ON DELETE CASCADE);
 CREATE TABLE acobench_meta (key TEXT PRIMARY KEY, value TEXT);
 )";
+}
+
+// A field's value as its column holds it: an ENUM's index.
+TrialCell to_column(const TrialField& f, TrialCell value) {
+  if (f.values.empty() || !(f.use & kInRunsTable)) return value;
+  const auto* text = std::get_if<std::string>(&value);
+  if (!text) return value;
+  const auto at = std::find(f.values.begin(), f.values.end(), *text);
+  if (at == f.values.end()) {
+    std::string known;
+    for (const auto& v : f.values) known += (known.empty() ? "'" : ", '") + v + "'";
+    throw Error(std::string("runs.") + f.stored_as + " cannot hold '" + *text + "' (its values: " + known + ")");
+  }
+  return static_cast<std::int64_t>(at - f.values.begin());
 }
 
 // A generic name/value table per run, as OMPL's run properties but as rows, not columns: the
@@ -214,6 +250,15 @@ class Statement {
     }
     return text(column);
   }
+  // A column holding `field`: an ENUM's index is its value's text.
+  TrialCell cell(int column, const TrialField& field) const {
+    if (field.values.empty() || !(field.use & kInRunsTable) || null(column)) return cell(column, field.type);
+    const std::int64_t index = integer(column);
+    if (index < 0 || index >= static_cast<std::int64_t>(field.values.size()))
+      throw Error("results database " + db_.file() + ": runs." + field.stored_as + " holds " + std::to_string(index) +
+                  ", which is not one of its " + std::to_string(field.values.size()) + " ENUM values");
+    return field.values[static_cast<std::size_t>(index)];
+  }
   std::int64_t integer(int column) const { return sqlite3_column_int64(stmt_, column); }
   double real(int column) const { return sqlite3_column_double(stmt_, column); }
   std::string text(int column) const {
@@ -269,6 +314,11 @@ class Transaction {
   bool committed_ = false;
 };
 
+// The rows acobench wrote, not those of OMPL logs appended by ompl_benchmark_statistics -a:
+// experiments whose version is ours, planner configurations whose settings are JSON.
+constexpr const char* kOurs = "version LIKE 'aco %'";
+constexpr const char* kOurConfigs = "json_valid(settings)";
+
 // A real that binds as SQL NULL.
 constexpr double kNull = std::numeric_limits<double>::quiet_NaN();
 
@@ -281,6 +331,12 @@ nlohmann::json parse_json(const std::string& text, const std::string& what) {
 }
 
 std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
+
+const TrialField& failure_field() {
+  for (const auto& f : trial_fields())
+    if (std::string_view(f.name) == "failure") return f;
+  throw Error("no trial field 'failure'");
+}
 
 // The CPU model and thread count, as OMPL records its cpuinfo: for reading results, not using them.
 std::string cpuinfo() {
@@ -319,7 +375,9 @@ struct ResultsDb::Impl {
   std::map<std::int64_t, int> problem_of;  // by experiment id
   std::vector<ProblemRecord> problems;
   std::map<int, std::string> config_names;  // by id
-  std::optional<Statement> find_run, insert_run, insert_progress, insert_property, add_time;
+  std::optional<Statement> find_run, insert_run, insert_text, insert_progress, insert_property, add_time;
+  // The runs columns insert_run fills: those the table has (a column added when used may not be there).
+  std::vector<const TrialField*> run_columns;
 
   std::string file() const { return db.file(); }
   // The problems (`given`, in their order, or all stored ones), configurations and statements of
@@ -345,10 +403,112 @@ struct ResultsDb::Impl {
 
   std::vector<ProblemRecord> stored_problems() {
     std::vector<ProblemRecord> stored;
-    Statement read(db, "SELECT name, setup, optimal_length FROM experiments ORDER BY id");
+    Statement read(db,
+                   "SELECT name, setup, optimal_length FROM experiments WHERE " + std::string(kOurs) + " ORDER BY id");
     read.run();
     while (read.next()) stored.push_back({read.text(0), read.text(1), read.null(2) ? -1.0 : read.real(2)});
     return stored;
+  }
+
+  std::set<std::string> columns_of(const std::string& table) {
+    std::set<std::string> present;
+    Statement columns(db, "SELECT name FROM pragma_table_info('" + table + "')");
+    columns.run();
+    while (columns.next()) present.insert(columns.text(0));
+    return present;
+  }
+
+  // The fields of the runs table whose columns it has now.
+  std::vector<const TrialField*> present_run_fields(bool read_back) {
+    const auto present = columns_of("runs");
+    std::vector<const TrialField*> fields;
+    for (const TrialField* f : fields_in(kInRunsTable, read_back))
+      if (present.contains(f->stored_as)) fields.push_back(f);
+    return fields;
+  }
+
+  // Prepares the INSERT of a runs row (?1 its id, NULL for a new one) for the columns there are.
+  void prepare_insert_run() {
+    run_columns = present_run_fields(false);
+    std::string parameters = "?1, ?2, ?3";  // id, experimentid, plannerid
+    for (std::size_t i = 0; i < run_columns.size(); ++i) parameters += ", ?" + std::to_string(4 + i);
+    insert_run.emplace(db, "INSERT INTO runs (id, experimentid, plannerid" + column_names(run_columns) + ") VALUES (" +
+                               parameters + ")");
+    const auto texts = fields_in(kInRunTexts);
+    parameters = "?1";
+    for (std::size_t i = 0; i < texts.size(); ++i) parameters += ", ?" + std::to_string(2 + i);
+    insert_text.emplace(db, "INSERT INTO run_texts (runid" + column_names(texts) + ") VALUES (" + parameters + ")");
+  }
+
+  // A trial's runs row and its run_texts row (if it has a text); `id` nullopt: a new row. The id.
+  std::int64_t insert_trial(std::optional<std::int64_t> id, std::int64_t experiment, std::int64_t planner,
+                            const TrialRecord& t, double optimal_length) {
+    std::vector<TrialCell> cells;
+    for (const TrialField* f : run_columns) cells.push_back(to_column(*f, f->get(t, optimal_length)));
+    insert_run->run(id, experiment, planner).and_cells(4, cells).finish();
+    const std::int64_t run = sqlite3_last_insert_rowid(db.handle());
+    std::vector<TrialCell> texts;
+    for (const TrialField* f : fields_in(kInRunTexts)) texts.push_back(f->get(t, optimal_length));
+    if (std::any_of(texts.begin(), texts.end(),
+                    [](const TrialCell& c) { return !std::holds_alternative<std::monostate>(c); }))
+      insert_text->run(run).and_cells(2, texts).finish();
+    return run;
+  }
+
+  // The columns added when used that the trial has a value for: added if missing (in the
+  // caller's transaction), and the INSERT prepared again.
+  void add_used_columns(const TrialRecord& t) {
+    std::vector<const TrialField*> used;
+    for (const TrialField* f : fields_in(kInRunsTable))
+      if ((f->use & kWhenUsed) && !std::holds_alternative<std::monostate>(f->get(t, -1.0))) used.push_back(f);
+    if (used.empty()) return;
+    const auto present = columns_of("runs");
+    bool added = false;
+    for (const TrialField* f : used)
+      if (!present.contains(f->stored_as)) {
+        db.exec("ALTER TABLE runs ADD COLUMN " + column_definition(*f));
+        added = true;
+      }
+    // Another process may have added them: the statement is prepared whenever it lacks one.
+    if (added || run_columns.size() != present_run_fields(false).size()) prepare_insert_run();
+  }
+
+  // The rows describing every ENUM column's values (OMPL's -a adds its own only for names it
+  // does not find).
+  void add_enums() {
+    Statement add(db, "INSERT OR IGNORE INTO enums (name, value, description) VALUES (?1, ?2, ?3)");
+    for (const TrialField* f : fields_in(kInRunsTable))
+      for (std::size_t i = 0; i < f->values.size(); ++i)
+        add.run(std::string(f->stored_as), static_cast<std::int64_t>(i), f->values[i]).finish();
+  }
+
+  // Older formats are brought to format 6, then migrated to 7, in one transaction. A trial
+  // field's column that a database of format 7 lacks (one made before the field was added) is
+  // added, NULL for the stored runs: an older acobench of format 7 still reads and continues the
+  // database (leaving the column NULL), so the format version stays.
+  void upgrade() {
+    const std::string version = meta().at("format_version");
+    if (version != kFormatVersion) {
+      Transaction transaction(db);
+      to_format_6(version);
+      to_format_7();
+      Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
+      set.run(kFormatVersion).finish();
+      transaction.commit();
+      return;
+    }
+    std::vector<std::string> missing;
+    for (const auto& [table, use] :
+         {std::pair<std::string, unsigned>{"runs", kInRunsTable}, {"run_texts", kInRunTexts}}) {
+      const auto present = columns_of(table);
+      for (const TrialField* f : fields_in(use))
+        if (!(f->use & kWhenUsed) && !present.contains(f->stored_as))
+          missing.push_back("ALTER TABLE " + table + " ADD COLUMN " + column_definition(*f));
+    }
+    if (missing.empty()) return;
+    Transaction transaction(db);
+    for (const auto& statement : missing) db.exec(statement);
+    transaction.commit();
   }
 
   // Formats 1 to 5 lack columns (1: the simulation measures of runs, 2: runs.error, 3:
@@ -358,37 +518,70 @@ struct ResultsDb::Impl {
   // runs have no properties but ant_steps and stopped_by, which the runs table holds. A failed
   // trial's failure is its stopped_by, or "error" for one that threw: which of the plugin or the
   // engine's checks threw was not recorded.
-  // A trial field's column that a database of any format lacks (one made before the field was
-  // added) is added too, NULL for the stored runs: an older acobench still reads and continues
-  // the database (leaving the column NULL), so the format version stays.
-  void upgrade() {
-    const bool current = meta().at("format_version") == kFormatVersion;
-    const auto columns_of = [&](const std::string& table) {
-      std::set<std::string> present;
-      Statement columns(db, "SELECT name FROM pragma_table_info('" + table + "')");
-      columns.run();
-      while (columns.next()) present.insert(columns.text(0));
-      return present;
+  void to_format_6(const std::string& version) {
+    if (version == "6") return;
+    const auto present = columns_of("runs");
+    for (const TrialField* f : format_6_fields())
+      if (!present.contains(f->name))
+        db.exec("ALTER TABLE runs ADD COLUMN " + std::string(f->name) + " " +
+                (f->values.empty() ? sql_type(*f) : "TEXT"));
+    if (!columns_of("progress").contains("walks")) db.exec("ALTER TABLE progress ADD COLUMN walks INTEGER");
+    if (!columns_of("plannerConfigs").contains("plugins"))
+      db.exec("ALTER TABLE plannerConfigs ADD COLUMN plugins TEXT");
+    db.exec(
+        "UPDATE runs SET failure = CASE WHEN stopped_by IN ('crashed', 'timed out', 'out of memory') THEN "
+        "stopped_by ELSE 'error' END WHERE error IS NOT NULL AND failure IS NULL");
+    if (!tables().contains("properties")) db.exec(kPropertiesTable);
+  }
+
+  // The fields a format-6 runs table held under their own names (text where ENUMs are now): all
+  // that are read back (the derived gap and status are computed again).
+  static std::vector<const TrialField*> format_6_fields() { return fields_in(kInRunsTable | kInRunTexts, true); }
+
+  // Format 6 to 7: the runs table rebuilt in OMPL's layout (each row read as format 6 wrote it
+  // and written as store() writes it, under its id, which progress and properties name), the free
+  // text moved to run_texts, the plugins to plannerPlugins, the limits 0 (not recorded), the
+  // enums rows added. A value the new layout cannot hold is an Error (the transaction rolls back).
+  void to_format_7() {
+    std::map<std::int64_t, double> optimum;
+    Statement optima(db, "SELECT id, optimal_length FROM experiments");
+    optima.run();
+    while (optima.next()) optimum[optima.integer(0)] = optima.null(1) ? -1.0 : optima.real(1);
+    struct Row {
+      std::int64_t id, experiment, planner;
+      TrialRecord trial;
     };
-    std::vector<std::pair<std::string, std::string>> missing;
-    const auto present_in_runs = columns_of("runs");
-    for (const auto& column : run_field_columns())
-      if (!present_in_runs.contains(column.substr(0, column.find(' ')))) missing.emplace_back("runs", column);
-    if (!columns_of("progress").contains("walks")) missing.emplace_back("progress", "walks INTEGER");
-    if (!columns_of("plannerConfigs").contains("plugins")) missing.emplace_back("plannerConfigs", "plugins TEXT");
-    if (current && missing.empty()) return;
-    const bool has_properties = tables().contains("properties");
-    Transaction transaction(db);
-    for (const auto& [table, column] : missing) db.exec("ALTER TABLE " + table + " ADD COLUMN " + column);
-    if (!current) {
-      db.exec(
-          "UPDATE runs SET failure = CASE WHEN stopped_by IN ('crashed', 'timed out', 'out of memory') THEN "
-          "stopped_by ELSE 'error' END WHERE error IS NOT NULL AND failure IS NULL");
-      if (!has_properties) db.exec(kPropertiesTable);
-      Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'format_version'");
-      set.run(kFormatVersion).finish();
+    std::vector<Row> rows;
+    const auto fields = format_6_fields();
+    std::string names;
+    for (const TrialField* f : fields) names += std::string(", ") + f->name;
+    Statement read(db, "SELECT id, experimentid, plannerid" + names + " FROM runs ORDER BY id");
+    read.run();
+    while (read.next()) {
+      Row row{read.integer(0), read.integer(1), read.integer(2), {}};
+      for (std::size_t i = 0; i < fields.size(); ++i)
+        fields[i]->set(row.trial, read.cell(static_cast<int>(3 + i), fields[i]->type));
+      rows.push_back(std::move(row));
     }
-    transaction.commit();
+    std::set<std::string> used;  // the columns added when used that some row has a value for
+    for (const TrialField* f : fields_in(kInRunsTable))
+      if ((f->use & kWhenUsed) && std::any_of(rows.begin(), rows.end(), [&](const Row& r) {
+            return !std::holds_alternative<std::monostate>(f->get(r.trial, -1.0));
+          }))
+        used.insert(f->stored_as);
+    db.exec(runs_table("runs_7", used) + run_texts_table() + kPlannerPluginsTable);
+    db.exec("DROP TABLE runs");
+    db.exec("ALTER TABLE runs_7 RENAME TO runs");
+    prepare_insert_run();
+    for (const Row& r : rows) insert_trial(r.id, r.experiment, r.planner, r.trial, optimum[r.experiment]);
+    db.exec(
+        "INSERT INTO plannerPlugins (plannerid, plugins) SELECT id, plugins FROM plannerConfigs WHERE plugins IS NOT "
+        "NULL");
+    db.exec("ALTER TABLE plannerConfigs DROP COLUMN plugins");
+    db.exec(
+        "UPDATE experiments SET timelimit = COALESCE(timelimit, 0), memorylimit = COALESCE(memorylimit, 0), "
+        "runcount = COALESCE(runcount, 0), seed = COALESCE(seed, '')");
+    add_enums();
   }
 
   // Only reads: a file that is not ours, or whose trials the experiment would run otherwise, stays
@@ -431,8 +624,9 @@ struct ResultsDb::Impl {
 
   void add_problem(const ProblemRecord& p) {
     Statement add(db,
-                  "INSERT INTO experiments (name, totaltime, version, hostname, cpuinfo, date, setup, optimal_length) "
-                  "VALUES (?1, 0, ?2, ?3, ?4, datetime('now'), ?5, ?6)");
+                  "INSERT INTO experiments (name, totaltime, timelimit, memorylimit, runcount, version, hostname, "
+                  "cpuinfo, date, seed, setup, optimal_length) "
+                  "VALUES (?1, 0, 0, 0, 0, ?2, ?3, ?4, datetime('now'), '', ?5, ?6)");
     add.run(p.name, std::string("aco ") + ACOBENCH_VERSION, hostname(), cpuinfo(), p.setup_json,
             p.optimal_length >= 0 ? p.optimal_length : kNull)
         .finish();
@@ -445,6 +639,7 @@ struct ResultsDb::Impl {
     if (!tables().empty()) return false;
     db.exec(schema());
     db.exec(kPropertiesTable);
+    add_enums();
     Statement set(db, "INSERT INTO acobench_meta (key, value) VALUES (?1, ?2)");
     set.run(std::string("format_version"), kFormatVersion).finish();
     set.run(std::string("experiment_name"), experiment_name).finish();
@@ -541,15 +736,12 @@ void ResultsDb::Impl::load(const std::vector<ProblemRecord>* given) {
     problem_of[id_of.at(p.name)] = static_cast<int>(experiment_ids.size());
     experiment_ids.push_back(id_of.at(p.name));
   }
-  Statement names(db, "SELECT id, name FROM plannerConfigs");
+  Statement names(db, "SELECT id, name FROM plannerConfigs WHERE " + std::string(kOurConfigs));
   names.run();
   while (names.next()) config_names[static_cast<int>(names.integer(0))] = names.text(1);
 
   find_run.emplace(db, "SELECT id FROM runs WHERE experimentid = ?1 AND plannerid = ?2 AND repetition = ?3");
-  std::string parameters = "?1, ?2";  // experimentid, plannerid
-  for (std::size_t i = 0; i < run_fields().size(); ++i) parameters += ", ?" + std::to_string(3 + i);
-  insert_run.emplace(
-      db, "INSERT INTO runs (experimentid, plannerid" + column_names(run_fields()) + ") VALUES (" + parameters + ")");
+  prepare_insert_run();
   insert_progress.emplace(
       db, "INSERT INTO progress (runid, time, iteration, best_cost, walks) VALUES (?1, ?2, ?3, ?4, ?5)");
   insert_property.emplace(db, "INSERT INTO properties (runid, name, value) VALUES (?1, ?2, ?3)");
@@ -563,7 +755,7 @@ int ResultsDb::add_config(const ConfigRecord& config) {
   parse_json(config.settings_json, "the settings of configuration " + in_quotes(config.name));
   std::lock_guard lock(d.mutex);
   Transaction transaction(d.db);
-  Statement find(d.db, "SELECT id, settings FROM plannerConfigs WHERE name = ?1");
+  Statement find(d.db, "SELECT id, settings FROM plannerConfigs WHERE name = ?1 AND " + std::string(kOurConfigs));
   find.run(config.name);
   // The plugin files as this run found them: a rerun from another build folder updates them.
   const auto plugins = config.plugins_json.empty() ? std::nullopt : std::optional(config.plugins_json);
@@ -573,15 +765,19 @@ int ResultsDb::add_config(const ConfigRecord& config) {
       throw Error(conflicts_message(d.file(), d.meta().at("experiment_name"), conflicts));
     const auto id = static_cast<int>(find.integer(0));
     if (plugins) {
-      Statement update(d.db, "UPDATE plannerConfigs SET plugins = ?2 WHERE id = ?1");
+      Statement update(d.db, "INSERT OR REPLACE INTO plannerPlugins (plannerid, plugins) VALUES (?1, ?2)");
       update.run(id, *plugins).finish();
       transaction.commit();
     }
     return id;
   }
-  Statement add(d.db, "INSERT INTO plannerConfigs (name, settings, plugins) VALUES (?1, ?2, ?3)");
-  add.run(config.name, config.settings_json, plugins).finish();
+  Statement add(d.db, "INSERT INTO plannerConfigs (name, settings) VALUES (?1, ?2)");
+  add.run(config.name, config.settings_json).finish();
   const auto id = static_cast<int>(sqlite3_last_insert_rowid(d.db.handle()));
+  if (plugins) {
+    Statement add_plugins(d.db, "INSERT INTO plannerPlugins (plannerid, plugins) VALUES (?1, ?2)");
+    add_plugins.run(id, *plugins).finish();
+  }
   transaction.commit();
   d.config_names[id] = config.name;
   return id;
@@ -603,12 +799,18 @@ std::map<std::tuple<int, int, int>, std::pair<FailureKind, std::string>> Results
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
   std::map<std::tuple<int, int, int>, std::pair<FailureKind, std::string>> failures;
-  Statement read(d.db, "SELECT experimentid, plannerid, repetition, failure, error FROM runs WHERE error IS NOT NULL");
+  if (!d.columns_of("runs").contains(failure_field().stored_as)) return failures;  // none failed yet
+  Statement read(d.db,
+                 "SELECT experimentid, plannerid, repetition, failure, error FROM runs JOIN run_texts ON runid = id "
+                 "WHERE error IS NOT NULL");
   read.run();
   while (read.next())
-    if (const auto problem = d.problem_of.find(read.integer(0)); problem != d.problem_of.end())
+    if (const auto problem = d.problem_of.find(read.integer(0)); problem != d.problem_of.end()) {
+      TrialRecord t;
+      failure_field().set(t, read.cell(3, failure_field()));
       failures[{problem->second, static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2))}] = {
-          failure_kind(read.text(3)), read.text(4)};
+          t.failure, read.text(4)};
+    }
   return failures;
 }
 
@@ -623,11 +825,9 @@ void ResultsDb::store(const TrialRecord& t) {
   if (d.find_run->run(experiment, t.config, t.repetition).any())
     throw Error(d.file() + ": " + d.trial_label(t) + " is already stored");
 
-  const double optimum = d.problems[static_cast<std::size_t>(t.problem)].optimal_length;
-  std::vector<TrialCell> cells;
-  for (const TrialField* f : run_fields()) cells.push_back(f->get(t, optimum));
-  d.insert_run->run(experiment, t.config).and_cells(3, cells).finish();
-  const std::int64_t run = sqlite3_last_insert_rowid(d.db.handle());
+  d.add_used_columns(t);
+  const std::int64_t run = d.insert_trial(std::nullopt, experiment, t.config, t,
+                                          d.problems[static_cast<std::size_t>(t.problem)].optimal_length);
   const bool measured = !t.elapsed_s.empty();
   const double seconds_per_iteration = t.iterations > 0 ? t.time_s / t.iterations : 0.0;  // an older trial's estimate
   for (int i = 1; i <= t.iterations; ++i) {
@@ -653,7 +853,10 @@ std::vector<std::pair<int, ConfigRecord>> ResultsDb::configs() const {
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
   std::vector<std::pair<int, ConfigRecord>> all;
-  Statement read(d.db, "SELECT id, name, settings, plugins FROM plannerConfigs ORDER BY id");
+  Statement read(d.db,
+                 "SELECT id, name, settings, plugins FROM plannerConfigs LEFT JOIN plannerPlugins ON plannerid = id "
+                 "WHERE " +
+                     std::string(kOurConfigs) + " ORDER BY id");
   read.run();
   while (read.next()) all.push_back({static_cast<int>(read.integer(0)), {read.text(1), read.text(2), read.text(3)}});
   return all;
@@ -663,20 +866,24 @@ std::vector<TrialRecord> ResultsDb::trials() const {
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
   std::vector<TrialRecord> all;
-  const auto fields = run_fields(true);
+  auto fields = d.present_run_fields(true);
+  for (const TrialField* f : fields_in(kInRunTexts, true)) fields.push_back(f);
   Statement runs(d.db, "SELECT id, experimentid, plannerid" + column_names(fields) +
-                           " FROM runs ORDER BY experimentid, plannerid, repetition");
-  Statement progress(d.db, "SELECT best_cost, time, walks FROM progress WHERE runid = ?1 ORDER BY iteration");
+                           " FROM runs LEFT JOIN run_texts ON runid = id ORDER BY experimentid, plannerid, repetition");
+  // Rows of appended OMPL logs have no iteration.
+  Statement progress(d.db,
+                     "SELECT best_cost, time, walks FROM progress WHERE runid = ?1 AND iteration IS NOT NULL "
+                     "ORDER BY iteration");
   Statement properties(d.db, "SELECT name, value FROM properties WHERE runid = ?1");
   runs.run();
   while (runs.next()) {
     const auto problem = d.problem_of.find(runs.integer(1));
-    if (problem == d.problem_of.end()) continue;  // a problem the experiment no longer names
+    // A problem the experiment no longer names, or an appended OMPL log's.
+    if (problem == d.problem_of.end() || !d.config_names.contains(static_cast<int>(runs.integer(2)))) continue;
     TrialRecord t;
     t.problem = problem->second;
     t.config = static_cast<int>(runs.integer(2));
-    for (std::size_t i = 0; i < fields.size(); ++i)
-      fields[i]->set(t, runs.cell(static_cast<int>(3 + i), fields[i]->type));
+    for (std::size_t i = 0; i < fields.size(); ++i) fields[i]->set(t, runs.cell(static_cast<int>(3 + i), *fields[i]));
     progress.run(runs.integer(0));
     bool measured = true;
     while (progress.next()) {
@@ -694,6 +901,50 @@ std::vector<TrialRecord> ResultsDb::trials() const {
     all.push_back(std::move(t));
   }
   return all;
+}
+
+std::vector<AppendedRun> ResultsDb::appended_runs() const {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  std::vector<AppendedRun> all;
+  Statement read(
+      d.db,
+      "SELECT experiments.name, plannerConfigs.name, solved, time, solution_length FROM runs "
+      "JOIN experiments ON experiments.id = experimentid JOIN plannerConfigs ON plannerConfigs.id = plannerid "
+      "WHERE NOT experiments." +
+          std::string(kOurs) + " ORDER BY experimentid, plannerid, runs.id");
+  read.run();
+  while (read.next())
+    all.push_back({read.text(0), read.text(1), !read.null(2) && read.integer(2) != 0, read.null(3) ? 0.0 : read.real(3),
+                   read.null(4) ? std::nan("") : read.real(4)});
+  return all;
+}
+
+void ResultsDb::record_limits(const ExperimentLimits& limits) {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  Transaction transaction(d.db);
+  Statement set(d.db,
+                "UPDATE experiments SET timelimit = ?2, memorylimit = ?3, runcount = ?4, seed = ?5 WHERE id = ?1");
+  for (const std::int64_t id : d.experiment_ids)
+    set.run(id, limits.time_limit_s, limits.memory_limit_mib, limits.runs, std::to_string(limits.seed)).finish();
+  transaction.commit();
+}
+
+ExperimentLimits ResultsDb::limits() const {
+  auto& d = *impl_;
+  std::lock_guard lock(d.mutex);
+  ExperimentLimits limits;
+  if (d.experiment_ids.empty()) return limits;
+  Statement read(d.db, "SELECT timelimit, memorylimit, runcount, seed FROM experiments WHERE id = ?1");
+  read.run(d.experiment_ids.front());
+  if (read.next()) {
+    limits.time_limit_s = read.real(0);
+    limits.memory_limit_mib = read.real(1);
+    limits.runs = static_cast<int>(read.integer(2));
+    limits.seed = std::strtoull(read.text(3).c_str(), nullptr, 10);
+  }
+  return limits;
 }
 
 std::string ResultsDb::meta(const std::string& key) const {

@@ -75,6 +75,8 @@ class Runner {
     // measured by an unoptimised build.
     db_->set_meta("host_version", aco::version_text("acobench"));
     db_->set_meta("host_build", ACO_BUILD_OPTIMISATION);
+    db_->record_limits({options.limits.timeout_s, static_cast<double>(options.limits.memory_bytes) / (1 << 20),
+                        e.repetitions, e.seed});
   }
 
   RunSummary run() {

@@ -195,6 +195,7 @@ MergeSummary merge_databases(const std::vector<std::filesystem::path>& inputs, c
   const ResultsDb first_db(first.file);
   for (const char* key : {"experiment_file", "ablation_path", "host_version", "host_build"})
     if (const auto value = first_db.find_meta(key)) out.set_meta(key, *value);
+  out.record_limits(first_db.limits());
 
   // Which of the configurations' trials no input holds, by the shard that should have.
   const auto experiment = nlohmann::json::parse(fingerprint);

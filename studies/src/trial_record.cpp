@@ -6,7 +6,9 @@
 #include <type_traits>
 #include <utility>
 
+#include "aco/colony.hpp"
 #include "aco/error.hpp"
+#include "aco/simulation/simulation.hpp"
 
 namespace aco::studies {
 namespace {
@@ -33,6 +35,34 @@ std::vector<std::string> failure_texts() {
   for (const FailureName& name : kFailureNames)
     if (*name.text) texts.push_back(name.text);
   return texts;
+}
+
+// What a trial's stopped_by may say: why the colony stopped, why a trial failed (the four kinds
+// the report's table of failures counts), a simulation's outcome.
+std::vector<std::string> stop_texts() {
+  std::vector<std::string> texts;
+  for (auto reason :
+       {aco::StopReason::iterations, aco::StopReason::stagnation, aco::StopReason::same_path, aco::StopReason::time})
+    texts.push_back(aco::to_string(reason));
+  for (const char* failure : {"error", "crashed", "timed out", "out of memory"}) texts.push_back(failure);
+  for (const char* outcome : aco::simulation::kOutcomes) texts.push_back(outcome);
+  return texts;
+}
+
+// OMPL's PlannerStatus values runs.status uses.
+enum PlannerStatus { kTimeout = 4, kExactSolution = 6, kCrash = 7, kAbort = 8 };
+
+int planner_status(const TrialRecord& t) {
+  if (t.solved) return kExactSolution;
+  switch (t.failure) {
+    case FailureKind::none:  // OMPL's TIMEOUT: "the planner failed to find a solution"
+    case FailureKind::timed_out:
+      return kTimeout;
+    case FailureKind::crashed:
+      return kCrash;
+    default:
+      return kAbort;
+  }
 }
 
 template <class Member>
@@ -84,6 +114,22 @@ TrialField field(const char* name, Member TrialRecord::*member, unsigned use, co
           {}};
 }
 
+TrialField stored_as(TrialField f, const char* column) {
+  f.stored_as = column;
+  return f;
+}
+
+// An identity of the trial, not a measurement.
+TrialField label(TrialField f) {
+  f.measure = false;
+  return f;
+}
+
+TrialField one_of(TrialField f, std::vector<std::string> values) {
+  f.values = std::move(values);
+  return f;
+}
+
 // A length: NULL unless solved.
 TrialField solved_only(const char* name, double TrialRecord::*member) {
   TrialField f = field(name, member, kEverywhere);
@@ -104,7 +150,7 @@ TrialField simulation_field(const char* name, Member SimulationRecord::*member) 
   return {name,
           name,
           type_of<Member>(),
-          kInMessage | kInRunsTable | kInPython,
+          kInMessage | kInRunsTable | kInPython | kWhenUsed,
           10,
           [member](const TrialRecord& t, double) { return t.simulation ? cell((*t.simulation).*member) : TrialCell(); },
           [member](TrialRecord& t, const TrialCell& value) {
@@ -171,12 +217,12 @@ std::string csv_cell(const aco::ParamValue& value) {
 }  // namespace
 
 const std::vector<TrialField>& trial_fields() {
-  constexpr unsigned kStored = kInMessage | kInRunsTable;
+  constexpr unsigned kStored = kInMessage | kInRunTexts;
   static const std::vector<TrialField> fields = {
-      field("repetition", &TrialRecord::repetition, kEverywhere),
-      field("seed", &TrialRecord::seed, kEverywhere),
+      label(field("repetition", &TrialRecord::repetition, kEverywhere)),
+      label(stored_as(field("seed", &TrialRecord::seed, kEverywhere), "trial_seed")),
       field("solved", &TrialRecord::solved, kEverywhere),
-      solved_only("length", &TrialRecord::length),
+      stored_as(solved_only("length", &TrialRecord::length), "solution_length"),
       solved_only("grid_length", &TrialRecord::grid_length),
       gap("gap", kInRunsTable, 1.0, 10),
       gap("gap_percent", kInRunsCsv | kInPython, 100.0, 6),
@@ -185,16 +231,17 @@ const std::vector<TrialField>& trial_fields() {
       field("best_iteration", &TrialRecord::best_iteration, kEverywhere),
       field("time", &TrialRecord::time_s, kEverywhere, "time_s", 6),
       field("ant_steps", &TrialRecord::ant_steps, kEverywhere),
-      field("stopped_by", &TrialRecord::stopped_by, kEverywhere),
+      one_of(text_or_null("stopped_by", &TrialRecord::stopped_by, kEverywhere), stop_texts()),
       field("path", &TrialRecord::path_json, kStored),
-      simulation_field("outcome", &SimulationRecord::outcome),
+      one_of(simulation_field("outcome", &SimulationRecord::outcome),
+             {std::begin(aco::simulation::kOutcomes), std::end(aco::simulation::kOutcomes)}),
       simulation_field("time_to_goal", &SimulationRecord::time_to_goal),
       simulation_field("collisions", &SimulationRecord::collisions),
       simulation_field("replans", &SimulationRecord::replans),
       simulation_field("clearance", &SimulationRecord::clearance),
       simulation_field("control_steps", &SimulationRecord::control_steps),
       text_or_null("error", &TrialRecord::error, kStored | kInPython),
-      {"failure", "failure", TrialCellType::text, kStored, 10,
+      {"failure", "failure", TrialCellType::text, kInMessage | kInRunsTable | kWhenUsed, 10,
        [](const TrialRecord& t, double) {
          return t.failure == FailureKind::none ? TrialCell() : TrialCell(std::string(to_string(t.failure)));
        },
@@ -202,9 +249,25 @@ const std::vector<TrialField>& trial_fields() {
          if (const auto* text = std::get_if<std::string>(&value)) t.failure = failure_kind(*text);
        },
        failure_texts()},
-      field("peak_memory_mib", &TrialRecord::peak_memory_mib, kEverywhere),
+      stored_as(field("peak_memory_mib", &TrialRecord::peak_memory_mib, kEverywhere), "memory"),
+      {"status",
+       "status",
+       TrialCellType::text,
+       kInRunsTable,
+       10,
+       [](const TrialRecord& t, double) { return TrialCell(planner_status_names().at(planner_status(t))); },
+       {},
+       planner_status_names()},
   };
   return fields;
+}
+
+const std::vector<std::string>& planner_status_names() {
+  // ompl::base::PlannerStatus::asString() of 1.5.2 but for ABORT, which it calls "Unknown status".
+  static const std::vector<std::string> names = {"Unknown status",         "Invalid start", "Invalid goal",
+                                                 "Unrecognized goal type", "Timeout",       "Approximate solution",
+                                                 "Exact solution",         "Crash",         "Abort"};
+  return names;
 }
 
 std::vector<std::string> runs_csv_columns() {

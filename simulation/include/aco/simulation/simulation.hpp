@@ -86,9 +86,12 @@ struct Frame {
   std::vector<Eigen::Vector2d> moving;
 };
 
+// Every outcome a simulation can have (the results database keeps it as an index into these).
+inline constexpr const char* kOutcomes[] = {"reached", "collision", "timeout", "stuck", "no path"};
+
 struct SimulationResult {
   bool reached = false;
-  std::string outcome;  // reached, collision, timeout, stuck, no path
+  std::string outcome;  // one of kOutcomes
   std::string reason;
   double time = 0.0;
   double distance = 0.0;

@@ -1,34 +1,43 @@
 #pragma once
-// acobench's results database: SQLite in the layout of OMPL's benchmark databases, so the tools
-// written for those (ompl_benchmark_statistics.py, Planner Arena) read it, and safe to resume.
+// acobench's results database: SQLite in the layout of OMPL's benchmark databases, so that OMPL's
+// own tools read it as it is (ompl_benchmark_statistics -p and -v, Planner Arena's queries) and
+// an OMPL log appended with ompl_benchmark_statistics -a leaves a database acobench still reads.
 //
 // Mapping of an acobench experiment onto OMPL's tables (an OMPL "experiment" is one problem):
 //   experiments     one row per PROBLEM, in the order given to the constructor: id, name,
-//                   totaltime (sum of the stored trials' times, s), timelimit, memorylimit and
-//                   runcount (NULL: not ours to know), version ("aco <version>"), hostname,
-//                   cpuinfo, date (creation, UTC), seed (NULL: every trial has its own), setup
-//                   (the problem as JSON), plus the experiment property optimal_length (NULL if
-//                   unknown).
-//   plannerConfigs  one row per configuration: id, name, settings (its resolved settings, JSON),
-//                   plugins (per slot the binary it last ran: name, version, file, sha256, build;
-//                   JSON, NULL if not known).
-//   enums           OMPL's table of enum descriptions; empty, created for OMPL's tools.
+//                   totaltime (sum of the stored trials' times, s), timelimit (the trial time
+//                   limit, s), memorylimit (the trial memory limit, MiB; both 0: none, or not
+//                   recorded before format 7), runcount (repetitions), version ("aco <version>"),
+//                   hostname, cpuinfo, date (creation, UTC), seed (the experiment's master seed;
+//                   each trial's own is runs.trial_seed), setup (the problem as JSON), plus the
+//                   experiment property optimal_length (NULL if unknown).
+//   plannerConfigs  one row per configuration, OMPL's three columns: id, name, settings (its
+//                   resolved settings, JSON).
+//   plannerPlugins  plannerid, plugins: per slot the binary the configuration last ran (name,
+//                   version, file, sha256, build; JSON), when known.
+//   enums           OMPL's table of ENUM values: name (a runs column), value, description; the
+//                   rows of every ENUM column (status, stopped_by, outcome, failure).
 //   runs            one row per trial: id, experimentid, plannerid, then a column per trial field
-//                   of the runs table (trial_fields(), trial_record.hpp; added, NULL for the stored
-//                   rows, to a database made before the field was): repetition, seed, solved,
-//                   length, grid_length, gap, turns, iterations, best_iteration, time (s),
-//                   ant_steps, stopped_by, path (JSON waypoints), and for simulation trials
-//                   (NULL otherwise) outcome, time_to_goal (NULL unless reached), collisions,
-//                   replans, clearance, control_steps; error (why a trial failed: what the
-//                   plugin or the host threw; NULL otherwise), failure (why, one of
-//                   kFailureKinds; NULL otherwise), peak_memory_mib (the peak resident memory
-//                   of the process that ran the trial, MiB: TrialRecord; NULL if not known,
-//                   and in runs stored before it was recorded); UNIQUE(experimentid, plannerid,
-//                   repetition). A simulation trial's length is the distance driven, its path the
-//                   trajectory, its stopped_by the outcome. length, grid_length and gap are NULL when unsolved; gap is
+//                   of the runs table (trial_fields(), trial_record.hpp, where each says what it
+//                   holds; a field added later is added, NULL for the stored rows): repetition and
+//                   trial_seed (declared INT: identities, not measurements, which OMPL's script
+//                   leaves out), solved, solution_length (after the smoother), grid_length, gap,
+//                   turns, iterations, best_iteration, time (s), ant_steps, stopped_by (ENUM),
+//                   the simulation measures (outcome (ENUM), time_to_goal, collisions, replans,
+//                   clearance, control_steps: columns added with the first simulation trial),
+//                   failure (ENUM, NULL unless failed; added with the first failed trial), memory (the peak resident
+//                   memory of the process that ran the trial, MiB: TrialRecord::peak_memory_mib; NULL if not known),
+//                   status (OMPL's planner status, ENUM: Exact solution, Timeout (not solved, or over the time limit),
+//                   Crash, Abort (any other failure)); UNIQUE(experimentid, plannerid, repetition). An ENUM column
+//                   holds the index of its value, described by the enums rows. A simulation trial's length is the
+//                   distance driven, its path the trajectory, its stopped_by the outcome.
+//                   solution_length, grid_length and gap are NULL when unsolved; gap is
 //                   grid_length / optimal_length - 1 (the relative excess of the grid path over
 //                   exact A* on the same graph, as acoplan reports it), NULL if the optimum is
-//                   unknown. seed holds the 64-bit seed's bits as SQLite's signed integer.
+//                   unknown. trial_seed holds the 64-bit seed's bits as SQLite's signed integer.
+//   run_texts       runid, path (JSON waypoints), error (why a trial failed: what the plugin or
+//                   the host threw; NULL otherwise): free text, out of the runs table whose every
+//                   column Planner Arena offers as a measurement.
 //   progress        one row per iteration of a trial: runid, time, iteration (a count: the
 //                   iterations run, 1 after the first, whose Context::iteration is 0),
 //                   best_cost (NULL until an ant arrived), walks. time is OMPL's: seconds since
@@ -50,10 +59,19 @@
 //                   host_version and host_build (ACO_BUILD_OPTIMISATION) of the acobench that ran
 //                   the trials last.
 //
+// Rows of OMPL logs appended with `ompl_benchmark_statistics -a` (experiments whose version is
+// not "aco ...", planner configurations whose settings are OMPL's text) are not the
+// experiment's: problems(), configs() and trials() leave them out, appended_runs() reads them.
+//
+// Older formats: a database of format 1 to 6 is migrated to 7 when opened (its runs table rebuilt
+// in the new layout in one transaction; limits it did not record are 0); a value the new layout
+// cannot hold (a stopped_by no ENUM lists) is an Error naming it, and the file is left as it was.
+//
 // Resuming: each trial is one transaction (its runs row with all its progress rows) in WAL mode,
 // so a process killed at any moment (SIGKILL included) leaves every committed trial whole and no
 // partial one; finished() tells a rerun what to skip. synchronous=NORMAL keeps commits across a
 // killed process; only a power cut may lose the last few.
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -70,6 +88,22 @@
 #include "aco/studies/trial_record.hpp"
 
 namespace aco::studies {
+
+// OMPL's per-experiment limits (experiments.timelimit, memorylimit, runcount, seed).
+struct ExperimentLimits {
+  double time_limit_s = 0.0;  // 0: none
+  double memory_limit_mib = 0.0;  // 0: none
+  int runs = 0;  // repetitions per configuration
+  std::uint64_t seed = 0;  // the master seed
+};
+
+// A run of an OMPL benchmark log appended to the database (ompl_benchmark_statistics -a).
+struct AppendedRun {
+  std::string experiment, planner;
+  bool solved = false;
+  double time_s = 0.0;
+  double length = std::nan("");  // solution_length; NaN if none
+};
 
 class ResultsDb {
  public:
@@ -107,10 +141,16 @@ class ResultsDb {
   // database) gets the older rows: the estimated time, walks NULL.
   void store(const TrialRecord& trial);
 
+  // The experiment's limits, as OMPL records them in each of its rows of the experiments table.
+  void record_limits(const ExperimentLimits& limits);
+  ExperimentLimits limits() const;  // of the first problem's row
+
   // For reports.
   std::vector<ProblemRecord> problems() const;
   std::vector<std::pair<int, ConfigRecord>> configs() const;  // (id, record) in insertion order
   std::vector<TrialRecord> trials() const;  // ordered by (problem, config, repetition)
+  // The runs of appended OMPL logs, ordered by experiment and planner.
+  std::vector<AppendedRun> appended_runs() const;
   std::string meta(const std::string& key) const;  // Error if the key is not stored
   std::optional<std::string> find_meta(const std::string& key) const;
   // Stores a key of acobench_meta beyond those open() writes (e.g. the ablation path).

@@ -48,6 +48,12 @@ struct TrialPlan {
   std::size_t stored = 0;  // of the configurations' trials (not the ablation path's), already in the database
 };
 
+// The limits of each trial's worker process.
+struct TrialLimits {
+  double timeout_s = 0.0;  // 0: none
+  std::uint64_t memory_bytes = 0;  // 0: none
+};
+
 struct RunOptions {
   std::filesystem::path database;
   int threads = 0;  // 0 = all cores; results do not depend on it
@@ -60,6 +66,8 @@ struct RunOptions {
   std::optional<Shard> shard;
   // Where the trials run; nullptr: a ThreadExecutor with `threads`.
   TrialExecutor* executor = nullptr;
+  // The limits the executor enforces, recorded in the database (OMPL's timelimit and memorylimit).
+  TrialLimits limits;
 };
 
 // A trial of the experiment that failed, in this run or (earlier) stored as failed by another.

@@ -104,6 +104,13 @@ enum TrialFieldUse : unsigned {
   kInRunsCsv = 4,  // a column of the report's runs.csv, after problem and configuration
   kInPython = 8,  // a column of Python's read_database()
   kEverywhere = 15,
+  // A column of the database's run_texts table instead: free text, which OMPL's tools would take
+  // for a measurement of the runs table (Planner Arena offers every runs column as one).
+  kInRunTexts = 16,
+  // A runs column added when the first trial with a value is stored (the simulation measures,
+  // failure):
+  // a study without them has no empty columns, which OMPL's script would plot as empty pages.
+  kWhenUsed = 32,
 };
 
 struct TrialField {
@@ -118,13 +125,27 @@ struct TrialField {
   // which are not in messages.
   std::function<void(TrialRecord&, const TrialCell&)> set;
   // A text field's only values when it has a fixed set (failure: FailureKind's texts); else empty.
+  // In the runs table such a field is one of OMPL's ENUMs: the value's index, described by the
+  // rows of the enums table.
   std::vector<std::string> values;
+  // Its runs or run_texts column: OMPL's name where OMPL has one (length is solution_length,
+  // peak_memory_mib is memory), and no name the experiments table has (runs.seed would clash with
+  // experiments.seed in Planner Arena's join).
+  const char* stored_as = name;
+  // false: not a measurement (repetition, the seed): declared INT, which OMPL's script, plotting
+  // only BOOLEAN, ENUM, INTEGER and REAL columns, leaves out; SQLite stores it as an integer.
+  bool measure = true;
 };
 
 // Every field, in the order of the runs table's columns (after id, experimentid, plannerid) and
 // of runs.csv's: problem and config, the curves (progress table) and the properties (properties
-// table) are not fields.
+// table) are not fields. status is the runs table's alone: OMPL's planner status, an ENUM of
+// planner_status_names(), derived from solved and failure.
 const std::vector<TrialField>& trial_fields();
+
+// OMPL's ompl::base::PlannerStatus texts, in its order (1.5.2): the values of runs.status, so that
+// an OMPL log appended to our database (which keeps the enums rows it finds) reads alike.
+const std::vector<std::string>& planner_status_names();
 
 // The names of runs.csv's columns before the properties: problem, configuration, the fields.
 std::vector<std::string> runs_csv_columns();

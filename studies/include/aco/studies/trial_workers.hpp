@@ -14,11 +14,6 @@
 
 namespace aco::studies {
 
-struct TrialLimits {
-  double timeout_s = 0.0;  // 0: none
-  std::uint64_t memory_bytes = 0;  // 0: none
-};
-
 // How a worker is started: `acobench worker EXPERIMENT [--plugin-dir DIR]... [--max-memory
 // BYTES]`, from the experiment file, plugin folders and --max-memory of this process (a worker
 // builds the graphs its trials need, so it must refuse and admit the maps this process does).
@@ -31,6 +26,7 @@ class TrialWorkers {
   TrialWorkers(int lanes, std::vector<std::string> command, TrialLimits limits, std::string fingerprint);
   ~TrialWorkers();
   int lanes() const { return static_cast<int>(lanes_.size()); }
+  const TrialLimits& limits() const { return limits_; }  // each lane's
   // Runs a trial in the lane's worker (one caller per lane at a time). A crash, time-out or
   // memory overrun comes back as a failed record ("crashed", "timed out", "out of memory") naming
   // the plugin hook the worker was in; a worker that cannot start is an aco::Error.

@@ -136,8 +136,7 @@ TEST_CASE("ompl: plan() takes the continuous path as it is", "[ompl]") {
   const auto map = test::classic_map(1);
   const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::eight, false});
   aco::RunSpec run = aco::resolve_run(
-      {{"planner", "ompl"}, {"ompl.planner", "rrtconnect"}, {"ompl.time_limit", "10"}, {"seed", "4"}},
-      test::plugins());
+      {{"planner", "ompl"}, {"ompl.planner", "rrtconnect"}, {"ompl.time_limit", "10"}, {"seed", "4"}}, test::plugins());
   const aco::PlanOutcome o = aco::plan(test::plugins(), g, g.node({0, 0}), g.node({19, 19}), run);
   REQUIRE(o.solved());
   CHECK(o.search.path.empty());
@@ -159,7 +158,7 @@ TEST_CASE("ompl: plan() takes the continuous path as it is", "[ompl]") {
 
 TEST_CASE("acoplan --planner ompl on a Moving AI scenario", "[ompl][acoplan]") {
   const std::string scen = (test::data_dir() / "maps/movingai/arena.map.scen").string();
-  const std::vector<std::string> base = {"--scen",         scen,      "--scen-index", "100", "--planner", "ompl",
+  const std::vector<std::string> base = {"--scen",         scen,      "--scen-index",     "100", "--planner", "ompl",
                                          "--ompl.planner", "bitstar", "--ompl.time_limit"};
   auto args = base;
   args.insert(args.end(), {"0.3", "--json"});
@@ -175,8 +174,8 @@ TEST_CASE("acoplan --planner ompl on a Moving AI scenario", "[ompl][acoplan]") {
     CHECK(j.at("path").size() >= 2u);
     const auto start = j.at("start"), goal = j.at("goal");
     CHECK(j.at("path").front() == nlohmann::json::array({start[0].get<double>(), start[1].get<double>()}));
-    CHECK(j.at("length").get<double>() >= std::hypot(goal[0].get<double>() - start[0].get<double>(),
-                                                     goal[1].get<double>() - start[1].get<double>()));
+    CHECK(j.at("length").get<double>() >=
+          std::hypot(goal[0].get<double>() - start[0].get<double>(), goal[1].get<double>() - start[1].get<double>()));
     CHECK(j.at("ompl.graph_states").get<int>() > 0);
   } else {
     CHECK_THAT(j.at("reason").get<std::string>(), Contains("no exact solution"));
@@ -217,10 +216,11 @@ TEST_CASE("acobench runs the ompl planner: its runs rows, no grid length, no gap
   sqlite3* handle = nullptr;
   REQUIRE(sqlite3_open_v2(db.string().c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
   sqlite3_stmt* stmt = nullptr;
-  REQUIRE(sqlite3_prepare_v2(handle,
-                             "SELECT r.solved, r.time, r.length, r.grid_length IS NULL, r.gap IS NULL, r.path FROM runs r "
-                             "JOIN plannerConfigs c ON c.id = r.plannerid WHERE c.name = 'RRT-Connect'",
-                             -1, &stmt, nullptr) == SQLITE_OK);
+  REQUIRE(
+      sqlite3_prepare_v2(handle,
+                         "SELECT r.solved, r.time, r.length, r.grid_length IS NULL, r.gap IS NULL, r.path FROM runs r "
+                         "JOIN plannerConfigs c ON c.id = r.plannerid WHERE c.name = 'RRT-Connect'",
+                         -1, &stmt, nullptr) == SQLITE_OK);
   int rows = 0;
   while (sqlite3_step(stmt) == SQLITE_ROW) {
     ++rows;

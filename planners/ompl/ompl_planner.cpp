@@ -73,11 +73,14 @@ const SettingsTable<OmplSettings>& ompl_table() {
       field("planner", &S::planner, "rrtconnect,rrtstar,informedrrtstar,bitstar,prmstar,aitstar",
             "OMPL's planner: RRT-Connect (stops at its first solution), or an optimizing one that runs for the whole "
             "time limit: RRT*, Informed RRT*, BIT*, PRM*, AIT*"),
-      field("time_limit", &S::time_limit, "(0:86400]", "seconds OMPL's solve() may take (the simplification comes on top)"),
-      field("simplify", &S::simplify, "", "shorten the solution with OMPL's PathSimplifier (SimpleSetup::simplifySolution)"),
-      field("range", &S::range, "[0:1e6]",
-            "longest motion the RRTs (rrtconnect, rrtstar, informedrrtstar) add in one step, in cells; 0: OMPL's default "
-            "(a fifth of the map's diagonal)"),
+      field("time_limit", &S::time_limit, "(0:86400]",
+            "seconds OMPL's solve() may take (the simplification comes on top)"),
+      field("simplify", &S::simplify, "",
+            "shorten the solution with OMPL's PathSimplifier (SimpleSetup::simplifySolution)"),
+      field(
+          "range", &S::range, "[0:1e6]",
+          "longest motion the RRTs (rrtconnect, rrtstar, informedrrtstar) add in one step, in cells; 0: OMPL's default "
+          "(a fifth of the map's diagonal)"),
   });
   return table;
 }
@@ -240,8 +243,9 @@ OmplResult run_ompl(const Graph& graph, NodeId start, NodeId goal, const OmplSet
     r.best_so_far.clear();
     r.elapsed_s.clear();
     r.walks.clear();
-    r.reason = "OMPL's " + settings.planner + " found no exact solution in " + to_string(ParamValue(settings.time_limit)) +
-               " s (" + r.status + "; try a longer ompl.time_limit or another ompl.planner)";
+    r.reason = "OMPL's " + settings.planner + " found no exact solution in " +
+               to_string(ParamValue(settings.time_limit)) + " s (" + r.status +
+               "; try a longer ompl.time_limit or another ompl.planner)";
     return r;
   }
   const auto record = [&](double length) {

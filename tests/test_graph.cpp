@@ -597,7 +597,8 @@ TEST_CASE("line_of_sight agrees with the graph's moves", "[graph][line_of_sight]
   CHECK(squeezes > 10);
 }
 
-TEST_CASE("line_of_sight on random maps: symmetric and equal to the reference", "[graph][line_of_sight]") {
+TEST_CASE("line_of_sight on random maps: symmetric, equal to the reference and to segment_free",
+          "[graph][line_of_sight][segment_free]") {
   std::mt19937 rng(2024);
   int free = 0, refused = 0, vertex_cases = 0;
   for (int trial = 0; trial < 200; ++trial) {
@@ -621,6 +622,12 @@ TEST_CASE("line_of_sight on random maps: symmetric and equal to the reference", 
                         test::reference_segment_clear(map, b, a, cc) == los;
         if (!ok) CHECK(los == test::reference_segment_clear(map, a, b, cc));
         if (!ok) CHECK(los == aco::line_of_sight(map, b, a, cc));
+        // segment_free between the cells' centres is line_of_sight.
+        const Eigen::Vector2d pa(a.x, a.y), pb(b.x, b.y);
+        if (aco::segment_free(map, pa, pb, cc) != los || aco::segment_free(map, pb, pa, cc) != los) {
+          CHECK(aco::segment_free(map, pa, pb, cc) == los);
+          CHECK(aco::segment_free(map, pb, pa, cc) == los);
+        }
         (los ? free : refused) += 1;
         // Corner cutting only ever allows more.
         if (!cc && los) CHECK(aco::line_of_sight(map, a, b, true));
@@ -657,6 +664,117 @@ TEST_CASE("line_of_sight on long segments", "[graph][line_of_sight]") {
   // one cell per column and row boundary it crosses.
   CHECK(test::reference_vertex_sides(a, b).empty());
   CHECK(entered.size() == 1 + 594 + 441);
+}
+
+// ---------------------------------------------------------------------------------------------
+// segment_free: line_of_sight between any two points
+
+namespace {
+
+bool segment_free(const aco::Map& map, double ax, double ay, double bx, double by, bool cc) {
+  return aco::segment_free(map, {ax, ay}, {bx, by}, cc);
+}
+
+}  // namespace
+
+TEST_CASE("segment_free: grazing a corner, squeezing between two cells, exactly and just beside",
+          "[graph][segment_free]") {
+  // (-0.25, 0.875) -> (1.25, 0.125) passes exactly through the vertex (0.5, 0.5), from cell (0,1)
+  // into cell (1,0); the side cells are (0,0) and (1,1).
+  for (bool cc : {false, true}) {
+    INFO("corner cutting " << cc);
+    CHECK(segment_free(test::grid({"...", "...", "..."}), -0.25, 0.875, 1.25, 0.125, cc));
+    CHECK(segment_free(test::grid({"...", ".#.", "..."}), -0.25, 0.875, 1.25, 0.125, cc) == cc);  // grazing (1,1)
+    CHECK(segment_free(test::grid({"#..", "...", "..."}), 1.25, 0.125, -0.25, 0.875, cc) == cc);  // grazing (0,0)
+    CHECK_FALSE(segment_free(test::grid({"#..", ".#.", "..."}), -0.25, 0.875, 1.25, 0.125, cc));  // squeezing
+    CHECK(segment_free(test::grid({"..#", "...", "..."}), -0.25, 0.875, 1.25, 0.125, cc));  // not touched
+    // A hair above the vertex the segment crosses the corner of (1,1); a hair below, of (0,0).
+    const double hair = 1e-12;
+    const auto center_blocked = test::grid({"...", ".#.", "..."});
+    CHECK_FALSE(segment_free(center_blocked, -0.25, 0.875 + hair, 1.25, 0.125 + hair, cc));
+    CHECK(segment_free(center_blocked, -0.25, 0.875 - hair, 1.25, 0.125 - hair, cc));
+    const auto corner_blocked = test::grid({"#..", "...", "..."});
+    CHECK(segment_free(corner_blocked, -0.25, 0.875 + hair, 1.25, 0.125 + hair, cc));
+    CHECK_FALSE(segment_free(corner_blocked, -0.25, 0.875 - hair, 1.25, 0.125 - hair, cc));
+    // The smallest step off the vertex decides too: the vertex lies 1 ulp off the line.
+    const double up = std::nextafter(0.125, 1.0);
+    CHECK_FALSE(segment_free(center_blocked, -0.25, 0.875, 1.25, up, cc));
+    CHECK(segment_free(corner_blocked, -0.25, 0.875, 1.25, up, cc));
+  }
+}
+
+TEST_CASE("segment_free: along grid lines, ends on borders, points", "[graph][segment_free]") {
+  for (bool cc : {false, true}) {
+    INFO("corner cutting " << cc);
+    // y = 0.5, between rows 0 and 1, from x = 0 to x = 3.
+    CHECK(segment_free(test::grid({"....", "....", "...."}), 0, 0.5, 3, 0.5, cc));
+    CHECK(segment_free(test::grid({".#..", "....", "...."}), 0, 0.5, 3, 0.5, cc) == cc);  // along one wall
+    CHECK(segment_free(test::grid({"....", "..#.", "...."}), 3, 0.5, 0, 0.5, cc) == cc);
+    CHECK_FALSE(segment_free(test::grid({".#..", ".#..", "...."}), 0, 0.5, 3, 0.5, cc));  // between two
+    // Through the vertex (1.5, 0.5) between the blocked (1,0) and (2,1): squeezing.
+    CHECK_FALSE(segment_free(test::grid({".#..", "..#.", "...."}), 0, 0.5, 3, 0.5, cc));
+    // ... but ending at that vertex is only touching.
+    CHECK(segment_free(test::grid({".#..", "..#.", "...."}), 0, 1, 1.5, 0.5, cc) == cc);
+    // The same along a column: x = 1.5 between columns 1 and 2.
+    CHECK(segment_free(test::grid({"....", "..#.", "...."}), 1.5, 0, 1.5, 2, cc) == cc);
+    CHECK_FALSE(segment_free(test::grid({"....", ".##.", "...."}), 1.5, 2, 1.5, 0, cc));
+    CHECK(segment_free(test::grid({"....", ".##.", "...."}), 1.5, 2, 1.5, 1.5, cc) == cc);  // stops at the wall
+    // Along the map's own border: the outside is blocked.
+    CHECK(segment_free(test::grid({"...", "..."}), -0.5, 0, -0.5, 1, cc) == cc);
+    CHECK(segment_free(test::grid({"...", "..."}), 0, 1.5, 2, 1.5, cc) == cc);
+    CHECK_FALSE(segment_free(test::grid({"...", "..."}), -0.5001, 0, 1, 0, cc));
+    CHECK_FALSE(segment_free(test::grid({"...", "..."}), 0, 0, 0, 1.6, cc));
+    // An end on a cell's edge touches the cell behind it.
+    CHECK(segment_free(test::grid({"#..", "..."}), 0.5, 0, 2, 0.25, cc) == cc);
+    CHECK_FALSE(segment_free(test::grid({"#..", "..."}), 0.25, 0, 2, 0.25, cc));
+    // Points: inside a cell, on an edge, on a vertex.
+    const auto map = test::grid({"#..", "...", "..#"});
+    CHECK(segment_free(map, 1, 1, 1, 1, cc));
+    CHECK_FALSE(segment_free(map, 0, 0, 0, 0, cc));
+    CHECK(segment_free(map, 0.5, 0, 0.5, 0, cc) == cc);
+    CHECK(segment_free(map, 0.5, 0.5, 0.5, 0.5, cc) == cc);
+    CHECK(segment_free(map, 1.5, 1.5, 1.5, 1.5, cc) == cc);
+    CHECK(segment_free(map, 1, 0.5, 1, 0.5, cc));
+    // Not finite.
+    CHECK_FALSE(segment_free(map, std::nan(""), 1, 1, 1, cc));
+    CHECK_FALSE(segment_free(map, 1, 1, 1, INFINITY, cc));
+  }
+}
+
+TEST_CASE("segment_free on random points: symmetric, and no sample on it in a blocked cell", "[graph][segment_free]") {
+  // The reference here is one-sided: a point of the segment strictly inside a blocked cell refuses
+  // it; without corner cutting a free segment has every sample on a passable cell.
+  std::mt19937 rng(7);
+  int free = 0, refused = 0, failures = 0;
+  for (int trial = 0; trial < 100; ++trial) {
+    std::uniform_int_distribution<int> size(2, 12);
+    const int w = size(rng), h = size(rng);
+    const aco::OccupancyGrid map = test::random_grid(rng, w, h);
+    std::uniform_real_distribution<double> px(-0.5, w - 0.5), py(-0.5, h - 0.5);
+    for (int pair = 0; pair < 50; ++pair) {
+      const Eigen::Vector2d a(px(rng), py(rng)), b(px(rng), py(rng));
+      const bool strict = aco::segment_free(map, a, b, false), cutting = aco::segment_free(map, a, b, true);
+      bool sample_blocked = false;
+      for (int k = 0; k <= 400; ++k) {
+        const Eigen::Vector2d p = a + (b - a) * (k / 400.0);
+        const aco::Cell c{static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
+        const bool on_border =
+            std::abs(std::abs(p.x() - c.x) - 0.5) < 1e-9 || std::abs(std::abs(p.y() - c.y) - 0.5) < 1e-9;
+        if (!on_border && !map.passable(c)) sample_blocked = true;
+      }
+      const bool ok = strict == aco::segment_free(map, b, a, false) && cutting == aco::segment_free(map, b, a, true) &&
+                      (!strict || cutting) && !(sample_blocked && cutting);
+      if (!ok) {
+        INFO(w << "x" << h << " map, (" << a.x() << ", " << a.y() << ") -> (" << b.x() << ", " << b.y() << ")");
+        CHECK(ok);
+        ++failures;
+      }
+      (cutting ? free : refused) += 1;
+    }
+  }
+  CHECK(failures == 0);
+  CHECK(free > 500);
+  CHECK(refused > 1000);
 }
 
 TEST_CASE("edge_by_move and find_edge agree with a scan of the edge list", "[graph]") {

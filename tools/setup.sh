@@ -9,9 +9,9 @@ set -euo pipefail
 # python3-dev, pybind11-dev, python3-numpy: the Python package (python/) and the python bridge
 # plugins; python3-pandas, python3-pytest, python3-matplotlib: its DataFrames, tests and examples.
 # clang-format-14: the test that the sources are formatted as .clang-format says (tools/format.sh).
-# libompl-dev: the ompl planner (OMPL's planners as baselines) and an OMPL benchmark log for the
-# test that OMPL's own tools read our databases, with ompl-demos (ompl_benchmark_statistics) and
-# sqlite3.
+# libompl-dev: the 'ompl' planner (planners/ompl; without it the build leaves the planner out) and
+# an OMPL benchmark log for the test that OMPL's own tools read our databases, with ompl-demos
+# (ompl_benchmark_statistics) and sqlite3.
 packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
           nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev catch2 clang libclang-rt-14-dev
           chromium python3 openmpi-bin libopenmpi-dev python3-dev pybind11-dev python3-numpy python3-pandas

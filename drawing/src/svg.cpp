@@ -175,12 +175,17 @@ double draw_map_legend(std::ostream& out, const RunPicture& pic, bool terrain_sh
     std::string mark;  // an element's name and attributes, drawn about (10, 0) of its row
     const char* label;
   };
+  // A continuous planner's path (ompl) has no grid path under it and saw no smoother.
+  const bool continuous = pic.grid_path.empty() && !pic.path.empty();
   std::vector<Entry> entries = {
       {std::string("circle cx=\"10\" cy=\"0\" r=\"4\" fill=\"") + kStartColour + "\"", "start"},
-      {std::string("circle cx=\"10\" cy=\"0\" r=\"4\" fill=\"") + kGoalColour + "\"", "goal"},
-      {"line x1=\"0\" x2=\"20\" y1=\"0\" y2=\"0\" stroke=\"#1565c0\" stroke-width=\"2\"", "grid path (cell to cell)"},
+      {std::string("circle cx=\"10\" cy=\"0\" r=\"4\" fill=\"") + kGoalColour + "\"", "goal"}};
+  if (!continuous)
+    entries.push_back({"line x1=\"0\" x2=\"20\" y1=\"0\" y2=\"0\" stroke=\"#1565c0\" stroke-width=\"2\"",
+                       "grid path (cell to cell)"});
+  entries.push_back(
       {"line x1=\"0\" x2=\"20\" y1=\"0\" y2=\"0\" stroke=\"#d32f2f\" stroke-width=\"2\" stroke-dasharray=\"6,3\"",
-       "path after the smoother"}};
+       continuous ? "path (continuous, in the plane)" : "path after the smoother"});
   if (!terrain_shading)
     entries.push_back({"rect x=\"4\" y=\"-6\" width=\"12\" height=\"12\" fill=\"#333\"", "blocked cell"});
   if (!pic.pheromone.empty())

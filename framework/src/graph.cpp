@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <boost/multiprecision/cpp_int.hpp>
+#include <cmath>
 #include <limits>
+#include <utility>
 
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
@@ -221,6 +224,137 @@ bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
       ++iy;
     }
     if (!map.passable(c) || !map.step_allowed(previous, c)) return false;
+  }
+  return true;
+}
+
+namespace {
+
+// segment_free's geometry, in doubled coordinates (doubling a double is exact): cell i spans the
+// open interval (2i - 1, 2i + 1) and the grid lines lie on the odd integers.
+
+bool on_grid_line(double v) { return std::floor(v) == v && std::fmod(v, 2.0) != 0.0; }
+
+// The cell whose open interval holds v, v on no grid line.
+std::int64_t cell_of(double v) {
+  const auto k = static_cast<std::int64_t>(std::floor(v));
+  return k % 2 == 0 ? k / 2 : (k + 1) / 2;
+}
+
+// The cell the segment is in just after v, heading `direction` (+1 or -1).
+std::int64_t cell_towards(double v, int direction) {
+  if (!on_grid_line(v)) return cell_of(v);
+  const auto line = static_cast<std::int64_t>(v);
+  return direction > 0 ? (line + 1) / 2 : (line - 1) / 2;
+}
+
+// The cells whose closed interval holds v: one, or the two beside a grid line.
+std::pair<std::int64_t, std::int64_t> cells_touching(double v) {
+  if (!on_grid_line(v)) return {cell_of(v), cell_of(v)};
+  const auto line = static_cast<std::int64_t>(v);
+  return {(line - 1) / 2, (line + 1) / 2};
+}
+
+// The sign of (b - a) x (v - a), exactly: > 0 when v lies left of the line from a to b. In
+// doubles where Shewchuk's error bound for this expression (orient2d, stage A: 3.3e-16 times
+// the sum of the products' magnitudes; here 8.9e-16) decides, else in exact rationals.
+int orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& v) {
+  const double left = (b.x() - a.x()) * (v.y() - a.y());
+  const double right = (b.y() - a.y()) * (v.x() - a.x());
+  const double det = left - right;
+  const double magnitude = std::abs(left) + std::abs(right);
+  constexpr double kBound = 4.0 * std::numeric_limits<double>::epsilon();
+  if (magnitude > 1e-250 && std::abs(det) > kBound * magnitude) return det > 0.0 ? 1 : -1;  // 1e-250: no underflow
+  using Rational = boost::multiprecision::cpp_rational;  // a double converts exactly
+  const Rational exact = (Rational(b.x()) - Rational(a.x())) * (Rational(v.y()) - Rational(a.y())) -
+                         (Rational(b.y()) - Rational(a.y())) * (Rational(v.x()) - Rational(a.x()));
+  return exact.sign();
+}
+
+}  // namespace
+
+bool segment_free(const Map& map, const Eigen::Vector2d& a, const Eigen::Vector2d& b, bool corner_cutting) {
+  if (!a.allFinite() || !b.allFinite()) return false;
+  // An end beyond the map's closed rectangle puts a piece of the segment in cells outside it.
+  const auto inside = [&](const Eigen::Vector2d& p) {
+    return p.x() >= -0.5 && p.y() >= -0.5 && p.x() <= map.width() - 0.5 && p.y() <= map.height() - 0.5;
+  };
+  if (!inside(a) || !inside(b)) return false;
+  const Eigen::Vector2d from = 2.0 * a, to = 2.0 * b;
+  const auto free = [&](std::int64_t x, std::int64_t y) {
+    return map.passable({static_cast<int>(x), static_cast<int>(y)});
+  };
+  // The cells whose closed square holds p (one, two beside an edge, four around a vertex): all
+  // passable, or (corner cutting) one.
+  const auto touching_free = [&](const Eigen::Vector2d& p, bool all) {
+    const auto [x0, x1] = cells_touching(p.x());
+    const auto [y0, y1] = cells_touching(p.y());
+    bool any = false, every = true;
+    for (auto y = y0; y <= y1; ++y)
+      for (auto x = x0; x <= x1; ++x) {
+        const bool f = free(x, y);
+        any = any || f;
+        every = every && f;
+      }
+    return all ? every : any;
+  };
+  if (from == to) return touching_free(from, !corner_cutting);
+  // Without corner cutting the ends may not touch a blocked cell either (an end on a grid line
+  // touches the cells behind it, which the traversal below does not enter).
+  if (!corner_cutting && !(touching_free(from, true) && touching_free(to, true))) return false;
+
+  if (from.x() == to.x() || from.y() == to.y()) {
+    // Along a row or a column: the cells i along it, j across it.
+    const bool along_x = from.y() == to.y();
+    const double low = along_x ? std::min(from.x(), to.x()) : std::min(from.y(), to.y());
+    const double high = along_x ? std::max(from.x(), to.x()) : std::max(from.y(), to.y());
+    const double across = along_x ? from.y() : from.x();
+    const auto cell = [&](std::int64_t i, std::int64_t j) { return along_x ? free(i, j) : free(j, i); };
+    const std::int64_t first = cell_towards(low, 1), last = cell_towards(high, -1);
+    if (!on_grid_line(across)) {
+      const std::int64_t j = cell_of(across);
+      for (auto i = first; i <= last; ++i)
+        if (!cell(i, j)) return false;
+      return true;
+    }
+    // On a grid line, along the edges between cells (i, j0) and (i, j1).
+    const auto [j0, j1] = cells_touching(across);
+    for (auto i = first; i <= last; ++i) {
+      const bool free0 = cell(i, j0), free1 = cell(i, j1);
+      if (corner_cutting ? !free0 && !free1 : !free0 || !free1) return false;
+      // Through the vertex between cells i and i + 1: not between a blocked diagonal pair.
+      if (corner_cutting && i < last && ((!free0 && !cell(i + 1, j1)) || (!free1 && !cell(i + 1, j0)))) return false;
+    }
+    return true;
+  }
+
+  // Across rows and columns: line_of_sight's traversal, the next border decided by which side of
+  // the segment the next vertex lies on.
+  const int sx = to.x() > from.x() ? 1 : -1;
+  const int sy = to.y() > from.y() ? 1 : -1;
+  std::int64_t x = cell_towards(from.x(), sx), y = cell_towards(from.y(), sy);
+  const std::int64_t end_x = cell_towards(to.x(), -sx), end_y = cell_towards(to.y(), -sy);
+  if (!free(x, y)) return false;
+  while (x != end_x || y != end_y) {
+    int order = 0;  // > 0: the column's border first, < 0: the row's, 0: both at once (a vertex)
+    if (y == end_y)
+      order = 1;
+    else if (x == end_x)
+      order = -1;
+    else
+      order = orientation(from, to, {2.0 * double(x) + sx, 2.0 * double(y) + sy}) * sx * sy;
+    if (order > 0) {
+      x += sx;
+    } else if (order < 0) {
+      y += sy;
+    } else {
+      const bool side_x = free(x + sx, y);
+      const bool side_y = free(x, y + sy);
+      if (corner_cutting ? !side_x && !side_y : !side_x || !side_y) return false;
+      x += sx;
+      y += sy;
+    }
+    if (!free(x, y)) return false;
   }
   return true;
 }

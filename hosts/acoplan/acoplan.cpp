@@ -40,6 +40,10 @@ std::string irace_cost(const std::vector<aco::PlanRun>& runs, OutputSettings::Ir
   const auto quality = [kind](const aco::PlanRun& o) {
     if (kind == OutputSettings::IraceCost::length) return o.length;
     if (!o.optimal_length) throw aco::Error("--irace-cost gap: A* found no path where the colony found one");
+    if (o.search.path.empty())  // a continuous planner (ompl)
+      throw aco::Error(
+          "--irace-cost gap: the planner's path is continuous, with no grid path to compare with A*'s "
+          "(use --irace-cost length)");
     // A path as long as A*'s may differ from it in the last bits (another order of the sums).
     const double gap = std::max(0.0, 100.0 * (o.search.length / *o.optimal_length - 1.0));
     if (gap < 1e-9) return 0.0;

@@ -62,7 +62,11 @@ std::string pipeline_lines(const PlanReport& report) {
   const aco::RunSpec& run = report.run;
   std::ostringstream out;
   if (run.planner != "aco") {
-    out << "planner:  " << run.planner << ", smoother=" << run.pipeline.at("smoother").plugin;
+    out << "planner:  " << run.planner;
+    if (aco::find_planner(run.planner).continuous)
+      out << " (a continuous path: no grid path, no smoother)";
+    else
+      out << ", smoother=" << run.pipeline.at("smoother").plugin;
     if (!run.planner_parameters.all().empty()) {
       for (const auto& [name, v] : run.planner_parameters.all())
         out << " " << run.planner << "." << name << "=" << aco::to_string(v);
@@ -90,7 +94,7 @@ nlohmann::json run_json(const aco::Graph& graph, const PlanRun& o) {
   j["length"] = o.solved() ? nlohmann::json(o.length) : nlohmann::json(nullptr);
   j["path"] = nlohmann::json::array();
   for (const auto& p : o.path) j["path"].push_back(point(p, three_d));
-  j["grid_length"] = o.solved() ? nlohmann::json(o.search.length) : nlohmann::json(nullptr);
+  j["grid_length"] = o.solved() ? number_or_null(o.search.length) : nlohmann::json(nullptr);  // NaN: no grid path
   j["grid_path"] = nlohmann::json::array();
   for (aco::NodeId n : o.search.path) j["grid_path"].push_back(cell(graph, n));
   j["turns"] = o.turns;
@@ -167,8 +171,10 @@ std::vector<std::pair<std::string, Stats>> measures(const std::vector<PlanRun>& 
     v["time_ms"].push_back(o.time_ms);
     if (!o.solved()) continue;
     v["length"].push_back(o.length);
-    v["grid_length"].push_back(o.search.length);
-    v["cells"].push_back(double(o.search.path.size()));
+    if (!o.search.path.empty()) {  // a continuous planner has no grid path
+      v["grid_length"].push_back(o.search.length);
+      v["cells"].push_back(double(o.search.path.size()));
+    }
     v["turns"].push_back(o.turns);
     v["best_iteration"].push_back(o.search.best_iteration);
     v["iterations"].push_back(o.search.iterations);
@@ -265,11 +271,20 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
     out << "result:   NOT SOLVED: " << o.reason << "\n";
     return out.str();
   }
-  out << "result:   length " << o.length << " (grid path " << o.search.length << "), " << o.turns << " turns, "
-      << o.path.size() << " waypoints\n";
+  const bool grid_path = !o.search.path.empty();  // none from a continuous planner
+  out << "result:   length " << o.length;
+  if (grid_path)
+    out << " (grid path " << o.search.length << ")";
+  else
+    out << " (a continuous path)";
+  out << ", " << o.turns << " turns, " << o.path.size() << " waypoints\n";
   if (o.optimal_length) {
+    // A continuous path may cut across the graph's moves: shorter than the graph's optimum.
+    const double length = grid_path ? o.search.length : o.length;
     out << "optimum:  " << *o.optimal_length << " (A* on the same graph), gap " << std::setprecision(2)
-        << 100.0 * (o.search.length - *o.optimal_length) / *o.optimal_length << " % for the grid path\n"
+        << 100.0 * (length - *o.optimal_length) / *o.optimal_length
+        << (grid_path ? " % for the grid path\n"
+                      : " % for the continuous path (it need not follow the graph's moves)\n")
         << std::setprecision(4);
   }
   if (planner == "aco") {
@@ -279,6 +294,12 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
     if (o.count("ant_steps") > 0)
       out << " (" << std::setprecision(1) << o.time_ms * 1e6 / double(o.count("ant_steps")) << " ns per ant step)";
     out << "\n";
+  } else if (aco::find_planner(planner).continuous) {
+    // Its curve is one entry per solution it reported (the simplified path the last).
+    out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations << " solutions";
+    for (const auto& [name, value] : o.properties)
+      if (name.rfind(planner + ".", 0) == 0) out << ", " << name << " " << aco::to_string(value);
+    out << ", " << std::setprecision(2) << o.time_ms << " ms\n";
   } else if (o.count("evaluations") > 0) {
     out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations << " iterations, "
         << o.count("evaluations") << " evaluations, " << std::setprecision(2) << o.time_ms << " ms\n";
@@ -291,8 +312,12 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
   if (!figures.empty()) out << "figures: " << figures << "\n";
   out << "path:    ";
   for (aco::NodeId n : o.search.path) out << " " << cell_text(graph, n);
+  if (!grid_path) {
+    out << std::setprecision(2);
+    for (const auto& p : o.path) out << " (" << p.x() << "," << p.y() << ")";
+  }
   out << "\n";
-  if (o.path != aco::to_waypoints(graph, o.search.path)) {
+  if (grid_path && o.path != aco::to_waypoints(graph, o.search.path)) {
     out << "smoothed:" << std::setprecision(2);
     for (const auto& p : o.path) out << " (" << p.x() << "," << p.y() << ")";
     out << "\n";

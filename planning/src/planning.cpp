@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 #include "aco/astar.hpp"
 #include "aco/colony.hpp"
@@ -11,6 +12,9 @@
 #include "aco/plugin_guard.hpp"
 #include "ifwa/fireworks.hpp"
 #include "pso/pso.hpp"
+#ifdef ACO_WITH_OMPL
+#include "ompl/ompl_planner.hpp"
+#endif
 
 namespace aco {
 namespace {
@@ -62,12 +66,39 @@ void run_pso(const PlanContext& c, PlanOutcome& o) {
   run_baseline(c, o, pso_settings(c.run.planner_parameters), aco::run_pso);
 }
 
+#ifdef ACO_WITH_OMPL
+// OMPL's planners: a continuous path, the run's seed as far as OMPL takes one (ompl_planner.hpp).
+void run_ompl(const PlanContext& c, PlanOutcome& o) {
+  OmplSettings settings = ompl_settings(c.run.planner_parameters);
+  settings.seed = c.run.colony.seed;
+  OmplResult result = aco::run_ompl(c.graph, c.start, c.goal, settings);
+  o.properties["ompl.graph_states"] = result.graph_states;
+  o.properties["ompl.motion_checks"] = result.motion_checks;
+  o.properties["ompl.solve_time"] = result.solve_time_s;
+  o.properties["ompl.simplification_time"] = result.simplification_time_s;
+  o.properties["ompl.status"] = result.status;
+  o.search.solved = result.solved;
+  o.search.length = result.length;  // for finish(); plan() leaves NaN, there being no grid path
+  o.search.iterations = static_cast<int>(result.best_so_far.size());
+  o.search.best_so_far = std::move(result.best_so_far);
+  o.search.elapsed_s = std::move(result.elapsed_s);
+  o.search.walks = std::move(result.walks);
+  o.search.finish();
+  o.path = std::move(result.path);
+  o.reason = std::move(result.reason);
+}
+#endif
+
 const Planner kPlanners[] = {
     {"aco", "the colony", no_parameters, nullptr, run_aco},
     {"astar", "exact shortest path on the same graph (reference)", no_parameters, nullptr, run_astar},
     {"ifwa", "improved fireworks (paper 004)", fireworks_parameters,
      [](const ParameterValues& v) { fireworks_settings(v); }, run_ifwa},
     {"pso", "particle swarm over waypoints (paper 000's baseline)", pso_parameters, nullptr, run_pso},
+#ifdef ACO_WITH_OMPL
+    {"ompl", "OMPL's sampling planners in the plane (RRT-Connect, RRT*, BIT*, ...): a continuous path", ompl_parameters,
+     [](const ParameterValues& v) { ompl_settings(v); }, run_ompl, /*continuous=*/true},
+#endif
 };
 
 }  // namespace
@@ -122,7 +153,14 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
   } else {
     planner.run({registry, graph, start, goal, run, pipeline, figures}, o);
   }
-  if (o.search.solved) {
+  if (o.search.solved && planner.continuous) {
+    // The planner's own path, as it is: no grid path to measure or smooth.
+    o.search.length = std::numeric_limits<double>::quiet_NaN();
+    if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
+      throw Error("planner '" + std::string(planner.name) + "' returned a bad path: " + problem);
+    o.length = polyline_length(o.path);
+    o.turns = count_turns(o.path);
+  } else if (o.search.solved) {
     Context context;
     context.graph = &graph;
     context.start = start;

@@ -334,6 +334,11 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
       throw KeyError(key_prefix + spec.planner, e.what());
     }
   }
+  if (const std::string& smoother = spec.pipeline.at("smoother").plugin;
+      find_planner(spec.planner).continuous && smoother != default_plugin("smoother"))
+    throw KeyError(key_prefix + "smoother", key_prefix + "smoother: the planner '" + spec.planner +
+                                                "' plans a continuous path, which takes no smoother (got '" + smoother +
+                                                "'; leave smoother at '" + default_plugin("smoother") + "')");
   for (const char* slot : kSlots) {
     SlotSpec& choice = spec.pipeline[slot];
     const auto table = registry.load(slot, choice.plugin).parameters();

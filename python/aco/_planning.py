@@ -75,9 +75,11 @@ class Result:
     path            the final path (after the smoother) as an (n, 2) or (n, 3) float array
     grid_path       the planner's best grid path as an (n, 2) int array of cells (x, y)
     solved, reason  whether a path was found, and why not
-    length          length of ``path``; grid_length of ``grid_path``
+    length          length of ``path``; grid_length of ``grid_path`` (None for a continuous planner,
+                    ``planner="ompl"``, whose grid_path is empty and whose path is its own)
     optimal_length  the exact A* optimum on the same graph (None if unreachable)
     gap_percent     100 * (grid_length / optimal_length - 1): the grid path's excess over the optimum
+                    (None without a grid path)
     convergence     best-so-far length per iteration (NaN before the first solution)
     iterations, best_iteration, time_ms, seed
     config          the resolved run keys (what ``--print-config`` shows); plugins: which binary
@@ -109,13 +111,17 @@ class Result:
         # by their "<slot>/<plugin>.<name>" keys (or "plugin.<name>" of a strategy outside the registry).
         self.figures: dict = {key: value for key, value in record.items() if "/" in key or key.startswith("plugin.")}
         self.gap_percent = (100.0 * (self.grid_length / self.optimal_length - 1.0)
-                            if self.solved and self.optimal_length else None)
+                            if self.solved and self.optimal_length and self.grid_length is not None else None)
 
     def __repr__(self) -> str:
         if not self.solved:
             return f"<aco.Result not solved: {self.reason}>"
         gap = "" if self.gap_percent is None else f", gap {self.gap_percent:.2f} %"
-        return (f"<aco.Result length {self.length:.4f} (grid {self.grid_length:.4f}, optimum {self.optimal_length:.4f}{gap}), "
+        optimum = "none" if self.optimal_length is None else f"{self.optimal_length:.4f}"
+        if self.grid_length is None:  # a continuous planner: no grid path
+            return (f"<aco.Result length {self.length:.4f} (continuous, optimum {optimum}), {len(self.path)} waypoints, "
+                    f"{self.iterations} iterations, {self.time_ms:.1f} ms, preset {self.preset}>")
+        return (f"<aco.Result length {self.length:.4f} (grid {self.grid_length:.4f}, optimum {optimum}{gap}), "
                 f"{len(self.grid_path)} cells, {self.iterations} iterations, {self.time_ms:.1f} ms, preset {self.preset}>")
 
 

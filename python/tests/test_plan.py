@@ -87,6 +87,21 @@ def test_astar_is_the_exact_reference():
     assert exact.config["planner"] == "astar"
 
 
+def test_a_continuous_planner_has_a_path_and_no_grid_path():
+    try:
+        result = aco.plan(MAP1, (0, 0), (19, 19), planner="ompl", ompl_planner="rrtconnect", ompl_time_limit=10, seed=3)
+    except aco.Error as error:  # a build without OMPL has no 'ompl' planner
+        pytest.skip(str(error))
+    assert result.config["planner"] == "ompl" and result.config["ompl.time_limit"] == 10
+    assert result.solved and result.grid_length is None and result.gap_percent is None
+    assert result.grid_path.shape == (0, 2) and result.path.shape[1] == 2
+    assert list(result.path[0]) == [0, 0] and list(result.path[-1]) == [19, 19]
+    assert result.length >= np.hypot(19, 19)
+    assert "continuous" in repr(result)
+    with pytest.raises(aco.Error, match="ompl.planner"):
+        aco.plan(MAP1, (0, 0), (19, 19), planner="ompl", ompl_planner="rrt")
+
+
 def test_results_do_not_depend_on_the_thread_count():
     one = aco.plan(MAP1, (0, 0), (19, 19), seed=11, threads=1)
     two = aco.plan(MAP1, (0, 0), (19, 19), seed=11, threads=2)

@@ -58,7 +58,9 @@ Analysis analyse(const ResultsDb& db) {
         r.lengths.push_back(t->length);
         turns.push_back(t->turns);
         best_iterations.push_back(t->best_iteration);
-        if (optimal > 0) r.gaps.push_back(gap_percent(*t, optimal));
+        // A continuous planner's trial (ompl) has no grid path: its grid_length is NULL in the
+        // database, read back as 0, and it has no gap.
+        if (optimal > 0 && t->grid_length > 0) r.gaps.push_back(gap_percent(*t, optimal));
         if (!r.best || t->length < r.best->length) r.best = t;
       }
       r.length = summarize(r.lengths);

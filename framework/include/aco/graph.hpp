@@ -110,4 +110,18 @@ double path_length(const Graph& graph, std::span<const NodeId> path);
 // which may squeeze between two blocked cells.
 bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting);
 
+// line_of_sight for any two points in the plane (x = column, y = row, in cells; cell (x, y) is the
+// unit square centred on (x, y)), as a continuous planner checks its motions. Exact: a few
+// orientation tests per grid line crossed, in doubles with a proven error bound and in exact
+// rationals where that bound cannot decide, never sampled. On cell centres it is line_of_sight.
+// Without corner cutting the closed segment may not touch a blocked cell (nor leave the map)
+// anywhere: not in its interior, along its edge or at its corner, its ends included. With corner
+// cutting, every cell whose interior the segment meets must be passable; where it runs along a
+// cell edge, the two cells beside that edge must not both be blocked; where it passes through a
+// grid vertex (not at its ends), neither diagonal pair of the four cells around it may be blocked
+// (no squeezing between two blocked cells); a = b is free iff a passable cell touches the point.
+// Map::step_allowed is not consulted (the plane: a terrain's slope rule has no steps here); a
+// non-finite coordinate is not free.
+bool segment_free(const Map& map, const Eigen::Vector2d& a, const Eigen::Vector2d& b, bool corner_cutting);
+
 }  // namespace aco

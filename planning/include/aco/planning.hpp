@@ -23,9 +23,11 @@ struct PlanOutcome {
   std::uint64_t seed = 0;
   NodeId start = 0;
   NodeId goal = 0;
-  SearchResult search;  // the planner's best grid path, its length, iterations and curve
+  // The planner's best grid path, its length, iterations and curve. A continuous planner (ompl)
+  // has no grid path: `search.path` is empty and `search.length` NaN; its curve is in path lengths.
+  SearchResult search;
   std::string reason;  // why not solved
-  Waypoints path;  // after the smoother
+  Waypoints path;  // after the smoother; a continuous planner's own path
   double length = 0.0;  // of `path`
   int turns = 0;
   double time_ms = 0.0;
@@ -60,10 +62,15 @@ struct Planner {
   std::span<const ParamSpec> (*parameters)();  // its own table, "<name>.<parameter>" keys; may be empty
   void (*check)(const ParameterValues& values);  // values that are wrong together (Error); may be null
   // Fills outcome.search (path, length, iterations, curve) and its properties; the goal is reachable.
+  // A continuous planner fills outcome.path instead of search.path (and search.length).
   void (*run)(const PlanContext& context, PlanOutcome& outcome);
+  // Plans in the plane, not on the graph: its path is a polyline at any angles, which plan() takes
+  // as it is (checked, measured; no smoother, which resolve_run() refuses for it) with no grid path.
+  bool continuous = false;
 };
 
-// aco (the colony), astar (exact reference), ifwa (paper 004), pso (paper 000's baseline).
+// aco (the colony), astar (exact reference), ifwa (paper 004), pso (paper 000's baseline), and
+// ompl (OMPL's sampling planners, continuous) where the build found OMPL.
 std::span<const Planner> planners();
 const Planner& find_planner(const std::string& name);  // Error naming the planners for an unknown name
 std::vector<std::string> planner_names();

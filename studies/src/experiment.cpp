@@ -92,7 +92,7 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
       p.name = entry["name"] ? scalar(file, entry["name"], "name") : std::filesystem::path(scenario).stem().string();
       problems.push_back(std::move(p));
     } else if (entry["scen"]) {
-      only_keys(file, entry, {"scen", "count", "name"}, "a scenario problem");
+      only_keys(file, entry, {"scen", "count", "indices", "name"}, "a scenario problem");
       const auto scen = dir / scalar(file, entry["scen"], "scen");
       std::vector<aco::Scenario> scenarios;
       try {
@@ -100,15 +100,32 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
       } catch (const aco::Error& e) {
         fail(file, entry["scen"], e.what());
       }
-      const int count = entry["count"] ? integer(file, entry["count"], "count", 1) : static_cast<int>(scenarios.size());
-      if (count > static_cast<int>(scenarios.size()))
-        fail(file, entry["count"],
-             "count " + std::to_string(count) + " exceeds the " + std::to_string(scenarios.size()) + " scenarios of " +
-                 scen.string());
       const std::string prefix = entry["name"] ? scalar(file, entry["name"], "name") : scen.stem().stem().string();
-      // Evenly spread over the file, which Moving AI orders by difficulty (bucket).
-      for (int i = 0; i < count; ++i) {
-        const std::size_t index = static_cast<std::size_t>(i) * scenarios.size() / count;
+      std::vector<std::size_t> indices;
+      if (entry["indices"]) {
+        // Chosen scenarios (0-based, in the file's order).
+        if (entry["count"]) fail(file, entry["indices"], "give 'count' or 'indices', not both");
+        if (!entry["indices"].IsSequence() || entry["indices"].size() == 0)
+          fail(file, entry["indices"], "'indices' must be a non-empty list of scenario numbers");
+        for (const auto& item : entry["indices"]) {
+          const int index = integer(file, item, "indices", 0);
+          if (index >= static_cast<int>(scenarios.size()))
+            fail(file, item,
+                 "index " + std::to_string(index) + " is past the last of the " + std::to_string(scenarios.size()) +
+                     " scenarios of " + scen.string() + " (0-based)");
+          indices.push_back(static_cast<std::size_t>(index));
+        }
+      } else {
+        const int count =
+            entry["count"] ? integer(file, entry["count"], "count", 1) : static_cast<int>(scenarios.size());
+        if (count > static_cast<int>(scenarios.size()))
+          fail(file, entry["count"],
+               "count " + std::to_string(count) + " exceeds the " + std::to_string(scenarios.size()) +
+                   " scenarios of " + scen.string());
+        // Evenly spread over the file, which Moving AI orders by difficulty (bucket).
+        for (int i = 0; i < count; ++i) indices.push_back(static_cast<std::size_t>(i) * scenarios.size() / count);
+      }
+      for (const std::size_t index : indices) {
         const aco::Scenario& s = scenarios[index];
         Problem p;
         p.name = prefix + "#" + std::to_string(index);

@@ -49,9 +49,9 @@ Analysis analyse(const ResultsDb& db) {
   std::vector<double> raw_p;
   std::vector<Result*> compared;
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
-    const double optimal = a.problems[p].optimal_length;
+    const double optimal = a.problems[p].optimal_length, any_angle = a.problems[p].anyangle_length;
     for (auto& r : a.results[p]) {
-      std::vector<double> turns, best_iterations, times;
+      std::vector<double> turns, best_iterations, times, over_any_angle;
       for (const auto* t : r.runs) {
         times.push_back(t->time_s * 1000.0);
         if (!t->solved) continue;
@@ -61,11 +61,13 @@ Analysis analyse(const ResultsDb& db) {
         // A continuous planner's trial (ompl) has no grid path: its grid_length is NULL in the
         // database, read back as 0, and it has no gap.
         if (optimal > 0 && t->grid_length > 0) r.gaps.push_back(gap_percent(*t, optimal));
+        if (any_angle > 0) over_any_angle.push_back(100.0 * (t->length / any_angle - 1.0));
         if (!r.best || t->length < r.best->length) r.best = t;
       }
       r.length = summarize(r.lengths);
       r.success = r.runs.empty() ? NAN : double(r.lengths.size()) / r.runs.size();
       r.gap = mean_of(r.gaps);
+      r.over_any_angle = mean_of(over_any_angle);
       r.turns = mean_of(turns);
       r.best_iteration = mean_of(best_iterations);
       r.time_ms = mean_of(times);

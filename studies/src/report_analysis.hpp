@@ -26,6 +26,9 @@ struct Result {
   Summary length;
   double success = 0.0;
   double gap = NAN;  // mean of gaps
+  // Mean excess of the final path (after the smoother, or a continuous planner's) over the exact
+  // any-angle optimum, %: NaN unless the problem has one.
+  double over_any_angle = NAN;
   double turns = NAN, best_iteration = NAN, time_ms = NAN;
   double p = NAN, p_holm = NAN, a12 = NAN;  // against the baseline on this problem
   const TrialRecord* best = nullptr;

@@ -114,7 +114,7 @@ std::string schema() {
   return R"(
 CREATE TABLE experiments (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512), totaltime REAL,
   timelimit REAL, memorylimit REAL, runcount INTEGER, version VARCHAR(128), hostname VARCHAR(1024),
-  cpuinfo TEXT, date DATETIME, seed VARCHAR(24), setup TEXT, optimal_length REAL);
+  cpuinfo TEXT, date DATETIME, seed VARCHAR(24), setup TEXT, optimal_length REAL, anyangle_length REAL);
 CREATE TABLE plannerConfigs (id INTEGER PRIMARY KEY AUTOINCREMENT, name VARCHAR(512) NOT NULL, settings TEXT);
 CREATE TABLE enums (name VARCHAR(512), value INTEGER, description TEXT, PRIMARY KEY (name, value));
 )" + runs_table("runs") +
@@ -403,10 +403,12 @@ struct ResultsDb::Impl {
 
   std::vector<ProblemRecord> stored_problems() {
     std::vector<ProblemRecord> stored;
-    Statement read(db,
-                   "SELECT name, setup, optimal_length FROM experiments WHERE " + std::string(kOurs) + " ORDER BY id");
+    Statement read(db, "SELECT name, setup, optimal_length, anyangle_length FROM experiments WHERE " +
+                           std::string(kOurs) + " ORDER BY id");
     read.run();
-    while (read.next()) stored.push_back({read.text(0), read.text(1), read.null(2) ? -1.0 : read.real(2)});
+    while (read.next())
+      stored.push_back(
+          {read.text(0), read.text(1), read.null(2) ? -1.0 : read.real(2), read.null(3) ? -1.0 : read.real(3)});
     return stored;
   }
 
@@ -578,6 +580,7 @@ struct ResultsDb::Impl {
         "INSERT INTO plannerPlugins (plannerid, plugins) SELECT id, plugins FROM plannerConfigs WHERE plugins IS NOT "
         "NULL");
     db.exec("ALTER TABLE plannerConfigs DROP COLUMN plugins");
+    db.exec("ALTER TABLE experiments ADD COLUMN anyangle_length REAL");
     db.exec(
         "UPDATE experiments SET timelimit = COALESCE(timelimit, 0), memorylimit = COALESCE(memorylimit, 0), "
         "runcount = COALESCE(runcount, 0), seed = COALESCE(seed, '')");
@@ -617,6 +620,13 @@ struct ResultsDb::Impl {
     for (const auto& p : stored_problems()) names.insert(p.name);
     for (const auto& p : given)
       if (!names.contains(p.name)) add_problem(p);
+    // A problem stored before its any-angle optimum was (by format 6) gets it.
+    Statement any_angle(db,
+                        "UPDATE experiments SET anyangle_length = ?2 WHERE name = ?1 AND anyangle_length IS NULL "
+                        "AND " +
+                            std::string(kOurs));
+    for (const auto& p : given)
+      if (p.anyangle_length >= 0) any_angle.run(p.name, p.anyangle_length).finish();
     Statement set(db, "UPDATE acobench_meta SET value = ?1 WHERE key = 'fingerprint'");
     set.run(merged_fingerprint(stored, fingerprint)).finish();
     transaction.commit();
@@ -625,10 +635,10 @@ struct ResultsDb::Impl {
   void add_problem(const ProblemRecord& p) {
     Statement add(db,
                   "INSERT INTO experiments (name, totaltime, timelimit, memorylimit, runcount, version, hostname, "
-                  "cpuinfo, date, seed, setup, optimal_length) "
-                  "VALUES (?1, 0, 0, 0, 0, ?2, ?3, ?4, datetime('now'), '', ?5, ?6)");
+                  "cpuinfo, date, seed, setup, optimal_length, anyangle_length) "
+                  "VALUES (?1, 0, 0, 0, 0, ?2, ?3, ?4, datetime('now'), '', ?5, ?6, ?7)");
     add.run(p.name, std::string("aco ") + ACOBENCH_VERSION, hostname(), cpuinfo(), p.setup_json,
-            p.optimal_length >= 0 ? p.optimal_length : kNull)
+            p.optimal_length >= 0 ? p.optimal_length : kNull, p.anyangle_length >= 0 ? p.anyangle_length : kNull)
         .finish();
   }
 

@@ -9,6 +9,7 @@
 #include <thread>
 #include <nlohmann/json.hpp>
 
+#include "aco/any_angle.hpp"
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/parallel.hpp"
@@ -59,7 +60,10 @@ class Runner {
         setup["simulation"] = e.relative_to_file(p.simulation->file);
         setup["variations"] = p.variations;
       }
-      records.push_back({p.name, setup.dump(), optimal ? optimal->length : -1.0});
+      // The any-angle yardstick on flat grids of unit cells (a terrain's slopes and cell size it does not know).
+      const auto* grid = dynamic_cast<const aco::OccupancyGrid*>(graph.map);
+      const auto any_angle = grid && !p.simulation ? aco::any_angle_optimum(*grid, p.start, p.goal) : std::nullopt;
+      records.push_back({p.name, setup.dump(), optimal ? optimal->length : -1.0, any_angle ? any_angle->length : -1.0});
     }
     db_ = std::make_unique<ResultsDb>(options.database, e.name, e.fingerprint(registry), records);
     finished_ = db_->finished();

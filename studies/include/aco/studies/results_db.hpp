@@ -10,7 +10,9 @@
 //                   recorded before format 7), runcount (repetitions), version ("aco <version>"),
 //                   hostname, cpuinfo, date (creation, UTC), seed (the experiment's master seed;
 //                   each trial's own is runs.trial_seed), setup (the problem as JSON), plus the
-//                   experiment property optimal_length (NULL if unknown).
+//                   experiment properties optimal_length (exact A* on the baseline's graph) and
+//                   anyangle_length (the exact any-angle optimum, aco/any_angle.hpp, on flat maps;
+//                   NULL if unknown).
 //   plannerConfigs  one row per configuration, OMPL's three columns: id, name, settings (its
 //                   resolved settings, JSON).
 //   plannerPlugins  plannerid, plugins: per slot the binary the configuration last ran (name,

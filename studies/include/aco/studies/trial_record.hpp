@@ -25,6 +25,9 @@ struct ProblemRecord {
   std::string name;
   std::string setup_json;  // the problem: map file, start, goal, neighbourhood...
   double optimal_length;  // < 0: unknown (read back as -1)
+  // The exact any-angle optimum (aco/any_angle.hpp): the shortest path at any angles, the
+  // yardstick of smoothed and continuous paths; < 0: unknown (a terrain or simulation problem).
+  double anyangle_length = -1.0;
 };
 
 struct ConfigRecord {

@@ -204,6 +204,7 @@ UPDATE plannerConfigs SET plugins = (SELECT plugins FROM plannerPlugins WHERE pl
 DROP TABLE plannerPlugins;
 DELETE FROM enums;
 UPDATE experiments SET timelimit = NULL, memorylimit = NULL, runcount = NULL, seed = NULL;
+ALTER TABLE experiments DROP COLUMN anyangle_length;
 UPDATE acobench_meta SET value = '6' WHERE key = 'format_version';
 )";
   char* error = nullptr;

@@ -218,8 +218,9 @@ TEST_CASE("acobench runs the ompl planner: its runs rows, no grid length, no gap
   sqlite3_stmt* stmt = nullptr;
   REQUIRE(
       sqlite3_prepare_v2(handle,
-                         "SELECT r.solved, r.time, r.length, r.grid_length IS NULL, r.gap IS NULL, r.path FROM runs r "
-                         "JOIN plannerConfigs c ON c.id = r.plannerid WHERE c.name = 'RRT-Connect'",
+                         "SELECT r.solved, r.time, r.solution_length, r.grid_length IS NULL, r.gap IS NULL, t.path "
+                         "FROM runs r JOIN plannerConfigs c ON c.id = r.plannerid JOIN run_texts t ON t.runid = r.id "
+                         "WHERE c.name = 'RRT-Connect'",
                          -1, &stmt, nullptr) == SQLITE_OK);
   int rows = 0;
   while (sqlite3_step(stmt) == SQLITE_ROW) {

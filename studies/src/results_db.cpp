@@ -403,7 +403,9 @@ struct ResultsDb::Impl {
 
   std::vector<ProblemRecord> stored_problems() {
     std::vector<ProblemRecord> stored;
-    Statement read(db, "SELECT name, setup, optimal_length, anyangle_length FROM experiments WHERE " +
+    // Read before an older format is upgraded (to check the file is the experiment's).
+    const std::string any_angle = columns_of("experiments").contains("anyangle_length") ? "anyangle_length" : "NULL";
+    Statement read(db, "SELECT name, setup, optimal_length, " + any_angle + " FROM experiments WHERE " +
                            std::string(kOurs) + " ORDER BY id");
     read.run();
     while (read.next())
@@ -580,7 +582,8 @@ struct ResultsDb::Impl {
         "INSERT INTO plannerPlugins (plannerid, plugins) SELECT id, plugins FROM plannerConfigs WHERE plugins IS NOT "
         "NULL");
     db.exec("ALTER TABLE plannerConfigs DROP COLUMN plugins");
-    db.exec("ALTER TABLE experiments ADD COLUMN anyangle_length REAL");
+    if (!columns_of("experiments").contains("anyangle_length"))
+      db.exec("ALTER TABLE experiments ADD COLUMN anyangle_length REAL");
     db.exec(
         "UPDATE experiments SET timelimit = COALESCE(timelimit, 0), memorylimit = COALESCE(memorylimit, 0), "
         "runcount = COALESCE(runcount, 0), seed = COALESCE(seed, '')");

@@ -153,27 +153,27 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
   } else {
     planner.run({registry, graph, start, goal, run, pipeline, figures}, o);
   }
-  if (o.search.solved && planner.continuous) {
-    // The planner's own path, as it is: no grid path to measure or smooth.
-    o.search.length = std::numeric_limits<double>::quiet_NaN();
-    if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
-      throw Error("planner '" + std::string(planner.name) + "' returned a bad path: " + problem);
-    o.length = polyline_length(o.path);
-    o.turns = count_turns(o.path);
-  } else if (o.search.solved) {
-    Context context;
-    context.graph = &graph;
-    context.start = start;
-    context.goal = goal;
-    context.seed = run.colony.seed;
-    context.figures = &figures;
-    o.search.length = path_length(graph, o.search.path);
-    pipeline.smoother->begin_run(context);
-    o.path = pipeline.smoother->smooth(context, o.search.path);
-    if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
-      throw InvalidValueError(describe_plugin(*pipeline.smoother, "smoother") +
-                              " returned bad waypoints in smooth(): " + problem +
-                              " (waypoints must be finite and on free cells, from the start's position to the goal's)");
+  if (o.search.solved) {
+    if (planner.continuous) {
+      // The planner's own path, as it is: no grid path to measure or smooth.
+      o.search.length = std::numeric_limits<double>::quiet_NaN();
+      if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
+        throw Error("planner '" + std::string(planner.name) + "' returned a bad path: " + problem);
+    } else {
+      Context context;
+      context.graph = &graph;
+      context.start = start;
+      context.goal = goal;
+      context.seed = run.colony.seed;
+      context.figures = &figures;
+      o.search.length = path_length(graph, o.search.path);
+      pipeline.smoother->begin_run(context);
+      o.path = pipeline.smoother->smooth(context, o.search.path);
+      if (const std::string problem = waypoint_problem(graph, start, goal, o.path); !problem.empty())
+        throw InvalidValueError(
+            describe_plugin(*pipeline.smoother, "smoother") + " returned bad waypoints in smooth(): " + problem +
+            " (waypoints must be finite and on free cells, from the start's position to the goal's)");
+    }
     o.length = polyline_length(o.path);
     o.turns = count_turns(o.path);
   }

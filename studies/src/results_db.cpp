@@ -36,9 +36,12 @@ bool upgradable(const std::string& version) {
   return version == kFormatVersion;
 }
 
+// A runs column holding the index of its value among the field's values (OMPL's ENUM).
+bool is_enum(const TrialField& f) { return !f.values.empty() && (f.use & kInRunsTable); }
+
 // The declared type: OMPL's script plots the columns declared BOOLEAN, ENUM, INTEGER or REAL.
 std::string sql_type(const TrialField& f) {
-  if (!f.values.empty() && (f.use & kInRunsTable)) return "ENUM";
+  if (is_enum(f)) return "ENUM";
   switch (f.type) {
     case TrialCellType::boolean:
       return "BOOLEAN";
@@ -95,6 +98,14 @@ std::string runs_table(const std::string& table, const std::set<std::string>& wi
 )";
 }
 
+// The columns added when used that the trial has a value for.
+std::vector<const TrialField*> used_columns(const TrialRecord& t) {
+  std::vector<const TrialField*> used;
+  for (const TrialField* f : fields_in(kInRunsTable))
+    if ((f->use & kWhenUsed) && !std::holds_alternative<std::monostate>(f->get(t, -1.0))) used.push_back(f);
+  return used;
+}
+
 std::string run_texts_table() {
   std::vector<std::string> columns;
   for (const TrialField* f : fields_in(kInRunTexts)) columns.push_back(column_definition(*f));
@@ -127,7 +138,7 @@ CREATE TABLE acobench_meta (key TEXT PRIMARY KEY, value TEXT);
 
 // A field's value as its column holds it: an ENUM's index.
 TrialCell to_column(const TrialField& f, TrialCell value) {
-  if (f.values.empty() || !(f.use & kInRunsTable)) return value;
+  if (!is_enum(f)) return value;
   const auto* text = std::get_if<std::string>(&value);
   if (!text) return value;
   const auto at = std::find(f.values.begin(), f.values.end(), *text);
@@ -252,7 +263,7 @@ class Statement {
   }
   // A column holding `field`: an ENUM's index is its value's text.
   TrialCell cell(int column, const TrialField& field) const {
-    if (field.values.empty() || !(field.use & kInRunsTable) || null(column)) return cell(column, field.type);
+    if (!is_enum(field) || null(column)) return cell(column, field.type);
     const std::int64_t index = integer(column);
     if (index < 0 || index >= static_cast<std::int64_t>(field.values.size()))
       throw Error("results database " + db_.file() + ": runs." + field.stored_as + " holds " + std::to_string(index) +
@@ -462,9 +473,7 @@ struct ResultsDb::Impl {
   // The columns added when used that the trial has a value for: added if missing (in the
   // caller's transaction), and the INSERT prepared again.
   void add_used_columns(const TrialRecord& t) {
-    std::vector<const TrialField*> used;
-    for (const TrialField* f : fields_in(kInRunsTable))
-      if ((f->use & kWhenUsed) && !std::holds_alternative<std::monostate>(f->get(t, -1.0))) used.push_back(f);
+    const auto used = used_columns(t);
     if (used.empty()) return;
     const auto present = columns_of("runs");
     bool added = false;
@@ -568,11 +577,8 @@ struct ResultsDb::Impl {
       rows.push_back(std::move(row));
     }
     std::set<std::string> used;  // the columns added when used that some row has a value for
-    for (const TrialField* f : fields_in(kInRunsTable))
-      if ((f->use & kWhenUsed) && std::any_of(rows.begin(), rows.end(), [&](const Row& r) {
-            return !std::holds_alternative<std::monostate>(f->get(r.trial, -1.0));
-          }))
-        used.insert(f->stored_as);
+    for (const Row& r : rows)
+      for (const TrialField* f : used_columns(r.trial)) used.insert(f->stored_as);
     db.exec(runs_table("runs_7", used) + run_texts_table() + kPlannerPluginsTable);
     db.exec("DROP TABLE runs");
     db.exec("ALTER TABLE runs_7 RENAME TO runs");

@@ -44,7 +44,9 @@ std::vector<std::string> stop_texts() {
   for (auto reason :
        {aco::StopReason::iterations, aco::StopReason::stagnation, aco::StopReason::same_path, aco::StopReason::time})
     texts.push_back(aco::to_string(reason));
-  for (const char* failure : {"error", "crashed", "timed out", "out of memory"}) texts.push_back(failure);
+  texts.push_back("error");  // a trial that threw (TrialRunner::failed())
+  for (FailureKind kind : {FailureKind::crashed, FailureKind::timed_out, FailureKind::out_of_memory})
+    texts.push_back(to_string(kind));
   for (const char* outcome : aco::simulation::kOutcomes) texts.push_back(outcome);
   return texts;
 }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "aco/astar.hpp"
+#include "aco/corridor.hpp"
 
 namespace aco {
 namespace {
@@ -106,6 +107,8 @@ nlohmann::json run_json(const aco::Graph& graph, const PlanRun& o) {
   for (const auto& [name, value] : o.properties)
     j[name] = std::visit([](const auto& v) { return nlohmann::json(v); }, value);
   j["optimal_length"] = o.optimal_length ? nlohmann::json(*o.optimal_length) : nlohmann::json(nullptr);
+  j["any_angle_length"] = o.any_angle_length ? nlohmann::json(*o.any_angle_length) : nlohmann::json(nullptr);
+  j["optimal_corridor"] = o.optimal_corridor ? nlohmann::json(*o.optimal_corridor) : nlohmann::json(nullptr);
   j["convergence"] = nlohmann::json::array();
   for (double v : o.search.best_so_far) j["convergence"].push_back(number_or_null(v));
   j["convergence_time_s"] = o.search.elapsed_s;
@@ -175,12 +178,16 @@ std::vector<std::pair<std::string, Stats>> measures(const std::vector<PlanRun>& 
       v["grid_length"].push_back(o.search.length);
       v["cells"].push_back(double(o.search.path.size()));
     }
+    if (o.any_angle_length && *o.any_angle_length > 0)
+      v["over_any_angle_pct"].push_back(100.0 * (o.length / *o.any_angle_length - 1.0));
+    if (o.optimal_corridor) v["optimal_corridor"].push_back(*o.optimal_corridor ? 1.0 : 0.0);
     v["turns"].push_back(o.turns);
     v["best_iteration"].push_back(o.search.best_iteration);
     v["iterations"].push_back(o.search.iterations);
   }
   std::vector<std::pair<std::string, Stats>> result;
-  for (const char* name : {"length", "grid_length", "cells", "turns", "best_iteration", "iterations", "time_ms"})
+  for (const char* name : {"length", "grid_length", "over_any_angle_pct", "optimal_corridor", "cells", "turns",
+                           "best_iteration", "iterations", "time_ms"})
     result.emplace_back(name, stats(v[name]));
   for (const auto& [name, values] : properties) result.emplace_back(name, stats(values));
   return result;
@@ -198,8 +205,12 @@ std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, Nod
     runs.push_back(std::move(o));
   }
   const auto optimal = astar(graph, start, goal);
-  for (auto& o : runs)
+  const OptimalCorridor corridor(*graph.map, graph.cell(start), graph.cell(goal));
+  for (auto& o : runs) {
     if (optimal) o.optimal_length = optimal->length;
+    if (corridor.optimum()) o.any_angle_length = corridor.optimum()->length;
+    if (o.solved()) o.optimal_corridor = corridor.contains(o.path);
+  }
   return runs;
 }
 
@@ -252,7 +263,9 @@ std::string summary(const PlanReport& report, const std::vector<PlanRun>& runs) 
       out << "-\n";
       continue;
     }
-    const int digits = name == "length" || name == "grid_length" ? 4 : name == "time_ms" ? 2 : 1;
+    const int digits = name == "length" || name == "grid_length"         ? 4
+                       : name == "time_ms" || name == "optimal_corridor" ? 2
+                                                                         : 1;
     out << std::setprecision(digits) << "mean " << st.mean << "  sd " << st.sd << "  min " << st.min << "  max "
         << st.max << "\n";
   }
@@ -286,6 +299,13 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
         << (grid_path ? " % for the grid path\n"
                       : " % for the continuous path (it need not follow the graph's moves)\n")
         << std::setprecision(4);
+  }
+  if (o.any_angle_length) {
+    out << "any-angle: " << *o.any_angle_length << " (the exact optimum at any angle), final path "
+        << std::setprecision(2) << 100.0 * (o.length / *o.any_angle_length - 1.0) << " % longer";
+    if (o.optimal_corridor)
+      out << ", " << (*o.optimal_corridor ? "in its corridor" : "in ANOTHER corridor than the optimum's");
+    out << "\n" << std::setprecision(4);
   }
   if (planner == "aco") {
     out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations

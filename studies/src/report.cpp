@@ -62,6 +62,7 @@ std::vector<Column> columns() {
        }},
       {"gap %", [](const Result& r) { return fixed(r.gap, 2); }},
       {"over any-angle %", [](const Result& r) { return fixed(r.over_any_angle, 2); }},
+      {"optimal corridor %", [](const Result& r) { return fixed(100 * r.optimal_corridor, 0); }},
       {"turns", [](const Result& r) { return fixed(r.turns, 1); }},
       {"best it.", [](const Result& r) { return fixed(r.best_iteration, 1); }},
       {"time ms", [](const Result& r) { return number(r.time_ms, 3); }},

@@ -51,7 +51,7 @@ Analysis analyse(const ResultsDb& db) {
   for (std::size_t p = 0; p < a.problems.size(); ++p) {
     const double optimal = a.problems[p].optimal_length, any_angle = a.problems[p].anyangle_length;
     for (auto& r : a.results[p]) {
-      std::vector<double> turns, best_iterations, times, over_any_angle;
+      std::vector<double> turns, best_iterations, times, over_any_angle, in_corridor;
       for (const auto* t : r.runs) {
         times.push_back(t->time_s * 1000.0);
         if (!t->solved) continue;
@@ -62,12 +62,14 @@ Analysis analyse(const ResultsDb& db) {
         // database, read back as 0, and it has no gap.
         if (optimal > 0 && t->grid_length > 0) r.gaps.push_back(gap_percent(*t, optimal));
         if (any_angle > 0) over_any_angle.push_back(100.0 * (t->length / any_angle - 1.0));
+        if (t->optimal_corridor) in_corridor.push_back(*t->optimal_corridor ? 1.0 : 0.0);
         if (!r.best || t->length < r.best->length) r.best = t;
       }
       r.length = summarize(r.lengths);
       r.success = r.runs.empty() ? NAN : double(r.lengths.size()) / r.runs.size();
       r.gap = mean_of(r.gaps);
       r.over_any_angle = mean_of(over_any_angle);
+      r.optimal_corridor = mean_of(in_corridor);
       r.turns = mean_of(turns);
       r.best_iteration = mean_of(best_iterations);
       r.time_ms = mean_of(times);

@@ -29,6 +29,7 @@ struct Result {
   // Mean excess of the final path (after the smoother, or a continuous planner's) over the exact
   // any-angle optimum, %: NaN unless the problem has one.
   double over_any_angle = NAN;
+  double optimal_corridor = NAN;  // share of the solved trials whose path is in the optimum's corridor
   double turns = NAN, best_iteration = NAN, time_ms = NAN;
   double p = NAN, p_holm = NAN, a12 = NAN;  // against the baseline on this problem
   const TrialRecord* best = nullptr;

@@ -565,7 +565,9 @@ struct ResultsDb::Impl {
       TrialRecord trial;
     };
     std::vector<Row> rows;
-    const auto fields = format_6_fields();
+    // A field added after format 6 (optimal_corridor) has no column to read: it stays unknown.
+    auto fields = format_6_fields();
+    std::erase_if(fields, [present = columns_of("runs")](const TrialField* f) { return !present.contains(f->name); });
     std::string names;
     for (const TrialField* f : fields) names += std::string(", ") + f->name;
     Statement read(db, "SELECT id, experimentid, plannerid" + names + " FROM runs ORDER BY id");

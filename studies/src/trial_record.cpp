@@ -228,6 +228,16 @@ const std::vector<TrialField>& trial_fields() {
       solved_only("grid_length", &TrialRecord::grid_length),
       gap("gap", kInRunsTable, 1.0, 10),
       gap("gap_percent", kInRunsCsv | kInPython, 100.0, 6),
+      {"optimal_corridor",
+       "optimal_corridor",
+       TrialCellType::boolean,
+       kEverywhere | kWhenUsed,
+       10,
+       [](const TrialRecord& t, double) { return t.optimal_corridor ? TrialCell(*t.optimal_corridor) : TrialCell(); },
+       [](TrialRecord& t, const TrialCell& value) {
+         if (const auto* b = std::get_if<bool>(&value)) t.optimal_corridor = *b;
+       },
+       {}},
       field("turns", &TrialRecord::turns, kEverywhere),
       field("iterations", &TrialRecord::iterations, kEverywhere),
       field("best_iteration", &TrialRecord::best_iteration, kEverywhere),

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <shared_mutex>
 
+#include "aco/corridor.hpp"
 #include "aco/error.hpp"
 #include "aco/plugin_error.hpp"
 #include "aco/map_io.hpp"
@@ -39,6 +40,8 @@ struct PreparedProblem {
   aco::PluginRegistry* registry = nullptr;  // the map plugins
   std::map<TerrainKey, aco::LoadedProblem> maps;
   std::map<GraphKey, aco::Graph> graphs;
+  // The any-angle optimum and its corridor on the map of these terrain options, when first asked.
+  std::map<TerrainKey, aco::OptimalCorridor> corridors;
 
   static TerrainKey terrain_key(const aco::TerrainOptions& t) { return {t.max_slope_deg, t.height_scale, t.cell_size}; }
   static GraphKey graph_key(const aco::RunSpec& run) {
@@ -52,6 +55,11 @@ struct PreparedProblem {
       it = maps.emplace(terrain_key(terrain), aco::load_problem(with, registry)).first;
     }
     return *it->second.map;
+  }
+  const aco::OptimalCorridor& corridor(const aco::TerrainOptions& terrain, aco::Cell start, aco::Cell goal) {
+    auto it = corridors.find(terrain_key(terrain));
+    if (it == corridors.end()) it = corridors.try_emplace(terrain_key(terrain), map(terrain), start, goal).first;
+    return it->second;
   }
   // Errors (a map that does not load, a blocked start with these terrain options) name the problem.
   const aco::Graph& graph(const aco::RunSpec& run) {
@@ -188,6 +196,11 @@ TrialRecord TrialRunner::plan(const TrialOrder& t) {
   r.solved = o.solved();
   r.length = o.length;
   r.grid_length = o.search.length;
+  if (r.solved) {
+    const std::unique_lock lock(problems_->mutex);
+    r.optimal_corridor =
+        problems_->list[t.problem].corridor(run.problem.terrain, problem.start, problem.goal).contains(o.path);
+  }
   r.turns = o.turns;
   r.iterations = o.search.iterations;
   r.best_iteration = o.search.best_iteration;

@@ -14,9 +14,15 @@ namespace aco {
 
 struct PlanRun : PlanOutcome {
   std::optional<double> optimal_length;  // exact A* reference on the same graph; none if unreachable
+  // The exact any-angle optimum (aco/any_angle.hpp), the yardstick of the final path's length, and
+  // whether the final path runs through its corridor (aco/corridor.hpp); none on maps other than
+  // flat grids, or when no path joins start and goal.
+  std::optional<double> any_angle_length;
+  std::optional<bool> optimal_corridor;
 };
 
-// `count` runs of `run` with seeds seed, seed+1, ..., each with the A* optimum.
+// `count` runs of `run` with seeds seed, seed+1, ..., each with the A* optimum, the any-angle
+// optimum and its corridor.
 std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal,
                                const RunSpec& run, std::int64_t count);
 

@@ -24,6 +24,8 @@
 //                   holds; a field added later is added, NULL for the stored rows): repetition and
 //                   trial_seed (declared INT: identities, not measurements, which OMPL's script
 //                   leaves out), solved, solution_length (after the smoother), grid_length, gap,
+//                   optimal_corridor (BOOLEAN: the final path in the any-angle optimum's corridor,
+//                   aco/corridor.hpp; added with the first trial on a flat grid),
 //                   turns, iterations, best_iteration, time (s), ant_steps, stopped_by (ENUM),
 //                   the simulation measures (outcome (ENUM), time_to_goal, collisions, replans,
 //                   clearance, control_steps: columns added with the first simulation trial),

@@ -68,6 +68,9 @@ struct TrialRecord {
   std::uint64_t seed = 0;
   bool solved = false;
   double length = 0, grid_length = 0;  // only meaningful when solved (read back as 0 otherwise)
+  // Whether the final path runs through the corridor of the exact any-angle optimum
+  // (aco/corridor.hpp); none when unsolved or on maps other than flat grids (stored as NULL).
+  std::optional<bool> optimal_corridor;
   int turns = 0, iterations = 0, best_iteration = 0;
   double time_s = 0;
   std::uint64_t ant_steps = 0;

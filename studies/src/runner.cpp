@@ -70,7 +70,6 @@ class Runner {
     failed_before_ = db_->failed();
     check_shard();
     for (const auto& r : records) optimal_.push_back(r.optimal_length);
-    // The ablation's choices need the results of trials an earlier, interrupted run stored.
     const bool tied = std::any_of(e.configurations.begin(), e.configurations.end(),
                                   [](const Configuration& c) { return !c.time_limit_from().empty(); });
     if (tied && options.shard)

@@ -9,12 +9,14 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "acobench_support.hpp"
 #include "aco/error.hpp"
 #include "aco/planning.hpp"
+#include "aco/studies/results_db.hpp"
 #include "aco/terrain.hpp"
 #include "ompl/ompl_planner.hpp"
 #include "support.hpp"
@@ -251,3 +253,171 @@ TEST_CASE("acobench runs the ompl planner: its runs rows, no grid length, no gap
     }
   CHECK(rrt_rows == 1);
 }
+
+namespace {
+
+// The equal-time experiment: a colony (the baseline) and RRT-Connect given its time, on two
+// problem sets; `repetitions` and `colony_keys` vary.
+std::string equal_time_text(int repetitions, const std::string& colony_keys, bool tied) {
+  return "name: equal-time\nseed: 5\nrepetitions: " + std::to_string(repetitions) +
+         "\nproblems:\n"
+         "  - {map: " +
+         test::acobench_helpers::map1() +
+         ", start: [0, 0], goal: [19, 19], name: 'corner#1'}\n"
+         "  - {map: " +
+         test::acobench_helpers::map1() +
+         ", start: [0, 19], goal: [19, 0], name: 'other#1'}\n"
+         "settings: {ants: 10, iterations: 10}\nbaseline: {name: colony" +
+         colony_keys + "}\n" +
+         (tied ? "configurations:\n  - {name: RRT-Connect, planner: ompl, ompl.planner: rrtconnect, time-limit-from: "
+                 "colony}\n"
+               : "");
+}
+
+// Each pair's rows of the table "Same time, who is shorter" in report.md, as cells.
+std::vector<std::vector<std::string>> equal_time_rows(const std::filesystem::path& report_md) {
+  std::ifstream md(report_md);
+  std::vector<std::vector<std::string>> rows;
+  for (std::string line; std::getline(md, line);) {
+    if (line.rfind("| colony | RRT-Connect |", 0) != 0) continue;
+    std::vector<std::string> cells;
+    std::istringstream row(line.substr(1));
+    for (std::string cell; std::getline(row, cell, '|');) cells.push_back(cell.substr(1, cell.size() - 2));
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+// Checks that each RRT-Connect trial was stored after the colony's trial of its problem and
+// repetition, with the colony's time as its time limit; returns how many pairs it checked.
+int checked_pairs(const std::filesystem::path& db) {
+  sqlite3* handle = nullptr;
+  REQUIRE(sqlite3_open_v2(db.string().c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK);
+  sqlite3_stmt* stmt = nullptr;
+  REQUIRE(sqlite3_prepare_v2(handle,
+                             "SELECT o.id, c.id, p.value, c.time FROM runs o "
+                             "JOIN plannerConfigs oc ON oc.id = o.plannerid AND oc.name = 'RRT-Connect' "
+                             "JOIN runs c ON c.experimentid = o.experimentid AND c.repetition = o.repetition "
+                             "JOIN plannerConfigs cc ON cc.id = c.plannerid AND cc.name = 'colony' "
+                             "LEFT JOIN properties p ON p.runid = o.id AND p.name = 'time_limit'",
+                             -1, &stmt, nullptr) == SQLITE_OK);
+  int pairs = 0;
+  while (sqlite3_step(stmt) == SQLITE_ROW) {
+    ++pairs;
+    CHECK(sqlite3_column_int(stmt, 0) > sqlite3_column_int(stmt, 1));  // stored after its colony trial
+    REQUIRE(sqlite3_column_type(stmt, 2) == SQLITE_FLOAT);
+    CHECK(sqlite3_column_double(stmt, 2) == sqlite3_column_double(stmt, 3));  // exactly the colony's time
+  }
+  sqlite3_finalize(stmt);
+  sqlite3_close(handle);
+  return pairs;
+}
+
+int cell(const std::vector<std::string>& row, std::size_t column) { return std::stoi(row.at(column)); }
+
+}  // namespace
+
+TEST_CASE("acobench: time-limit-from gives OMPL the colony's time, trial by trial, and the report pairs them",
+          "[ompl][acobench][equal-time]") {
+  using namespace test::acobench_helpers;
+  // First the colony alone, then OMPL added with one more repetition: its limits come from
+  // trials stored by the earlier run and from trials of this one.
+  const auto file = test::temp_file("equal-time.yaml", equal_time_text(2, "", false));
+  const auto db = file.parent_path() / "equal-time.db";
+  REQUIRE(run_acobench({"run", file.string(), "--db", db.string()}).exit_code == 0);
+  std::ofstream(file) << equal_time_text(3, "", true);
+  const auto r = run_acobench({"run", file.string(), "--db", db.string(), "--threads", "2"});
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+
+  CHECK(checked_pairs(db) == 6);
+
+  const auto out = file.parent_path() / "report";
+  const auto report = run_acobench({"report", db.string(), "--out", out.string()});
+  INFO(report.err);
+  REQUIRE(report.exit_code == 0);
+  CHECK_THAT(file_bytes(out / "report.md"), Contains("## Same time, who is shorter"));
+  const auto rows = equal_time_rows(out / "report.md");
+  REQUIRE(rows.size() == 3);  // corner, other, all
+  CHECK(rows[0][2] == "corner");
+  CHECK(rows[1][2] == "other");
+  CHECK(rows[2][2] == "all");
+  for (const auto& row : rows) {
+    INFO(row[2]);
+    const int n = row[2] == "all" ? 6 : 3;
+    CHECK(cell(row, 3) == n);  // pairs
+    CHECK(cell(row, 4) == n);  // equal time
+    CHECK(cell(row, 5) + cell(row, 6) + cell(row, 7) + cell(row, 8) == n);
+    CHECK(cell(row, 9) + cell(row, 10) + cell(row, 11) == cell(row, 5));
+  }
+  for (std::size_t column = 3; column <= 11; ++column)
+    CHECK(cell(rows[0], column) + cell(rows[1], column) == cell(rows[2], column));
+}
+
+TEST_CASE("acobench: a colony trial that fails leaves its time-limit-from trial stored as failed, not run",
+          "[ompl][acobench][equal-time][failures]") {
+  using namespace test::acobench_helpers;
+  const auto file =
+      test::temp_file("equal-time.yaml", equal_time_text(2, ", update: throwing, update.at_iteration: 2", true));
+  const auto db = file.parent_path() / "equal-time.db";
+  const auto r = run_acobench({"run", file.string(), "--db", db.string(), "--plugin-dir", ACO_TEST_FAULTY_PLUGIN_DIR});
+  INFO(r.out << r.err);
+  CHECK(r.exit_code == 3);
+  CHECK_THAT(r.err, Contains("other error: 4\n    'RRT-Connect': 4, e.g. problem 'corner#1', repetition 0: not run: "
+                             "its time limit (time-limit-from) is the time of 'colony' on the same problem and "
+                             "repetition, and that trial failed: configuration 'colony'"));
+  int failed = 0;
+  for (const auto& t : aco::studies::ResultsDb(db).trials()) {
+    CHECK_FALSE(t.error.empty());
+    CHECK_FALSE(t.solved);
+    ++failed;
+  }
+  CHECK(failed == 8);
+  const auto out = file.parent_path() / "report";
+  REQUIRE(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
+  const auto rows = equal_time_rows(out / "report.md");
+  REQUIRE(rows.size() == 3);
+  CHECK(cell(rows[2], 3) == 4);  // pairs
+  CHECK(cell(rows[2], 4) == 0);  // none had the colony's time: there was none
+  CHECK(cell(rows[2], 8) == 4);  // neither solved
+}
+
+TEST_CASE("acobench: time-limit-from errors name the key and what is missing", "[ompl][acobench][equal-time]") {
+  using namespace test::acobench_helpers;
+  const std::string head = "name: e\nproblems:\n  - {map: {MAP1}, start: [0, 0], goal: [19, 19]}\n";
+  CHECK_THROWS_WITH(load(head + "baseline: {name: A*, planner: astar}\nconfigurations:\n"
+                                "  - {name: RRT*, planner: ompl, time-limit-from: colony}\n"),
+                    Contains("experiment.yaml:6: configuration 'RRT*': time-limit-from: colony: the experiment has "
+                             "no colony configuration (planner: aco)"));
+  CHECK_THROWS_WITH(load(head + "baseline: {name: A*, planner: astar}\nconfigurations:\n"
+                                "  - {name: c1, planner: aco}\n  - {name: c2, planner: aco, beta: 2}\n"
+                                "  - {name: RRT*, planner: ompl, time-limit-from: colony}\n"),
+                    Contains("time-limit-from: colony: the experiment has 2 colony configurations ('c1', 'c2'): name "
+                             "one"));
+  CHECK_THROWS_WITH(load(head + "configurations:\n  - {name: RRT*, planner: ompl, time-limit-from: nobody}\n"),
+                    Contains("configuration 'RRT*': time-limit-from: 'nobody' is not a configuration of this file"));
+  CHECK_THROWS_WITH(load(head + "configurations:\n  - {name: c1, planner: aco, time-limit-from: baseline}\n"),
+                    Contains("time-limit-from: only an OMPL configuration (planner: ompl)"));
+  CHECK_THROWS_WITH(load(head + "settings: {time-limit-from: colony}\n"),
+                    Contains("time-limit-from belongs to an OMPL configuration under 'configurations'"));
+  // Another shard may run the colony's trial: refused, not waited for.
+  const auto file = experiment(head + "configurations:\n  - {name: RRT*, planner: ompl, time-limit-from: colony}\n");
+  const auto r = run_acobench({"run", file.string(), "--shard", "1/2"});
+  CHECK(r.exit_code == 1);
+  CHECK_THAT(r.err, Contains("time-limit-from: a trial's time limit is the time another configuration took") &&
+                        Contains("without --shard"));
+}
+
+#ifdef ACO_TEST_MPIEXEC
+TEST_CASE("acobench under mpirun: time-limit-from trials run after their colony trials on the worker ranks",
+          "[ompl][acobench][equal-time][mpi]") {
+  using namespace test::acobench_helpers;
+  const auto file = test::temp_file("equal-time.yaml", equal_time_text(3, "", true));
+  const auto db = file.parent_path() / "equal-time.db";
+  const auto r = test::run(mpirun(3, {"run", file.string(), "--db", db.string(), "--threads", "1"}), kMpiEnvironment);
+  INFO(r.out << r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Contains("2 worker ranks"));
+  CHECK(checked_pairs(db) == 6);
+}
+#endif

@@ -241,7 +241,78 @@ std::vector<Configuration> twins(const Configuration& subject, const std::string
   return result;
 }
 
+// Checks every time-limit-from and sets it to the name of the configuration it takes the time
+// from, so that the database and the report find the pair by name whatever was written.
+void tie_time_limits(Experiment& e) {
+  const auto fail_tie = [](const Configuration& c, const std::string& message) {
+    return aco::Error(c.origin(kTimeLimitFrom) + "configuration '" + c.name + "': " + kTimeLimitFrom + ": " + message);
+  };
+  // In the settings or the baseline it would tie every configuration, the colony's too.
+  if (!e.baseline.time_limit_from().empty())
+    throw aco::Error(e.baseline.origin(kTimeLimitFrom) + std::string(kTimeLimitFrom) +
+                     " belongs to an OMPL configuration under 'configurations', not to the settings or the baseline");
+  if (e.ablation_target && !e.ablation_target->time_limit_from().empty())
+    throw fail_tie(*e.ablation_target, "an ablation target's time limit cannot be another configuration's time");
+  const auto colonies = [&e] {
+    std::vector<std::string> names;
+    for (const auto& c : e.configurations)
+      if (c.run->planner == "aco" && c.run->colony.null_model == aco::NullModel::none && c.time_limit_from().empty())
+        names.push_back(c.name);
+    return names;
+  }();
+  for (auto& c : e.configurations) {
+    const std::string wanted = c.time_limit_from();
+    if (wanted.empty()) continue;
+    if (std::any_of(e.problems.begin(), e.problems.end(), [](const Problem& p) { return p.simulation != nullptr; }))
+      throw fail_tie(c, "a simulation problem's time is the drive's, not the planner's: planning problems only");
+    if (c.run->planner != "ompl")
+      throw fail_tie(c,
+                     "only an OMPL configuration (planner: ompl) takes its time limit from another; this one runs '" +
+                         c.run->planner + "'");
+    auto target = std::find_if(e.configurations.begin(), e.configurations.end(),
+                               [&](const Configuration& other) { return other.name == wanted; });
+    if (target == e.configurations.end() && wanted != "colony")
+      throw fail_tie(c, "'" + wanted + "' is not a configuration of this file");
+    if (target == e.configurations.end()) {
+      if (colonies.empty())
+        throw fail_tie(c, "colony: the experiment has no colony configuration (planner: aco) to take the time from");
+      if (colonies.size() > 1) {
+        std::string list;
+        for (const auto& name : colonies) list += (list.empty() ? "'" : ", '") + name + "'";
+        throw fail_tie(c, "colony: the experiment has " + std::to_string(colonies.size()) + " colony configurations (" +
+                              list + "): name one");
+      }
+      target = std::find_if(e.configurations.begin(), e.configurations.end(),
+                            [&](const Configuration& other) { return other.name == colonies.front(); });
+    }
+    if (target->name == c.name) throw fail_tie(c, "a configuration cannot take its time limit from itself");
+    // A chain would need its trials in rounds; one round of ties is what a head-to-head needs.
+    if (!target->time_limit_from().empty())
+      throw fail_tie(c, "'" + target->name + "' takes its own time limit from another configuration");
+    c.keys[kTimeLimitFrom] = target->name;
+  }
+}
+
 }  // namespace
+
+std::string Configuration::time_limit_from() const {
+  const auto it = keys.find(kTimeLimitFrom);
+  return it == keys.end() ? "" : it->second;
+}
+
+Configuration run_keys(const Configuration& config) {
+  Configuration c = config;
+  c.keys.erase(kTimeLimitFrom);
+  return c;
+}
+
+std::string run_json(const Configuration& config, const aco::RunSpec& run) {
+  const std::string text = aco::to_json(run);
+  if (config.time_limit_from().empty()) return text;
+  auto j = nlohmann::ordered_json::parse(text);
+  j[kTimeLimitFrom] = config.time_limit_from();
+  return j.dump();
+}
 
 aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry) {
   const auto fail_key = [&config](const std::string& key, const std::string& message) {
@@ -253,7 +324,7 @@ aco::RunSpec resolve(const Configuration& config, aco::PluginRegistry& registry)
   if (config.keys.count("seed"))
     throw fail_key("seed", "'seed' is set per trial from the experiment's seed, not per configuration");
   try {
-    return aco::resolve_run(config.keys, registry);
+    return aco::resolve_run(run_keys(config).keys, registry);
   } catch (const aco::KeyError& e) {
     throw fail_key(e.key(), e.what());
   }
@@ -265,7 +336,7 @@ aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& pr
   });
   if (!all_simulations) return resolve(config, registry);
   try {
-    return aco::simulation::with_run_keys(*problems.front().simulation, config, registry).run;
+    return aco::simulation::with_run_keys(*problems.front().simulation, run_keys(config), registry).run;
   } catch (const aco::Error& e) {
     throw aco::Error("configuration '" + config.name + "' over " + problems.front().simulation->file.string() + ": " +
                      e.what());
@@ -340,6 +411,7 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   for (const auto& c : e.configurations)
     if (!names.insert(c.name).second)
       throw aco::Error(file.string() + ": two configurations are named '" + c.name + "'");
+  tie_time_limits(e);
   e.baseline.run = e.configurations.front().run;
   return e;
 }
@@ -374,7 +446,7 @@ std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
   for (const auto& c : configurations) {
     nlohmann::json entry = {{"name", c.name}, {"keys", c.keys}};
     if (c.run) {
-      entry["run"] = nlohmann::json::parse(aco::to_json(*c.run));
+      entry["run"] = nlohmann::json::parse(run_json(c, *c.run));
       // A run over scenarios holds the first scenario's map, as the path it was loaded by: the same
       // file named from another working folder (acobench's workers load the experiment by its
       // absolute path) is the same experiment.
@@ -408,7 +480,7 @@ std::vector<std::pair<std::string, std::string>> Experiment::same_runs() const {
   std::map<std::string, std::string> first_with;  // resolved run (JSON) -> the first configuration
   for (const auto& c : configurations) {
     if (!c.run) continue;
-    const auto [first, fresh] = first_with.emplace(aco::to_json(*c.run), c.name);
+    const auto [first, fresh] = first_with.emplace(run_json(c, *c.run), c.name);
     if (!fresh) pairs.emplace_back(first->second, c.name);
   }
   return pairs;

@@ -22,7 +22,7 @@ namespace {
 using nlohmann::json;
 
 // Worker -> coordinator: {"want": n, "records": [...]}, the first also {"hello": {...}}.
-// Coordinator -> worker: {"configs": [...], "trials": [[problem, config, repetition], ...]}.
+// Coordinator -> worker: {"configs": [...], "trials": [[problem, config, repetition(, time limit)], ...]}.
 constexpr int kToCoordinator = 1, kWork = 2, kStop = 3;
 
 // Messages are CBOR: it keeps every double's bits, infinities and NaN included, which the

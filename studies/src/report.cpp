@@ -18,6 +18,7 @@
 #include "aco/error.hpp"
 #include "aco/plugin_record.hpp"
 #include "aco/run_spec.hpp"
+#include "aco/studies/experiment.hpp"
 #include "aco/studies/plots.hpp"
 #include "report_analysis.hpp"
 #include "aco/studies/report_document.hpp"
@@ -76,6 +77,17 @@ std::vector<Column> columns() {
 
 // Problems from one scenario file share a set name: "arena#40" belongs to "arena".
 std::string problem_set(const std::string& problem) { return problem.substr(0, problem.find('#')); }
+
+// The problem sets in the order of their first problem, each with its problems' indices.
+std::vector<std::pair<std::string, std::vector<std::size_t>>> problem_sets(const Analysis& a) {
+  std::vector<std::pair<std::string, std::vector<std::size_t>>> sets;
+  for (std::size_t p = 0; p < a.problems.size(); ++p) {
+    const std::string set = problem_set(a.problems[p].name);
+    const auto it = std::find_if(sets.begin(), sets.end(), [&](const auto& s) { return s.first == set; });
+    (it == sets.end() ? sets.emplace_back(set, std::vector<std::size_t>{}) : *it).second.push_back(p);
+  }
+  return sets;
+}
 
 // Per problem set and configuration (when a set has several problems): solved share, gap and
 // time over all its runs; and the gap by difficulty bucket where the problems carry buckets.
@@ -256,6 +268,86 @@ std::optional<double> numeric(const aco::ParamValue& value) {
       value);
 }
 
+// Two final lengths this close (relative) are a tie: the same path up to rounding, as when both
+// planners find the straight line.
+constexpr double kTieTolerance = 1e-9;
+
+// Each OMPL configuration with time-limit-from against the configuration whose time it was given,
+// trial by trial (the same problem and repetition): who is shorter at the same time.
+std::vector<Table> equal_time_tables(const Analysis& a) {
+  Table t{"Same time, who is shorter",
+          "Each OMPL configuration whose time limit is another's time (time-limit-from), paired trial by trial with "
+          "that configuration (the colony): on each problem and repetition OMPL's solve() had the time the colony's "
+          "trial took (OMPL's path simplification comes on top). 'equal time': pairs whose OMPL trial recorded that "
+          "time as its limit. Final path lengths are compared (after the smoother; OMPL's continuous paths); lengths "
+          "within a relative 1e-9 are a tie. pairs = both solved + only colony + only OMPL + neither; both solved = "
+          "colony shorter + OMPL shorter + ties. Ratio: colony length / OMPL length over the pairs both solved "
+          "(< 1: the colony shorter), its mean and its worst (largest).",
+          {"colony", "OMPL", "problem set", "pairs", "equal time", "both solved", "only colony", "only OMPL", "neither",
+           "colony shorter", "OMPL shorter", "ties", "mean ratio", "worst ratio"},
+          {},
+          "lll"};
+  const auto sets = problem_sets(a);
+  for (std::size_t ompl = 0; ompl < a.configs.size(); ++ompl) {
+    const auto settings = nlohmann::json::parse(a.configs[ompl].second.settings_json, nullptr, false);
+    if (!settings.is_object() || !settings.contains("run") || !settings["run"].contains(kTimeLimitFrom)) continue;
+    const std::string from = settings["run"][kTimeLimitFrom].get<std::string>();
+    const auto colony = static_cast<std::size_t>(
+        std::find_if(a.configs.begin(), a.configs.end(), [&](const auto& c) { return c.second.name == from; }) -
+        a.configs.begin());
+    if (colony == a.configs.size()) continue;
+    struct Counts {
+      std::size_t pairs = 0, equal_time = 0, both = 0, only_colony = 0, only_ompl = 0, neither = 0, colony_shorter = 0,
+                  ompl_shorter = 0, ties = 0;
+      std::vector<double> ratios;
+      Counts& operator+=(const Counts& o) {
+        pairs += o.pairs, equal_time += o.equal_time, both += o.both, only_colony += o.only_colony;
+        only_ompl += o.only_ompl, neither += o.neither, colony_shorter += o.colony_shorter;
+        ompl_shorter += o.ompl_shorter, ties += o.ties;
+        ratios.insert(ratios.end(), o.ratios.begin(), o.ratios.end());
+        return *this;
+      }
+    };
+    const auto add_row = [&](const std::string& set, const Counts& n) {
+      t.rows.push_back({from, a.configs[ompl].second.name, set, std::to_string(n.pairs), std::to_string(n.equal_time),
+                        std::to_string(n.both), std::to_string(n.only_colony), std::to_string(n.only_ompl),
+                        std::to_string(n.neither), std::to_string(n.colony_shorter), std::to_string(n.ompl_shorter),
+                        std::to_string(n.ties), fixed(mean_of(n.ratios), 3), fixed(largest(n.ratios), 3)});
+    };
+    Counts all;
+    for (const auto& [set, members] : sets) {
+      Counts n;
+      for (const std::size_t p : members) {
+        std::map<int, const TrialRecord*> colony_runs;
+        for (const auto* run : a.results[p][colony].runs) colony_runs[run->repetition] = run;
+        for (const auto* o : a.results[p][ompl].runs) {
+          const auto found = colony_runs.find(o->repetition);
+          if (found == colony_runs.end()) continue;
+          const TrialRecord& c = *found->second;
+          ++n.pairs;
+          const auto limit = o->properties.find("time_limit");
+          if (limit != o->properties.end() && numeric(limit->second) == c.time_s) ++n.equal_time;
+          if (!c.solved || !o->solved) {
+            ++(c.solved ? n.only_colony : o->solved ? n.only_ompl : n.neither);
+            continue;
+          }
+          ++n.both;
+          if (std::abs(c.length - o->length) <= kTieTolerance * std::max(c.length, o->length))
+            ++n.ties;
+          else
+            ++(c.length < o->length ? n.colony_shorter : n.ompl_shorter);
+          if (o->length > 0.0) n.ratios.push_back(c.length / o->length);
+        }
+      }
+      add_row(set, n);
+      all += n;
+    }
+    if (sets.size() > 1) add_row("all", all);
+  }
+  if (t.rows.empty()) return {};
+  return {t};
+}
+
 // Per configuration, each numeric property of its runs over all problems: the planners' own
 // (ant_steps, evaluations) and the figures its plugins recorded.
 std::vector<Table> property_tables(const Analysis& a) {
@@ -345,13 +437,8 @@ std::vector<Table> summary_tables(const Analysis& a) {
   for (Table& t : property_tables(a)) tables.push_back(std::move(t));
   for (Table& t : simulation_tables(a)) tables.push_back(std::move(t));
   for (Table& t : pheromone_tables(a)) tables.push_back(std::move(t));
-  std::vector<std::string> sets;
-  std::map<std::string, std::vector<std::size_t>> members;
-  for (std::size_t p = 0; p < a.problems.size(); ++p) {
-    const std::string set = problem_set(a.problems[p].name);
-    if (!members.count(set)) sets.push_back(set);
-    members[set].push_back(p);
-  }
+  for (Table& t : equal_time_tables(a)) tables.push_back(std::move(t));
+  const auto sets = problem_sets(a);
   if (sets.size() == a.problems.size()) return tables;
   Table totals{"Summary by problem set",
                "Over every run of every problem of the set: solved share, gap of the solved runs' grid paths to the "
@@ -363,18 +450,18 @@ std::vector<Table> summary_tables(const Analysis& a) {
   const auto gaps_of = [](const Result& r, std::vector<double>& gaps) {
     gaps.insert(gaps.end(), r.gaps.begin(), r.gaps.end());
   };
-  for (const auto& set : sets)
+  for (const auto& [set, members] : sets)
     for (std::size_t c = 0; c < a.configs.size(); ++c) {
       std::vector<double> gaps, times;
       std::size_t runs = 0, solved = 0;
-      for (std::size_t p : members[set]) {
+      for (std::size_t p : members) {
         const Result& r = a.results[p][c];
         runs += r.runs.size();
         solved += r.lengths.size();
         for (const auto* t : r.runs) times.push_back(t->time_s * 1000.0);
         gaps_of(r, gaps);
       }
-      totals.rows.push_back({set, a.configs[c].second.name, std::to_string(members[set].size()), std::to_string(runs),
+      totals.rows.push_back({set, a.configs[c].second.name, std::to_string(members.size()), std::to_string(runs),
                              runs ? fixed(100.0 * solved / runs, 1) + " %" : "-", fixed(mean_of(gaps), 2),
                              fixed(largest(gaps), 2), number(mean_of(times), 3), number(largest(times), 3)});
     }
@@ -386,8 +473,8 @@ std::vector<Table> summary_tables(const Analysis& a) {
       {"problem set", "buckets", "problems"},
       {}};
   for (std::size_t c = 0; c < a.configs.size(); ++c) by_bucket.header.push_back(a.configs[c].second.name);
-  for (const auto& set : sets) {
-    std::vector<std::size_t> ps = members[set];
+  for (const auto& [set, members] : sets) {
+    std::vector<std::size_t> ps = members;
     if (ps.size() < 4 || std::any_of(ps.begin(), ps.end(), [&](std::size_t p) { return a.buckets[p] < 0; })) continue;
     std::stable_sort(ps.begin(), ps.end(), [&](std::size_t x, std::size_t y) { return a.buckets[x] < a.buckets[y]; });
     for (std::size_t g = 0; g < 4; ++g) {

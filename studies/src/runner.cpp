@@ -70,9 +70,20 @@ class Runner {
     failed_before_ = db_->failed();
     check_shard();
     for (const auto& r : records) optimal_.push_back(r.optimal_length);
-    // The ablation's choices need the results of trials an earlier, interrupted run stored.
-    if (e.ablation_target)
-      for (const auto& t : db_->trials()) add_score(t);
+    const bool tied = std::any_of(e.configurations.begin(), e.configurations.end(),
+                                  [](const Configuration& c) { return !c.time_limit_from().empty(); });
+    if (tied && options.shard)
+      throw aco::Error(std::string(kTimeLimitFrom) +
+                       ": a trial's time limit is the time another configuration took on the same problem and "
+                       "repetition, which another shard may run: run this experiment without --shard (in one "
+                       "process or under MPI)");
+    // The ablation's choices and the time limits of tied configurations need the results of
+    // trials an earlier, interrupted run stored.
+    if (e.ablation_target || tied)
+      for (const auto& t : db_->trials()) {
+        if (e.ablation_target) add_score(t);
+        measured_[{t.problem, t.config, t.repetition}] = {t.time_s, t.error};
+      }
     // Where the maps are, for the report's pictures (not part of the identity: the folder may move).
     db_->set_meta("experiment_file", std::filesystem::absolute(e.file).lexically_normal().string());
     // Which acobench ran the trials, and whether it was optimised: the report warns of times
@@ -87,8 +98,11 @@ class Runner {
     const auto began = std::chrono::steady_clock::now();
     RunSummary summary;
     summary.growth = db_->growth();
-    std::vector<int> fixed;
-    for (const auto& c : e_.configurations) fixed.push_back(add(c));
+    std::vector<int> fixed, untied, tied;
+    for (const auto& c : e_.configurations) {
+      fixed.push_back(add(c));
+      (c.time_limit_from().empty() ? untied : tied).push_back(fixed.back());
+    }
     std::vector<std::vector<std::string>> components;
     if (e_.ablation_target && !options_.shard) components = ablation_components(e_.baseline, *e_.ablation_target);
     // The local planner drives simulations only: flipping it in planning trials would spend a
@@ -107,7 +121,9 @@ class Runner {
     if (options_.starting)
       options_.starting({fixed.size(), n * (n + 1) / 2, e_.problems.size(), e_.repetitions, total_, stored(fixed)});
 
-    run_trials(fixed, summary);
+    // The configurations a time-limit-from names first: their trials' times are the others' limits.
+    run_trials(untied, summary);
+    run_trials(tied, summary);
     // Fawcett and Hoos's ablation path: from the baseline, flip each remaining component in
     // turn, keep the best flip, repeat until the configuration is the target.
     Configuration current = e_.baseline;
@@ -160,6 +176,7 @@ class Runner {
         {c.name, settings_json(c, *resolved.run, registry_), aco::plugins_json(*resolved.run, registry_)});
     trials_.add_config(id, resolved);
     order_.push_back(id);
+    ids_[c.name] = id;
     return id;
   }
 
@@ -207,7 +224,17 @@ class Runner {
   }
 
   void run_trials(const std::vector<int>& configs, RunSummary& summary) {
-    std::vector<TrialOrder> trials;
+    const auto finished = [&](const TrialRecord& record) {
+      db_->store(record);
+      if (e_.ablation_target) add_score(record);
+      measured_[{record.problem, record.config, record.repetition}] = {record.time_s, record.error};
+      ++done_;
+      ++summary.ran;
+      if (!record.error.empty())
+        summary.failures.push_back({trials_.config(record.config).name, record.failure, record.error, false});
+      if (options_.progress) options_.progress(done_, total_);
+    };
+    std::vector<TrialOrder> trials, untimed;
     for_each_trial(configs, [&](int p, int c, int r) {
       if (finished_.count({p, c, r})) {
         ++summary.skipped;
@@ -216,18 +243,33 @@ class Runner {
           summary.failures.push_back({trials_.config(c).name, failed->second.first, failed->second.second, true});
         return;
       }
-      trials.push_back({p, c, r});
+      TrialOrder trial{p, c, r};
+      if (const std::string from = trials_.config(c).time_limit_from(); !from.empty()) {
+        const auto it = measured_.find({p, ids_.at(from), r});
+        if (it == measured_.end())
+          throw aco::Error("configuration '" + trials_.config(c).name + "', problem '" + e_.problems[p].name +
+                           "', repetition " + std::to_string(r) + ": the trial of '" + from +
+                           "' whose time is its time limit is not in the database");
+        trial.time_limit_s = it->second.first;
+        // Stored as failed rather than run with some other limit, and not retried on resuming:
+        // the colony trial it depends on is not retried either.
+        if (!it->second.second.empty() || !(trial.time_limit_s > 0.0)) {
+          untimed.push_back(trial);
+          return;
+        }
+      }
+      trials.push_back(trial);
     });
     if (options_.progress) options_.progress(done_, total_);
-    executor_->run(trials_, trials, [&](const TrialRecord& record) {
-      db_->store(record);
-      if (e_.ablation_target) add_score(record);
-      ++done_;
-      ++summary.ran;
-      if (!record.error.empty())
-        summary.failures.push_back({trials_.config(record.config).name, record.failure, record.error, false});
-      if (options_.progress) options_.progress(done_, total_);
-    });
+    for (const TrialOrder& trial : untimed) {
+      const std::string& from = trials_.config(trial.config).time_limit_from();
+      const std::string& error = measured_.at({trial.problem, ids_.at(from), trial.repetition}).second;
+      finished(trials_.failed(trial, FailureKind::error,
+                              "not run: its time limit (" + std::string(kTimeLimitFrom) + ") is the time of '" + from +
+                                  "' on the same problem and repetition, and that trial " +
+                                  (error.empty() ? "measured no time" : "failed: " + error)));
+    }
+    executor_->run(trials_, trials, finished);
   }
 
   // A trial's place in the order shards split the configurations' trials.
@@ -251,6 +293,9 @@ class Runner {
   TrialExecutor* executor_ = nullptr;
   std::unique_ptr<ResultsDb> db_;
   std::vector<int> order_;  // configuration ids in the order they were added
+  std::map<std::string, int> ids_;  // by name
+  // (time, error) of every trial stored, by (problem, config id, repetition): a time-limit-from's times.
+  std::map<std::tuple<int, int, int>, std::pair<double, std::string>> measured_;
   std::set<std::tuple<int, int, int>> finished_;
   std::map<std::tuple<int, int, int>, std::pair<FailureKind, std::string>> failed_before_;
   std::vector<double> optimal_;  // per problem; < 0 unknown

@@ -72,9 +72,15 @@ TrialRecord record_from(const nlohmann::json& j) {
   return t;
 }
 
-nlohmann::json order_json(const TrialOrder& t) { return {t.problem, t.config, t.repetition}; }
+nlohmann::json order_json(const TrialOrder& t) {
+  nlohmann::json j = {t.problem, t.config, t.repetition};
+  if (t.time_limit_s > 0.0) j.push_back(t.time_limit_s);
+  return j;
+}
 
-TrialOrder order_from(const nlohmann::json& j) { return {j.at(0), j.at(1), j.at(2)}; }
+TrialOrder order_from(const nlohmann::json& j) {
+  return {j.at(0), j.at(1), j.at(2), j.size() > 3 ? j.at(3).get<double>() : 0.0};
+}
 
 nlohmann::json config_json(int id, const Configuration& c) { return {{"id", id}, {"name", c.name}, {"keys", c.keys}}; }
 

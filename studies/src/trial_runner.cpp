@@ -116,7 +116,8 @@ void TrialRunner::add_config(int id, const Configuration& c) {
     for (std::size_t p = 0; p < problems_->list.size(); ++p) {
       if (const auto& scenario = experiment_.problems[p].simulation) {
         try {
-          prepared->scenarios.emplace(static_cast<int>(p), aco::simulation::with_run_keys(*scenario, c, registry_));
+          prepared->scenarios.emplace(static_cast<int>(p),
+                                      aco::simulation::with_run_keys(*scenario, run_keys(c), registry_));
         } catch (const aco::Error& error) {
           throw aco::Error("problem '" + problems_->list[p].name + "': " + error.what());
         }
@@ -187,6 +188,7 @@ TrialRecord TrialRunner::plan(const TrialOrder& t) {
     graph = &problems_->list[t.problem].graphs.at(PreparedProblem::graph_key(run));
   }
   run.colony.seed = trial_seed(experiment_.seed, problem.name, t.repetition);
+  if (t.time_limit_s > 0.0) run.planner_parameters.set("time_limit", t.time_limit_s);
   const aco::PlanOutcome o = aco::plan(registry_, *graph, graph->node(problem.start), graph->node(problem.goal), run);
   TrialRecord r;
   r.problem = t.problem;
@@ -212,6 +214,8 @@ TrialRecord TrialRunner::plan(const TrialOrder& t) {
   r.elapsed_s = o.search.elapsed_s;
   r.walks = o.search.walks;
   r.properties = o.properties;
+  // So that the report can check that both sides of an equal-time pair had the same time.
+  if (t.time_limit_s > 0.0) r.properties["time_limit"] = t.time_limit_s;
   return r;
 }
 
@@ -274,7 +278,7 @@ bool reset_peak_memory() {
 std::string settings_json(const Configuration& config, const aco::RunSpec& run, const aco::PluginRegistry& registry) {
   nlohmann::json j;
   j["keys"] = config.keys;
-  j["run"] = nlohmann::ordered_json::parse(aco::to_json(run));
+  j["run"] = nlohmann::ordered_json::parse(run_json(config, run));
   // Name, version and hash of each slot's binary; not its file (a moved build is the same), nor its
   // build, which its hash implies (and databases stored before it was recorded must match).
   j["plugins"] = nlohmann::ordered_json::parse(aco::plugins_json(run, registry));

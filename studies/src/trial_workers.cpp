@@ -15,7 +15,7 @@ namespace aco::studies {
 using nlohmann::json;
 
 // Request: {"fingerprint": ... (a fresh worker's first), "configs": [{id, name, keys}...] (those
-// it has not been told yet), "trial": [problem, config, repetition]}. Reply: the record.
+// it has not been told yet), "trial": [problem, config, repetition(, time limit)]}. Reply: the record.
 struct TrialWorkers::Lane {
   aco::WorkerProcess process;
   std::set<int> known;  // configuration ids this worker was told

@@ -50,7 +50,23 @@ struct Configuration : aco::KeyedValues {
   // The keys resolved, once, when the file is loaded (empty for configurations made later, such
   // as the ablation path's flips, which resolve when they are added to the run).
   std::optional<aco::RunSpec> run;
+  // The configuration whose measured time, trial by trial, is this one's time limit (the key
+  // time-limit-from of an OMPL configuration); "" for none.
+  std::string time_limit_from() const;
 };
+
+// An OMPL configuration's key naming the configuration (or `colony`: the only colony one) whose
+// wall time on the same problem and repetition is each trial's ompl.time_limit. Not a run key:
+// resolve() leaves it out, the runner orders the trials by it.
+inline constexpr const char* kTimeLimitFrom = "time-limit-from";
+
+// The configuration with its run keys only (time-limit-from left out): what resolve_run() and a
+// scenario take.
+Configuration run_keys(const Configuration& config);
+
+// The resolved run as JSON (aco::to_json), with time-limit-from when the configuration has it:
+// what decides its trials, for the fingerprint and the stored settings.
+std::string run_json(const Configuration& config, const aco::RunSpec& run);
 
 struct Experiment {
   std::string name;

@@ -56,7 +56,8 @@
 //                   value (integer, real or text as SQLite stores it). The planners' own
 //                   ("ant_steps", "stopped_by" of aco; "evaluations" of ifwa and pso) and the
 //                   figures the run's plugins recorded, "<slot>/<plugin>.<name>" (Context::record(),
-//                   add()). Trials of format 4 or earlier have none.
+//                   add()); acobench's "time_limit" (s) of a trial of a time-limit-from
+//                   configuration, the limit it was given. Trials of format 4 or earlier have none.
 //   acobench_meta   key/value: format_version, experiment_name and fingerprint (a canonical text
 //                   from the caller naming everything that defines the trials; of a grown
 //                   experiment, of every configuration and problem it held: growth.hpp);

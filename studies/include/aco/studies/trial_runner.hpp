@@ -22,6 +22,9 @@ struct TrialOrder {
   int problem = 0;
   int config = 0;
   int repetition = 0;
+  // > 0: the OMPL run's time limit instead of the configuration's ompl.time_limit, the time its
+  // time-limit-from trial measured (recorded as the trial's property time_limit).
+  double time_limit_s = 0.0;
 };
 
 class TrialRunner {

@@ -15,6 +15,7 @@
 #include <set>
 #include <sstream>
 
+#include "aco/any_angle.hpp"
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "ifwa/fireworks.hpp"
@@ -36,6 +37,7 @@ struct Timing {
   double total_ms = 0;
   std::uint64_t total_steps = 0;
   aco::ColonyResult last;
+  std::vector<std::vector<aco::NodeId>> paths;  // per run, empty where it found none
 };
 
 // Runs the colony `repeats` times with seeds 1..repeats inside an arena of `threads` threads.
@@ -60,6 +62,7 @@ Timing time_runs(const aco::Graph& graph, aco::Cell start, aco::Cell goal, aco::
     t.total_ms += elapsed;
     t.total_steps += t.last.ant_steps;
     t.mean_length += t.last.length / repeats;
+    t.paths.push_back(t.last.path);
   }
   std::sort(ms.begin(), ms.end());
   t.median_ms = ms[ms.size() / 2];
@@ -370,6 +373,74 @@ bool time_large_plugins(aco::PluginRegistry& registry, const std::filesystem::pa
   return identical;
 }
 
+// Grid ants against line-of-sight walks (ColonySettings::walk_length, docs/any-angle-ants.md):
+// the recommended pipeline on a small and a 512x512 Moving AI map, 1 thread, seeds 1..N. An ant
+// step is one move of one ant: its transition rule over the node's candidates and the move,
+// backtracking included (ColonyResult::ant_steps). ns per ant step divides the whole run's time
+// by the run's ant steps, so the per-run set-up, the local search and the line-of-sight length of
+// each arrived walk are spread over them. Lengths: the colony's own (the taut length for
+// line-of-sight walks), the path's grid length, and the prune smoother's on the path, against the
+// exact any-angle optimum.
+void time_any_angle(aco::PluginRegistry& registry, const std::filesystem::path& shared,
+                    const std::vector<std::pair<std::string, int>>& problems, int repeats) {
+  const aco::Keys robust = robust_preset();
+  const aco::ColonySettings preset = aco::resolve_run(robust, registry).colony;
+  const auto prune = aco::instantiate(registry, aco::resolve_run({{"smoother", "prune"}}, registry).pipeline);
+  struct Variant {
+    const char* name;
+    aco::Neighbourhood neighbourhood;
+    aco::WalkLength walk_length;
+    int sight_limit;
+  };
+  const std::vector<Variant> variants = {
+      {"8, grid", aco::Neighbourhood::eight, aco::WalkLength::grid, 0},
+      {"16, grid", aco::Neighbourhood::sixteen, aco::WalkLength::grid, 0},
+      {"8, line-of-sight, no limit", aco::Neighbourhood::eight, aco::WalkLength::line_of_sight, 0},
+      {"8, line-of-sight, limit 32", aco::Neighbourhood::eight, aco::WalkLength::line_of_sight, 32},
+      {"16, line-of-sight, limit 32", aco::Neighbourhood::sixteen, aco::WalkLength::line_of_sight, 32},
+  };
+  for (const auto& [file, index] : problems) {
+    const auto scenarios = aco::load_scenarios((shared / file).string() + ".scen");
+    if (index < 0 || index >= int(scenarios.size())) throw aco::Error("scenario index out of range for " + file);
+    const aco::Scenario& s = scenarios[index];
+    const auto map = load(shared / file);
+    const auto optimum = aco::any_angle_optimum(*map, s.start, s.goal);
+    std::printf(
+        "\n== grid ants and line-of-sight walks on %s #%d (%dx%d), %s -> %s, robust preset, 1 thread, %d runs ==\n"
+        "any-angle optimum %.2f, octile optimum %.2f; lengths are means, \"prune\" is the prune smoother's\n",
+        file.c_str(), index, map->width(), map->height(), aco::to_string(s.start).c_str(),
+        aco::to_string(s.goal).c_str(), repeats, optimum ? optimum->length : -1.0, s.optimal_length);
+    std::printf("%-28s %12s %8s %10s %12s %10s %10s %10s %12s\n", "neighbourhood, walk length", "ns/ant step", "ratio",
+                "ms/run", "steps/run", "colony", "grid", "prune", "prune/opt.");
+    double base_ns = 0;
+    for (const Variant& v : variants) {
+      const aco::Graph graph = aco::build_graph(*map, {v.neighbourhood, false});
+      aco::ColonySettings settings = preset;
+      settings.walk_length = v.walk_length;
+      settings.sight_limit = v.sight_limit;
+      const Timing t = time_runs(graph, s.start, s.goal, registry, robust, settings, repeats, 1);
+      double grid = 0, pruned = 0;
+      int solved = 0;
+      aco::Context context;
+      context.graph = &graph;
+      for (const auto& path : t.paths) {
+        if (path.empty()) continue;
+        ++solved;
+        context.start = path.front();
+        context.goal = path.back();
+        grid += aco::path_length(graph, path);
+        pruned += aco::polyline_length(prune.smoother->smooth(context, path));
+      }
+      if (base_ns == 0) base_ns = t.ns_per_step;
+      const double n = std::max(solved, 1);
+      std::printf("%-28s %12.1f %8.2f %10.1f %12llu %10.2f %10.2f %10.2f %12.4f\n", v.name, t.ns_per_step,
+                  t.ns_per_step / base_ns, t.total_ms / repeats,
+                  static_cast<unsigned long long>(t.total_steps / repeats), t.mean_length, grid / n, pruned / n,
+                  optimum ? pruned / n / optimum->length : -1.0);
+    }
+  }
+}
+
 // A map drawn `factor` times larger: every cell a factor x factor block.
 aco::OccupancyGrid upsampled(const aco::Map& map, int factor) {
   aco::OccupancyGrid big(map.width() * factor, map.height() * factor, map.name() + " x" + std::to_string(factor));
@@ -452,7 +523,8 @@ void time_dwa(aco::PluginRegistry& registry, int repeats) {
   }
 }
 
-const std::set<std::string> kSections = {"classic", "fireworks", "terrain", "large", "large-plugins", "scale", "dwa"};
+const std::set<std::string> kSections = {"classic",       "fireworks", "terrain",   "large",
+                                         "large-plugins", "scale",     "any-angle", "dwa"};
 
 // "--only terrain,large" -> {"terrain", "large"}; empty text = every section.
 std::set<std::string> parse_sections(const std::string& text) {
@@ -462,7 +534,7 @@ std::set<std::string> parse_sections(const std::string& text) {
   for (std::string name; std::getline(in, name, ',');) {
     if (!kSections.count(name))
       throw aco::Error("--only: unknown section '" + name +
-                       "' (sections: classic, fireworks, terrain, large, large-plugins, scale, dwa)");
+                       "' (sections: classic, fireworks, terrain, large, large-plugins, scale, any-angle, dwa)");
     sections.insert(name);
   }
   return sections;
@@ -478,18 +550,24 @@ int main(int argc, char** argv) try {
   int large_repeats = 5;
   int large_plugin_repeats = 3;
   int scale_repeats = 3;
+  int any_angle_repeats = 5;
+  std::string small = "movingai/arena.map";
+  int small_index = 159;
   std::string only;
   po::options_description options("aco_bench options");
   options.add_options()("help,h", "print this help")("repeats", po::value(&repeats),
                                                      "runs per small-map measurement (seeds 1..N)")(
       "only", po::value(&only),
-      "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins, scale, dwa (default: all)")(
-      "maps", po::value(&maps), "folder the large map is in (default: the project's data/maps)")(
+      "comma-separated sections to run: classic, fireworks, terrain, large, large-plugins, scale, any-angle, dwa "
+      "(default: all)")("maps", po::value(&maps), "folder the large map is in (default: the project's data/maps)")(
       "large-map", po::value(&large), "512x512 map for the large-map sections, relative to --maps")(
       "large-scen-index", po::value(&large_index), "scenario of the large map (from its .scen file)")(
       "large-repeats", po::value(&large_repeats), "runs per thread count on the large map")(
       "large-plugin-repeats", po::value(&large_plugin_repeats), "runs per plugin in the large-plugins section")(
-      "scale-repeats", po::value(&scale_repeats), "runs on the 2048x2048 map in the scale section");
+      "scale-repeats", po::value(&scale_repeats), "runs on the 2048x2048 map in the scale section")(
+      "small-map", po::value(&small), "small map for the any-angle section, relative to --maps")(
+      "small-scen-index", po::value(&small_index), "scenario of the small map")(
+      "any-angle-repeats", po::value(&any_angle_repeats), "runs per variant and map in the any-angle section");
   po::variables_map vm;
   po::store(po::parse_command_line(argc, argv, options), vm);
   po::notify(vm);
@@ -497,7 +575,7 @@ int main(int argc, char** argv) try {
     std::cout << options;
     return 0;
   }
-  if (repeats < 1 || large_repeats < 1 || large_plugin_repeats < 1 || scale_repeats < 1)
+  if (repeats < 1 || large_repeats < 1 || large_plugin_repeats < 1 || scale_repeats < 1 || any_angle_repeats < 1)
     throw aco::Error("repeats must be >= 1");
   const std::set<std::string> sections = parse_sections(only);
   aco::PluginRegistry registry(aco::PluginRegistry::default_search_dirs());
@@ -511,6 +589,8 @@ int main(int argc, char** argv) try {
   if (sections.count("large-plugins"))
     identical = time_large_plugins(registry, maps, large, large_index, large_plugin_repeats) && identical;
   if (sections.count("scale")) time_scale(registry, maps, large, large_index, repeats, large_repeats, scale_repeats);
+  if (sections.count("any-angle"))
+    time_any_angle(registry, maps, {{small, small_index}, {large, large_index}}, any_angle_repeats);
   return identical ? 0 : 1;
 } catch (po::error& e) {
   std::cerr << "aco_bench: error: " << aco::program_options_message(e) << "\n";

@@ -72,6 +72,27 @@ std::size_t first_invalid(std::span<const double> values) {
   return i;
 }
 
+// A walk's length pulled taut as Theta* pulls its paths: the waypoint stays while line of sight
+// joins it to the next node of the walk, and moves to the node before where it fails (or where
+// the segment would be longer than `limit` cells, when limit > 0). Each segment is either in line
+// of sight or an edge, so the polyline is valid on the graph's corner rule.
+double sight_length(const Graph& g, std::span<const NodeId> nodes, int limit) {
+  const bool corner_cutting = g.options.corner_cutting;
+  const std::int64_t limit_squared = std::int64_t{limit} * limit;
+  double length = 0.0;
+  std::size_t waypoint = 0;
+  Cell from = g.cell(nodes[0]);
+  for (std::size_t k = 2; k < nodes.size(); ++k) {
+    const Cell to = g.cell(nodes[k]);
+    const std::int64_t dx = to.x - from.x, dy = to.y - from.y;
+    if ((limit == 0 || dx * dx + dy * dy <= limit_squared) && line_of_sight(*g.map, from, to, corner_cutting)) continue;
+    length += g.distance(nodes[waypoint], nodes[k - 1]);
+    waypoint = k - 1;
+    from = g.cell(nodes[waypoint]);
+  }
+  return length + g.distance(nodes[waypoint], nodes.back());
+}
+
 // A bad pheromone value found where the engine reads the field (an ant's step, the run's end), in
 // a run that checks the field there only. run_colony() then repeats the run checking after every
 // hook, which names the plugin, hook and iteration that wrote it (plugins are deterministic).
@@ -241,9 +262,22 @@ class Colony {
     for (EdgeId e : ant.edges) ant.length += g_.costs[e];
     // A walk that retraces the best path (already shortened) has nothing to gain: skip the work.
     // Not in the restart twin, whose walks must not depend on each other.
-    const bool retraces_best =
-        s_.null_model != NullModel::restarts && has_best_ && ant.length == best_.length && ant.nodes == best_.nodes;
-    if (local_search_ && scratch != nullptr && !retraces_best) shortener_.shorten(ant, scratch->walk);
+    const bool retraces_best = s_.null_model != NullModel::restarts && has_best_ && ant.length == best_grid_length_ &&
+                               ant.nodes == best_.nodes;
+    if (retraces_best) {
+      ant.length = best_.length;
+      return;
+    }
+    if (local_search_ && scratch != nullptr) shortener_.shorten(ant, scratch->walk);
+    if (s_.walk_length == WalkLength::line_of_sight) ant.length = sight_length(g_, ant.nodes, s_.sight_limit);
+  }
+
+  // A path of the other colony's walks, reversed: the same length, not pulled taut anew from
+  // the other end (which may differ), so that both colonies rank the joined walk alike.
+  void arrive_reversed(Ant& ant, double length) const {
+    if (s_.walk_length == WalkLength::grid) return arrive(ant, nullptr);
+    ant.arrived = true;
+    ant.length = length;
   }
 
   // The deadlock and update strategies learn from a finished iteration. Returns its best ant.
@@ -254,6 +288,11 @@ class Colony {
     if (iteration_best != nullptr && (!has_best_ || iteration_best->length < best_.length)) {
       best_ = *iteration_best;
       has_best_ = true;
+      best_grid_length_ = best_.length;
+      if (s_.walk_length != WalkLength::grid) {
+        best_grid_length_ = 0.0;
+        for (EdgeId e : best_.edges) best_grid_length_ += g_.costs[e];
+      }
     }
     if (s_.null_model != NullModel::none) return iteration_best;  // the twins learn nothing
     const Iteration view{ants, iteration_best, best()};
@@ -484,6 +523,7 @@ class Colony {
   HeuristicSpecs heuristic_;  // read once per run, after the heuristic's begin_run()
   std::uint64_t max_moves_ = std::numeric_limits<std::uint64_t>::max();
   Ant best_;
+  double best_grid_length_ = 0.0;  // the sum of best_'s steps, which best_.length need not be
   bool has_best_ = false;
 };
 
@@ -551,7 +591,7 @@ std::uint64_t construct_pair(const Graph& g, const Colony& forward, const Colony
   Ant back;
   back.nodes.push_back(joined.nodes.back());
   append_reversed(g, back, joined, joined.edges.size());
-  backward.arrive(back, nullptr);
+  backward.arrive_reversed(back, joined.length);
   fa = std::move(joined);
   ba = std::move(back);
   return moves;

@@ -36,6 +36,12 @@ const SettingsTable<ColonySettings>& colony_table() {
             "longest stretch of a walk, in nodes, that straighten replaces by one straight segment"),
       field("walk-limit", &S::walk_limit, "0:1e6",
             "an ant dies after this many times as many moves as the best path so far has steps (0 = no limit)"),
+      choice("walk-length", &S::walk_length, {"grid", "line-of-sight"}, {WalkLength::grid, WalkLength::line_of_sight},
+             "the length an arrived walk is ranked and rewarded by: the sum of its grid steps, or its length pulled "
+             "taut Theta*-style (a waypoint is kept while the walk's next cells are in line of sight of it)"),
+      field("sight-limit", &S::sight_limit, "0:1000000",
+            "line-of-sight walks: the longest segment, in cells, checked from a waypoint (0 = no limit); a longer "
+            "one ends a segment there"),
       choice(
           "null-model", &S::null_model, {"none", "no-learning", "restarts"},
           {NullModel::none, NullModel::no_learning, NullModel::restarts},

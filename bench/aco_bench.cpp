@@ -95,20 +95,20 @@ bool same_result(const aco::ColonyResult& a, const aco::ColonyResult& b) {
          a.pheromone == b.pheromone;
 }
 
-struct PruneTiming {
+struct SmootherTiming {
   double us_per_call = 0;
   std::size_t waypoints = 0;
 };
 
-// The prune smoother on a grid path, timed over `calls` calls.
-PruneTiming time_prune(aco::PluginRegistry& registry, const aco::Graph& graph, const std::vector<aco::NodeId>& path,
-                       int calls) {
-  const auto pipeline = aco::instantiate(registry, aco::resolve_run({{"smoother", "prune"}}, registry).pipeline);
+// A smoother on a grid path, timed over `calls` calls.
+SmootherTiming time_smoother(aco::PluginRegistry& registry, const std::string& smoother, const aco::Graph& graph,
+                             const std::vector<aco::NodeId>& path, int calls) {
+  const auto pipeline = aco::instantiate(registry, aco::resolve_run({{"smoother", smoother}}, registry).pipeline);
   aco::Context context;
   context.graph = &graph;
   context.start = path.front();
   context.goal = path.back();
-  PruneTiming t;
+  SmootherTiming t;
   const auto began = std::chrono::steady_clock::now();
   for (int i = 0; i < calls; ++i) t.waypoints = pipeline.smoother->smooth(context, path).size();
   t.us_per_call = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - began).count() / calls;
@@ -177,9 +177,12 @@ void time_classic(aco::PluginRegistry& registry, int repeats) {
   }
 
   // The smoother runs once per plan, on the best path: its cost is per call, not per ant step.
-  const PruneTiming small = time_prune(registry, classic, base.last.path, 1000);
-  std::printf("%-28s %9.2f us per call on the best map1 path (%zu cells -> %zu waypoints)\n", "smoother/prune",
-              small.us_per_call, base.last.path.size(), small.waypoints);
+  for (const char* smoother : {"prune", "taut"}) {
+    const SmootherTiming small = time_smoother(registry, smoother, classic, base.last.path, 1000);
+    std::printf("%-28s %9.2f us per call on the best map1 path (%zu cells -> %zu waypoints)\n",
+                ("smoother/" + std::string(smoother)).c_str(), small.us_per_call, base.last.path.size(),
+                small.waypoints);
+  }
 }
 
 struct TerrainPipeline {
@@ -287,9 +290,11 @@ bool time_large(aco::PluginRegistry& registry, const std::filesystem::path& shar
               two.last.length, one.median_ms / two.median_ms);
   const bool identical = same_result(one.last, two.last);
   if (one.last.solved) {
-    const PruneTiming prune = time_prune(registry, graph, one.last.path, 1);
-    std::printf("smoother/prune on this path: %.2f ms (%zu cells -> %zu waypoints)\n", prune.us_per_call / 1000,
-                one.last.path.size(), prune.waypoints);
+    for (const char* smoother : {"prune", "taut"}) {
+      const SmootherTiming t = time_smoother(registry, smoother, graph, one.last.path, 1);
+      std::printf("smoother/%s on this path: %.2f ms (%zu cells -> %zu waypoints)\n", smoother, t.us_per_call / 1000,
+                  one.last.path.size(), t.waypoints);
+    }
   }
   std::printf(
       "results with 1 and 2 threads identical (path, length, steps, curve, pheromone): %s; solved: %s, %d iterations\n",

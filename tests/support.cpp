@@ -45,6 +45,18 @@ aco::OccupancyGrid classic_map(int n) {
   return aco::read_matrix_map(in, file.string());
 }
 
+RandomProblem random_problem(std::mt19937& rng, int min_size, int max_size) {
+  std::uniform_int_distribution<int> size(min_size, max_size);
+  const int w = size(rng), h = size(rng);
+  RandomProblem p{random_grid(rng, w, h), {}, {}};
+  std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
+  p.start = {px(rng), py(rng)};
+  p.goal = {px(rng), py(rng)};
+  p.map.set_blocked(p.start, false);
+  p.map.set_blocked(p.goal, false);
+  return p;
+}
+
 aco::OccupancyGrid random_grid(std::mt19937& rng, int w, int h) {
   std::bernoulli_distribution blocked(std::uniform_real_distribution<double>(0.0, 0.4)(rng));
   aco::OccupancyGrid map(w, h, "random");

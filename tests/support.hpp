@@ -44,6 +44,14 @@ std::unique_ptr<Interface> make(const std::string& slot, const std::string& name
 // A w x h map whose cells are blocked with a density drawn uniformly from [0, 0.4).
 aco::OccupancyGrid random_grid(std::mt19937& rng, int w, int h);
 
+// A random_grid of a size drawn from [min_size, max_size] each way, with a start and a goal drawn
+// on it and made free.
+struct RandomProblem {
+  aco::OccupancyGrid map;
+  aco::Cell start, goal;
+};
+RandomProblem random_problem(std::mt19937& rng, int min_size, int max_size);
+
 // An independent statement of the segment rule of aco::line_of_sight, for checking it and the
 // paths smoothers produce: the cells whose interior the segment between the centres of a and b
 // meets, the side cells of every grid vertex it passes through, and whether it is free.

@@ -1,7 +1,10 @@
 #include "aco/path.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
+
+#include "aco/robot.hpp"
 
 namespace aco {
 namespace {
@@ -10,6 +13,20 @@ std::string to_text(const Eigen::Vector3d& p) {
   std::ostringstream text;
   text << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
   return text.str();
+}
+
+// Distance from the segment a-b to the unit square centred on c, when they do not cross: the
+// nearest pair is an end of the segment and the square, or a corner of the square and the segment.
+double distance_to_cell(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  double d = std::min(distance_to_square(a, c, 1.0), distance_to_square(b, c, 1.0));
+  const Eigen::Vector2d ab = b - a;
+  for (const Eigen::Vector2d& corner :
+       {Eigen::Vector2d(c.x() - 0.5, c.y() - 0.5), Eigen::Vector2d(c.x() + 0.5, c.y() - 0.5),
+        Eigen::Vector2d(c.x() - 0.5, c.y() + 0.5), Eigen::Vector2d(c.x() + 0.5, c.y() + 0.5)}) {
+    const double t = ab.squaredNorm() > 0.0 ? std::clamp((corner - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+    d = std::min(d, (a + t * ab - corner).norm());
+  }
+  return d;
 }
 
 }  // namespace
@@ -83,6 +100,35 @@ std::string waypoint_problem(const Graph& graph, NodeId start, NodeId goal, std:
     return "the last waypoint, " + to_text(points.back()) + ", is not the goal " + to_string(graph.cell(goal)) +
            " at " + to_text(graph.positions[goal]);
   return "";
+}
+
+std::vector<std::size_t> greedy_shortcuts(std::size_t n, std::size_t max_lookahead,
+                                          const std::function<bool(std::size_t, std::size_t)>& can_join) {
+  std::vector<std::size_t> kept;
+  if (n == 0) return kept;
+  const std::size_t last = n - 1;
+  kept.push_back(0);
+  std::size_t i = 0;
+  while (i < last) {
+    const std::size_t farthest = max_lookahead == 0 ? last : std::min(last, i + max_lookahead);
+    std::size_t next = i + 1;
+    for (std::size_t j = farthest; j >= i + 2; --j)
+      if (can_join(i, j)) {
+        next = j;
+        break;
+      }
+    kept.push_back(next);
+    i = next;
+  }
+  return kept;
+}
+
+bool keeps_clear(const Map& map, Cell a, Cell b, double clearance) {
+  const Eigen::Vector2d pa(a.x, a.y), pb(b.x, b.y);
+  for (int y = std::min(a.y, b.y) - 1; y <= std::max(a.y, b.y) + 1; ++y)
+    for (int x = std::min(a.x, b.x) - 1; x <= std::max(a.x, b.x) + 1; ++x)
+      if (!map.passable({x, y}) && distance_to_cell(pa, pb, Eigen::Vector2d(x, y)) < clearance) return false;
+  return true;
 }
 
 }  // namespace aco

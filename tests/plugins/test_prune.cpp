@@ -303,13 +303,8 @@ TEST_CASE("prune on random maps and random grid paths: the properties hold", "[p
   std::mt19937 rng(3);
   int paths = 0, shortcuts = 0, strictly_shorter = 0;
   for (int trial = 0; trial < 120; ++trial) {
-    std::uniform_int_distribution<int> size(4, 22);
-    const int w = size(rng), h = size(rng);
-    aco::OccupancyGrid map = test::random_grid(rng, w, h);
-    std::uniform_int_distribution<int> px(0, w - 1), py(0, h - 1);
-    const aco::Cell s{px(rng), py(rng)}, t{px(rng), py(rng)};
-    map.set_blocked(s, false);
-    map.set_blocked(t, false);
+    const auto [map, s, t] = test::random_problem(rng, 4, 22);
+    const int w = map.width(), h = map.height();
     for (auto n : {aco::Neighbourhood::four, aco::Neighbourhood::eight, aco::Neighbourhood::sixteen}) {
       for (bool cc : {false, true}) {
         INFO("trial " << trial << ", neighbourhood " << static_cast<int>(n) << ", corner cutting " << cc);

@@ -2,6 +2,8 @@
 // Measures of final paths (waypoint lists), independent of how they were planned.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cstddef>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -28,5 +30,16 @@ bool on_free_cell(const Graph& graph, const Eigen::Vector3d& point);
 // What is wrong with a smoother's waypoints for the path from start to goal, or "" if nothing:
 // each must be finite and on a free cell, the first the start's position and the last the goal's.
 std::string waypoint_problem(const Graph& graph, NodeId start, NodeId goal, std::span<const Eigen::Vector3d> points);
+
+// Greedy string pulling over a path of n nodes: from node 0, jump to the farthest later node j in
+// [i+2, min(n-1, i+max_lookahead)] (0 = unlimited) with can_join(i, j), scanning down from the
+// end, or to i+1 if there is none; repeat from there. The indices kept, 0 and n-1 included (just
+// {0} for n == 1, nothing for n == 0). Adjacent nodes are joined unchecked: they are a graph edge.
+std::vector<std::size_t> greedy_shortcuts(std::size_t n, std::size_t max_lookahead,
+                                          const std::function<bool(std::size_t, std::size_t)>& can_join);
+
+// Whether every blocked cell (outside the map included) is at least `clearance` from the segment
+// between the centres of cells a and b (exact segment-to-square distances, in cell units).
+bool keeps_clear(const Map& map, Cell a, Cell b, double clearance);
 
 }  // namespace aco

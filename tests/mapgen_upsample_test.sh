@@ -26,7 +26,7 @@ PY
 for index in 0 1 2 3; do
   expected="$(awk -F'\t' -v i=$((index + 2)) 'NR == i { print $9 }' "$out/arena-x3.map.scen")"
   "$acoplan" --planner astar --scen "$out/arena-x3.map.scen" --scen-index "$index" --json |
-    /usr/bin/python3 -c 'import json, sys; l = json.load(sys.stdin)["length"]; e = float(sys.argv[1]); assert abs(l - e) <= 1e-3 * e, (l, e)' "$expected"
+    /usr/bin/python3 -c 'import json, sys; l = json.load(sys.stdin)["grid_length"]; e = float(sys.argv[1]); assert abs(l - e) <= 1e-3 * e, (l, e)' "$expected"
 done
 # A bad factor is refused with a clear message.
 if "$mapgen" --upsample "$root/data/maps/movingai/arena.map" 0 "$out" 2> "$out.err"; then exit 1; fi

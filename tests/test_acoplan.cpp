@@ -70,8 +70,10 @@ TEST_CASE("acoplan --json reports every documented field", "[acoplan]") {
     length += std::hypot(dx, dy);
   }
   CHECK(j["grid_length"].get<double>() == Approx(length));
-  CHECK(j["length"].get<double>() == Approx(length));  // smoother "none"
-  CHECK(j["path"].size() == grid_path.size());
+  // robust's taut smoother: never longer than the grid path, never below the any-angle optimum.
+  CHECK(j["length"].get<double>() <= length + 1e-9);
+  CHECK(j["length"].get<double>() >= j["any_angle_length"].get<double>() - 1e-9);
+  CHECK(j["path"].size() <= grid_path.size());
   CHECK(j["grid_length"].get<double>() >= j["optimal_length"].get<double>() - 1e-9);
   CHECK(j["optimal_length"].get<double>() == Approx(34.3848).margin(1e-4));
   CHECK(j["convergence"].size() == 100);
@@ -118,7 +120,7 @@ TEST_CASE("acoplan plans Moving AI scenarios and the exact reference", "[acoplan
   CHECK(exact["convergence_time_s"].size() == 1);
   CHECK(j["grid_length"].get<double>() >= exact["grid_length"].get<double>() - 1e-9);
   const json classic = run_json({"--planner", "astar"});
-  CHECK(classic["length"].get<double>() == Approx(37.8995).margin(1e-4));
+  CHECK(classic["grid_length"].get<double>() == Approx(37.8995).margin(1e-4));
 }
 
 TEST_CASE("acoplan composes plugins and parameters from the command line and a config file", "[acoplan]") {
@@ -547,7 +549,9 @@ TEST_CASE("the shipped presets load and plan with the pipeline they document", "
   const json robust =
       run_json({"--config", (test::data_dir() / "presets/robust.ini").string(), "--scen", room, "--scen-index", "19"});
   CHECK(robust["solved"].get<bool>());
-  CHECK(robust["length"].get<double>() >= robust["optimal_length"].get<double>() - 1e-9);
+  CHECK(robust["grid_length"].get<double>() >= robust["optimal_length"].get<double>() - 1e-9);
+  CHECK(robust["length"].get<double>() >= robust["any_angle_length"].get<double>() - 1e-9);
+  CHECK(robust["config"]["smoother"] == "taut");
   CHECK(robust["config"]["heuristic"] == "progress");
   CHECK(robust["config"]["update"] == "acs");
   CHECK(robust["config"]["deadlock"] == "backtrack");

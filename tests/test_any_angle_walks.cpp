@@ -108,9 +108,8 @@ TEST_CASE("line-of-sight walks give bit-identical results for any thread count",
     const auto one = run_robust(graph, {1, 10}, {46, 30}, aco::WalkLength::line_of_sight, 5, 1, bidirectional);
     REQUIRE(one.solved);
     for (const int threads : {2, 4})
-      test::check_same_run(run_robust(graph, {1, 10}, {46, 30}, aco::WalkLength::line_of_sight, 5, threads,
-                                      bidirectional),
-                           one);
+      test::check_same_run(
+          run_robust(graph, {1, 10}, {46, 30}, aco::WalkLength::line_of_sight, 5, threads, bidirectional), one);
   }
 }
 
@@ -128,8 +127,8 @@ TEST_CASE("a sight limit cuts the taut segments: never shorter than without it, 
     s.sight_limit = limit;
     s.local_search = aco::LocalSearch::none;  // the same walks whatever the limit
     const auto pipeline = aco::instantiate(test::plugins(), spec.pipeline);
-    return aco::run_pipeline(test::plugins(), spec.pipeline, pipeline, graph, graph.node({1, 40}),
-                             graph.node({81, 40}), s);
+    return aco::run_pipeline(test::plugins(), spec.pipeline, pipeline, graph, graph.node({1, 40}), graph.node({81, 40}),
+                             s);
   };
   const auto unlimited = run(0), limited = run(4);
   REQUIRE(unlimited.solved);

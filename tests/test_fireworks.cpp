@@ -180,7 +180,7 @@ TEST_CASE("acoplan --planner ifwa on the paper004 map", "[fireworks][acoplan]") 
   CHECK(j.at("best_iteration").get<int>() >= 1);
   CHECK(j.at("config").at("ifwa.iterations") == 10);
   CHECK(j.at("config").at("ifwa.radius") == 3.0);
-  CHECK(j.at("length").get<double>() >= j.at("optimal_length").get<double>() - 1e-9);
+  CHECK(j.at("grid_length").get<double>() >= j.at("optimal_length").get<double>() - 1e-9);
   CHECK(j.at("grid_path").front() == nlohmann::json::array({0, 0}));
   CHECK(j.at("grid_path").back() == nlohmann::json::array({19, 19}));
   // The same run again: bit-identical.

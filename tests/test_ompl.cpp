@@ -402,8 +402,10 @@ TEST_CASE("acobench: time-limit-from errors name the key and what is missing", "
                     Contains("time-limit-from belongs to an OMPL configuration under 'configurations'"));
   // Another shard may run the colony's trial: refused, not waited for.
   const auto file = experiment(head + "configurations:\n  - {name: RRT*, planner: ompl, time-limit-from: colony}\n");
-  const auto r = run_acobench({"run", file.string(), "--shard", "1/2"});
+  const auto db = file.parent_path() / "shard.db";
+  const auto r = run_acobench({"run", file.string(), "--shard", "1/2", "--db", db.string()});
   CHECK(r.exit_code == 1);
+  CHECK_FALSE(std::filesystem::exists(db));
   CHECK_THAT(r.err, Contains("time-limit-from: a trial's time limit is the time another configuration took") &&
                         Contains("without --shard"));
 }

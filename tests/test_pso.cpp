@@ -145,7 +145,7 @@ TEST_CASE("acoplan --planner pso on the paper004 map", "[pso][acoplan]") {
   CHECK(j.at("convergence").size() == 30u);
   CHECK(j.at("evaluations") == 50 * 31);
   CHECK(j.at("config").at("pso.particles") == 50);
-  CHECK(j.at("length").get<double>() >= j.at("optimal_length").get<double>() - 1e-9);
+  CHECK(j.at("grid_length").get<double>() >= j.at("optimal_length").get<double>() - 1e-9);
 
   const auto summary = test::acoplan({"--scen", scen, "--planner", "pso", "--pso.iterations", "30", "--seed", "2"});
   CHECK_THAT(summary.out, Catch::Contains("planner:  pso") && Catch::Contains("evaluations"));

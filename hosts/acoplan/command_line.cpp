@@ -146,6 +146,7 @@ po::parsed_options config_options(const po::options_description& options, const 
   for (const auto& setting : settings) in_file.keys[setting.key] = setting.value;
   for (const char* slot : aco::kSlots)
     if (command_line.count(slot)) chosen.keys[slot] = command_line[slot].as<std::string>();
+  if (command_line.count("planner")) chosen.keys["planner"] = command_line["planner"].as<std::string>();
   const aco::Keys kept = aco::over_pipeline_file(in_file, chosen).keys;
   for (const auto& setting : settings) {
     if (!kept.count(setting.key)) continue;

@@ -402,6 +402,15 @@ KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
     c.keys[key] = value;
     c.origins[key] = changes.origins.count(key) ? changes.origins.at(key) : "";
   }
+  // A pipeline's smoother (robust's taut) is for grid paths: a continuous planner the changes
+  // choose takes the rest of the pipeline without it. Naming a smoother with it stays an error.
+  const auto planner = changes.keys.find("planner");
+  const auto known = aco::planners();
+  const auto continuous = [&](const std::string& name) {
+    return std::any_of(known.begin(), known.end(), [&](const Planner& p) { return p.name == name && p.continuous; });
+  };
+  if (planner != changes.keys.end() && !changes.keys.count("smoother") && continuous(planner->second))
+    std::erase_if(c.keys, [](const auto& kv) { return kv.first == "smoother" || kv.first.rfind("smoother.", 0) == 0; });
   return c;
 }
 

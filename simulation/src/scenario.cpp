@@ -149,7 +149,14 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
   const YAML::Node run = doc["run"];
   aco::KeyedValues keys = aco::yaml::read_run_keys(file, run, {"start", "goal"});
   // Naming no pipeline runs the recommended one, as acoplan does.
-  if (!aco::yaml::names_pipeline(run)) keys = aco::overlay(aco::preset_keys("robust"), keys);
+  // Without its smoother: robust's taut path grazes obstacle corners, which a robot with a body cannot
+  // follow; the local planner tracks the grid path (a scenario may name a smoother).
+  if (!aco::yaml::names_pipeline(run)) {
+    aco::KeyedValues robust = aco::preset_keys("robust");
+    std::erase_if(robust.keys,
+                  [](const auto& kv) { return kv.first == "smoother" || kv.first.rfind("smoother.", 0) == 0; });
+    keys = aco::overlay(robust, keys);
+  }
   for (const char* end : {"start", "goal"}) {
     if (!run[end]) fail(file, run, "'run' needs '" + std::string(end) + "' [x, y]");
     const aco::Cell c = aco::yaml::cell(file, run[end], end);

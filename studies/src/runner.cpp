@@ -40,6 +40,14 @@ class Runner {
   Runner(const Experiment& e, aco::PluginRegistry& registry, const RunOptions& options)
       : e_(e), registry_(registry), options_(options), trials_(e, registry), threads_(options.threads) {
     executor_ = options.executor ? options.executor : &threads_;
+    // Refused before the database is made: a shard run leaves no file behind.
+    const bool tied = std::any_of(e.configurations.begin(), e.configurations.end(),
+                                  [](const Configuration& c) { return !c.time_limit_from().empty(); });
+    if (tied && options.shard)
+      throw aco::Error(std::string(kTimeLimitFrom) +
+                       ": a trial's time limit is the time another configuration took on the same problem and "
+                       "repetition, which another shard may run: run this experiment without --shard (in one "
+                       "process or under MPI)");
     const aco::RunSpec base = e.baseline.run ? *e.baseline.run : resolve(e.baseline, e.problems, registry);
     std::vector<ProblemRecord> records;
     for (std::size_t i = 0; i < e.problems.size(); ++i) {
@@ -70,13 +78,6 @@ class Runner {
     failed_before_ = db_->failed();
     check_shard();
     for (const auto& r : records) optimal_.push_back(r.optimal_length);
-    const bool tied = std::any_of(e.configurations.begin(), e.configurations.end(),
-                                  [](const Configuration& c) { return !c.time_limit_from().empty(); });
-    if (tied && options.shard)
-      throw aco::Error(std::string(kTimeLimitFrom) +
-                       ": a trial's time limit is the time another configuration took on the same problem and "
-                       "repetition, which another shard may run: run this experiment without --shard (in one "
-                       "process or under MPI)");
     // The ablation's choices and the time limits of tied configurations need the results of
     // trials an earlier, interrupted run stored.
     if (e.ablation_target || tied)

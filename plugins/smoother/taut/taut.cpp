@@ -74,8 +74,7 @@ aco::Waypoints over_surface(const aco::Map& map, aco::Cell a, aco::Cell b) {
 // String pulling over the grid path's nodes: the farthest later node whose segment is in line of
 // sight (the graph's corner rule), keeps the clearance and is no longer over the surface than the
 // grid steps it replaces. The waypoints follow the surface between kept nodes.
-aco::Waypoints pull_over_nodes(const aco::Graph& g, std::span<const aco::NodeId> path, double clearance,
-                               bool surface) {
+aco::Waypoints pull_over_nodes(const aco::Graph& g, std::span<const aco::NodeId> path, double clearance, bool surface) {
   std::vector<double> along(path.size(), 0.0);  // grid length from path[0] to path[k]
   for (std::size_t k = 1; k < path.size(); ++k) along[k] = along[k - 1] + g.distance(path[k - 1], path[k]);
   const aco::Map& map = *g.map;
@@ -172,8 +171,8 @@ class TautSmoother final : public aco::Smoother {
     for (const aco::NodeId n : path) cells.push_back(g.cell(n));
     add_touched_cells(best, cells);
     for (int round = 0; round < p_.rounds; ++round) {
-      const auto found = shortest_in_corridor(*g.map, cells, p_.corridor_width, g.cell(path.front()),
-                                              g.cell(path.back()));
+      const auto found =
+          shortest_in_corridor(*g.map, cells, p_.corridor_width, g.cell(path.front()), g.cell(path.back()));
       if (!found || !(found->length < best_length * (1 - 1e-12))) break;
       best = found->waypoints;
       best_length = found->length;

@@ -394,10 +394,8 @@ std::string KeyedValues::origin(const std::string& key) const {
 KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
   KeyedValues c = base;
   for (const auto& [key, value] : changes.keys)
-    if (std::find(kSlots.begin(), kSlots.end(), key) != kSlots.end() && c.keys.count(key) && c.keys.at(key) != value) {
-      const std::string prefix = key + ".";  // clang 14 (the fuzz build) cannot capture a structured binding
-      std::erase_if(c.keys, [&prefix](const auto& kv) { return kv.first.rfind(prefix, 0) == 0; });
-    }
+    if (std::find(kSlots.begin(), kSlots.end(), key) != kSlots.end() && c.keys.count(key) && c.keys.at(key) != value)
+      drop_slot(c.keys, key);  // its choice is set again below
   for (const auto& [key, value] : changes.keys) {
     c.keys[key] = value;
     c.origins[key] = changes.origins.count(key) ? changes.origins.at(key) : "";
@@ -410,8 +408,13 @@ KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
     return std::any_of(known.begin(), known.end(), [&](const Planner& p) { return p.name == name && p.continuous; });
   };
   if (planner != changes.keys.end() && !changes.keys.count("smoother") && continuous(planner->second))
-    std::erase_if(c.keys, [](const auto& kv) { return kv.first == "smoother" || kv.first.rfind("smoother.", 0) == 0; });
+    drop_slot(c.keys, "smoother");
   return c;
+}
+
+void drop_slot(Keys& keys, const std::string& slot) {
+  const std::string prefix = slot + ".";
+  std::erase_if(keys, [&](const auto& kv) { return kv.first == slot || kv.first.rfind(prefix, 0) == 0; });
 }
 
 // Our own reader, not Boost.ProgramOptions' parse_config_file: its error for a bad line gives

@@ -153,8 +153,7 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
   // follow; the local planner tracks the grid path (a scenario may name a smoother).
   if (!aco::yaml::names_pipeline(run)) {
     aco::KeyedValues robust = aco::preset_keys("robust");
-    std::erase_if(robust.keys,
-                  [](const auto& kv) { return kv.first == "smoother" || kv.first.rfind("smoother.", 0) == 0; });
+    aco::drop_slot(robust.keys, "smoother");
     keys = aco::overlay(robust, keys);
   }
   for (const char* end : {"start", "goal"}) {

@@ -58,6 +58,9 @@ struct KeyedValues {
   std::string origin(const std::string& key) const;  // "file:line: ", or "" if unknown
 };
 
+// Removes a slot's choice and its parameters ("smoother", "smoother.*") from keys.
+void drop_slot(Keys& keys, const std::string& slot);
+
 // `changes` over `base`; another plugin for a slot drops the base's parameters of that slot.
 KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes);
 

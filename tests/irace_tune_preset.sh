@@ -2,14 +2,15 @@
 # tools/irace/tune-preset.sh prepares the presets' tuning on generated maps and irace accepts it
 # (--check: irace reads the scenario, the parameter file and the forbidden expressions, and runs
 # two configurations): robust's 69 instances from aco_mapgen --benchmark at 64 cells and more,
-# terrain's 24 from aco_terraingen with A*'s lengths, and only terrain's search has `search`.
+# terrain's 24 from aco_terraingen with A*'s lengths, only terrain's search has `search`, and
+# robust-any-angle has robust's instances and adds walk-length.
 #   tests/irace_tune_preset.sh ACOPLAN SOURCE_DIR WORK_DIR
 set -euo pipefail
 acoplan=$1 source=$2 work=$3
 fail() { echo "tune-preset: $*" >&2; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 export ACOPLAN="$acoplan"
-for preset in robust terrain; do
+for preset in robust robust-any-angle terrain; do
   "$source/tools/irace/tune-preset.sh" "$preset" "$work/$preset" --check > "$work/$preset.log" 2>&1 ||
     { cat "$work/$preset.log"; fail "$preset: tune-preset.sh failed"; }
   grep -q "Check successful" "$work/$preset.log" || { cat "$work/$preset.log"; fail "$preset: irace's check failed"; }
@@ -20,9 +21,13 @@ grep -q '/hall512-64-s4243.map.scen --scen-index 19$' "$work/robust/instances.tx
 [ "$(wc -l < "$work/terrain/instances.txt")" -eq 24 ] || fail "terrain: not 24 instances"
 grep -q '^search ' "$work/terrain/parameters.txt" || fail "terrain: the search is not tuned"
 ! grep -q '^search ' "$work/robust/parameters.txt" || fail "robust: the search is tuned"
+grep -q '^walk_length ' "$work/robust-any-angle/parameters.txt" || fail "robust-any-angle: walk-length is not tuned"
+! grep -q '^walk_length ' "$work/robust/parameters.txt" || fail "robust: walk-length is tuned"
+cmp -s "$work/robust/instances.txt" <(sed "s|/robust-any-angle/|/robust/|" "$work/robust-any-angle/instances.txt") ||
+  fail "robust-any-angle: not robust's instances"
 # Each terrain scenario's length is A*'s on its terrain.
 read -r _ map _ _ sx sy gx gy length < <(sed -n 2p "$work/terrain/maps/hills40-s4242.asc.scen")
 astar="$("$acoplan" --planner astar --map "$work/terrain/maps/$map" --start "$sx,$sy" --goal "$gx,$gy" --json |
   /usr/bin/python3 -c 'import json, sys; print(json.load(sys.stdin)["length"])')"
 [ "$astar" = "$length" ] || fail "terrain scenario length $length, A* $astar"
-echo "tune-preset.sh: robust and terrain prepared, irace's check passed"
+echo "tune-preset.sh: robust, robust-any-angle and terrain prepared, irace's check passed"

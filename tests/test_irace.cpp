@@ -116,8 +116,9 @@ TEST_CASE("acoplan --irace prints only the final length, the same as --json's", 
   CHECK(irace_cost(repeated) == Approx(json::parse(r.out)["summary"]["length"]["mean"].get<double>()).epsilon(1e-12));
 }
 
-TEST_CASE("acoplan --irace-cost gap and gap-penalised are the grid path's gap to A*'s optimum in %",
-          "[acoplan][irace]") {
+TEST_CASE(
+    "acoplan --irace-cost: gap is the grid path's gap to A*, any-angle-gap the final path's to the any-angle optimum",
+    "[acoplan][irace]") {
   // A short run that stays above the optimum: one ant, one iteration, no local search.
   const std::vector<std::string> args{
       "--scen",         (test::data_dir() / "maps/movingai/dao/arena2.map.scen").string(),
@@ -139,7 +140,27 @@ TEST_CASE("acoplan --irace-cost gap and gap-penalised are the grid path's gap to
   CHECK(irace_cost(with(quick, {"--irace-cost", "gap-penalised"})) == 0.0);
   const auto bad = test::acoplan(with(quick, {"--irace", "--irace-cost", "mean"}));
   CHECK(bad.exit_code == 1);
-  CHECK_THAT(bad.err, Contains("--irace-cost: 'mean' is not one of length,gap,gap-penalised"));
+  CHECK_THAT(
+      bad.err,
+      Contains("--irace-cost: 'mean' is not one of length,gap,gap-penalised,any-angle-gap,any-angle-gap-penalised"));
+  // any-angle-gap(-penalised): the final path's gap to the exact any-angle optimum; here the grid
+  // path's, which has 45-degree turns, and then taut's (the default pipeline's smoother), which
+  // finds the optimum on this problem.
+  const auto grid = with(args, {"--smoother", "none"});
+  const json unsmoothed = json::parse(test::acoplan(with(grid, {"--json"})).out);
+  const double any_angle_gap =
+      100.0 * (unsmoothed["length"].get<double>() / unsmoothed["any_angle_length"].get<double>() - 1.0);
+  REQUIRE(any_angle_gap > gap);
+  CHECK(irace_cost(with(grid, {"--irace-cost", "any-angle-gap"})) == Approx(any_angle_gap).epsilon(1e-12));
+  CHECK(irace_cost(with(grid, {"--irace-cost", "any-angle-gap-penalised"})) ==
+        Approx(any_angle_gap * (1.0 + any_angle_gap)).epsilon(1e-12));
+  REQUIRE(run["length"].get<double>() == Approx(run["any_angle_length"].get<double>()).epsilon(1e-12));
+  CHECK(irace_cost(with(args, {"--irace-cost", "any-angle-gap-penalised"})) == 0.0);
+  const auto terrain = test::acoplan({"--map", (test::data_dir() / "terrain/generated/hills40-s101.asc").string(),
+                                      "--start", "0,0", "--goal", "39,39", "--ants", "2", "--iterations", "2",
+                                      "--irace", "--irace-cost", "any-angle-gap"});
+  CHECK(terrain.exit_code == 1);
+  CHECK_THAT(terrain.err, Contains("no exact any-angle optimum (2D grid maps only)"));
   // --irace-effort X adds X times the ants' moves per walk over the optimal path's length.
   const double effort = run["ant_steps"].get<double>() / run["convergence_walks"].back().get<double>() /
                         run["optimal_length"].get<double>();

@@ -37,17 +37,26 @@ void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco
 // --irace: the mean cost over the runs, an unsolved run counting as kIraceUnsolvedCost, in the
 // shortest text that reads back as the same double (so a length equals --json's length).
 std::string irace_cost(const std::vector<aco::PlanRun>& runs, OutputSettings::IraceCost kind, double effort_weight) {
-  const auto quality = [kind](const aco::PlanRun& o) {
-    if (kind == OutputSettings::IraceCost::length) return o.length;
-    if (!o.optimal_length) throw aco::Error("--irace-cost gap: A* found no path where the colony found one");
-    if (o.search.path.empty())  // a continuous planner (ompl)
-      throw aco::Error(
-          "--irace-cost gap: the planner's path is continuous, with no grid path to compare with A*'s "
-          "(use --irace-cost length)");
-    // A path as long as A*'s may differ from it in the last bits (another order of the sums).
-    const double gap = std::max(0.0, 100.0 * (o.search.length / *o.optimal_length - 1.0));
+  using Cost = OutputSettings::IraceCost;
+  const bool any_angle = kind == Cost::any_angle_gap || kind == Cost::any_angle_gap_penalised;
+  const auto quality = [&](const aco::PlanRun& o) {
+    if (kind == Cost::length) return o.length;
+    double gap = 0.0;
+    if (any_angle) {
+      if (!o.any_angle_length)
+        throw aco::Error("--irace-cost any-angle-gap: the map has no exact any-angle optimum (2D grid maps only)");
+      gap = 100.0 * (o.length / *o.any_angle_length - 1.0);
+    } else {
+      if (!o.optimal_length) throw aco::Error("--irace-cost gap: A* found no path where the colony found one");
+      if (o.search.path.empty())  // a continuous planner (ompl)
+        throw aco::Error(
+            "--irace-cost gap: the planner's path is continuous, with no grid path to compare with A*'s "
+            "(use --irace-cost length or any-angle-gap)");
+      gap = 100.0 * (o.search.length / *o.optimal_length - 1.0);
+    }
+    // A path as long as the optimum may differ from it in the last bits (another order of the sums).
     if (gap < 1e-9) return 0.0;
-    return kind == OutputSettings::IraceCost::gap ? gap : gap * (1.0 + gap);
+    return kind == Cost::gap || kind == Cost::any_angle_gap ? gap : gap * (1.0 + gap);
   };
   // The ants' moves per walk over the optimal path's length: about 1 for walks as long as it.
   const auto effort = [](const aco::PlanRun& o) {

@@ -43,10 +43,13 @@ const aco::SettingsTable<OutputSettings>& output_settings_table() {
       aco::field("irace", &S::irace, "",
                  "for irace's target runner: print only the cost, the mean over --repeat of --irace-cost (1e9 for an "
                  "unsolved run), and exit 0 unless there is an error"),
-      aco::choice("irace-cost", &S::irace_cost, {"length", "gap", "gap-penalised"},
-                  {Cost::length, Cost::gap, Cost::gap_penalised},
+      aco::choice("irace-cost", &S::irace_cost,
+                  {"length", "gap", "gap-penalised", "any-angle-gap", "any-angle-gap-penalised"},
+                  {Cost::length, Cost::gap, Cost::gap_penalised, Cost::any_angle_gap, Cost::any_angle_gap_penalised},
                   "with --irace: length = the final path's length; gap = the grid path's gap to A*'s optimum in %; "
-                  "gap-penalised = that gap g plus its square, g (1 + g), which punishes the worst runs"),
+                  "gap-penalised = that gap g plus its square, g (1 + g), which punishes the worst runs; "
+                  "any-angle-gap(-penalised) = the same for the final path's gap to the exact any-angle optimum "
+                  "(2D grid maps; for continuous smoothers such as taut)"),
       aco::field("irace-effort", &S::irace_effort, "0:1e12",
                  "with --irace: add X times the colony's effort, its ant moves per walk over the optimal path's "
                  "length (about 1 for walks as long as the optimum): effort stands for time, deterministically"),

@@ -30,8 +30,9 @@ struct OutputSettings {
   bool irace = false;  // print only the cost (irace_cost, kIraceUnsolvedCost if unsolved) and exit 0
   // What a run costs irace. length: the final path's length; gap: the grid path's gap to A*'s
   // optimum in percent; gap_penalised: that gap g plus its square, g (1 + g), so that a
-  // configuration is judged by its worst runs too, not by its mean alone.
-  enum class IraceCost { length, gap, gap_penalised };
+  // configuration is judged by its worst runs too, not by its mean alone. any_angle_gap(_penalised):
+  // the same with the final path's gap to the exact any-angle optimum, for continuous smoothers.
+  enum class IraceCost { length, gap, gap_penalised, any_angle_gap, any_angle_gap_penalised };
   IraceCost irace_cost = IraceCost::length;
   // X times the ants' moves per walk over the optimal path's length is added to the cost, so
   // that irace weighs effort (which time follows) against quality, deterministically.

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Tunes a recommended pipeline with irace on generated training maps, never on the bundled ones:
-#   tools/irace/tune-preset.sh robust|terrain TUNING_DIR [IRACE_OPTIONS...]
+#   tools/irace/tune-preset.sh robust|robust-any-angle|terrain TUNING_DIR [IRACE_OPTIONS...]
 # robust, the 2D preset: `aco_mapgen --benchmark` maps of seed TUNE_SEED (default 4242; the
 # bundled ones are seed 1), every family at 64 cells a side and more (random, room, maze: 64 and
 # 512; cave and hall: 256 and 512), scenarios 9, 14 and 19 of each (the middle and the long half).
 # terrain, the height-map preset: aco_terraingen hills of 40, 64, 100 and 128 cells a side (three
 # seeds each from TUNE_SEED), corner to corner both ways.
+# robust-any-angle: robust's maps, judged by the final path: the preset's taut smoother runs and a
+# run costs its final path's gap to the exact any-angle optimum (--irace-cost
+# any-angle-gap-penalised); the search adds presets/any-angle.params (line-of-sight walks).
 # Both search presets/common.params (terrain adds presets/terrain.params) on top of
 # presets/fixed.ini, with acoplan --irace-cost gap-penalised (a run costs its gap g in % plus g
 # squared, so the worst runs count) --irace-effort TUNE_EFFORT (default 0.25 times the ants'
@@ -21,7 +24,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-usage="usage: $(basename "$0") robust|terrain TUNING_DIR [IRACE_OPTIONS...]"
+usage="usage: $(basename "$0") robust|robust-any-angle|terrain TUNING_DIR [IRACE_OPTIONS...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 preset="$1"
 dir="$2"
@@ -29,17 +32,24 @@ shift 2
 mkdir -p "$dir/maps"
 dir="$(cd "$dir" && pwd)"
 seed="${TUNE_SEED:-4242}"
+cost=gap-penalised
+final=()
 acoplan="${ACOPLAN:-$root/build/release/hosts/acoplan/acoplan}"
 : > "$dir/instances.txt"
 case "$preset" in
-  robust)
+  robust | robust-any-angle)
     [ -e "$dir/maps/hall512-64-s$((seed + 1)).map.scen" ] ||
       "$root/build/release/tools/aco_mapgen" --benchmark "$dir/maps" "$seed" > "$dir/maps.log"
     for scen in "$dir"/maps/*.map.scen; do
       [[ "$(basename "$scen")" =~ ^[a-z]+32- ]] && continue  # the 32x32 maps: every pipeline solves them
       for index in 9 14 19; do echo "$scen --scen-index $index" >> "$dir/instances.txt"; done
     done
-    cp "$here/presets/common.params" "$dir/search.params" ;;
+    cp "$here/presets/common.params" "$dir/search.params"
+    if [ "$preset" = robust-any-angle ]; then
+      cost=any-angle-gap-penalised
+      final=(--smoother taut)  # fixed.ini's smoother is none: the grid gap does not need one
+      cat "$here/presets/any-angle.params" >> "$dir/search.params"
+    fi ;;
   terrain)
     for size in 40 64 100 128; do
       for s in 0 1 2; do
@@ -62,11 +72,11 @@ case "$preset" in
       done
     done
     cat "$here/presets/common.params" "$here/presets/terrain.params" > "$dir/search.params" ;;
-  *) echo "tune-preset.sh: no search space for preset '$preset' (robust or terrain)" >&2; exit 2 ;;
+  *) echo "tune-preset.sh: no search space for preset '$preset' (robust, robust-any-angle or terrain)" >&2; exit 2 ;;
 esac
 # Copies in TUNING_DIR: the tuning reads nothing of the tree while it runs.
 cp "$here/presets/fixed.ini" "$dir/fixed.ini"
-export ACOPLAN_OPTIONS="--threads 1 --config $dir/fixed.ini --irace-cost gap-penalised --irace-effort ${TUNE_EFFORT:-0.25}"
+export ACOPLAN_OPTIONS="--threads 1 --config $dir/fixed.ini ${final[*]} --irace-cost $cost --irace-effort ${TUNE_EFFORT:-0.25}"
 export ACOPLAN_TIMEOUT="${ACOPLAN_TIMEOUT:-60}"
 exec "$here/run.sh" --params "$dir/search.params" --forbidden "$here/presets/budget.forbidden" "$dir" \
   --train-instances-dir / --train-instances-file "$dir/instances.txt" --test-type t-test "$@"

@@ -87,14 +87,14 @@ def test_ctrl_c_stops_a_plan_with_a_python_hook_after_fewer_iterations_than_aske
 
 
 def test_ctrl_c_stops_a_study_between_trials_keeping_those_finished(tmp_path):
-    trials = 20
+    trials = 10
     (tmp_path / "long.yaml").write_text(textwrap.dedent(f"""\
         name: long
         seed: 3
         repetitions: {trials}
         problems:
           - {{name: down, map: {MAP1}, start: [0, 0], goal: [19, 19]}}
-        settings: {{preset: ant-system, ants: 10, iterations: 20000}}
+        settings: {{preset: ant-system, ants: 10, iterations: 5000}}
         baseline: {{name: ant system}}
         """))
 

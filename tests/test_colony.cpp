@@ -157,6 +157,28 @@ TEST_CASE("a time limit stops the run at an iteration boundary with the best pat
   }
 }
 
+TEST_CASE("a host's between-iterations call may abandon a run, and leaves a run it lets finish unchanged", "[colony]") {
+  const auto map = test::classic_map(1);
+  const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
+  aco::ColonySettings s;
+  s.iterations = 20;
+  Baseline plain;
+  const auto without = aco::run_colony(graph, 0, graph.node({19, 19}), plain.pipeline(), s);
+  int calls = 0;
+  s.between_iterations = [&calls] { ++calls; };
+  Baseline counted;
+  test::check_same_run(aco::run_colony(graph, 0, graph.node({19, 19}), counted.pipeline(), s), without);
+  CHECK(calls == s.iterations - 1);  // not after the last: the run is over
+  struct Stop {};
+  calls = 0;
+  s.between_iterations = [&calls] {
+    if (++calls == 3) throw Stop{};
+  };
+  Baseline stopped;
+  CHECK_THROWS_AS(aco::run_colony(graph, 0, graph.node({19, 19}), stopped.pipeline(), s), Stop);
+  CHECK(calls == 3);
+}
+
 namespace {
 // Steps back one node whenever an ant is stuck.
 class BacktrackOne final : public aco::DeadlockPolicy {

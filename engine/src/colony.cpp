@@ -652,6 +652,7 @@ ColonyResult iterate(const ColonySettings& s, Clock::time_point started, std::sp
       result.stopped_by = StopReason::time;
       break;
     }
+    if (s.between_iterations && it + 1 < s.iterations) s.between_iterations();
   }
   for (Colony* colony : colonies) colony->check_final_pheromone();
   if (result.solved) result.path = colonies[0]->best()->nodes;

@@ -118,7 +118,8 @@ void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iterat
   } catch (const std::bad_alloc&) {
     throw OutOfMemoryError("out of memory in " + plugin + " in " + in + " (std::bad_alloc)");
   } catch (...) {
-    throw PluginError(plugin + " failed in " + in + ": " + describe_current_exception());
+    // With the plugin's own exception nested: the Python package raises a Python hook's from it.
+    std::throw_with_nested(PluginError(plugin + " failed in " + in + ": " + describe_current_exception()));
   }
 }
 

@@ -39,7 +39,8 @@ def run_experiment(file: Union[str, os.PathLike], database: Union[str, os.PathLi
     "invalid value", "error"); same_runs: pairs of configuration names that resolve to the same
     run. Failed trials do not raise (they are results: check ``failures``, as ``acobench run``
     exits 3 on them); a bad experiment file, or a database whose stored trials the file would
-    now run otherwise, raises aco.Error.
+    now run otherwise, raises aco.Error. Ctrl-C lets the trials running finish and be stored,
+    starts no other, and raises KeyboardInterrupt: call again to continue.
     """
     callback = _bar if progress is True else (progress or None)
     return _aco.run_experiment(os.fspath(file), os.fspath(database), int(threads), callback)

@@ -28,6 +28,8 @@ class Object {
   // object.method(context, field), or object.method(context, iteration, field) when `iteration`
   // is given, or object.method(context) when `field` is empty (begin_run). `field` goes over as a writable float64
   // array on its memory, which the method fills in place (or it returns a float64 array of the same length, copied in).
+  // An array on the engine's memory that Python still holds after the call is moved onto a
+  // read-only copy. A Python exception is thrown as an Error with the py::error_already_set nested.
   virtual void call(const char* method, const Context& context, const Iteration* iteration,
                     std::span<double> field) = 0;
   virtual bool has(const char* method) const = 0;

@@ -4,6 +4,7 @@
 #include <pybind11/embed.h>
 #include <pybind11/numpy.h>
 
+#include <exception>
 #include <mutex>
 #include <sstream>
 
@@ -44,19 +45,79 @@ std::string describe(const py::error_already_set& e) {
   return message + ")";
 }
 
-// A read-only view on data that lives in the engine; `owner` stands in for that memory, which
-// is valid during the call only.
-template <class T>
-py::array view(const T* data, std::vector<py::ssize_t> shape, const py::object& owner) {
-  py::array array(py::dtype::of<T>(), std::move(shape), {}, data, owner);
+void make_read_only(const py::array& array) {
   py::detail::array_proxy(array.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
-  return array;
 }
 
+// A read-only copy of `values`: the ants' walks, which the engine overwrites in the next iteration
+// (small beside the walks themselves).
 template <class T>
-py::array view(const std::vector<T>& values, const py::object& owner) {
-  return view(values.data(), {static_cast<py::ssize_t>(values.size())}, owner);
+py::array read_only_copy(const std::vector<T>& values) {
+  py::array copy(py::dtype::of<T>(), {static_cast<py::ssize_t>(values.size())}, values.data());  // no base: copied
+  make_read_only(copy);
+  return copy;
 }
+
+// The arrays one call lends Python on the engine's memory, which the engine reuses or frees after
+// the call: the field (tau, eta), too large to copy every iteration, and the graph's arrays. After
+// the call, settle() moves every lent array something still holds (the hook kept it, or the frames
+// of its exception hold it) onto a read-only copy of its values, so it reads what it held at the
+// end of the call and a write to it raises. A view made of a lent array (a slice, a reshape) cannot
+// be moved so: each lent array is a view of a hidden base array, which numpy makes the base of
+// every such view too, so that they are counted on it.
+class LentArrays {
+ public:
+  explicit LentArrays(const void* memory) : owner_(py::capsule(memory, "aco engine memory")) {}
+
+  template <class T>
+  py::array lend(const T* data, std::vector<py::ssize_t> shape, bool writable) {
+    py::array base(py::dtype::of<T>(), shape, data, owner_);
+    if (!writable) make_read_only(base);  // else numpy lets array.flags.writeable be set
+    py::array array(py::dtype::of<T>(), std::move(shape), data, base);  // base's flags
+    lent_.push_back({std::move(base), array});
+    return array;
+  }
+
+  template <class T>
+  py::array lend(const std::vector<T>& values) {
+    return lend(values.data(), {static_cast<py::ssize_t>(values.size())}, false);
+  }
+
+  // After the call, the GIL held and the objects made for it let go: true if a view made of a lent
+  // array is still held, which would read the engine's memory after the call.
+  bool settle() {
+    bool views_left = false;
+    for (auto& [base, array] : lent_) {
+      const bool held = array.ref_count() > 1;  // lent_ holds one reference
+      if (held) move_to_copy(array);
+      // The base's references: lent_, the array unless it moved, and the views made of it.
+      views_left |= base.ref_count() > (held ? 1 : 2);
+    }
+    lent_.clear();
+    return views_left;
+  }
+
+ private:
+  struct Loan {
+    py::array base, array;
+  };
+
+  // numpy has no call to change an array's memory: its fields are set as pybind11 sets its flags.
+  static void move_to_copy(py::array& array) {
+    std::vector<py::ssize_t> shape(array.shape(), array.shape() + array.ndim());
+    py::array copy(array.dtype(), shape, array.data());  // no base: copied
+    auto* fields = py::detail::array_proxy(array.ptr());
+    fields->data = static_cast<char*>(copy.mutable_data());
+    make_read_only(copy);
+    PyObject* lent_base = fields->base;
+    fields->base = copy.release().ptr();
+    Py_DECREF(lent_base);
+    make_read_only(array);
+  }
+
+  py::object owner_;
+  std::vector<Loan> lent_;
+};
 
 class PythonObject final : public Object {
  public:
@@ -80,23 +141,22 @@ class PythonObject final : public Object {
 
   void call(const char* method, const Context& context, const Iteration* iteration, std::span<double> field) override {
     py::gil_scoped_acquire gil;
+    LentArrays lent(field.data() ? static_cast<const void*>(field.data()) : context.graph);
     try {
-      // The arrays are views whose owner is a capsule: over the field, or (no field) the graph.
-      const bool has_field = field.data() != nullptr;
-      const py::object owner =
-          py::capsule(has_field ? static_cast<const void*>(field.data()) : context.graph, "aco engine memory");
-      const py::object c = make_context(context, owner);
-      if (!has_field) {
-        object_.attr(method)(c);
-        return;
-      }
-      py::array values(py::dtype::of<double>(), {static_cast<py::ssize_t>(field.size())}, {}, field.data(), owner);
-      const py::object result = iteration ? object_.attr(method)(c, make_iteration(*iteration, owner), values)
-                                          : object_.attr(method)(c, values);
-      write_back(method, result, values, field.size());
+      call_python(method, context, iteration, field, lent);
     } catch (py::error_already_set& e) {
-      throw Error(label_ + "." + method + "() raised " + describe(e));
+      // The exception's frames may hold views of the engine's memory: their locals go then.
+      if (lent.settle() && e.trace()) py::module_::import("traceback").attr("clear_frames")(e.trace());
+      // Nested, for the Python package to raise the exception itself (hosts print the message).
+      std::throw_with_nested(Error(label_ + "." + method + "() raised " + describe(e)));
+    } catch (...) {
+      lent.settle();
+      throw;
     }
+    if (lent.settle())
+      throw Error(label_ + "." + method +
+                  "() kept a view made of one of its arrays (a slice, a reshape, ...) past the call, where the "
+                  "engine reuses or frees that memory; keep a copy (np.array(...)) instead");
   }
 
   bool has(const char* method) const override {
@@ -111,20 +171,34 @@ class PythonObject final : public Object {
       if (PyCallable_Check(value.ptr())) value = value();
       return py::bool_(value);
     } catch (py::error_already_set& e) {
-      throw Error(label_ + "." + attribute + " raised " + describe(e));
+      std::throw_with_nested(Error(label_ + "." + attribute + " raised " + describe(e)));
     }
   }
 
  private:
-  py::object make_context(const Context& c, const py::object& owner) {
+  // The call itself: every Python object made for it is let go on return, before lent.settle().
+  void call_python(const char* method, const Context& context, const Iteration* iteration, std::span<double> field,
+                   LentArrays& lent) {
+    const py::object c = make_context(context, lent);
+    if (!field.data()) {
+      object_.attr(method)(c);
+      return;
+    }
+    const py::array values = lent.lend(field.data(), {static_cast<py::ssize_t>(field.size())}, true);
+    const py::object result =
+        iteration ? object_.attr(method)(c, make_iteration(*iteration), values) : object_.attr(method)(c, values);
+    write_back(method, result, field);
+  }
+
+  py::object make_context(const Context& c, LentArrays& lent) {
     const Graph& g = *c.graph;
     if (cells_.is_none() || width_ != g.width || height_ != g.height) make_cells(g);
     const py::object graph = namespace_(
         "width"_a = g.width, "height"_a = g.height, "node_count"_a = g.num_nodes(), "edge_count"_a = g.num_edges(),
-        "offsets"_a = view(g.offsets, owner), "targets"_a = view(g.targets, owner), "costs"_a = view(g.costs, owner),
-        "reverse"_a = g.reverse.empty() ? py::object(py::none()) : py::object(view(g.reverse, owner)),
-        "positions"_a = view(g.positions.empty() ? nullptr : g.positions.front().data(),
-                             {static_cast<py::ssize_t>(g.positions.size()), 3}, owner),
+        "offsets"_a = lent.lend(g.offsets), "targets"_a = lent.lend(g.targets), "costs"_a = lent.lend(g.costs),
+        "reverse"_a = g.reverse.empty() ? py::object(py::none()) : py::object(lent.lend(g.reverse)),
+        "positions"_a = lent.lend(g.positions.empty() ? nullptr : g.positions.front().data(),
+                                  {static_cast<py::ssize_t>(g.positions.size()), 3}, false),
         "cells"_a = cells_, "neighbourhood"_a = static_cast<int>(g.options.neighbourhood),
         "corner_cutting"_a = g.options.corner_cutting);
     return namespace_("graph"_a = graph, "start"_a = c.start, "goal"_a = c.goal, "ants"_a = c.ants,
@@ -141,31 +215,32 @@ class PythonObject final : public Object {
       out(n, 0) = cell.x;
       out(n, 1) = cell.y;
     }
-    py::detail::array_proxy(cells.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    make_read_only(cells);
     cells_ = std::move(cells);
     width_ = g.width;
     height_ = g.height;
   }
 
-  py::object make_ant(const Ant& ant, const py::object& owner) {
-    return namespace_("nodes"_a = view(ant.nodes, owner), "edges"_a = view(ant.edges, owner), "length"_a = ant.length,
-                      "arrived"_a = ant.arrived);
+  py::object make_ant(const Ant& ant) {
+    return namespace_("nodes"_a = read_only_copy(ant.nodes), "edges"_a = read_only_copy(ant.edges),
+                      "length"_a = ant.length, "arrived"_a = ant.arrived);
   }
 
-  py::object make_iteration(const Iteration& it, const py::object& owner) {
+  py::object make_iteration(const Iteration& it) {
     py::list ants(it.ants.size());
-    for (std::size_t k = 0; k < it.ants.size(); ++k) ants[k] = make_ant(it.ants[k], owner);
+    for (std::size_t k = 0; k < it.ants.size(); ++k) ants[k] = make_ant(it.ants[k]);
     // The best ants are the same Python objects as in ants when they are ants of this iteration.
     const auto find = [&](const Ant* ant) -> py::object {
       if (ant == nullptr) return py::none();
       if (ant >= it.ants.data() && ant < it.ants.data() + it.ants.size()) return ants[ant - it.ants.data()];
-      return make_ant(*ant, owner);
+      return make_ant(*ant);
     };
     return namespace_("ants"_a = ants, "best"_a = find(it.best), "best_so_far"_a = find(it.best_so_far));
   }
 
-  void write_back(const char* method, const py::object& result, py::array& values, std::size_t size) {
+  void write_back(const char* method, const py::object& result, std::span<double> field) {
     if (result.is_none()) return;
+    const std::size_t size = field.size();
     const std::string returned = label_ + "." + method + "() returned ";
     const std::string expected = "; return None (with the array filled in place) or a float64 array of " +
                                  std::to_string(size) + " values, one per edge";
@@ -176,7 +251,8 @@ class PythonObject final : public Object {
       throw Error(returned + "an array of shape " + text(result.attr("shape")) + expected);
     if (!py::isinstance<py::array_t<double>>(result))
       throw Error(returned + "an array of dtype " + text(array.dtype()) + expected);
-    if (array.data() != values.data()) values[py::ellipsis()] = array;
+    if (array.data() != field.data())
+      std::copy_n(py::array_t<double, py::array::c_style | py::array::forcecast>(array).data(), size, field.data());
   }
 
   std::string label_;  // module:attribute, as given
@@ -219,7 +295,8 @@ py::object find_object(const std::string& slot, const std::string& spec, const s
   try {
     py::module_::import("numpy");
   } catch (py::error_already_set& e) {
-    throw Error("the python plugins need numpy (on Debian, python3-numpy), which cannot be imported: " + describe(e));
+    std::throw_with_nested(
+        Error("the python plugins need numpy (on Debian, python3-numpy), which cannot be imported: " + describe(e)));
   }
   prepend_to_sys_path(path);
   py::object object;
@@ -231,7 +308,8 @@ py::object find_object(const std::string& slot, const std::string& spec, const s
       for (const auto& entry : py::module_::import("sys").attr("path")) message += " " + text(entry);
       throw Error(message + "; --" + slot + ".path adds folders)");
     }
-    throw Error(key + " '" + spec + "': importing module '" + module_name + "' raised " + describe(e));
+    std::throw_with_nested(
+        Error(key + " '" + spec + "': importing module '" + module_name + "' raised " + describe(e)));
   }
   std::string walked = module_name;
   for (const auto& name : split(spec.substr(colon + 1), '.')) {
@@ -247,7 +325,7 @@ py::object find_object(const std::string& slot, const std::string& spec, const s
     try {
       object = object();
     } catch (py::error_already_set& e) {
-      throw Error(key + " '" + spec + "': making the object, " + spec + "(), raised " + describe(e));
+      std::throw_with_nested(Error(key + " '" + spec + "': making the object, " + spec + "(), raised " + describe(e)));
     }
   }
   return object;

@@ -7,7 +7,11 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <exception>
+#include <future>
 #include <memory>
 #include <optional>
 
@@ -19,6 +23,7 @@
 #include "aco/pipeline.hpp"
 #include "aco/plan_report.hpp"
 #include "aco/plugin_catalog.hpp"
+#include "aco/plugin_error.hpp"
 #include "aco/presets.hpp"
 #include "aco/run_spec.hpp"
 #include "aco/studies/results_db.hpp"
@@ -86,6 +91,25 @@ py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain
   return py::make_tuple("grid", blocked, 1.0, map->name());
 }
 
+// How often a run looks for Ctrl-C: taking the GIL may wait for another Python thread.
+constexpr std::chrono::milliseconds kSignalCheckInterval{50};
+
+// Python's signal handlers, run at most every kSignalCheckInterval from the thread that calls
+// (they run in the main thread only): Ctrl-C throws their KeyboardInterrupt as an error_already_set.
+class SignalCheck {
+ public:
+  void operator()() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < kSignalCheckInterval) return;
+    last_ = now;
+    py::gil_scoped_acquire locked;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 std::string cell_text(const std::pair<int, int>& cell) {
   return std::to_string(cell.first) + "," + std::to_string(cell.second);
 }
@@ -107,7 +131,8 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
   else if (source.empty())
     source = file ? aco::default_preset(*file) : std::get<ArrayMap>(map).heights.size() ? "terrain" : "robust";
   const aco::KeyedValues pipeline = config.empty() ? aco::preset_keys(source) : aco::config_file_keys(config);
-  const aco::RunSpec run = aco::resolve_run(aco::over_pipeline_file(pipeline, changes).keys, registry(), "--");
+  aco::RunSpec run = aco::resolve_run(aco::over_pipeline_file(pipeline, changes).keys, registry(), "--");
+  run.colony.between_iterations = SignalCheck();  // Ctrl-C stops the colony after its iteration
 
   std::string json;
   {
@@ -159,17 +184,36 @@ py::dict run_experiment(const std::filesystem::path& file, const std::filesystem
   aco::studies::RunOptions options;
   options.database = database;
   options.threads = threads;
-  if (progress)
-    options.progress = [&progress](std::size_t done, std::size_t total) {
-      py::gil_scoped_acquire locked;
-      progress(done, total);
-    };
+  // Ctrl-C: the trials running finish and are stored, no other starts, then KeyboardInterrupt.
+  std::atomic<bool> interrupted = false;
+  struct Interrupted {};
+  options.progress = [&](std::size_t done, std::size_t total) {
+    if (interrupted) throw Interrupted{};
+    if (!progress) return;
+    py::gil_scoped_acquire locked;
+    progress(done, total);
+  };
   const aco::studies::Experiment experiment = aco::studies::load_experiment(file, registry());
   aco::studies::RunSummary summary;
+  // The trials run in a thread of their own, whichever threads they take: this one, Python's main
+  // thread, runs the signal handlers meanwhile.
+  std::optional<py::error_already_set> signal;
   {
     py::gil_scoped_release unlocked;
-    summary = aco::studies::run_experiment(experiment, registry(), options);
+    auto trials =
+        std::async(std::launch::async, [&] { return aco::studies::run_experiment(experiment, registry(), options); });
+    while (trials.wait_for(kSignalCheckInterval) != std::future_status::ready) {
+      py::gil_scoped_acquire locked;
+      if (!signal && PyErr_CheckSignals() != 0) {
+        signal.emplace();
+        interrupted = true;
+      }
+    }
+    try {
+      summary = trials.get();
+    } catch (const Interrupted&) {}
   }
+  if (signal) throw std::move(*signal);
   py::list failures;
   py::dict by_reason;
   for (const auto& f : summary.failures) {
@@ -283,11 +327,43 @@ py::dict read_trials(const std::filesystem::path& database) {
 
 using Sample = std::vector<double>;
 
+py::handle plugin_error_type;  // aco.PluginError
+
+// Raises the Python exception nested in `e` (a Python hook's, nested by python/bridge and the
+// plugin guard): KeyboardInterrupt, SystemExit and every other BaseException that is no Exception
+// as itself, any other as aco.PluginError(message) from it. False if none is nested.
+bool raise_python_cause(const std::exception& e, const std::string& message) {
+  try {
+    std::rethrow_if_nested(e);
+  } catch (const py::error_already_set& cause) {
+    PyErr_Restore(cause.type().inc_ref().ptr(), cause.value().inc_ref().ptr(), cause.trace().inc_ref().ptr());
+    if (cause.matches(PyExc_Exception)) py::raise_from(plugin_error_type.ptr(), message.c_str());
+    return true;
+  } catch (const std::exception& inner) {
+    return raise_python_cause(inner, message);
+  } catch (...) {}
+  return false;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_aco, m) {
   m.doc() = "aco's native module; use the package: import aco";
-  py::register_exception<aco::Error>(m, "Error", PyExc_ValueError);
+  const auto& error = py::register_exception<aco::Error>(m, "Error", PyExc_ValueError);
+  auto& plugin_error = py::register_exception<aco::PluginError>(m, "PluginError", error.ptr());
+  plugin_error.attr("__module__") = "aco";
+  plugin_error_type = plugin_error;
+  plugin_error.doc() =
+      "A plugin failed: a C++ plugin threw, or a Python plugin's hook raised an exception, which is\n"
+      "this error's __cause__ with its traceback (KeyboardInterrupt and SystemExit pass as themselves).";
+  // Tried before the two above: an Error holding a Python hook's exception (python/bridge).
+  py::register_exception_translator([](std::exception_ptr thrown) {
+    try {
+      std::rethrow_exception(thrown);
+    } catch (const aco::Error& e) {
+      if (!raise_python_cause(e, e.what())) throw;
+    }
+  });
 
   py::class_<ArrayMap>(m, "ArrayMap")
       .def(py::init([](py::object blocked, py::object heights, double cell_size, std::string name) {

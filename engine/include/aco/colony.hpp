@@ -2,6 +2,7 @@
 // The colony engine: iterations x ants, classic transition rule, tabu lists, ants built in
 // parallel with TBB and bit-identical for any thread count.
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <string>
@@ -67,6 +68,10 @@ struct ColonySettings {
   // (docs/any-angle-ants.md).
   int sight_limit = 32;
   NullModel null_model = NullModel::none;
+  // Not a key: what a host calls after every iteration but the last, on the thread that called
+  // run_colony(). It may throw to abandon the run (the Python package raises KeyboardInterrupt
+  // so on Ctrl-C); it must not change the run, which stays the same whether it is set or not.
+  std::function<void()> between_iterations;
 };
 
 // The colony's parameter table (ants, iterations, alpha, beta, seed, ...; defaults from the

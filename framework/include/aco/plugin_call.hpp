@@ -58,8 +58,8 @@ std::string describe_hook(const char* hook, int iteration);
 std::string describe(const PluginIdentity& who);
 
 // Throws the Error for the exception being handled, thrown by `who` in `hook` (iteration < 0:
-// none to name); a PluginFault, which names the plugin already, passes unchanged. Call inside a
-// catch block only.
+// none to name), with that exception nested (std::rethrow_if_nested); a PluginFault, which names
+// the plugin already, passes unchanged. Call inside a catch block only.
 [[noreturn]] void rethrow_from_plugin(const PluginIdentity& who, const char* hook, int iteration = -1);
 
 }  // namespace aco

@@ -57,7 +57,9 @@ struct TrialLimits {
 struct RunOptions {
   std::filesystem::path database;
   int threads = 0;  // 0 = all cores; results do not depend on it
-  // Called after every stored trial with (done, total); from one thread at a time.
+  // Called after every stored trial with (done, total); from one thread at a time. It may throw to
+  // stop the run (the Python package does on Ctrl-C): the trials running finish and are stored, no
+  // other starts, and the exception leaves run_experiment().
   std::function<void(std::size_t done, std::size_t total)> progress;
   // Called once, before the first trial runs.
   std::function<void(const TrialPlan&)> starting;

@@ -2,17 +2,17 @@
 # README.md's pip install of the package (python/pyproject.toml) into a fresh venv, offline, then
 # the examples run with the venv's python from another folder: the installed package with its own
 # libraries, plugins and data, nothing of the checkout's build tree.
-#   tests/python_install_test.sh SOURCE_DIR CMAKE_BUILD_DIR
+#   tests/python_install_test.sh SOURCE_DIR CMAKE_BUILD_DIR PYTHON
 # CMAKE_BUILD_DIR keeps pip's CMake build (ACO_CMAKE_BUILD_DIR) between runs, so that a later run
 # compiles only what changed; pip's own build folder is a temporary one, out of the checkout.
 set -euo pipefail
 unset ACO_PLUGIN_PATH PYTHONPATH
-source=$1 cmake_build=$2
+source=$1 cmake_build=$2 python=$3  # the interpreter the build's package is for
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "python install: $*" >&2; exit 1; }
 
-/usr/bin/python3 -m venv --system-site-packages "$work/v"
+"$python" -m venv --system-site-packages "$work/v"
 ACO_CMAKE_BUILD_DIR="$cmake_build" ACO_SETUPTOOLS_BUILD_DIR="$work/setuptools" \
   "$work/v/bin/pip" install --no-build-isolation --no-index "$source/python" > "$work/pip.log" 2>&1 ||
   { cat "$work/pip.log" >&2; fail "pip install failed"; }

@@ -1,6 +1,7 @@
 """Maps and single runs: aco.Map, aco.plan(), aco.astar() and their result."""
 from __future__ import annotations
 
+import functools
 import itertools
 import json
 import os
@@ -125,10 +126,19 @@ class Result:
                 f"{len(self.grid_path)} cells, {self.iterations} iterations, {self.time_ms:.1f} ms, preset {self.preset}>")
 
 
+@functools.lru_cache(maxsize=None)
+def _plain_keys() -> frozenset:
+    """The run keys of acoplan's tables without a scope ("local-search", "max-slope")."""
+    return frozenset(key["name"] for key in _aco.run_key_tables() if "." not in key["name"])
+
+
 def _key(name: str) -> str:
-    """A Python keyword as a run key: update_rho -> update.rho, max_slope -> max-slope."""
+    """A Python keyword as a run key: update_rho -> update.rho, max_slope -> max-slope, and
+    local_search -> local-search (a key of its own, not the local slot's "search")."""
     if "." in name or "-" in name:
         return name
+    if name.replace("_", "-") in _plain_keys():
+        return name.replace("_", "-")
     scope, _, rest = name.partition("_")
     if rest and scope in _SCOPES:
         return scope + "." + rest

@@ -22,6 +22,7 @@
 #include "aco/memory_limit.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/plan_report.hpp"
+#include "aco/planning.hpp"
 #include "aco/plugin_catalog.hpp"
 #include "aco/plugin_error.hpp"
 #include "aco/presets.hpp"
@@ -31,6 +32,7 @@
 #include "aco/studies/statistics.hpp"
 #include "aco/terrain.hpp"
 #include "aco/thread_limit.hpp"
+#include "aco/version.hpp"
 
 namespace py = pybind11;
 
@@ -157,6 +159,48 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
   return py::make_tuple(json, source);
 }
 
+// A parameter's default as its type's Python value (int, float, bool, str), as a run reads it.
+py::object typed_default(const aco::ParamSpec& spec) {
+  const aco::ParamValue value = aco::parse_value(spec, spec.default_value, spec.name);
+  return std::visit([](const auto& v) { return py::cast(v); }, value);
+}
+
+py::dict parameter_dict(const aco::ParamSpec& spec) {
+  return py::dict(py::arg("name") = spec.name, py::arg("type") = aco::to_string(spec.type),
+                  py::arg("default") = typed_default(spec), py::arg("range") = spec.range ? spec.range : "",
+                  py::arg("help") = spec.help);
+}
+
+// Every run key of acoplan's tables (problem, graph, planner, colony, the baseline planners', the
+// slots), each a parameter_dict() with its group; the plugins' own keys are in plugins().
+py::list run_key_tables() {
+  py::list keys;
+  const auto add = [&keys](std::span<const aco::ParamSpec> table, const std::string& group, const std::string& scope) {
+    for (const auto& spec : table) {
+      py::dict key = parameter_dict(spec);
+      key["name"] = scope + spec.name;
+      key["group"] = group;
+      keys.append(key);
+    }
+  };
+  add(std::span(&aco::planner_parameter(), 1), "planner", "");
+  add(aco::problem_parameters(), "problem", "");
+  add(aco::graph_parameters(), "graph", "");
+  add(aco::colony_parameters(), "colony", "");
+  for (const auto& planner : aco::planners_with_parameters())
+    add(aco::planner_parameters(planner), planner, planner + ".");
+  for (const char* slot : aco::kSlots) {
+    std::string plugins;
+    for (const auto& name : registry().names(slot)) plugins += (plugins.empty() ? "" : ",") + name;
+    keys.append(py::dict(
+        py::arg("name") = slot, py::arg("type") = "categorical", py::arg("default") = aco::default_plugin(slot),
+        py::arg("range") = plugins,
+        py::arg("help") = std::string(slot) + " plugin (range: those found), or a Python object with the slot's method",
+        py::arg("group") = "slot"));
+  }
+  return keys;
+}
+
 py::list plugins() {
   py::list list;
   for (const auto& file : registry().available()) {
@@ -170,9 +214,7 @@ py::list plugins() {
     py::list parameters;
     if (file.unusable.empty())
       for (const auto& spec : registry().load(file.slot, file.name).parameters())
-        parameters.append(py::dict(py::arg("name") = spec.name, py::arg("type") = aco::to_string(spec.type),
-                                   py::arg("default") = spec.default_value,
-                                   py::arg("range") = spec.range ? spec.range : "", py::arg("help") = spec.help));
+        parameters.append(parameter_dict(spec));
     plugin["parameters"] = parameters;
     list.append(plugin);
   }
@@ -349,7 +391,13 @@ bool raise_python_cause(const std::exception& e, const std::string& message) {
 
 PYBIND11_MODULE(_aco, m) {
   m.doc() = "aco's native module; use the package: import aco";
-  const auto& error = py::register_exception<aco::Error>(m, "Error", PyExc_ValueError);
+  m.attr("__version__") = aco::version();
+  // Raised here, but at home in the package: tracebacks, help() and pickle say aco.Error.
+  auto error = py::register_exception<aco::Error>(m, "Error", PyExc_ValueError);
+  error.attr("__module__") = "aco";
+  error.attr("__doc__") =
+      "A bad run key or value, map, cell, plugin, preset, experiment file or database, with the message the "
+      "command line (acoplan, acobench) gives. A ValueError: except ValueError catches it too.";
   auto& plugin_error = py::register_exception<aco::PluginError>(m, "PluginError", error.ptr());
   plugin_error.attr("__module__") = "aco";
   plugin_error_type = plugin_error;
@@ -378,6 +426,7 @@ PYBIND11_MODULE(_aco, m) {
   m.def("plan", &plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::arg("keys"), py::arg("preset"),
         py::arg("config"), py::arg("threads"));
   m.def("plugins", &plugins);
+  m.def("run_key_tables", &run_key_tables);
   // The prefixes of parameter keys ("update" of "update.rho", "ifwa" of "ifwa.radius").
   m.def("key_scopes", [] {
     std::vector<std::string> scopes(aco::kSlots.begin(), aco::kSlots.end());

@@ -11,7 +11,7 @@ def test_every_bundled_plugin_is_listed_with_its_parameter_table():
     plugins = {(p["slot"], p["name"]): p for p in aco.plugins()}
     assert ("update", "max_min") in plugins and ("heuristic", "direction") in plugins
     rho = next(p for p in plugins[("update", "ant_system")]["parameters"] if p["name"] == "rho")
-    assert rho["type"] == "real" and rho["default"] == "0.3" and rho["range"] == "0:1"
+    assert rho["type"] == "real" and rho["default"] == 0.3 and rho["range"] == "0:1"
 
 
 def test_describe_is_acoplans(build):

@@ -8,8 +8,10 @@ namespace aco {
 #define ACO_COMPILER "GCC " __VERSION__
 #endif
 
+std::string version() { return ACO_VERSION; }
+
 std::string version_text(const std::string& program) {
-  return program + " " ACO_VERSION " (commit " ACO_COMMIT ", " ACO_BUILD_TYPE " build, " ACO_COMPILER ")";
+  return program + " " + version() + " (commit " ACO_COMMIT ", " ACO_BUILD_TYPE " build, " ACO_COMPILER ")";
 }
 
 }  // namespace aco

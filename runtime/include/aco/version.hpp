@@ -8,5 +8,7 @@ namespace aco {
 // commit the build was configured at ("unknown" outside a git checkout), the CMake build type and
 // the compiler.
 std::string version_text(const std::string& program);
+// The project version alone, "0.1.0": what version_text() starts with (Python's aco.__version__).
+std::string version();
 
 }  // namespace aco

@@ -5,8 +5,9 @@
     result = aco.plan(grid, (0, 0), (19, 19), update="max_min", update_rho=0.1)
     result.path, result.length, result.gap_percent
 
-Maps: aco.Map (numpy arrays, map files). Runs: aco.plan(), aco.astar(). Plugins: aco.plugins(),
-aco.describe(), aco.add_plugin_dir(), aco.presets(); a slot may be a Python object (update=MyUpdate()),
+Maps: aco.Map (numpy arrays, map files), aco.load_scenarios() (Moving AI .scen). Runs: aco.plan(),
+aco.astar(). Plugins: aco.plugins(), aco.describe(), aco.add_plugin_dir(), aco.presets(); a slot may
+be a Python object (update=MyUpdate()),
 run inside the native colony. Studies: aco.run_experiment(), aco.read_database(); aco.stats has the
 report's statistics. Errors raise aco.Error (a ValueError) with the command line's message.
 """
@@ -16,11 +17,11 @@ import os
 from typing import Union
 
 from . import _aco, stats
-from ._planning import Error, Map, Result, astar, plan
+from ._planning import Error, Map, Result, Scenario, astar, load_scenarios, plan
 from ._studies import read_database, run_experiment
 
-__all__ = ["Error", "Map", "Result", "plan", "astar", "plugins", "describe", "add_plugin_dir", "presets",
-           "run_experiment", "read_database", "stats"]
+__all__ = ["Error", "Map", "Result", "Scenario", "plan", "astar", "load_scenarios", "plugins", "describe",
+           "add_plugin_dir", "presets", "run_experiment", "read_database", "stats"]
 
 _extra_dirs: list = []
 

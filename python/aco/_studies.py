@@ -42,7 +42,7 @@ def run_experiment(file: Union[str, os.PathLike], database: Union[str, os.PathLi
     now run otherwise, raises aco.Error.
     """
     callback = _bar if progress is True else (progress or None)
-    return _aco.run_experiment(os.fspath(file), os.fspath(database), int(threads), callback)
+    return _aco.run_experiment(os.fspath(file), "", os.fspath(database), int(threads), callback)
 
 
 def read_database(database: Union[str, os.PathLike], *, config_columns: bool = True):

@@ -291,10 +291,14 @@ def _python_spelling() -> ContextManager[None]:
     return _reworded(lambda message: _OPTION.sub(_spelled, message))
 
 
-def _python_slots() -> List[str]:
-    """The slots a Python object can fill: those with a usable python bridge plugin."""
-    found = {p["slot"] for p in _aco.plugins() if p["name"] == "python" and not p["unusable"]}
-    return [slot for slot in _SLOTS if slot in found]
+def _takes_python_objects(slot: str) -> bool:
+    """Whether the slot has a python bridge plugin (asking for that plugin alone: listing them all
+    would load every plugin)."""
+    try:
+        _aco.describe(f"{slot}/python")
+    except Error:
+        return False
+    return True
 
 
 class _LiveObjects:
@@ -303,7 +307,6 @@ class _LiveObjects:
 
     def __init__(self) -> None:
         self.names: List[str] = []
-        self.python_slots: Optional[List[str]] = None
 
     def keys(self, keys: Mapping[str, Any], name: str) -> dict:
         """``keys`` with each slot's Python object replaced by the python plugin, which reaches
@@ -313,11 +316,10 @@ class _LiveObjects:
             value = keys.get(slot)
             if value is None or isinstance(value, (str, Mapping)):  # a plugin's name, or YAML's {plugin: ...}
                 continue
-            if self.python_slots is None:
-                self.python_slots = _python_slots()
-            if slot not in self.python_slots:
+            if not _takes_python_objects(slot):
+                python_slots = [s for s in _SLOTS if _takes_python_objects(s)]
                 raise Error(f"{slot}={value!r}: a Python object can fill the slots "
-                            f"{', '.join(self.python_slots) or '(none: the python plugins are missing)'} only; "
+                            f"{', '.join(python_slots) or '(none: the python plugins are missing)'} only; "
                             f"give the {slot} plugin's name (aco.plugins() lists them)")
             attribute = f"{name}_{slot}"
             if hasattr(_live, attribute):

@@ -269,7 +269,7 @@ _OPTION = re.compile(r"(?<![\w-])('?)--([a-z](?:[\w.-]*[a-z0-9])?)('?)(:?)")
 def _spelled(match: "re.Match[str]") -> str:
     opening, key, closing, colon = match.groups()
     keyword = _keyword(key)
-    if opening and closing or colon:
+    if (opening and closing) or colon:
         return f"{opening}{keyword}{closing}{colon}"
     return f"{opening}{keyword}={closing}"
 

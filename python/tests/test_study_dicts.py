@@ -59,6 +59,19 @@ def test_a_configuration_may_hold_a_python_plugin_object(tmp_path):
     assert aco.run_experiment(again, tmp_path / "live.db", progress=False)["skipped"] == 4
 
 
+def test_a_configuration_given_a_class_makes_an_object_per_trial(tmp_path):
+    made = []
+
+    class Counted(AntSystem):
+        def __init__(self):
+            super().__init__()
+            made.append(self)
+
+    experiment = {**EXPERIMENT, "configurations": [{"name": "counted", "update": Counted}]}
+    assert aco.run_experiment(experiment, tmp_path / "class.db", progress=False)["ran"] == 4
+    assert len(made) == EXPERIMENT["repetitions"]  # the trials of "counted"; the baseline's are native
+
+
 @pytest.mark.parametrize("change, message", [
     ({"configurations": [{"update": "max_min"}]}, "the experiment dict: every configuration needs a 'name'"),
     ({"configurations": [{"name": "x", "deadlock": AntSystem()}]}, "a Python object can fill the slots"),

@@ -406,9 +406,11 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
 
 
 def _check_threads(threads: Any) -> None:
-    """acoplan's range for --threads."""
-    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or not 0 <= threads <= 1024:
-        raise Error(f"threads: {threads!r} is outside the range [0, 1024] (0 = all cores)")
+    """acoplan's checks of --threads."""
+    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)):
+        raise Error(f"threads: {threads!r} is not a whole number")
+    if not 0 <= threads <= 1024:
+        raise Error(f"threads: {threads} is outside the range [0, 1024] (0 = all cores)")
 
 
 def astar(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], goal: Sequence[int],

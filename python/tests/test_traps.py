@@ -85,6 +85,7 @@ def test_a_terrain_files_cell_size_comes_with_the_result():
     (dict(max_slop=3), "did you mean 'max_slope'?"),
     (dict(threads=-1), "threads: -1 is outside the range [0, 1024]"),
     (dict(threads=2000), "threads: 2000 is outside the range [0, 1024]"),
+    (dict(threads=0.5), "threads: 0.5 is not a whole number"),
     (dict(max_memory="1K"), "max_memory"),
     (dict(max_memory="lots"), "max_memory: 'lots'"),
 ])

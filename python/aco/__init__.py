@@ -5,22 +5,21 @@
     result = aco.plan(grid, (0, 0), (19, 19), update="max_min", update_rho=0.1)
     result.path, result.length, result.gap_percent
 
-Maps: aco.Map (numpy arrays, map files). Runs: aco.plan(), aco.astar(); their keywords:
-aco.run_keys(). Plugins: aco.plugins(), aco.describe(), aco.add_plugin_dir(), aco.presets(); a
-slot may be a Python object (update=MyUpdate()), run inside the native colony. Studies:
-aco.run_experiment(), aco.read_database(); aco.stats has the report's statistics. Errors raise
-aco.Error (a ValueError) with the command line's message; a plugin's failure raises
-aco.PluginError (an aco.Error), from a Python hook's own exception. aco.__version__ is the
-framework's.
+Maps: aco.Map (numpy arrays, map files), aco.load_scenarios() (Moving AI .scen). Runs: aco.plan(),
+aco.astar(); their keywords: aco.run_keys(). Plugins: aco.plugins(), aco.describe(),
+aco.add_plugin_dir(), aco.presets(); a slot may be a Python object (update=MyUpdate()), run inside
+the native colony. Studies: aco.run_experiment(), aco.read_database(); aco.stats has the report's
+statistics. Errors raise aco.Error (a ValueError) with the command line's message; a plugin's
+failure raises aco.PluginError (an aco.Error), from a Python hook's own exception.
+aco.__version__ is the framework's.
 """
 from . import _aco, stats
 from ._aco import PluginError
 from ._catalog import add_plugin_dir, describe, plugins, presets, run_keys
-from ._planning import Error, Map, Result, astar, plan
+from ._planning import Error, Map, Result, Scenario, astar, load_scenarios, plan
 from ._studies import read_database, run_experiment
 
 __version__: str = _aco.__version__
 
-__all__ = ["Error", "PluginError", "Map", "Result", "plan", "astar", "run_keys", "plugins", "describe",
-           "add_plugin_dir", "presets",
-           "run_experiment", "read_database", "stats"]
+__all__ = ["Error", "PluginError", "Map", "Result", "Scenario", "plan", "astar", "load_scenarios", "run_keys",
+           "plugins", "describe", "add_plugin_dir", "presets", "run_experiment", "read_database", "stats"]

@@ -1,43 +1,62 @@
-"""Maps and single runs: aco.Map, aco.plan(), aco.astar() and their result."""
+"""Maps and single runs: aco.Map, aco.plan(), aco.astar(), aco.load_scenarios() and their results."""
 from __future__ import annotations
 
+import contextlib
+import dataclasses
 import functools
 import itertools
 import json
+import operator
 import os
-from typing import Any, Mapping, Optional, Sequence, Tuple, Union
+import re
+from typing import Any, Callable, ContextManager, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _aco, _live
 
 Cell = Tuple[int, int]
+Error = _aco.Error
 _SCOPES = frozenset(_aco.key_scopes())
 _SLOTS = ("init", "heuristic", "update", "deadlock", "smoother", "local")
+_KINDS = ("occupancy", "terrain")
 _live_names = itertools.count()
+# The ESRI grid's usual marker of a cell without data; Map.save() picks another if a height is it.
+_NODATA = -9999.0
 
 
 class Map:
     """A map to plan on: an occupancy grid or a terrain of heights.
 
-    Make one from a numpy array with ``aco.Map(array)``: a bool or integer array is an occupancy
-    grid (nonzero = blocked), a float array holds terrain heights (NaN = no data) with
-    ``cell_size`` the horizontal size of a cell. Rows are y from the top, columns x: cell (x, y)
-    is ``array[y, x]``, as on the command line. Or load a file with ``aco.Map.load(path)``.
+    Make one from a numpy array with ``aco.Map(array)``. ``kind="occupancy"``: every cell that is
+    not ``free`` (default 0) is blocked; ``kind="terrain"``: the values are heights (NaN = no data)
+    with ``cell_size`` the horizontal size of a cell, in the heights' units. Without ``kind``, a
+    bool or integer array is an occupancy grid and a float array a terrain, but a float array of
+    only 0 and 1 is refused: it could be either, so say which. Rows are y from the top, columns
+    x: cell (x, y) is ``array[y, x]``, as on the command line. ``map.array`` holds the cells: True
+    = blocked for an occupancy grid, the heights for a terrain.
+
+    Load a map file with ``aco.Map.load(path)``; write one with ``map.save(path)``.
     """
 
-    def __init__(self, array: Any, cell_size: float = 1.0, name: Optional[str] = None):
+    def __init__(self, array: Any, cell_size: float = 1.0, name: Optional[str] = None, *,
+                 kind: Optional[str] = None, free: Any = None):
+        if isinstance(array, (str, bytes, os.PathLike)):
+            raise Error(f"aco.Map takes an array; load the map file {os.fsdecode(array)!r} with aco.Map.load(path)")
         array = np.asarray(array)
         if array.ndim != 2 or array.shape[0] == 0 or array.shape[1] == 0:
-            raise ValueError(f"a map array must be 2D and not empty, not of shape {array.shape}")
-        if np.issubdtype(array.dtype, np.floating):
-            self.kind = "terrain"
+            raise Error(f"a map array must be 2D and not empty, not of shape {array.shape}")
+        if not (np.issubdtype(array.dtype, np.number) or array.dtype == np.bool_):
+            raise Error(f"a map array holds bools or integers (occupancy) or floats (heights), not {array.dtype}")
+        self.kind = _kind_of(array) if kind is None else kind
+        if self.kind not in _KINDS:
+            raise Error(f"kind must be 'occupancy' or 'terrain', not {kind!r}")
+        if self.kind == "terrain":
+            if free is not None:
+                raise Error("free= says which value of an occupancy grid is free; a terrain holds heights (NaN = no data)")
             self.array = np.ascontiguousarray(array, dtype=np.float64)
-        elif np.issubdtype(array.dtype, np.integer) or array.dtype == np.bool_:
-            self.kind = "grid"
-            self.array = np.ascontiguousarray(array != 0)
         else:
-            raise ValueError(f"a map array holds bools or integers (occupancy) or floats (heights), not {array.dtype}")
+            self.array = np.ascontiguousarray(array != (0 if free is None else free))
         self.cell_size = float(cell_size)
         self.name = name or f"numpy {self.kind} {array.shape[1]}x{array.shape[0]}"
         self.file: Optional[str] = None
@@ -49,11 +68,43 @@ class Map:
         text). Terrain keys (``height_scale``, ``cell_size`` for PGM images) are applied here and
         to every plan on this map."""
         keys = _keys(terrain_keys)
-        kind, array, cell_size, name = _aco.map_arrays(os.fspath(path), keys)
-        loaded = cls(array, cell_size, name)
+        with _python_spelling():
+            kind, array, cell_size, name = _aco.map_arrays(os.fspath(path), keys)
+        loaded = cls(array, cell_size, name, kind=kind)
         loaded.file = os.fspath(path)
         loaded.terrain_keys = keys
         return loaded
+
+    def save(self, path: Union[str, os.PathLike]) -> None:
+        """Writes the map as a file that aco.Map.load() and acoplan read, in the format of its
+        ending: an occupancy grid as a Moving AI map (.map: '.' free, '@' blocked) or, with any
+        other ending but a terrain format's, a 0/1 matrix (.txt); a terrain as an ESRI ASCII grid
+        (.asc, with its cell size; NaN cells as NODATA). Heights are written exactly."""
+        path = os.fspath(path)
+        ending = os.path.splitext(path)[1].lower()
+        if self.kind == "terrain":
+            if ending != ".asc":
+                raise Error(f"{path}: a terrain is saved as an ESRI ASCII grid, a file ending in .asc")
+            text = self._esri_ascii()
+        elif ending in (".asc", ".pgm", ".yaml", ".yml"):
+            raise Error(f"{path}: an occupancy grid is saved as a Moving AI .map or a 0/1 matrix (.txt), not {ending}")
+        elif ending == ".map":
+            rows = ("".join("@" if blocked else "." for blocked in row) for row in self.array)
+            text = f"type octile\nheight {self.height}\nwidth {self.width}\nmap\n" + "\n".join(rows) + "\n"
+        else:
+            text = "\n".join(" ".join("1" if blocked else "0" for blocked in row) for row in self.array) + "\n"
+        with open(path, "w") as file:
+            file.write(text)
+
+    def _esri_ascii(self) -> str:
+        heights = self.array
+        nodata = _NODATA
+        if (heights == nodata).any():
+            nodata = float(np.floor(np.nanmin(heights))) - 1.0
+        header = (f"ncols {self.width}\nnrows {self.height}\nxllcorner 0\nyllcorner 0\n"
+                  f"cellsize {self.cell_size!r}\nNODATA_value {nodata!r}\n")
+        rows = (" ".join(repr(nodata if np.isnan(h) else float(h)) for h in row) for row in heights)
+        return header + "\n".join(rows) + "\n"
 
     @property
     def width(self) -> int:
@@ -70,17 +121,66 @@ class Map:
         return f"aco.Map({self.name!r}, {self.kind}, {self.width}x{self.height})"
 
 
+def _kind_of(array: np.ndarray) -> str:
+    """The kind an array's type says: integers and bools occupancy, floats heights."""
+    if not np.issubdtype(array.dtype, np.floating):
+        return "occupancy"
+    if np.isin(array, (0.0, 1.0)).all():
+        raise Error("a float array of only 0 and 1 may be an occupancy grid or a flat terrain: say which with "
+                    "kind='occupancy' (0 free, 1 blocked; free=1 for the other way round) or kind='terrain' "
+                    "(heights), or pass a bool array (True = blocked)")
+    return "terrain"
+
+
+@dataclasses.dataclass(frozen=True)
+class Scenario:
+    """One problem of a Moving AI scenario file (.scen), as acoplan --scen plans it:
+    ``aco.plan(s.map, s.start, s.goal)``.
+
+    map             the map file: the scenario file's name without .scen (arena.map for arena.map.scen)
+    start, goal     cells (x, y)
+    optimal_length  the file's optimum: octile distance with 8 moves and no corner cutting
+                    (acoplan's defaults: ``aco.astar`` finds the same length)
+    bucket          Moving AI's difficulty bucket
+    width, height   the size of the map the scenario is for
+    """
+
+    map: str
+    start: Cell
+    goal: Cell
+    optimal_length: float
+    bucket: int
+    width: int
+    height: int
+
+
+def load_scenarios(path: Union[str, os.PathLike]) -> List[Scenario]:
+    """The problems of a Moving AI scenario file (.scen), in the file's order."""
+    with _python_spelling():
+        return [Scenario(**{**s, "map": os.fspath(s["map"])}) for s in _aco.scenarios(os.fspath(path))]
+
+
 class Result:
     """One planning run: the same content as ``acoplan --json`` (``result.json``), with arrays.
 
-    path            the final path (after the smoother) as an (n, 2) or (n, 3) float array
+    Positions and lengths are in world units: a cell is ``cell_size`` wide (1 on an occupancy
+    grid; a terrain's own, as aco.Map and .asc files give it), cell (x, y) is at
+    (x * cell_size, y * cell_size). Cells are counted in columns and rows.
+
+    path            the final path (after the smoother) as an (n, 2) float array of world x, y,
+                    on a terrain (n, 3) with the height as z; world units
+    path_cells      ``path``'s x and y in cells, an (n, 2) float array: over ``imshow(map.array)``
+                    draw it with ``plot(*result.path_cells.T)``, on a terrain as on a grid
     grid_path       the planner's best grid path as an (n, 2) int array of cells (x, y)
+    cell_size       the world size of a cell
     solved, reason  whether a path was found, and why not
-    length          length of ``path``; grid_length of ``grid_path`` (None for a continuous planner,
-                    ``planner="ompl"``, whose grid_path is empty and whose path is its own)
-    optimal_length  the exact A* optimum on the same graph (None if unreachable)
+    length          length of ``path``; grid_length of ``grid_path``, both in world units (None for a
+                    continuous planner, ``planner="ompl"``, whose grid_path is empty and whose path
+                    is its own)
+    optimal_length  the exact A* optimum on the same graph, in world units (None if unreachable)
     gap_percent     100 * (grid_length / optimal_length - 1): the grid path's excess over the optimum
-                    (None without a grid path)
+                    (None without a grid path; exactly 0 for a path as long as the optimum to
+                    within rounding, relative 1e-11, as acoplan's irace cost)
     convergence     best-so-far length per iteration (NaN before the first solution)
     iterations, best_iteration, time_ms, seed
     config          the resolved run keys (what ``--print-config`` shows); plugins: which binary
@@ -91,15 +191,17 @@ class Result:
                     properties (ant_steps, stopped_by; evaluations of ifwa and pso) are in ``json``
     """
 
-    def __init__(self, record: dict, preset: str):
+    def __init__(self, record: dict, preset: str, cell_size: float = 1.0):
         self.json = record
         self.preset = preset
+        self.cell_size = cell_size
         self.solved: bool = record["solved"]
         self.reason: str = record.get("reason", "")
         self.length = record["length"]
         self.grid_length = record["grid_length"]
         self.optimal_length = record["optimal_length"]
         self.path = np.array(record["path"], dtype=np.float64).reshape(-1, 3 if record["path"] and len(record["path"][0]) == 3 else 2)
+        self.path_cells = self.path[:, :2] / cell_size
         self.grid_path = np.array(record["grid_path"], dtype=np.int64).reshape(-1, 2)
         self.convergence = np.array([np.nan if v is None else v for v in record["convergence"]], dtype=np.float64)
         self.iterations: int = record["iterations"]
@@ -111,19 +213,26 @@ class Result:
         # acoplan's --json writes every property of the run at its top level, the plugins' figures
         # by their "<slot>/<plugin>.<name>" keys (or "plugin.<name>" of a strategy outside the registry).
         self.figures: dict = {key: value for key, value in record.items() if "/" in key or key.startswith("plugin.")}
-        self.gap_percent = (100.0 * (self.grid_length / self.optimal_length - 1.0)
-                            if self.solved and self.optimal_length and self.grid_length is not None else None)
+        self.gap_percent: Optional[float] = None
+        if self.solved and self.optimal_length and self.grid_length is not None:
+            gap = 100.0 * (self.grid_length / self.optimal_length - 1.0)
+            # A path as long as the optimum may differ from it in the last bits (another order of the sums).
+            self.gap_percent = 0.0 if abs(gap) < 1e-9 else gap
 
     def __repr__(self) -> str:
         if not self.solved:
             return f"<aco.Result not solved: {self.reason}>"
+        planner = self.config.get("planner", "aco")
         gap = "" if self.gap_percent is None else f", gap {self.gap_percent:.2f} %"
         optimum = "none" if self.optimal_length is None else f"{self.optimal_length:.4f}"
         if self.grid_length is None:  # a continuous planner: no grid path
-            return (f"<aco.Result length {self.length:.4f} (continuous, optimum {optimum}), {len(self.path)} waypoints, "
-                    f"{self.iterations} iterations, {self.time_ms:.1f} ms, preset {self.preset}>")
-        return (f"<aco.Result length {self.length:.4f} (grid {self.grid_length:.4f}, optimum {optimum}{gap}), "
-                f"{len(self.grid_path)} cells, {self.iterations} iterations, {self.time_ms:.1f} ms, preset {self.preset}>")
+            shape = f"(continuous, optimum {optimum}), {len(self.path)} waypoints"
+        else:
+            shape = f"(grid {self.grid_length:.4f}, optimum {optimum}{gap}), {len(self.grid_path)} cells"
+        # A* searches once, and only the colony runs the preset's pipeline.
+        iterations = "" if planner == "astar" else f", {self.iterations} iterations"
+        pipeline = f"preset {self.preset}" if planner == "aco" else f"planner {planner}"
+        return f"<aco.Result length {self.length:.4f} {shape}{iterations}, {self.time_ms:.1f} ms, {pipeline}>"
 
 
 @functools.lru_cache(maxsize=None)
@@ -145,6 +254,11 @@ def _key(name: str) -> str:
     return name.replace("_", "-")
 
 
+def _keyword(key: str) -> str:
+    """A run key as its Python keyword, _key()'s inverse: update.rho -> update_rho."""
+    return key.replace(".", "_").replace("-", "_")
+
+
 def _text(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
@@ -157,90 +271,179 @@ def _keys(keys: Mapping[str, Any]) -> dict:
     return {_key(name): _text(value) for name, value in keys.items()}
 
 
+# A command-line option in the libraries' messages: '--update.rho' (quoted), --update.rho: (a
+# value's message) or --max-memory (what to give).
+_OPTION = re.compile(r"(?<![\w-])('?)--([a-z](?:[\w.-]*[a-z0-9])?)('?)(:?)")
+
+
+def _spelled(match: "re.Match[str]") -> str:
+    opening, key, closing, colon = match.groups()
+    keyword = _keyword(key)
+    if (opening and closing) or colon:
+        return f"{opening}{keyword}{closing}{colon}"
+    return f"{opening}{keyword}={closing}"
+
+
+@contextlib.contextmanager
+def _reworded(reword: Callable[[str], str]) -> Iterator[None]:
+    """An aco.Error raised inside with its message reworded, and otherwise as it was raised (its
+    class, cause and traceback)."""
+    try:
+        yield
+    except Error as error:
+        if error.args and isinstance(error.args[0], str):
+            error.args = (reword(error.args[0]),) + error.args[1:]
+        raise
+
+
+def _python_spelling() -> ContextManager[None]:
+    """aco.Error's message with the keys as Python keywords: did you mean 'ants'?, not '--ants'."""
+    return _reworded(lambda message: _OPTION.sub(_spelled, message))
+
+
+def _takes_python_objects(slot: str) -> bool:
+    """Whether the slot has a python bridge plugin (asking for that plugin alone: listing them all
+    would load every plugin)."""
+    try:
+        _aco.describe(f"{slot}/python")
+    except Error:
+        return False
+    return True
+
+
 class _LiveObjects:
     """Python objects given as plugins (``update=MyUpdate()``) are reached by the python bridge
     plugin as ``aco._live:<name>`` for the length of the call."""
 
-    def __init__(self, keys: dict):
-        self.keys, self.names = dict(keys), []
-        for slot in _SLOTS:
-            value = self.keys.get(slot)
-            if value is None or isinstance(value, str):
-                continue
-            name = f"o{next(_live_names)}"
-            setattr(_live, name, value)
-            self.names.append(name)
-            self.keys[slot] = "python"
-            self.keys[slot + ".class"] = f"aco._live:{name}"
+    def __init__(self) -> None:
+        self.names: List[str] = []
 
-    def __enter__(self) -> dict:
-        return self.keys
+    def keys(self, keys: Mapping[str, Any], name: str) -> dict:
+        """``keys`` with each slot's Python object replaced by the python plugin, which reaches
+        it as aco._live.<name>_<slot>."""
+        keys = dict(keys)
+        for slot in _SLOTS:
+            value = keys.get(slot)
+            if value is None or isinstance(value, (str, Mapping)):  # a plugin's name, or YAML's {plugin: ...}
+                continue
+            if not _takes_python_objects(slot):
+                python_slots = [s for s in _SLOTS if _takes_python_objects(s)]
+                raise Error(f"{slot}={value!r}: a Python object can fill the slots "
+                            f"{', '.join(python_slots) or '(none: the python plugins are missing)'} only; "
+                            f"give the {slot} plugin's name (aco.plugins() lists them)")
+            attribute = f"{name}_{slot}"
+            if hasattr(_live, attribute):
+                raise Error(f"two Python plugin objects would both be aco._live.{attribute}: rename a configuration")
+            setattr(_live, attribute, value)
+            self.names.append(attribute)
+            keys[slot] = "python"
+            keys[slot + ".class"] = f"aco._live:{attribute}"
+        return keys
+
+    def __enter__(self) -> "_LiveObjects":
+        return self
 
     def __exit__(self, *_: Any) -> None:
         for name in self.names:
             delattr(_live, name)
 
 
+# plan()'s own arguments, which are no run keys.
+_ARGUMENTS = ("map", "start", "goal", "preset", "config", "threads", "max_memory", "kind", "free")
+
+
 def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], goal: Sequence[int], *,
          preset: Optional[str] = None, config: Optional[Union[str, os.PathLike]] = None,
-         keys: Optional[Mapping[str, Any]] = None, threads: int = 0, **run_keys: Any) -> Result:
+         keys: Optional[Mapping[str, Any]] = None, threads: int = 0, max_memory: Optional[Union[int, str]] = None,
+         kind: Optional[str] = None, free: Any = None, **run_keys: Any) -> Result:
     """Plans a path from start to goal with the ant colony (or another planner), as acoplan does.
 
-    map       an aco.Map, a numpy array (see aco.Map) or a map file's path
-    start     the start cell (x, y): x the column, y the row from the top, 0-based
-    goal      the goal cell (x, y)
-    preset    the named pipeline the keys are laid over (aco.presets()); default: robust on
-              occupancy grids, terrain on height maps, as acoplan's
-    config    an acoplan config file instead of a preset
-    keys      run keys as acoplan's options without dashes: {"update.rho": 0.1, "max-slope": 30}
-    threads   worker threads, 0 = all cores; results do not depend on it
-    run_keys  the same keys as Python keywords: update="max_min", update_rho=0.1, ants=20,
-              max_slope=30, seed=7, planner="pso" (a slot's keyword ``update_rho`` is the key
-              ``update.rho``; other underscores are dashes). A slot may also be given a Python
-              object implementing the slot's interface (update=MyUpdate()): it runs inside the
-              native colony through the python bridge plugin.
+    map         an aco.Map, a numpy array (see aco.Map) or a map file's path
+    start       the start cell (x, y): x the column, y the row from the top, 0-based, whole numbers
+    goal        the goal cell (x, y)
+    preset      the named pipeline the keys are laid over (aco.presets()); default: robust on
+                occupancy grids, terrain on height maps, as acoplan's
+    config      an acoplan config file instead of a preset
+    keys        run keys as acoplan's options without dashes: {"update.rho": 0.1, "max-slope": 30}
+    threads     worker threads, 0 = all cores (at most 1024, as acoplan); results do not depend on it
+    max_memory  refuse maps whose planning would need more memory: bytes, or a size such as
+                "512M" or "4G" (acoplan's --max-memory); default 3/4 of the available memory
+    kind, free  for a numpy array: what it holds, "occupancy" or "terrain", and which value is
+                free in an occupancy array (see aco.Map)
+    run_keys    the same keys as Python keywords: update="max_min", update_rho=0.1, ants=20,
+                max_slope=30, seed=7, planner="pso" (a slot's keyword ``update_rho`` is the key
+                ``update.rho``; other underscores are dashes). A slot may also be given a Python
+                object implementing the slot's interface (update=MyUpdate()): it runs inside the
+                native colony through the python bridge plugin.
 
     Returns an aco.Result; an unsolved run is a result with ``solved`` False and its reason. A
-    bad key, value, map or cell raises aco.Error with acoplan's message.
+    bad key, value, map or cell raises aco.Error with acoplan's message, its keys spelled as
+    keywords (``did you mean 'ants'?``).
     """
     if preset is not None and config is not None:
         raise Error("preset and config: give one of them")
     given = dict(run_keys)
     given.update(keys or {})
     given_keys = {_key(k) for k in given}
-    for name in ("map", "start", "goal", "scen", "preset", "config"):
+    if given_keys & {"scen", "scen-index"}:
+        raise Error("plan() takes no scenario file: read one with aco.load_scenarios(path) and plan its problems, "
+                    "s = aco.load_scenarios(path)[0]; aco.plan(s.map, s.start, s.goal)")
+    for name in _ARGUMENTS:
         if _key(name) in given_keys:
             raise Error(f"'{name}' is an argument of plan(), not a run key")
+    _check_threads(threads)
     # A file is read once, by the planner (as acoplan reads it); an array is handed over as it is.
+    if isinstance(map, (str, os.PathLike)) or isinstance(map, Map):
+        if kind is not None or free is not None:
+            raise Error("kind= and free= describe a numpy array; this map's kind is known (aco.Map(array, kind=...) "
+                        "gives an array's)")
     if isinstance(map, (str, os.PathLike)):
         source, text_keys = os.fspath(map), {}
     else:
         if not isinstance(map, Map):
-            map = Map(map)
+            map = Map(map, kind=kind, free=free)
         text_keys = dict(map.terrain_keys)
         source = map.file if map.file is not None else _aco.ArrayMap(
-            map.array if map.kind == "grid" else None, map.array if map.kind == "terrain" else None, map.cell_size, map.name)
-    with _LiveObjects(given) as live:
-        for name, value in live.items():
+            map.array if map.kind == "occupancy" else None, map.array if map.kind == "terrain" else None,
+            map.cell_size, map.name)
+    with _LiveObjects() as live, _python_spelling():
+        for name, value in live.keys(given, f"o{next(_live_names)}").items():
             text_keys[_key(name)] = _text(value)
-        record, used = _aco.plan(source, _cell(start, "start"), _cell(goal, "goal"), text_keys, preset or "",
-                                 os.fspath(config) if config is not None else "", int(threads))
-    return Result(json.loads(record), used)
+        record, used, cell_size = _aco.plan(source, _cell(start, "start"), _cell(goal, "goal"), text_keys, preset or "",
+                                            os.fspath(config) if config is not None else "", int(threads),
+                                            None if max_memory is None else _text(max_memory))
+    return Result(json.loads(record), used, cell_size)
+
+
+def _check_threads(threads: Any) -> None:
+    """acoplan's checks of --threads."""
+    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)):
+        raise Error(f"threads: {threads!r} is not a whole number")
+    if not 0 <= threads <= 1024:
+        raise Error(f"threads: {threads} is outside the range [0, 1024] (0 = all cores)")
 
 
 def astar(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], goal: Sequence[int],
           **run_keys: Any) -> Result:
-    """The exact shortest path on the same graph (the A* planner of aco.plan()); graph keys such as
-    neighbourhood, corner_cutting and max_slope apply."""
+    """The exact shortest path on the same graph (the A* planner of aco.plan(), whose arguments it
+    takes: kind= for an array, max_memory=); graph keys such as neighbourhood, corner_cutting and
+    max_slope apply."""
     return plan(map, start, goal, planner="astar", **run_keys)
 
 
 def _cell(cell: Sequence[int], what: str) -> Cell:
     try:
-        x, y = (int(v) for v in cell)
+        x, y = cell
     except (TypeError, ValueError):
         raise Error(f"{what} must be a cell (x, y), not {cell!r}") from None
-    return x, y
+    return _whole(x, what, cell), _whole(y, what, cell)
 
 
-Error = _aco.Error
+def _whole(value: Any, what: str, cell: Sequence[int]) -> int:
+    """A cell's coordinate: an integer, or a float with no fraction; a fraction is refused, not cut off."""
+    try:
+        return operator.index(value)
+    except TypeError:
+        if isinstance(value, (float, np.floating)) and float(value).is_integer():
+            return int(value)
+    raise Error(f"{what} {tuple(cell)!r} is not a cell: x and y count columns and rows, in whole numbers")

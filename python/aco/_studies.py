@@ -1,14 +1,16 @@
-"""Studies: run an acobench experiment file, read any results database into pandas."""
+"""Studies: run an acobench experiment (a file or a dict), read any results database into pandas."""
 from __future__ import annotations
 
 import json
 import os
+import re
 import sys
-from typing import Callable, Optional, Union
+from typing import Any, Callable, Mapping, Union
 
 import numpy as np
 
 from . import _aco
+from ._planning import Error, _check_threads, _LiveObjects, _reworded
 
 Progress = Union[bool, Callable[[int, int], None]]
 
@@ -22,12 +24,23 @@ def _bar(done: int, total: int) -> None:
     sys.stderr.flush()
 
 
-def run_experiment(file: Union[str, os.PathLike], database: Union[str, os.PathLike], *, threads: int = 0,
-                   progress: Progress = True) -> dict:
-    """Runs an acobench experiment file into a results database, as ``acobench run`` does:
-    every trial the database does not hold yet (call it again to continue), each stored as it
-    ends. Trials run in this process, on ``threads`` threads (0 = all cores; results do not
-    depend on it); ``acobench run`` also isolates each trial in a worker process.
+def run_experiment(experiment: Union[str, os.PathLike, Mapping[str, Any]], database: Union[str, os.PathLike], *,
+                   threads: int = 0, progress: Progress = True) -> dict:
+    """Runs an acobench experiment into a results database, as ``acobench run`` does: every
+    trial the database does not hold yet (call it again to continue), each stored as it ends.
+    Trials run in this process, on ``threads`` threads (0 = all cores; results do not depend on
+    it); ``acobench run`` also isolates each trial in a worker process.
+
+    experiment  an experiment file (YAML, data/experiments/README.md), or the same as a dict:
+                {"name": ..., "problems": [{"map": ..., "start": [x, y], "goal": [x, y]}],
+                "configurations": [{"name": ..., "update": "max_min"}], ...}; its relative
+                paths start from the current directory. In a dict, a slot of the settings, the
+                baseline or a configuration may be a Python object (``"update": MyUpdate()``, as
+                in aco.plan()), which runs in this process, one object for all the
+                configuration's trials (keep no state between runs, or give the class: each
+                trial then makes its own object). An untrusted plugin belongs in acobench's
+                worker processes: its module named in an experiment file
+                (``update: python, update.class: module:MyUpdate``) run by ``acobench run``.
 
     progress  True: a progress bar on stderr; False: none; a function f(done, total): called
               after every stored trial.
@@ -42,8 +55,41 @@ def run_experiment(file: Union[str, os.PathLike], database: Union[str, os.PathLi
     now run otherwise, raises aco.Error. Ctrl-C lets the trials running finish and be stored,
     starts no other, and raises KeyboardInterrupt: call again to continue.
     """
+    _check_threads(threads)
     callback = _bar if progress is True else (progress or None)
-    return _aco.run_experiment(os.fspath(file), os.fspath(database), int(threads), callback)
+    if not isinstance(experiment, Mapping):
+        return _aco.run_experiment(os.fspath(experiment), "", os.fspath(database), int(threads), callback)
+    # The dict stands for a file in the current directory (its relative paths start there);
+    # messages name it as what it is.
+    stand_in = os.path.join(os.getcwd(), "experiment")
+    with _LiveObjects() as live, _reworded(lambda m: re.sub(re.escape(stand_in) + r":\d+", "the experiment dict", m)):
+        text = json.dumps(_with_live_plugins(experiment, live), default=_json_value)
+        return _aco.run_experiment(stand_in, text, os.fspath(database), int(threads), callback)
+
+
+def _with_live_plugins(experiment: Mapping[str, Any], live: _LiveObjects) -> dict:
+    """The experiment with every Python plugin object named by a run key the python plugin reads
+    (the same name for the same configuration, so a database continues from call to call)."""
+    def keys(entry: Any, name: str) -> Any:
+        return live.keys(entry, re.sub(r"\W", "_", name)) if isinstance(entry, Mapping) else entry
+
+    out = dict(experiment)
+    for section in ("settings", "baseline"):
+        if section in out:
+            out[section] = keys(out[section], section)
+    if isinstance(out.get("configurations"), list):
+        out["configurations"] = [keys(c, f"configuration_{c.get('name')}") for c in out["configurations"]]
+    return out
+
+
+def _json_value(value: Any) -> Any:
+    """A value of an experiment dict that json does not know: numpy's numbers and paths."""
+    if isinstance(value, np.generic):
+        return value.item()
+    if isinstance(value, os.PathLike):
+        return os.fspath(value)
+    raise Error(f"{value!r} in the experiment dict: its values are text, numbers, lists and dicts, and a Python "
+                "object only as a slot's plugin of the settings, the baseline or a configuration")
 
 
 def read_database(database: Union[str, os.PathLike], *, config_columns: bool = True):

@@ -71,9 +71,14 @@ def summary(frame, value: str = "length", by: Sequence[str] = ("problem", "confi
 def compare(frame, baseline: str, value: str = "length", by: str = "problem"):
     """Each configuration against ``baseline`` on each problem, over the solved trials, as the
     report's table does: Mann-Whitney p, Holm-adjusted p over all the comparisons, A12 (< 0.5: the
-    configuration's values tend to be smaller than the baseline's) and its label."""
+    configuration's values tend to be smaller than the baseline's) and its label. A baseline that
+    is no configuration of the frame raises aco.Error naming those it has."""
     import pandas as pd
 
+    configurations = list(frame["configuration"].unique())
+    if baseline not in configurations:
+        raise _aco.Error(f"baseline {baseline!r} is not a configuration of the frame; "
+                         f"its configurations: {', '.join(map(repr, configurations))}")
     rows = []
     for problem, group in frame.groupby(by, sort=False):
         solved = group[group["solved"]]

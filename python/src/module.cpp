@@ -73,7 +73,7 @@ std::unique_ptr<aco::Map> make_map(const ArrayMap& source, const aco::TerrainOpt
   return grid;
 }
 
-// A map file as arrays, for aco.Map.load(): ("grid", blocked, 1.0, name) or ("terrain", heights, cell size, name).
+// A map file as arrays, for aco.Map.load(): ("occupancy", blocked, 1.0, name) or ("terrain", heights, cell size, name).
 py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain_keys) {
   aco::Keys keys = terrain_keys;
   keys["map"] = file.string();
@@ -90,7 +90,7 @@ py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain
   auto out = blocked.mutable_unchecked<2>();
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) out(y, x) = !map->passable({x, y});
-  return py::make_tuple("grid", blocked, 1.0, map->name());
+  return py::make_tuple("occupancy", blocked, 1.0, map->name());
 }
 
 // How often a run looks for Ctrl-C: taking the GIL may wait for another Python thread.
@@ -117,10 +117,11 @@ std::string cell_text(const std::pair<int, int>& cell) {
 }
 
 // One run, as acoplan's: the keys over the pipeline file (a preset, a config file, or the
-// default preset for the map's kind), resolved once, then plan_runs() and its JSON.
+// default preset for the map's kind), resolved once, then plan_runs() and its JSON. Returns the
+// JSON, the pipeline's source and the map's cell size (the world units of the path per cell).
 py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pair<int, int> start,
                std::pair<int, int> goal, const aco::Keys& keys, const std::string& preset, const std::string& config,
-               std::int64_t threads) {
+               std::int64_t threads, const std::optional<std::string>& max_memory) {
   aco::KeyedValues changes;
   changes.keys = keys;
   changes.keys["start"] = cell_text(start);
@@ -137,9 +138,11 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
   run.colony.between_iterations = SignalCheck();  // Ctrl-C stops the colony after its iteration
 
   std::string json;
+  double cell_size = 1.0;
   {
     py::gil_scoped_release unlocked;  // plugins written in Python take it back (python bridge plugins)
-    const aco::MemoryLimit memory(std::nullopt);
+    const aco::MemoryLimit memory(max_memory ? std::optional(aco::parse_memory_size(*max_memory, "max_memory"))
+                                             : std::nullopt);
     std::unique_ptr<aco::Map> owned;
     aco::Cell from{start.first, start.second}, to{goal.first, goal.second};
     if (file) {
@@ -150,13 +153,14 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
       aco::check_cell(*owned, from, "start");
       aco::check_cell(*owned, to, "goal");
     }
+    if (const auto* terrain = dynamic_cast<const aco::TerrainMap*>(owned.get())) cell_size = terrain->cell_size();
     const aco::Graph graph = aco::build_graph(*owned, run.graph);
     const aco::ThreadLimit limit(threads);
     const auto runs = aco::plan_runs(registry(), graph, graph.node(from), graph.node(to), run, 1);
     const aco::PlanReport report{run, registry(), graph, source};
     json = aco::to_json(report, runs.front());
   }
-  return py::make_tuple(json, source);
+  return py::make_tuple(json, source, cell_size);
 }
 
 // A parameter's default as its type's Python value (int, float, bool, str), as a run reads it.
@@ -221,7 +225,9 @@ py::list plugins() {
   return list;
 }
 
-py::dict run_experiment(const std::filesystem::path& file, const std::filesystem::path& database, int threads,
+// `text`: the experiment itself (Python's dict as JSON), for which `file` stands; empty: read `file`.
+py::dict run_experiment(const std::filesystem::path& file, const std::string& text,
+                        const std::filesystem::path& database, int threads,
                         const std::function<void(std::size_t, std::size_t)>& progress) {
   aco::studies::RunOptions options;
   options.database = database;
@@ -235,7 +241,8 @@ py::dict run_experiment(const std::filesystem::path& file, const std::filesystem
     py::gil_scoped_acquire locked;
     progress(done, total);
   };
-  const aco::studies::Experiment experiment = aco::studies::load_experiment(file, registry());
+  const aco::studies::Experiment experiment = text.empty() ? aco::studies::load_experiment(file, registry())
+                                                           : aco::studies::load_experiment_text(text, file, registry());
   aco::studies::RunSummary summary;
   // The trials run in a thread of their own, whichever threads they take: this one, Python's main
   // thread, runs the signal handlers meanwhile.
@@ -424,7 +431,17 @@ PYBIND11_MODULE(_aco, m) {
       }));
   m.def("map_arrays", &map_arrays, py::arg("file"), py::arg("terrain_keys"));
   m.def("plan", &plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::arg("keys"), py::arg("preset"),
-        py::arg("config"), py::arg("threads"));
+        py::arg("config"), py::arg("threads"), py::arg("max_memory"));
+  // A Moving AI .scen file's problems, with the map file acoplan --scen reads them on.
+  m.def("scenarios", [](const std::filesystem::path& file) {
+    py::list list;
+    for (const auto& s : aco::load_scenarios(file))
+      list.append(
+          py::dict(py::arg("map") = aco::scenario_map_file(file), py::arg("start") = std::pair(s.start.x, s.start.y),
+                   py::arg("goal") = std::pair(s.goal.x, s.goal.y), py::arg("optimal_length") = s.optimal_length,
+                   py::arg("bucket") = s.bucket, py::arg("width") = s.width, py::arg("height") = s.height));
+    return list;
+  });
   m.def("plugins", &plugins);
   m.def("run_key_tables", &run_key_tables);
   // The prefixes of parameter keys ("update" of "update.rho", "ifwa" of "ifwa.radius").
@@ -441,7 +458,7 @@ PYBIND11_MODULE(_aco, m) {
     for (const auto& p : aco::list_presets()) list.emplace_back(p.name, p.summary);
     return list;
   });
-  m.def("run_experiment", &run_experiment, py::arg("file"), py::arg("database"), py::arg("threads"),
+  m.def("run_experiment", &run_experiment, py::arg("file"), py::arg("text"), py::arg("database"), py::arg("threads"),
         py::arg("progress"));
   m.def("read_trials", &read_trials, py::arg("database"));
   // The trial fields (aco/studies/trial_record.hpp): where each goes, for the tests.

@@ -343,8 +343,9 @@ aco::RunSpec resolve(const Configuration& config, const std::vector<Problem>& pr
   }
 }
 
-Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistry& registry) {
-  const YAML::Node doc = aco::yaml::load_file(file, "experiment");
+namespace {
+
+Experiment read_experiment(const YAML::Node& doc, const std::filesystem::path& file, aco::PluginRegistry& registry) {
   if (!doc.IsMap()) throw aco::Error(file.string() + ": an experiment file is a YAML mapping (name, problems, ...)");
   only_keys(file, doc,
             {"name", "seed", "repetitions", "problems", "settings", "baseline", "configurations", "factorial",
@@ -414,6 +415,23 @@ Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistr
   tie_time_limits(e);
   e.baseline.run = e.configurations.front().run;
   return e;
+}
+
+}  // namespace
+
+Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistry& registry) {
+  return read_experiment(aco::yaml::load_file(file, "experiment"), file, registry);
+}
+
+Experiment load_experiment_text(const std::string& text, const std::filesystem::path& file,
+                                aco::PluginRegistry& registry) {
+  YAML::Node doc;
+  try {
+    doc = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw aco::Error(file.string() + ":" + std::to_string(e.mark.line + 1) + ": malformed YAML: " + e.msg);
+  }
+  return read_experiment(doc, file, registry);
 }
 
 std::string Experiment::relative_to_file(const std::filesystem::path& path) const {

@@ -100,6 +100,10 @@ struct Experiment {
 
 // Loads and checks an experiment file. Errors name the file, the line and the key.
 Experiment load_experiment(const std::filesystem::path& file, aco::PluginRegistry& registry);
+// The same from text (YAML or JSON; Python's run_experiment(dict)): `file` stands for the file it
+// would be, in messages, as the folder relative paths start from, and as the experiment file stored.
+Experiment load_experiment_text(const std::string& text, const std::filesystem::path& file,
+                                aco::PluginRegistry& registry);
 
 // A configuration's keys resolved into a run (aco::resolve_run, without a problem: the trials
 // take it from the problem list). Errors name the file, the line, the configuration and the key.

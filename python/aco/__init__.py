@@ -8,7 +8,8 @@
 Maps: aco.Map (numpy arrays, map files). Runs: aco.plan(), aco.astar(). Plugins: aco.plugins(),
 aco.describe(), aco.add_plugin_dir(), aco.presets(); a slot may be a Python object (update=MyUpdate()),
 run inside the native colony. Studies: aco.run_experiment(), aco.read_database(); aco.stats has the
-report's statistics. Errors raise aco.Error (a ValueError) with the command line's message.
+report's statistics. Pictures: aco.plot(), plan(svg=...), results and maps show themselves in
+Jupyter. Simulation: aco.simulate() (acosim). Errors raise aco.Error (a ValueError) with the command line's message.
 """
 from __future__ import annotations
 
@@ -16,11 +17,13 @@ import os
 from typing import Union
 
 from . import _aco, stats
+from ._pictures import plot
 from ._planning import Error, Map, Result, astar, plan
+from ._simulation import Simulation, simulate
 from ._studies import read_database, run_experiment
 
 __all__ = ["Error", "Map", "Result", "plan", "astar", "plugins", "describe", "add_plugin_dir", "presets",
-           "run_experiment", "read_database", "stats"]
+           "run_experiment", "read_database", "stats", "plot", "simulate", "Simulation"]
 
 _extra_dirs: list = []
 

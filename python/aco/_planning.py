@@ -68,6 +68,18 @@ class Map:
     def __repr__(self) -> str:
         return f"aco.Map({self.name!r}, {self.kind}, {self.width}x{self.height})"
 
+    def _native(self) -> Any:
+        """What the native module plans on: the map's file, or its array."""
+        if self.file is not None:
+            return self.file
+        return _aco.ArrayMap(self.array if self.kind == "grid" else None, self.array if self.kind == "terrain" else None,
+                             self.cell_size, self.name)
+
+    def _repr_svg_(self) -> str:
+        """The map as acoplan draws it, for Jupyter."""
+        from ._pictures import map_svg
+        return map_svg(self)
+
 
 class Result:
     """One planning run: the same content as ``acoplan --json`` (``result.json``), with arrays.
@@ -124,6 +136,11 @@ class Result:
         return (f"<aco.Result length {self.length:.4f} (grid {self.grid_length:.4f}, optimum {optimum}{gap}), "
                 f"{len(self.grid_path)} cells, {self.iterations} iterations, {self.time_ms:.1f} ms, preset {self.preset}>")
 
+    def _repr_svg_(self) -> Optional[str]:
+        """acoplan's picture of the run, for Jupyter (None for a result not made by aco.plan())."""
+        from ._pictures import run_svg
+        return run_svg(self) if hasattr(self, "_planned") else None
+
 
 def _key(name: str) -> str:
     """A Python keyword as a run key: update_rho -> update.rho, max_slope -> max-slope."""
@@ -173,7 +190,8 @@ class _LiveObjects:
 
 def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], goal: Sequence[int], *,
          preset: Optional[str] = None, config: Optional[Union[str, os.PathLike]] = None,
-         keys: Optional[Mapping[str, Any]] = None, threads: int = 0, **run_keys: Any) -> Result:
+         keys: Optional[Mapping[str, Any]] = None, threads: int = 0, svg: Optional[Union[str, os.PathLike]] = None,
+         svg_pheromone: bool = False, **run_keys: Any) -> Result:
     """Plans a path from start to goal with the ant colony (or another planner), as acoplan does.
 
     map       an aco.Map, a numpy array (see aco.Map) or a map file's path
@@ -184,6 +202,9 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
     config    an acoplan config file instead of a preset
     keys      run keys as acoplan's options without dashes: {"update.rho": 0.1, "max-slope": 30}
     threads   worker threads, 0 = all cores; results do not depend on it
+    svg       writes acoplan's picture of the run to this file (as ``acoplan --svg``); the
+              result shows the same picture in Jupyter
+    svg_pheromone  the picture also shows the final pheromone field (``--svg-pheromone``)
     run_keys  the same keys as Python keywords: update="max_min", update_rho=0.1, ants=20,
               max_slope=30, seed=7, planner="pso" (a slot's keyword ``update_rho`` is the key
               ``update.rho``; other underscores are dashes). A slot may also be given a Python
@@ -208,14 +229,21 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
         if not isinstance(map, Map):
             map = Map(map)
         text_keys = dict(map.terrain_keys)
-        source = map.file if map.file is not None else _aco.ArrayMap(
-            map.array if map.kind == "grid" else None, map.array if map.kind == "terrain" else None, map.cell_size, map.name)
+        source = map._native()
     with _LiveObjects(given) as live:
         for name, value in live.items():
             text_keys[_key(name)] = _text(value)
-        record, used = _aco.plan(source, _cell(start, "start"), _cell(goal, "goal"), text_keys, preset or "",
-                                 os.fspath(config) if config is not None else "", int(threads))
-    return Result(json.loads(record), used)
+        record, used, iteration_best, pheromone = _aco.plan(
+            source, _cell(start, "start"), _cell(goal, "goal"), text_keys, preset or "",
+            os.fspath(config) if config is not None else "", int(threads), bool(svg_pheromone))
+    result = Result(json.loads(record), used)
+    # What the picture needs besides the result (aco._pictures); a map file is read again only to plot.
+    result._planned = {"source": source, "map": map if isinstance(map, Map) else None,
+                       "iteration_best": iteration_best, "pheromone": pheromone}
+    if svg is not None:
+        from ._pictures import write_svg
+        write_svg(result, svg)
+    return result
 
 
 def astar(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], goal: Sequence[int],

@@ -7,7 +7,8 @@ set -euo pipefail
 # that open the HTML report and player. python3: the player test's arithmetic. openmpi-bin and
 # libopenmpi-dev: acobench under mpirun (the release and debug presets build it with MPI).
 # python3-dev, pybind11-dev, python3-numpy: the Python package (python/) and the python bridge
-# plugins; python3-pandas, python3-pytest, python3-matplotlib: its DataFrames, tests and examples.
+# plugins; python3-pandas, python3-pytest, python3-matplotlib: its DataFrames, tests and examples;
+# python3-nbclient, python3-nbformat, python3-ipykernel: the test that runs the example notebook.
 # clang-format-14: the test that the sources are formatted as .clang-format says (tools/format.sh).
 # libompl-dev: the 'ompl' planner (planners/ompl; without it the build leaves the planner out) and
 # an OMPL benchmark log for the test that OMPL's own tools read our databases, with ompl-demos
@@ -15,7 +16,8 @@ set -euo pipefail
 packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
           nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev catch2 clang libclang-rt-14-dev
           chromium python3 openmpi-bin libopenmpi-dev python3-dev pybind11-dev python3-numpy python3-pandas
-          python3-pytest python3-matplotlib clang-format-14 libompl-dev ompl-demos sqlite3 "$@")
+          python3-pytest python3-matplotlib python3-nbclient python3-nbformat python3-ipykernel clang-format-14
+          libompl-dev ompl-demos sqlite3 "$@")
 # r-cran-irace: tools/irace/run.sh and the irace_tuning_run test. Installed without its
 # recommended packages: they pull in hundreds of R packages (GDAL, spatial statistics) irace never loads.
 packages_without_recommends=(r-cran-irace)

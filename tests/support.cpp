@@ -346,6 +346,12 @@ std::string unescape_xml(std::string text) {
 
 }  // namespace
 
+std::string svg_group(const std::string& svg, const std::string& id) {
+  const auto begin = svg.find("<g id=\"" + id + "\"");
+  REQUIRE(begin != std::string::npos);
+  return svg.substr(begin, svg.find("</g>", begin) - begin);
+}
+
 std::vector<std::string> texts_outside_view_box(const std::string& svg) {
   const auto root_end = svg.find('>', svg.find("<svg"));
   const std::string root = svg.substr(svg.find("<svg"), root_end - svg.find("<svg"));

@@ -66,6 +66,10 @@ bool reference_segment_clear(const aco::Map& map, aco::Cell a, aco::Cell b, bool
 // Layouts reserve room with the same estimate, so an empty answer means nothing is cut off.
 std::vector<std::string> texts_outside_view_box(const std::string& svg);
 
+// The group <g id="ID"> of an SVG picture, up to its first "</g>" (the pictures' groups hold no
+// groups); a picture without it fails the test.
+std::string svg_group(const std::string& svg, const std::string& id);
+
 // A Context for calling a strategy directly.
 aco::Context context(const aco::Graph& graph, aco::Cell start, aco::Cell goal, int iteration = 0,
                      int max_iterations = 100);

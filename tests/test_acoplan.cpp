@@ -267,12 +267,6 @@ namespace {
 
 // The part of `svg` from `<g id="ID"` to its closing tag (the groups of the run picture hold no
 // nested groups).
-std::string svg_group(const std::string& svg, const std::string& id) {
-  const auto begin = svg.find("<g id=\"" + id + "\"");
-  REQUIRE(begin != std::string::npos);
-  return svg.substr(begin, svg.find("</g>", begin) - begin);
-}
-
 std::size_t occurrences(const std::string& text, const std::string& what) {
   std::size_t count = 0;
   for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++count;
@@ -309,18 +303,18 @@ TEST_CASE("acoplan's SVG draws obstacle cells as one rectangle per run with cris
   picture.goal = graph.node({5, 2});
   picture.pheromone.assign(static_cast<std::size_t>(graph.num_edges()), 1.0);
   const std::string svg = aco::render_svg(graph, picture);
-  const std::string obstacles = svg_group(svg, "obstacles");
+  const std::string obstacles = test::svg_group(svg, "obstacles");
   CHECK_THAT(obstacles, Contains("shape-rendering=\"crispEdges\""));
   CHECK(occurrences(obstacles, "<rect") == 6);
   CHECK_THAT(obstacles, Contains("<rect x=\"0.5\" y=\"0.5\" width=\"4\" height=\"1\"/>"));
-  CHECK_THAT(svg_group(svg, "pheromone"), Contains("shape-rendering=\"crispEdges\""));
+  CHECK_THAT(test::svg_group(svg, "pheromone"), Contains("shape-rendering=\"crispEdges\""));
 
   // The pheromone field too: on an open map with the same pheromone on every edge, a cell's shade
   // follows its number of neighbours, so each row is three runs: its two end cells and the rest.
   const auto open_grid = test::grid({"........", "........", "........"});
   const aco::Graph open = aco::build_graph(open_grid, {});
   picture.pheromone.assign(static_cast<std::size_t>(open.num_edges()), 1.0);
-  CHECK(occurrences(svg_group(aco::render_svg(open, picture), "pheromone"), "<rect") == 9);
+  CHECK(occurrences(test::svg_group(aco::render_svg(open, picture), "pheromone"), "<rect") == 9);
 }
 
 TEST_CASE("acoplan's SVG has a legend for what its map shows, inside the picture", "[acoplan][svg]") {
@@ -329,7 +323,7 @@ TEST_CASE("acoplan's SVG has a legend for what its map shows, inside the picture
   aco::RunPicture picture;
   picture.goal = graph.node({3, 2});
   const std::string plain = aco::render_svg(graph, picture);
-  const std::string legend = svg_group(plain, "map-legend");
+  const std::string legend = test::svg_group(plain, "map-legend");
   for (const char* entry :
        {">start<", ">goal<", ">grid path (cell to cell)<", ">path after the smoother<", ">blocked cell<"})
     CHECK_THAT(legend, Contains(entry));
@@ -337,7 +331,7 @@ TEST_CASE("acoplan's SVG has a legend for what its map shows, inside the picture
   CHECK(test::texts_outside_view_box(plain).empty());
   picture.pheromone.assign(static_cast<std::size_t>(graph.num_edges()), 1.0);
   const std::string with_pheromone = aco::render_svg(graph, picture);
-  CHECK_THAT(svg_group(with_pheromone, "map-legend"), Contains(">pheromone (darker: more)<"));
+  CHECK_THAT(test::svg_group(with_pheromone, "map-legend"), Contains(">pheromone (darker: more)<"));
   CHECK(test::texts_outside_view_box(with_pheromone).empty());
 }
 

@@ -279,6 +279,21 @@ TEST_CASE("The SVG of a terrain shows shading, contours and a height legend", "[
   }
 }
 
+TEST_CASE("A map drawn alone is the run picture's map, without marks, its legend inside", "[terrain][svg]") {
+  const auto map = terrain({{800, 850, 900, 950}, {820, 870, kNoData, 990}, {840, 890, 940, 1000}}, 10);
+  const aco::Graph g = aco::build_graph(map, {aco::Neighbourhood::eight, false});
+  const std::string alone = aco::render_map_svg(g);
+  aco::RunPicture run;
+  run.goal = g.node({3, 2});
+  for (const char* id : {"terrain", "contours", "obstacles"}) {
+    INFO(id);
+    CHECK(test::svg_group(alone, id) == test::svg_group(aco::render_svg(g, run), id));
+  }
+  CHECK_THAT(alone, !Contains("<circle") && !Contains("convergence") && !Contains("map-legend") &&
+                        Contains("id=\"height-legend\""));
+  CHECK(test::texts_outside_view_box(alone).empty());
+}
+
 TEST_CASE("acoplan plans on the paper 000 terrain look-alike", "[terrain][acoplan]") {
   // The grid path's waypoints (terrain's taut smoother follows the surface between cells).
   const auto r = test::acoplan({"--scen", epf20_scen, "--json", "--update", "acs", "--smoother", "none"});

@@ -11,6 +11,7 @@ set -euo pipefail
 # python3-venv, python3-pip, python3-setuptools, python3-wheel: pip install ./python (the test
 # python_pip_install), with ccache, which compiles that build from the release build's objects;
 # mypy: the test python_mypy (the package's types and the examples).
+# python3-nbclient, python3-nbformat, python3-ipykernel: the test that runs the example notebook.
 # clang-format-14: the test that the sources are formatted as .clang-format says (tools/format.sh).
 # libompl-dev: the 'ompl' planner (planners/ompl; without it the build leaves the planner out) and
 # an OMPL benchmark log for the test that OMPL's own tools read our databases, with ompl-demos
@@ -19,7 +20,7 @@ packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev
           nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev catch2 clang libclang-rt-14-dev
           chromium python3 openmpi-bin libopenmpi-dev python3-dev pybind11-dev python3-numpy python3-pandas
           python3-pytest python3-matplotlib python3-venv python3-pip python3-setuptools python3-wheel ccache mypy
-          clang-format-14 libompl-dev ompl-demos sqlite3 "$@")
+          python3-nbclient python3-nbformat python3-ipykernel clang-format-14 libompl-dev ompl-demos sqlite3 "$@")
 # r-cran-irace: tools/irace/run.sh and the irace_tuning_run test. Installed without its
 # recommended packages: they pull in hundreds of R packages (GDAL, spatial statistics) irace never loads.
 packages_without_recommends=(r-cran-irace)

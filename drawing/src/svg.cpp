@@ -146,9 +146,14 @@ void draw_contours(std::ostream& out, const TerrainMap& terrain, HeightRange ran
   out << "</g>\n";
 }
 
+constexpr double kBarWidth = 200;
+constexpr const char* kBlockedTerrainLabel = "blocked (NODATA or too steep)";
+// The height legend's width and its height below its top (its title is above the top).
+double height_legend_width() { return kBarWidth + 32 + text_width(kBlockedTerrainLabel); }
+constexpr double kHeightLegendHeight = 32;
+
 // A colour bar from the lowest to the highest height, with both values.
 void draw_height_legend(std::ostream& out, HeightRange range, double left, double top) {
-  constexpr double kBarWidth = 200;
   out << "<defs><linearGradient id=\"height-ramp\">";
   for (const auto& stop : kHeightRamp)
     out << "<stop offset=\"" << stop.at << "\" stop-color=\"" << hex_colour(stop.r, stop.g, stop.b) << "\"/>";
@@ -160,7 +165,7 @@ void draw_height_legend(std::ostream& out, HeightRange range, double left, doubl
   out << "<text x=\"0\" y=\"28\">" << range.low << "</text>\n";
   out << "<text x=\"" << kBarWidth << "\" y=\"28\" text-anchor=\"end\">" << range.high << "</text>\n";
   out << "<rect x=\"" << kBarWidth + 16 << "\" width=\"12\" height=\"12\" fill=\"#333\"/><text x=\"" << kBarWidth + 32
-      << "\" y=\"11\">blocked (NODATA or too steep)</text>\n";
+      << "\" y=\"11\">" << kBlockedTerrainLabel << "</text>\n";
   out << "</g>\n";
 }
 
@@ -204,9 +209,10 @@ double draw_map_legend(std::ostream& out, const RunPicture& pic, bool terrain_sh
 }
 
 // Cells are drawn centred on their positions, in map units scaled by `scale`.
-// `terrain` is the map if it is one; `heights` its height range if it is not flat.
+// `terrain` is the map if it is one; `heights` its height range if it is not flat. `ends`: the
+// start and goal marks (a map drawn alone has neither).
 void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, double scale, const TerrainMap* terrain,
-              const std::optional<HeightRange>& heights) {
+              const std::optional<HeightRange>& heights, bool ends = true) {
   const int w = graph.width, h = graph.height;
   // Positions are in map units; the picture is in cells.
   const double unit = terrain ? terrain->cell_size() : 1.0;
@@ -273,6 +279,7 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
         << 1.5 * line << "\"";
   polyline(out, points, style.str().c_str());
   for (const auto& [node, colour] : {std::pair{pic.start, kStartColour}, std::pair{pic.goal, kGoalColour}}) {
+    if (!ends) break;
     const auto& p = graph.positions[node];
     out << "<circle cx=\"" << p.x() / unit << "\" cy=\"" << p.y() / unit << "\" r=\"" << std::max(0.35, 4.0 / scale)
         << "\" fill=\"" << colour << "\"/>\n";
@@ -344,6 +351,18 @@ void draw_convergence(std::ostream& out, const RunPicture& pic, double left, dou
   out << "</g>\n";
 }
 
+// The whole picture: its size, a light background, the title over the parts.
+std::string picture_document(double width, double height, const std::string& title, const std::string& parts) {
+  std::ostringstream out;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
+  out << "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
+  out << "<text x=\"" << kMargin << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"14\">" << xml_escape(title)
+      << "</text>\n";
+  out << parts << "</svg>\n";
+  return out.str();
+}
+
 }  // namespace
 
 std::string render_svg(const Graph& graph, const RunPicture& pic) {
@@ -364,14 +383,28 @@ std::string render_svg(const Graph& graph, const RunPicture& pic) {
   const double legend_bottom =
       map_legend_top + draw_map_legend(parts, pic, heights.has_value(), plot_left, map_legend_top);
   const double height = std::max(map_h + kMargin * 2, legend_bottom + kMargin / 2);
-  std::ostringstream out;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-      << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
-  out << "<rect width=\"100%\" height=\"100%\" fill=\"#fafafa\"/>\n";
-  out << "<text x=\"" << kMargin << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"14\">" << xml_escape(pic.title)
-      << "</text>\n";
-  out << parts.str() << "</svg>\n";
-  return out.str();
+  return picture_document(width, height, pic.title, parts.str());
+}
+
+std::string render_map_svg(const Graph& graph) {
+  const auto* terrain = dynamic_cast<const TerrainMap*>(graph.map);
+  const auto heights = height_range(terrain);
+  const double scale = kMapPixels / std::max(graph.width, graph.height);
+  std::ostringstream parts;
+  draw_map(parts, graph, RunPicture{}, scale, terrain, heights, false);
+  double width = graph.width * scale + kMargin * 2, height = graph.height * scale + kMargin * 2;
+  if (heights) {  // the height legend under the map, its title clear of the map's edge
+    const double top = graph.height * scale + kMargin + 30;
+    draw_height_legend(parts, *heights, kMargin, top);
+    width = std::max(width, kMargin * 2 + height_legend_width());
+    height = top + kHeightLegendHeight + kMargin / 2;
+  }
+  return picture_document(width, height, graph.map->name(), parts.str());
+}
+
+std::string run_title(const std::string& map_name, bool solved, double length, std::uint64_t seed) {
+  return map_name + ": " + (solved ? "length " + std::to_string(length) : "not solved") + ", seed " +
+         std::to_string(seed);
 }
 
 void write_svg(const std::filesystem::path& file, const Graph& graph, const RunPicture& picture) {

@@ -21,8 +21,7 @@ namespace {
 
 void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco::PlanRun& o) {
   aco::RunPicture picture;
-  picture.title = graph.map->name() + ": " + (o.solved() ? "length " + std::to_string(o.length) : "not solved") +
-                  ", seed " + std::to_string(o.seed);
+  picture.title = aco::run_title(graph.map->name(), o.solved(), o.length, o.seed);
   picture.start = o.start;
   picture.goal = o.goal;
   picture.grid_path = o.search.path;

@@ -120,6 +120,18 @@ class Map:
     def __repr__(self) -> str:
         return f"aco.Map({self.name!r}, {self.kind}, {self.width}x{self.height})"
 
+    def _native(self) -> Any:
+        """What the native module plans on: the map's file, or its array."""
+        if self.file is not None:
+            return self.file
+        return _aco.ArrayMap(self.array if self.kind == "occupancy" else None, self.array if self.kind == "terrain" else None,
+                             self.cell_size, self.name)
+
+    def _repr_svg_(self) -> str:
+        """The map as acoplan draws it, for Jupyter."""
+        from ._pictures import map_svg
+        return map_svg(self)
+
 
 def _kind_of(array: np.ndarray) -> str:
     """The kind an array's type says: integers and bools occupancy, floats heights."""
@@ -233,6 +245,11 @@ class Result:
         iterations = "" if planner == "astar" else f", {self.iterations} iterations"
         pipeline = f"preset {self.preset}" if planner == "aco" else f"planner {planner}"
         return f"<aco.Result length {self.length:.4f} {shape}{iterations}, {self.time_ms:.1f} ms, {pipeline}>"
+
+    def _repr_svg_(self) -> Optional[str]:
+        """acoplan's picture of the run, for Jupyter (None for a result not made by aco.plan())."""
+        from ._pictures import run_svg
+        return run_svg(self) if hasattr(self, "_planned") else None
 
 
 @functools.lru_cache(maxsize=None)
@@ -349,13 +366,15 @@ class _LiveObjects:
 
 
 # plan()'s own arguments, which are no run keys.
-_ARGUMENTS = ("map", "start", "goal", "preset", "config", "threads", "max_memory", "kind", "free")
+_ARGUMENTS = ("map", "start", "goal", "preset", "config", "threads", "max_memory", "kind", "free", "svg",
+              "svg_pheromone")
 
 
 def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], goal: Sequence[int], *,
          preset: Optional[str] = None, config: Optional[Union[str, os.PathLike]] = None,
          keys: Optional[Mapping[str, Any]] = None, threads: int = 0, max_memory: Optional[Union[int, str]] = None,
-         kind: Optional[str] = None, free: Any = None, **run_keys: Any) -> Result:
+         kind: Optional[str] = None, free: Any = None, svg: Optional[Union[str, os.PathLike]] = None,
+         svg_pheromone: bool = False, **run_keys: Any) -> Result:
     """Plans a path from start to goal with the ant colony (or another planner), as acoplan does.
 
     map         an aco.Map, a numpy array (see aco.Map) or a map file's path
@@ -370,6 +389,9 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
                 "512M" or "4G" (acoplan's --max-memory); default 3/4 of the available memory
     kind, free  for a numpy array: what it holds, "occupancy" or "terrain", and which value is
                 free in an occupancy array (see aco.Map)
+    svg         writes acoplan's picture of the run to this file (as ``acoplan --svg``); the
+                result shows the same picture in Jupyter
+    svg_pheromone  the picture also shows the final pheromone field (``--svg-pheromone``)
     run_keys    the same keys as Python keywords: update="max_min", update_rho=0.1, ants=20,
                 max_slope=30, seed=7, planner="pso" (a slot's keyword ``update_rho`` is the key
                 ``update.rho``; other underscores are dashes). A slot may also be given a Python
@@ -403,16 +425,22 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
         if not isinstance(map, Map):
             map = Map(map, kind=kind, free=free)
         text_keys = dict(map.terrain_keys)
-        source = map.file if map.file is not None else _aco.ArrayMap(
-            map.array if map.kind == "occupancy" else None, map.array if map.kind == "terrain" else None,
-            map.cell_size, map.name)
+        source = map._native()
     with _LiveObjects() as live, _python_spelling():
         for name, value in live.keys(given, f"o{next(_live_names)}").items():
             text_keys[_key(name)] = _text(value)
-        record, used, cell_size = _aco.plan(source, _cell(start, "start"), _cell(goal, "goal"), text_keys, preset or "",
-                                            os.fspath(config) if config is not None else "", int(threads),
-                                            None if max_memory is None else _text(max_memory))
-    return Result(json.loads(record), used, cell_size)
+        record, used, cell_size, iteration_best, pheromone = _aco.plan(
+            source, _cell(start, "start"), _cell(goal, "goal"), text_keys, preset or "",
+            os.fspath(config) if config is not None else "", int(threads),
+            None if max_memory is None else _text(max_memory), bool(svg_pheromone))
+    result = Result(json.loads(record), used, cell_size)
+    # What the picture needs besides the result (aco._pictures); a map file is read again only to plot.
+    result._planned = {"source": source, "map": map if isinstance(map, Map) else None,
+                       "iteration_best": iteration_best, "pheromone": pheromone}
+    if svg is not None:
+        from ._pictures import write_svg
+        write_svg(result, svg)
+    return result
 
 
 def _check_threads(threads: Any) -> None:

@@ -27,9 +27,11 @@
 #include "aco/plugin_error.hpp"
 #include "aco/presets.hpp"
 #include "aco/run_spec.hpp"
+#include "aco/simulation/simulation.hpp"
 #include "aco/studies/results_db.hpp"
 #include "aco/studies/runner.hpp"
 #include "aco/studies/statistics.hpp"
+#include "aco/svg.hpp"
 #include "aco/terrain.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/version.hpp"
@@ -118,10 +120,12 @@ std::string cell_text(const std::pair<int, int>& cell) {
 
 // One run, as acoplan's: the keys over the pipeline file (a preset, a config file, or the
 // default preset for the map's kind), resolved once, then plan_runs() and its JSON. Returns the
-// JSON, the pipeline's source and the map's cell size (the world units of the path per cell).
+// JSON, the pipeline's source, the map's cell size (the world units of the path per cell), and
+// what the run's picture needs and the JSON leaves out: each iteration's best length and, with
+// keep_pheromone, the final pheromone per edge.
 py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pair<int, int> start,
                std::pair<int, int> goal, const aco::Keys& keys, const std::string& preset, const std::string& config,
-               std::int64_t threads, const std::optional<std::string>& max_memory) {
+               std::int64_t threads, const std::optional<std::string>& max_memory, bool keep_pheromone) {
   aco::KeyedValues changes;
   changes.keys = keys;
   changes.keys["start"] = cell_text(start);
@@ -139,6 +143,7 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
 
   std::string json;
   double cell_size = 1.0;
+  std::vector<double> iteration_best, pheromone;
   {
     py::gil_scoped_release unlocked;  // plugins written in Python take it back (python bridge plugins)
     const aco::MemoryLimit memory(max_memory ? std::optional(aco::parse_memory_size(*max_memory, "max_memory"))
@@ -159,8 +164,10 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
     const auto runs = aco::plan_runs(registry(), graph, graph.node(from), graph.node(to), run, 1);
     const aco::PlanReport report{run, registry(), graph, source};
     json = aco::to_json(report, runs.front());
+    iteration_best = runs.front().iteration_best;
+    if (keep_pheromone) pheromone = runs.front().pheromone;
   }
-  return py::make_tuple(json, source, cell_size);
+  return py::make_tuple(json, source, cell_size, iteration_best, pheromone);
 }
 
 // A parameter's default as its type's Python value (int, float, bool, str), as a run reads it.
@@ -374,6 +381,102 @@ py::dict read_trials(const std::filesystem::path& database) {
   return columns;
 }
 
+// ---- Pictures and simulation (aco.plan(svg=), Result/Map._repr_svg_, aco.simulate) ----
+
+using MapSource = std::variant<std::filesystem::path, ArrayMap>;
+
+// The map and graph a run planned on, made again from the map and the run's problem and graph keys
+// (its resolved config), as the run made them.
+struct PlannedOn {
+  std::unique_ptr<aco::Map> map;
+  aco::Graph graph;
+};
+
+PlannedOn planned_on(const MapSource& source, const aco::Keys& run_keys) {
+  aco::Keys keys;
+  const auto wanted = [](const std::string& key) {
+    const auto named = [&key](const aco::ParamSpec& spec) { return spec.name == key; };
+    const auto problem = aco::problem_parameters(), graph = aco::graph_parameters();
+    return key.rfind("map.", 0) == 0 || std::any_of(problem.begin(), problem.end(), named) ||
+           std::any_of(graph.begin(), graph.end(), named);
+  };
+  for (const auto& [key, value] : run_keys)
+    if (wanted(key) && key != "start" && key != "goal") keys[key] = value;
+  const auto* file = std::get_if<std::filesystem::path>(&source);
+  if (file)
+    keys["map"] = file->string();
+  else
+    keys.erase("map");
+  const aco::RunSpec run = aco::resolve_run(keys, registry());
+  PlannedOn on;
+  on.map = file ? aco::load_problem_map(run.problem, &registry())
+                : make_map(std::get<ArrayMap>(source), run.problem.terrain);
+  on.graph = aco::build_graph(*on.map, run.graph);
+  return on;
+}
+
+aco::NodeId node_of(const aco::Graph& graph, std::pair<int, int> cell, const std::string& what) {
+  const aco::Cell c{cell.first, cell.second};
+  if (!graph.map->contains(c)) throw aco::Error(what + " " + cell_text(cell) + " is outside the map");
+  return graph.node(c);
+}
+
+// acoplan's picture of a run (aco::render_svg), from the run's fields as aco.Result holds them.
+std::string run_svg(const MapSource& source, const aco::Keys& run_keys, std::pair<int, int> start,
+                    std::pair<int, int> goal, const std::vector<std::pair<int, int>>& grid_path,
+                    const std::vector<std::vector<double>>& path, bool solved, double length, std::uint64_t seed,
+                    const std::vector<double>& best_so_far, const std::vector<double>& iteration_best,
+                    const std::vector<double>& pheromone, double optimal_length) {
+  const PlannedOn on = planned_on(source, run_keys);
+  aco::RunPicture picture;
+  picture.title = aco::run_title(on.map->name(), solved, length, seed);
+  picture.start = node_of(on.graph, start, "start");
+  picture.goal = node_of(on.graph, goal, "goal");
+  for (const auto& cell : grid_path) picture.grid_path.push_back(node_of(on.graph, cell, "a grid path's cell"));
+  for (const auto& point : path) {
+    if (point.size() < 2) throw aco::Error("a path's point needs x and y");
+    picture.path.emplace_back(point[0], point[1], point.size() > 2 ? point[2] : 0.0);
+  }
+  if (!pheromone.empty() && pheromone.size() != static_cast<std::size_t>(on.graph.num_edges()))
+    throw aco::Error("the pheromone has " + std::to_string(pheromone.size()) + " values, not one per edge (" +
+                     std::to_string(on.graph.num_edges()) + ")");
+  picture.pheromone = pheromone;
+  picture.best_so_far = best_so_far;
+  picture.iteration_best = iteration_best;
+  picture.optimal_length = optimal_length;
+  return aco::render_svg(on.graph, picture);
+}
+
+std::string map_svg(const MapSource& source, const aco::Keys& terrain_keys) {
+  return aco::render_map_svg(planned_on(source, terrain_keys).graph);
+}
+
+// One simulation as acosim runs it: the scenario with its run keys changed, and what happened.
+struct Simulation {
+  aco::simulation::Scenario scenario;
+  aco::simulation::SimulationResult result;
+};
+
+// acosim SCENARIO [--preset NAME | --config FILE] [--KEY VALUE ...]: the changes over the
+// scenario's run keys, then the run; the same checks and messages.
+Simulation simulate(const std::filesystem::path& file, const aco::Keys& keys, const std::string& preset,
+                    const std::string& config) {
+  Simulation run{aco::simulation::load_scenario(file, registry()), {}};
+  aco::KeyedValues changes;
+  if (!preset.empty()) changes = aco::preset_keys(preset);
+  if (!config.empty()) changes = aco::config_file_keys(config);
+  aco::KeyedValues given;
+  given.keys = keys;
+  changes = aco::overlay(changes, given);
+  if (!changes.keys.empty()) run.scenario = aco::simulation::with_run_keys(run.scenario, changes, registry());
+  py::gil_scoped_release unlocked;  // local planners written in Python take it back
+  const aco::MemoryLimit memory(std::nullopt);
+  run.result = aco::simulation::simulate(run.scenario, registry());
+  return run;
+}
+
+// ---- end of pictures and simulation ----
+
 using Sample = std::vector<double>;
 
 py::handle plugin_error_type;  // aco.PluginError
@@ -431,7 +534,7 @@ PYBIND11_MODULE(_aco, m) {
       }));
   m.def("map_arrays", &map_arrays, py::arg("file"), py::arg("terrain_keys"));
   m.def("plan", &plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::arg("keys"), py::arg("preset"),
-        py::arg("config"), py::arg("threads"), py::arg("max_memory"));
+        py::arg("config"), py::arg("threads"), py::arg("max_memory"), py::arg("keep_pheromone"));
   // A Moving AI .scen file's problems, with the map file acoplan --scen reads them on.
   m.def("scenarios", [](const std::filesystem::path& file) {
     py::list list;
@@ -493,4 +596,16 @@ PYBIND11_MODULE(_aco, m) {
   m.def("expected_running_time", [](const Sample& hitting_times, const Sample& efforts) {
     return aco::studies::expected_running_time(hitting_times, efforts);
   });
+
+  // Pictures and simulation.
+  m.def("run_svg", &run_svg, py::arg("map"), py::arg("keys"), py::arg("start"), py::arg("goal"), py::arg("grid_path"),
+        py::arg("path"), py::arg("solved"), py::arg("length"), py::arg("seed"), py::arg("best_so_far"),
+        py::arg("iteration_best"), py::arg("pheromone"), py::arg("optimal_length"));
+  m.def("map_svg", &map_svg, py::arg("map"), py::arg("terrain_keys"));
+  py::class_<Simulation>(m, "Simulation")
+      .def("summary_json",
+           [](const Simulation& s) { return aco::simulation::summary_json(s.scenario, s.result, registry()); })
+      .def("svg", [](const Simulation& s) { return aco::simulation::render_svg(s.scenario, s.result); })
+      .def("html", [](const Simulation& s) { return aco::simulation::render_html(s.scenario, s.result); });
+  m.def("simulate", &simulate, py::arg("file"), py::arg("keys"), py::arg("preset"), py::arg("config"));
 }

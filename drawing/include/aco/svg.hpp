@@ -1,6 +1,7 @@
 #pragma once
 // Self-contained SVG picture of a run: the map, the grid and final paths, optionally the final
 // pheromone field, and the convergence curve.
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -26,6 +27,10 @@ struct RunPicture {
 
 std::string render_svg(const Graph& graph, const RunPicture& picture);
 void write_svg(const std::filesystem::path& file, const Graph& graph, const RunPicture& picture);
+// The map alone, drawn as render_svg() draws it (Python's Map._repr_svg_), titled with its name.
+std::string render_map_svg(const Graph& graph);
+// A run picture's title: "MAP: length L, seed S" or "MAP: not solved, seed S".
+std::string run_title(const std::string& map_name, bool solved, double length, std::uint64_t seed);
 
 // Text made safe for SVG, HTML and XML: & < > " as entities.
 std::string xml_escape(const std::string& text);

@@ -3,17 +3,21 @@ aco.plot() for matplotlib."""
 from __future__ import annotations
 
 import os
-from typing import Any, Optional, Union
+from typing import Any, Optional, Tuple, Union
 
 from . import _aco
 from ._planning import Error, Map, Result, _text
 
 
 def _planned(result: Result) -> dict:
-    planned = getattr(result, "_planned", None)
+    planned = result._planned
     if planned is None:
         raise Error("this result has no picture: only a result of aco.plan() or aco.astar() knows its map")
     return planned
+
+
+def _cell(xy: Any) -> Tuple[int, int]:
+    return int(xy[0]), int(xy[1])
 
 
 def run_svg(result: Result) -> str:
@@ -22,8 +26,8 @@ def run_svg(result: Result) -> str:
     planned with ``svg_pheromone=True``."""
     planned = _planned(result)
     keys = {key: _text(value) for key, value in result.config.items()}
-    return _aco.run_svg(planned["source"], keys, tuple(result.json["start"]), tuple(result.json["goal"]),
-                        [tuple(cell) for cell in result.grid_path], result.path.tolist(), result.solved,
+    return _aco.run_svg(planned["source"], keys, _cell(result.json["start"]), _cell(result.json["goal"]),
+                        [_cell(cell) for cell in result.grid_path], result.path.tolist(), result.solved,
                         result.length or 0.0, result.seed, result.convergence.tolist(),
                         planned["iteration_best"], planned["pheromone"], result.optimal_length or 0.0)
 
@@ -41,11 +45,12 @@ def write_svg(result: Result, path: Union[str, os.PathLike]) -> None:
 def run_map(result: Result) -> Map:
     """The aco.Map the run planned on (a map file read again, with the run's terrain keys)."""
     planned = _planned(result)
-    if planned["map"] is None:
+    map = planned["map"]
+    if map is None:
         terrain = {key: value for key, value in result.config.items()
                    if key in ("max-slope", "height-scale", "cell-size", "map-format") or key.startswith("map.")}
-        planned["map"] = Map.load(planned["source"], **terrain)
-    return planned["map"]
+        map = planned["map"] = Map.load(planned["source"], **terrain)
+    return map
 
 
 def plot(subject: Union[Result, Map], ax: Optional[Any] = None) -> Any:

@@ -207,6 +207,8 @@ class Result:
         self.json = record
         self.preset = preset
         self.cell_size = cell_size
+        # What its picture needs besides the fields (aco._pictures), set by aco.plan().
+        self._planned: Optional[dict] = None
         self.solved: bool = record["solved"]
         self.reason: str = record.get("reason", "")
         self.length = record["length"]
@@ -249,7 +251,7 @@ class Result:
     def _repr_svg_(self) -> Optional[str]:
         """acoplan's picture of the run, for Jupyter (None for a result not made by aco.plan())."""
         from ._pictures import run_svg
-        return run_svg(self) if hasattr(self, "_planned") else None
+        return run_svg(self) if self._planned is not None else None
 
 
 @functools.lru_cache(maxsize=None)

@@ -45,21 +45,29 @@ def interrupted(script, tmp_path, ready=None):
 
 
 def test_ctrl_c_stops_a_long_plan_between_iterations_with_keyboard_interrupt(tmp_path):
-    # The only Python hook runs once, before the first iteration: the interrupt finds the colony
-    # iterating in C++, and KeyboardInterrupt comes out of plan() itself.
+    # No Python hook: once the main thread is inside plan(), which never returns by itself, only
+    # the colony's check between iterations can end it. "started" comes from a watcher thread when
+    # it sees plan() on the main thread's stack, so the signal cannot arrive before.
     out = interrupted(f"""
-        import traceback
+        import sys, threading, time, traceback
         import aco
 
-        class Announcing:
-            def initialize(self, context, tau):
-                tau[:] = 1.0
-                print("started", flush=True)
+        def announce(main=threading.main_thread().ident):
+            while True:
+                frame = sys._current_frames().get(main)
+                while frame is not None and frame.f_code.co_name != "plan":
+                    frame = frame.f_back
+                if frame is not None:
+                    print("started", flush=True)
+                    return
+                time.sleep(0.01)
 
+        threading.Thread(target=announce, daemon=True).start()
         try:
-            aco.plan({str(MAP1)!r}, (0, 0), (19, 19), preset="ant-system", iterations={ENDLESS}, init=Announcing())
+            aco.plan({str(MAP1)!r}, (0, 0), (19, 19), preset="ant-system", iterations={ENDLESS})
         except KeyboardInterrupt as interrupt:
-            print("KeyboardInterrupt in", traceback.extract_tb(interrupt.__traceback__)[-1].name)
+            names = [frame.name for frame in traceback.extract_tb(interrupt.__traceback__)]
+            print("KeyboardInterrupt in", "plan" if "plan" in names else names)
         """, tmp_path)
     assert out == "KeyboardInterrupt in plan\n"
 

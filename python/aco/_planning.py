@@ -367,6 +367,15 @@ class _LiveObjects:
             delattr(_live, name)
 
 
+def _given(preset: Optional[str], config: Any, keys: Optional[Mapping[str, Any]], run_keys: Mapping[str, Any]) -> dict:
+    """The run keys a call gives (keywords, then ``keys=``), once preset and config are checked."""
+    if preset is not None and config is not None:
+        raise Error("preset and config: give one of them")
+    given = dict(run_keys)
+    given.update(keys or {})
+    return given
+
+
 # plan()'s own arguments, which are no run keys.
 _ARGUMENTS = ("map", "start", "goal", "preset", "config", "threads", "max_memory", "kind", "free", "svg",
               "svg_pheromone")
@@ -404,10 +413,7 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
     bad key, value, map or cell raises aco.Error with acoplan's message, its keys spelled as
     keywords (``did you mean 'ants'?``).
     """
-    if preset is not None and config is not None:
-        raise Error("preset and config: give one of them")
-    given = dict(run_keys)
-    given.update(keys or {})
+    given = _given(preset, config, keys, run_keys)
     given_keys = {_key(k) for k in given}
     if given_keys & {"scen", "scen-index"}:
         raise Error("plan() takes no scenario file: read one with aco.load_scenarios(path) and plan its problems, "

@@ -10,7 +10,7 @@ from typing import Any, Mapping, Optional, Union
 import numpy as np
 
 from . import _aco
-from ._planning import Error, _keys, _live_names, _LiveObjects, _python_spelling
+from ._planning import Error, _given, _keys, _live_names, _LiveObjects, _python_spelling
 
 # acosim --csv's columns: the trajectory, one row per control step (the start first).
 _TRAJECTORY_COLUMNS = ("t", "x", "y", "heading", "v", "w", "plan", "goal_index")
@@ -91,10 +91,7 @@ def simulate(scenario: Union[str, os.PathLike, Mapping[str, Any]], *, preset: Op
 
     Returns an aco.Simulation; a bad scenario or key raises aco.Error with acosim's message.
     """
-    if preset is not None and config is not None:
-        raise Error("preset and config: give one of them")
-    given = dict(run_keys)
-    given.update(keys or {})
+    given = _given(preset, config, keys, run_keys)
     config_text = os.fspath(config) if config is not None else ""
     with _LiveObjects() as live, _python_spelling():
         keys = _keys(live.keys(given, f"o{next(_live_names)}"))

@@ -11,11 +11,17 @@ Map::~Map() = default;
 
 std::string to_string(Cell c) {
   std::string text = "(";
-  text.append(std::to_string(c.x)).append(",").append(std::to_string(c.y)).append(")");
-  return text;
+  text.append(std::to_string(c.x)).append(",").append(std::to_string(c.y));
+  if (c.z != 0) text.append(",").append(std::to_string(c.z));
+  return text.append(")");
 }
 
-Eigen::Vector3d Map::position(Cell c) const { return {double(c.x), double(c.y), 0.0}; }
+std::string Map::describe(Cell c) const {
+  if (!volumetric() || c.z != 0) return to_string(c);
+  return "(" + std::to_string(c.x) + "," + std::to_string(c.y) + ",0)";
+}
+
+Eigen::Vector3d Map::position(Cell c) const { return {double(c.x), double(c.y), double(c.z)}; }
 
 bool Map::step_allowed(Cell, Cell) const { return true; }
 

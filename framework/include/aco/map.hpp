@@ -1,5 +1,6 @@
 #pragma once
 // Maps are grids of cells; x = column, y = row from the top, both 0-based (Moving AI convention).
+// A voxel world (aco/voxel.hpp) adds z, the layer from the ground up; on every other map z is 0.
 #include <Eigen/Core>
 #include <boost/config.hpp>
 #include <cstdint>
@@ -11,10 +12,11 @@ namespace aco {
 struct Cell {
   int x = 0;
   int y = 0;
+  int z = 0;
   friend bool operator==(const Cell&, const Cell&) = default;
 };
 
-std::string to_string(Cell c);  // "(x,y)"
+std::string to_string(Cell c);  // "(x,y)", or "(x,y,z)" where z is not 0
 
 // A grid the planner can move on. The occupancy grid is the 2D case; a terrain map
 // (heights, slope limits; aco/terrain.hpp) overrides position() and step_allowed().
@@ -23,8 +25,13 @@ class BOOST_SYMBOL_VISIBLE Map {
   virtual ~Map();
   virtual int width() const = 0;
   virtual int height() const = 0;
+  // Layers: 1 for a grid or a terrain, more for a voxel world.
+  virtual int depth() const { return 1; }
+  // A voxel world: moves go up and down too (6-, 18- and 26-neighbourhoods), and cells are named
+  // x,y,z. False for grids and terrains, whose cells all have z = 0.
+  virtual bool volumetric() const { return false; }
   virtual bool passable(Cell c) const = 0;
-  // Position of a cell's centre in planning units; z is 0 on flat maps.
+  // Position of a cell's centre in planning units; z is the cell's layer (0 on flat maps).
   virtual Eigen::Vector3d position(Cell c) const;
   // Extra per-step rule beyond passable cells (for example a slope limit).
   virtual bool step_allowed(Cell from, Cell to) const;
@@ -34,7 +41,11 @@ class BOOST_SYMBOL_VISIBLE Map {
   // The default says "outside the map" or "an obstacle".
   virtual std::string blocked_reason(Cell c) const;
 
-  bool contains(Cell c) const { return c.x >= 0 && c.y >= 0 && c.x < width() && c.y < height(); }
+  bool contains(Cell c) const {
+    return c.x >= 0 && c.y >= 0 && c.z >= 0 && c.x < width() && c.y < height() && c.z < depth();
+  }
+  // to_string(c), with z on a volumetric map even where it is 0.
+  std::string describe(Cell c) const;
 };
 
 // World placement of a grid, as given by ROS map_server YAML; identity for other formats.

@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstring>
 
 #include "aco/plugin_call.hpp"
@@ -50,20 +51,37 @@ void report(const char* what, int signal, const char* where, std::size_t length)
 
 void to_stderr(int signal, const char* where, std::size_t length) noexcept { report("crashed", signal, where, length); }
 
+// Set by the first thread into on_stop(). A lock-free atomic: safe in a signal handler.
+std::atomic<bool> stopping{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
 // SIGUSR1, as `timeout -s USR1` sends it: say where this thread was, then end as the signal would
-// have (SA_RESETHAND restored its default action).
+// have. Not SA_RESETHAND: the kernel puts the default action back when it takes the signal for
+// the handler, before it blocks the signal for the handler's run, and timeout sends SIGUSR1
+// twice (to the command, then to its process group); a second one in between found the default
+// action and ended the process before the handler wrote a byte. So the handler stays installed
+// and puts the default action back itself once the report is out. A later SIGUSR1 that reaches
+// another thread meanwhile (this one blocks it) waits there for the process to end.
 void on_stop(int signal) {
+  if (stopping.exchange(true)) {
+    for (;;) ::pause();
+  }
   char where[1024];
   report("stopped", signal, where, describe_plugin_call(where, sizeof where));
+  struct sigaction action {};
+  action.sa_handler = SIG_DFL;
+  sigemptyset(&action.sa_mask);
+  ::sigaction(signal, &action, nullptr);
+  // Blocked while this handler runs: delivered, by the default action, when it returns.
   ::raise(signal);
 }
 
-// `handler` for `signal`, once (the default action comes back for the handler to raise it
-// again), on the alternate stack where one is set.
-void handle_once(int signal, void (*handler)(int)) {
+// `handler` for `signal` on the alternate stack where one is set; with `once`, the default action
+// comes back for the handler to raise the signal again.
+void handle(int signal, void (*handler)(int), bool once) {
   struct sigaction action {};
   action.sa_handler = handler;
-  action.sa_flags = SA_RESETHAND | SA_ONSTACK;
+  action.sa_flags = SA_ONSTACK | (once ? SA_RESETHAND : 0);
   sigemptyset(&action.sa_mask);
   ::sigaction(signal, &action, nullptr);
 }
@@ -100,13 +118,13 @@ void on_fatal_signal(CrashWriter writer) {
   stack.ss_sp = alternate_stack;
   stack.ss_size = sizeof alternate_stack;
   ::sigaltstack(&stack, nullptr);
-  for (const int signal : kFatalSignals) handle_once(signal, on_signal);
+  for (const int signal : kFatalSignals) handle(signal, on_signal, true);
 }
 
 void report_crashes(const char* program) {
   crash_program = program;
   on_fatal_signal(to_stderr);
-  handle_once(SIGUSR1, on_stop);
+  handle(SIGUSR1, on_stop, false);
 }
 
 }  // namespace aco

@@ -99,7 +99,7 @@ aco::Ant ant(const aco::Graph& graph, const std::vector<aco::Cell>& cells) {
     const aco::EdgeId e = graph.find_edge(a.nodes[i - 1], a.nodes[i]);
     if (e < 0) throw aco::Error("test ant: cells are not neighbours");
     a.edges.push_back(e);
-    a.length += graph.costs[e];
+    a.length += graph.cost(e);
   }
   return a;
 }

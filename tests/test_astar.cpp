@@ -46,7 +46,7 @@ double dijkstra(const aco::Graph& g, aco::NodeId start, aco::NodeId goal) {
     if (d > dist[n]) continue;
     if (n == goal) return d;
     for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) {
-      const double nd = d + g.costs[e];
+      const double nd = d + g.cost(e);
       if (nd < dist[g.targets[e]]) {
         dist[g.targets[e]] = nd;
         open.push({nd, g.targets[e]});

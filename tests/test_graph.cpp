@@ -32,23 +32,23 @@ void check_invariants(const aco::Graph& g) {
   REQUIRE(static_cast<int>(g.offsets.size()) == g.num_nodes() + 1);
   REQUIRE(g.offsets.front() == 0);
   REQUIRE(g.offsets.back() == g.num_edges());
-  REQUIRE(g.costs.size() == g.targets.size());
-  REQUIRE(g.reverse.size() == g.targets.size());
+  REQUIRE(g.edge_costs.size() == g.targets.size());
+  REQUIRE(g.reverse_edges.size() == g.targets.size());
   for (aco::NodeId n = 0; n < g.num_nodes(); ++n) {
     if (!g.passable(n)) CHECK(g.degree(n) == 0);
     for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) {
       const aco::NodeId m = g.targets[e];
       CHECK(g.passable(m));
       CHECK(m != n);
-      const aco::EdgeId r = g.reverse[e];
+      const aco::EdgeId r = g.reverse_edge(e);
       REQUIRE(r >= 0);
       REQUIRE(r < g.num_edges());
       CHECK(g.targets[r] == n);
-      CHECK(g.reverse[r] == e);
+      CHECK(g.reverse_edge(r) == e);
       CHECK(g.source(e) == n);
-      CHECK(g.costs[r] == g.costs[e]);
+      CHECK(g.cost(r) == g.cost(e));
       const aco::Cell a = g.cell(n), b = g.cell(m);
-      CHECK(g.costs[e] == Approx(std::hypot(double(a.x - b.x), double(a.y - b.y))));
+      CHECK(g.cost(e) == Approx(std::hypot(double(a.x - b.x), double(a.y - b.y))));
     }
   }
 }
@@ -111,7 +111,7 @@ TEST_CASE("Open 5x5 grid: edge counts, degrees and costs per neighbourhood", "[g
         offsets.insert({dx, dy});
         const int manhattan = std::abs(dx) + std::abs(dy);
         const double expected = manhattan == 1 ? 1.0 : manhattan == 2 ? std::sqrt(2.0) : std::sqrt(5.0);
-        CHECK(g.costs[e] == Approx(expected));
+        CHECK(g.cost(e) == Approx(expected));
         CHECK(std::max(std::abs(dx), std::abs(dy)) <= (x.n == aco::Neighbourhood::sixteen ? 2 : 1));
         if (x.n == aco::Neighbourhood::four) CHECK(manhattan == 1);
         if (manhattan == 3) CHECK(std::abs(dx) != std::abs(dy));
@@ -136,7 +136,7 @@ TEST_CASE("Corner rule for diagonal steps", "[graph]") {
       CHECK(has_edge(cutting, {0, 0}, {1, 1}));
       CHECK(has_edge(cutting, {1, 1}, {0, 0}));
       CHECK(cutting.num_edges() == 2);
-      CHECK(cutting.costs[cutting.find_edge(0, 3)] == Approx(std::sqrt(2.0)));
+      CHECK(cutting.cost(cutting.find_edge(0, 3)) == Approx(std::sqrt(2.0)));
       check_invariants(cutting);
     }
     // The other diagonal, mirrored.
@@ -211,7 +211,7 @@ TEST_CASE("Knight moves need the two cells beside the segment midpoint", "[graph
       INFO("move (" << dx << "," << dy << ") in a corridor, corner cutting " << cc);
       const auto g = build(map, aco::Neighbourhood::sixteen, cc);
       CHECK(has_edge(g, centre, target));
-      CHECK(g.costs[g.find_edge(g.node(centre), g.node(target))] == Approx(std::sqrt(5.0)));
+      CHECK(g.cost(g.find_edge(g.node(centre), g.node(target))) == Approx(std::sqrt(5.0)));
       check_invariants(g);
     }
   }

@@ -35,7 +35,7 @@ TEST_CASE("every bundled preset is listed with its first comment line", "[preset
     CHECK(p.summary.back() == '.');  // a whole sentence, not a line cut mid-way
   }
   CHECK(names == std::vector<std::string>{"ant-system", "paper000", "paper001", "paper002", "paper003", "paper004",
-                                          "robust", "terrain"});
+                                          "robust", "terrain", "voxel"});
   const auto r = test::acoplan({"--list-presets"});
   REQUIRE(r.exit_code == 0);
   CHECK_THAT(r.out,
@@ -158,4 +158,13 @@ TEST_CASE("acosim runs the recommended pipeline under a scenario naming none and
   CHECK_THAT(error({"--local.folow", "1"}), Contains("did you mean 'local.follow'"));
   CHECK_THAT(error({"--start", "1,1"}), Contains("--start: 'start' is the scenario's, not a run key to change"));
   CHECK_THAT(error({"--preset", "nope"}), Contains("unknown preset 'nope'"));
+}
+
+TEST_CASE("the default preset follows the map's kind: voxel worlds get the voxel preset", "[presets][voxel]") {
+  CHECK(aco::default_preset("maps/arena.map") == "robust");
+  CHECK(aco::default_preset("terrain/epf20.asc.scen") == "terrain");
+  CHECK(aco::default_preset("voxel/Simple.3dmap") == "voxel");
+  CHECK(aco::default_preset("voxel/Simple.3dmap.3dscen") == "voxel");
+  CHECK(aco::default_preset("octomap/hall.bt") == "voxel");
+  CHECK(aco::default_preset("octomap/hall.ot") == "voxel");
 }

@@ -109,7 +109,7 @@ TEST_CASE("resolve_run names the key of every mistake", "[run_spec][errors]") {
   CHECK_THAT(key_error({{"scen-index", "3"}}), Contains("--scen-index needs --scen"));
   CHECK_THAT(key_error({{"start", "1;2"}}, &key), Contains("'1;2' is not a cell"));
   CHECK(key == "--start");
-  CHECK_THAT(key_error({{"neighbourhood", "6"}}), Contains("is not one of 4,8,16"));
+  CHECK_THAT(key_error({{"neighbourhood", "12"}}), Contains("is not one of 4,8,16,6,18,26"));
   CHECK(key_error({{"planner", "pso"}, {"pso.particles", "10"}}).empty());
 }
 

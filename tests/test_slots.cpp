@@ -31,7 +31,7 @@ std::vector<std::string> split_hooks(const std::string& list) {
 
 // Every hook of a slot's interface: Strategy's (begin_run) and the table's method and hooks.
 std::set<std::string> table_hooks(const aco::SlotInfo& slot) {
-  std::set<std::string> hooks{"begin_run", slot.method};
+  std::set<std::string> hooks{"begin_run", "supports_voxel_worlds", slot.method};
   if (*slot.hooks)
     for (const auto& hook : split_hooks(slot.hooks)) hooks.insert(hook);
   return hooks;
@@ -58,6 +58,10 @@ template <class Interface>
 class Probe : public Interface {
  public:
   void begin_run(const aco::Context&) override { note("begin_run"); }
+  bool supports_voxel_worlds() const override {
+    note("supports_voxel_worlds");
+    return false;
+  }
   void note(const char* hook) const { called->insert(hook); }
   std::shared_ptr<std::set<std::string>> called = std::make_shared<std::set<std::string>>();
 };
@@ -167,19 +171,19 @@ std::set<std::string> hooks_reaching_the_plugin(std::unique_ptr<Probe<Interface>
   const auto called = probe->called;
   const std::unique_ptr<Interface> guarded =
       aco::guard(std::unique_ptr<Interface>(std::move(probe)), {"slot", "probe", ""});
+  (void)guarded->supports_voxel_worlds();
   call_every_hook(*guarded);
   return *called;
 }
 
 }  // namespace
 
-TEST_CASE("every slot's interface declares the hooks the slot table lists, and Strategy begin_run alone",
-          "[slots][guard]") {
-  CHECK(declared_virtuals("Strategy") == std::set<std::string>{"begin_run"});
+TEST_CASE("every slot's interface declares the hooks the slot table lists, and Strategy its two", "[slots][guard]") {
+  CHECK(declared_virtuals("Strategy") == std::set<std::string>{"begin_run", "supports_voxel_worlds"});
   for (const aco::SlotInfo& slot : aco::kSlotTable) {
     INFO("slot " << slot.name << ", interface " << slot.interface);
     std::set<std::string> declared = declared_virtuals(slot.interface);
-    declared.insert("begin_run");
+    declared.insert({"begin_run", "supports_voxel_worlds"});
     CHECK(declared == table_hooks(slot));
   }
 }

@@ -177,7 +177,7 @@ TEST_CASE("Terrain step costs are 3D distances", "[terrain]") {
   const auto cost = [&](aco::Cell a, aco::Cell b) {
     const aco::EdgeId e = g.find_edge(g.node(a), g.node(b));
     REQUIRE(e >= 0);
-    return g.costs[e];
+    return g.cost(e);
   };
   CHECK(cost({0, 0}, {1, 0}) == Approx(5));  // run 4, rise 3
   CHECK(cost({1, 0}, {0, 0}) == Approx(5));

@@ -84,8 +84,9 @@ double sight_length(const Graph& g, std::span<const NodeId> nodes, int limit) {
   Cell from = g.cell(nodes[0]);
   for (std::size_t k = 2; k < nodes.size(); ++k) {
     const Cell to = g.cell(nodes[k]);
-    const std::int64_t dx = to.x - from.x, dy = to.y - from.y;
-    if ((limit == 0 || dx * dx + dy * dy <= limit_squared) && line_of_sight(*g.map, from, to, corner_cutting)) continue;
+    const std::int64_t dx = to.x - from.x, dy = to.y - from.y, dz = to.z - from.z;
+    if ((limit == 0 || dx * dx + dy * dy + dz * dz <= limit_squared) && line_of_sight(*g.map, from, to, corner_cutting))
+      continue;
     length += g.distance(nodes[waypoint], nodes[k - 1]);
     waypoint = k - 1;
     from = g.cell(nodes[waypoint]);
@@ -259,7 +260,7 @@ class Colony {
   void arrive(Ant& ant, Scratch* scratch) const {
     ant.arrived = true;
     ant.length = 0.0;
-    for (EdgeId e : ant.edges) ant.length += g_.costs[e];
+    for (EdgeId e : ant.edges) ant.length += g_.cost(e);
     // A walk that retraces the best path (already shortened) has nothing to gain: skip the work.
     // Not in the restart twin, whose walks must not depend on each other.
     const bool retraces_best = s_.null_model != NullModel::restarts && has_best_ && ant.length == best_grid_length_ &&
@@ -291,7 +292,7 @@ class Colony {
       best_grid_length_ = best_.length;
       if (s_.walk_length != WalkLength::grid) {
         best_grid_length_ = 0.0;
-        for (EdgeId e : best_.edges) best_grid_length_ += g_.costs[e];
+        for (EdgeId e : best_.edges) best_grid_length_ += g_.cost(e);
       }
     }
     if (s_.null_model != NullModel::none) return iteration_best;  // the twins learn nothing
@@ -544,7 +545,7 @@ int largest_same_path(const std::vector<Ant>& ants) {
 // The walk from `ant`'s end back along `reversed` (a walk in the opposite direction) to its start.
 void append_reversed(const Graph& g, Ant& ant, const Ant& reversed, std::size_t from_index) {
   for (std::size_t i = from_index; i-- > 0;) {
-    ant.edges.push_back(g.reverse[reversed.edges[i]]);
+    ant.edges.push_back(g.reverse_edge(reversed.edges[i]));
     ant.nodes.push_back(reversed.nodes[i]);
   }
 }

@@ -24,8 +24,11 @@ WalkShortener::WalkShortener(const Graph& graph, const std::vector<std::uint8_t>
     : g_(graph), forbidden_(forbidden), window_(window) {
   const std::span<const Move> all = moves(graph.options.neighbourhood);
   for (std::size_t m = 0; m < all.size(); ++m) {
-    inverse_length_.push_back(1.0 / std::hypot(all[m].dx, all[m].dy));
-    if (std::abs(all[m].dx) <= 1 && std::abs(all[m].dy) <= 1)
+    const Move& move = all[m];
+    inverse_length_.push_back(1.0 / (move.dz == 0
+                                         ? std::hypot(move.dx, move.dy)
+                                         : std::sqrt(move.dx * move.dx + move.dy * move.dy + move.dz * move.dz)));
+    if (std::abs(all[m].dx) <= 1 && std::abs(all[m].dy) <= 1 && all[m].dz == 0)
       unit_move_[(all[m].dy + 1) * 3 + all[m].dx + 1] = static_cast<int>(m);
   }
   eight_ = graph.options.neighbourhood == Neighbourhood::eight;
@@ -58,7 +61,7 @@ void WalkShortener::cut_loops(std::vector<NodeId>& nodes, WalkScratch& s) const 
       const WalkScratch::Mark mark = s.marks[t];
       if (mark.stamp != stamp) continue;
       const auto j = static_cast<std::size_t>(mark.index);
-      if (j > next && g_.costs[e] < s.prefix[j] - s.prefix[k]) next = j;
+      if (j > next && g_.cost(e) < s.prefix[j] - s.prefix[k]) next = j;
     }
     k = next;
   }
@@ -72,11 +75,11 @@ bool WalkShortener::straight_segment(NodeId from, NodeId to, std::vector<NodeId>
   Cell at = g_.cell(from);
   const Cell end = g_.cell(to);
   NodeId node = from;
-  const int limit = 2 * (std::abs(at.x - end.x) + std::abs(at.y - end.y));
+  const int limit = 2 * (std::abs(at.x - end.x) + std::abs(at.y - end.y) + std::abs(at.z - end.z));
   while (node != to) {
     // The move best aligned with the direction to the end (largest cosine); if the graph has
     // no such edge here, or its cell is forbidden, the straight segment is blocked.
-    const int dx = end.x - at.x, dy = end.y - at.y;
+    const int dx = end.x - at.x, dy = end.y - at.y, dz = end.z - at.z;
     int best = -1;
     if (eight_) {
       // The loop below for the 8-neighbourhood, in closed form and the same arithmetic: the
@@ -91,7 +94,7 @@ bool WalkShortener::straight_segment(NodeId from, NodeId to, std::vector<NodeId>
     } else {
       double best_alignment = 0.0;
       for (std::size_t m = 0; m < all.size(); ++m) {
-        const double alignment = (all[m].dx * dx + all[m].dy * dy) * inverse_length_[m];
+        const double alignment = (all[m].dx * dx + all[m].dy * dy + all[m].dz * dz) * inverse_length_[m];
         if (alignment > best_alignment) {
           best_alignment = alignment;
           best = static_cast<int>(m);
@@ -102,9 +105,9 @@ bool WalkShortener::straight_segment(NodeId from, NodeId to, std::vector<NodeId>
     // The move exists where the node's mask has it (the graph's move order is the moves' order);
     // its target is the cell it leads to. No edge id is needed until the walk is rebuilt.
     if (!(g_.move_mask[node] >> best & 1u)) return false;
-    node += all[best].dy * g_.width + all[best].dx;
+    node += (all[best].dz * g_.height + all[best].dy) * g_.width + all[best].dx;
     if (forbidden_[node]) return false;
-    at = {at.x + all[best].dx, at.y + all[best].dy};
+    at = {at.x + all[best].dx, at.y + all[best].dy, at.z + all[best].dz};
     segment.push_back(node);
   }
   return true;
@@ -176,7 +179,7 @@ void WalkShortener::shorten(Ant& ant, WalkScratch& s) const {
   ant.length = 0.0;
   for (std::size_t k = 0; k + 1 < ant.nodes.size(); ++k) {
     ant.edges[k] = g_.find_edge(ant.nodes[k], ant.nodes[k + 1]);
-    ant.length += g_.costs[ant.edges[k]];
+    ant.length += g_.cost(ant.edges[k]);
   }
 }
 

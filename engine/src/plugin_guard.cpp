@@ -19,6 +19,9 @@ class Guarded : public Interface, public Identified {
   void begin_run(const Context& c) override {
     call("begin_run()", -1, [&] { p_->begin_run(c); });
   }
+  bool supports_voxel_worlds() const override {
+    return call("supports_voxel_worlds()", -1, [&] { return p_->supports_voxel_worlds(); });
+  }
 
  protected:
   template <class F>

@@ -23,7 +23,7 @@ std::optional<ShortestPath> astar(const Graph& graph, NodeId start, NodeId goal)
     if (n == goal) break;
     for (EdgeId e = graph.edges_begin(n); e < graph.edges_end(n); ++e) {
       const NodeId m = graph.targets[e];
-      const double g = cost[n] + graph.costs[e];
+      const double g = cost[n] + graph.cost(e);
       if (g < cost[m]) {
         cost[m] = g;
         parent[m] = n;

@@ -33,6 +33,12 @@ constexpr std::array<Move, 16> kMoves = {{{1, 0},
                                           {1, -2},
                                           {2, -1}}};
 
+// In 3D: the 6 faces, the 12 edges, the 8 corners, each group in a fixed order.
+constexpr std::array<Move, 26> kMoves3d = {
+    {{1, 0, 0},  {0, 1, 0},  {-1, 0, 0},  {0, -1, 0},  {0, 0, 1},  {0, 0, -1},  {1, 1, 0},    {-1, 1, 0},  {-1, -1, 0},
+     {1, -1, 0}, {1, 0, 1},  {-1, 0, 1},  {-1, 0, -1}, {1, 0, -1}, {0, 1, 1},   {0, -1, 1},   {0, -1, -1}, {0, 1, -1},
+     {1, 1, 1},  {-1, 1, 1}, {-1, -1, 1}, {1, -1, 1},  {1, 1, -1}, {-1, 1, -1}, {-1, -1, -1}, {1, -1, -1}}};
+
 // The cells a move's segment passes through besides its two ends, and whether touching
 // them only at a corner (diagonal moves) is what they guard.
 bool move_clear(const Map& map, Cell from, Move m, bool corner_cutting) {
@@ -50,10 +56,26 @@ bool move_clear(const Map& map, Cell from, Move m, bool corner_cutting) {
   return map.passable({from.x, from.y + sy}) && map.passable({from.x + sx, from.y + sy});
 }
 
+// A 3D move without corner cutting: every voxel of the box it spans is free (the two ends are
+// checked by the caller).
+bool box_clear(const Map& map, Cell from, Move m) {
+  for (int x = 0; x <= (m.dx != 0 ? 1 : 0); ++x)
+    for (int y = 0; y <= (m.dy != 0 ? 1 : 0); ++y)
+      for (int z = 0; z <= (m.dz != 0 ? 1 : 0); ++z)
+        if (!map.passable({from.x + x * m.dx, from.y + y * m.dy, from.z + z * m.dz})) return false;
+  return true;
+}
+
 }  // namespace
 
 std::span<const Move> moves(Neighbourhood neighbourhood) {
+  if (volumetric(neighbourhood)) return std::span<const Move>(kMoves3d).first(static_cast<std::size_t>(neighbourhood));
   return std::span<const Move>(kMoves).first(static_cast<std::size_t>(neighbourhood));
+}
+
+double Graph::move_length(int k) {
+  static const std::array<double, 3> kLengths = {1.0, std::sqrt(2.0), std::sqrt(3.0)};
+  return kLengths[k < 6 ? 0 : k < 18 ? 1 : 2];
 }
 
 std::string describe(const GraphOptions& options) {
@@ -70,42 +92,124 @@ constexpr std::array<std::int8_t, 25> kMoveIndex = [] {
   return index;
 }();
 
-EdgeId Graph::edge_by_move(NodeId from, int dx, int dy) const {
-  if (dx < -2 || dx > 2 || dy < -2 || dy > 2) return -1;
-  const int k = kMoveIndex[(dx + 2) * 5 + dy + 2];
+// Index of each (dx, dy, dz) in [-1, 1]^3 in kMoves3d, or -1.
+constexpr std::array<std::int8_t, 27> kMoveIndex3d = [] {
+  std::array<std::int8_t, 27> index{};
+  index.fill(-1);
+  for (std::size_t k = 0; k < kMoves3d.size(); ++k)
+    index[(kMoves3d[k].dx + 1) * 9 + (kMoves3d[k].dy + 1) * 3 + kMoves3d[k].dz + 1] = static_cast<std::int8_t>(k);
+  return index;
+}();
+
+EdgeId Graph::edge_by_move(NodeId from, int dx, int dy, int dz) const {
+  int k = -1;
+  if (volumetric) {
+    if (dx < -1 || dx > 1 || dy < -1 || dy > 1 || dz < -1 || dz > 1) return -1;
+    k = kMoveIndex3d[(dx + 1) * 9 + (dy + 1) * 3 + dz + 1];
+  } else {
+    if (dx < -2 || dx > 2 || dy < -2 || dy > 2 || dz != 0) return -1;
+    k = kMoveIndex[(dx + 2) * 5 + dy + 2];
+  }
   if (k < 0 || !(move_mask[from] >> k & 1u)) return -1;
   // Edges are stored in move order, skipping missing moves: count the moves before k.
-  return offsets[from] + std::popcount(static_cast<unsigned>(move_mask[from] & ((1u << k) - 1u)));
+  return offsets[from] + std::popcount(move_mask[from] & ((1u << k) - 1u));
+}
+
+EdgeId Graph::reverse_edge(EdgeId e) const {
+  if (!volumetric) return reverse_edges[e];
+  const Move& m = kMoves3d[edge_moves[e]];
+  return edge_by_move(targets[e], -m.dx, -m.dy, -m.dz);
 }
 
 EdgeId Graph::find_edge(NodeId a, NodeId b) const {
   const Cell ca = cell(a), cb = cell(b);
-  return edge_by_move(a, cb.x - ca.x, cb.y - ca.y);
+  return edge_by_move(a, cb.x - ca.x, cb.y - ca.y, cb.z - ca.z);
 }
 
+namespace {
+
+void check_neighbourhood_fits(const Map& map, const GraphOptions& options) {
+  const int moves = static_cast<int>(options.neighbourhood);
+  if (map.volumetric() && !volumetric(options.neighbourhood))
+    throw Error(map.name() + " is a voxel world: it takes the 6-, 18- or 26-neighbourhood, not the " +
+                std::to_string(moves) + "-neighbourhood");
+  if (!map.volumetric() && volumetric(options.neighbourhood))
+    throw Error("the " + std::to_string(moves) + "-neighbourhood is for voxel worlds; " + map.name() +
+                " is a 2D map: it takes the 4-, 8- or 16-neighbourhood");
+  // A knight move needs room: without any, a "16-neighbourhood" would silently be the 8 one.
+  const int w = map.width(), h = map.height();
+  const bool knight_fits = std::min(w, h) >= 2 && std::max(w, h) >= 3;
+  if (options.neighbourhood == Neighbourhood::sixteen && !knight_fits)
+    throw Error("16-neighbourhood needs a map at least 3 cells long in one direction and 2 in the other; " +
+                map.name() + " is " + std::to_string(w) + "x" + std::to_string(h));
+}
+
+// A voxel world's edges: target and move only (Graph's comment says why).
+void build_voxel_edges(const Map& map, Graph& g) {
+  const auto all = moves(g.options.neighbourhood);
+  const int n = g.num_nodes();
+  // One pass to count, one to fill: a 26-neighbour world's edges would otherwise grow a vector
+  // of hundreds of millions by doubling, twice its size at the peak.
+  for (NodeId id = 0; id < n; ++id) {
+    const Cell c = g.cell(id);
+    g.positions[id] = map.position(c);
+    std::uint32_t mask = 0;
+    if (map.passable(c)) {
+      for (std::size_t k = 0; k < all.size(); ++k) {
+        const Move& m = all[k];
+        const Cell to{c.x + m.dx, c.y + m.dy, c.z + m.dz};
+        const bool clear = g.options.corner_cutting || k < 6 || box_clear(map, c, m);
+        if (map.passable(to) && clear) mask |= 1u << k;
+      }
+    }
+    g.move_mask[id] = mask;
+    g.offsets[id + 1] = g.offsets[id] + std::popcount(mask);
+  }
+  check_voxel_graph_memory(n, g.offsets[n], map.name());
+  g.targets.resize(static_cast<std::size_t>(g.offsets[n]));
+  g.edge_moves.resize(g.targets.size());
+  for (NodeId id = 0; id < n; ++id) {
+    EdgeId e = g.offsets[id];
+    for (std::uint32_t mask = g.move_mask[id]; mask != 0; mask &= mask - 1) {
+      const int k = std::countr_zero(mask);
+      const Move& m = all[k];
+      g.targets[e] = id + (m.dz * g.height + m.dy) * g.width + m.dx;
+      g.edge_moves[e] = static_cast<std::uint8_t>(k);
+      ++e;
+    }
+  }
+}
+
+}  // namespace
+
 Graph build_graph(const Map& map, const GraphOptions& options) {
+  check_neighbourhood_fits(map, options);
   Graph g;
   g.map = &map;
   g.options = options;
   g.width = map.width();
   g.height = map.height();
-  // A knight move needs room: without any, a "16-neighbourhood" would silently be the 8 one.
-  const bool knight_fits = std::min(g.width, g.height) >= 2 && std::max(g.width, g.height) >= 3;
-  if (options.neighbourhood == Neighbourhood::sixteen && !knight_fits)
-    throw Error("16-neighbourhood needs a map at least 3 cells long in one direction and 2 in the other; " +
-                map.name() + " is " + std::to_string(g.width) + "x" + std::to_string(g.height));
+  g.depth = map.depth();
+  g.volumetric = map.volumetric();
   const int moves = static_cast<int>(options.neighbourhood);
-  check_planning_memory(g.width, g.height, options.neighbourhood, map.name());
+  // A voxel world is checked once its edges are counted (build_voxel_edges()): in a city or a
+  // forest most of them are, but not all, and the worst case would refuse worlds that fit.
+  if (!g.volumetric) check_planning_memory(g.width, g.height, options.neighbourhood, map.name());
   // Node and edge ids are 32-bit: a map with more cells or possible edges than that (reachable
   // only with a raised memory limit) is refused instead of overflowing them.
-  const std::int64_t cells = std::int64_t{g.width} * g.height;
+  const std::int64_t cells = std::int64_t{g.width} * g.height * g.depth;
   if (cells * moves > std::numeric_limits<EdgeId>::max())
-    throw Error(map.name() + ": " + std::to_string(g.width) + "x" + std::to_string(g.height) + " cells with the " +
-                std::to_string(moves) + "-neighbourhood exceed the graph's 32-bit node and edge ids");
+    throw Error(map.name() + ": " + std::to_string(cells) + " cells with the " + std::to_string(moves) +
+                "-neighbourhood exceed the graph's 32-bit node and edge ids");
   const int n = g.num_nodes();
+  if (g.volumetric) check_voxel_graph_memory(n, 0, map.name());  // the per-voxel arrays, before they are made
   g.offsets.assign(n + 1, 0);
   g.move_mask.assign(n, 0);
   g.positions.resize(n);
+  if (g.volumetric) {
+    build_voxel_edges(map, g);
+    return g;
+  }
   for (NodeId id = 0; id < n; ++id) {
     const Cell c = g.cell(id);
     g.positions[id] = map.position(c);
@@ -115,20 +219,20 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
         if (!map.passable(to) || !move_clear(map, c, kMoves[k], options.corner_cutting) || !map.step_allowed(c, to))
           continue;
         g.targets.push_back(g.node(to));
-        g.move_mask[id] |= static_cast<std::uint16_t>(1u << k);
+        g.move_mask[id] |= 1u << k;
       }
     }
     g.offsets[id + 1] = static_cast<EdgeId>(g.targets.size());
   }
-  g.costs.resize(g.targets.size());
-  g.reverse.assign(g.targets.size(), -1);
+  g.edge_costs.resize(g.targets.size());
+  g.reverse_edges.assign(g.targets.size(), -1);
   for (NodeId id = 0; id < n; ++id) {
     for (EdgeId e = g.edges_begin(id); e < g.edges_end(id); ++e) {
-      g.costs[e] = g.distance(id, g.targets[e]);
-      g.reverse[e] = g.find_edge(g.targets[e], id);
+      g.edge_costs[e] = g.distance(id, g.targets[e]);
+      g.reverse_edges[e] = g.find_edge(g.targets[e], id);
       // A terrain's step_allowed() may be asymmetric (uphill vs downhill); the engine needs
       // reversible edges for node-based pheromone, so say so instead of failing later.
-      if (g.reverse[e] < 0)
+      if (g.reverse_edges[e] < 0)
         throw Error(map.name() + ": the step " + to_string(g.cell(id)) + " -> " + to_string(g.cell(g.targets[e])) +
                     " is allowed but its reverse is not");
     }
@@ -178,12 +282,65 @@ double path_length(const Graph& graph, std::span<const NodeId> path) {
     if (e < 0)
       throw Error("path step " + to_string(graph.cell(path[i - 1])) + " -> " + to_string(graph.cell(path[i])) +
                   " is not an edge of the graph");
-    length += graph.costs[e];
+    length += graph.cost(e);
   }
   return length;
 }
 
+namespace {
+
+// line_of_sight in a voxel world: the same traversal over three axes. The next boundary crossed
+// is the axis k with the smallest (2 * i_k + 1) / |d_k| (cross-multiplied, exact); several at
+// once mean the segment passes through an edge or a corner, where the box of voxels around it
+// obeys the move rule.
+bool voxel_line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
+  if (!map.passable(a)) return false;
+  const std::array<std::int64_t, 3> d = {std::int64_t{b.x} - a.x, std::int64_t{b.y} - a.y, std::int64_t{b.z} - a.z};
+  std::array<std::int64_t, 3> crossed = {0, 0, 0}, span{};
+  std::array<int, 3> sign{};
+  for (int k = 0; k < 3; ++k) {
+    span[k] = d[k] < 0 ? -d[k] : d[k];
+    sign[k] = d[k] > 0 ? 1 : -1;
+  }
+  Cell c = a;
+  for (;;) {
+    int first = -1;
+    std::array<bool, 3> step = {false, false, false};
+    for (int k = 0; k < 3; ++k) {
+      if (crossed[k] == span[k]) continue;
+      const std::int64_t order =
+          first < 0 ? -1 : (2 * crossed[k] + 1) * span[first] - (2 * crossed[first] + 1) * span[k];
+      if (order < 0) {
+        step = {false, false, false};
+        first = k;
+      }
+      if (order <= 0) step[k] = true;
+    }
+    if (first < 0) return true;
+    const Cell next{c.x + (step[0] ? sign[0] : 0), c.y + (step[1] ? sign[1] : 0), c.z + (step[2] ? sign[2] : 0)};
+    if (step[0] + step[1] + step[2] > 1) {
+      bool any_side_free = false, every_side_free = true;
+      for (int x = 0; x <= int(step[0]); ++x)
+        for (int y = 0; y <= int(step[1]); ++y)
+          for (int z = 0; z <= int(step[2]); ++z) {
+            const Cell side{c.x + x * sign[0], c.y + y * sign[1], c.z + z * sign[2]};
+            if (side == c || side == next) continue;
+            const bool free = map.passable(side);
+            any_side_free = any_side_free || free;
+            every_side_free = every_side_free && free;
+          }
+      if (corner_cutting ? !any_side_free : !every_side_free) return false;
+    }
+    for (int k = 0; k < 3; ++k) crossed[k] += step[k] ? 1 : 0;
+    c = next;
+    if (!map.passable(c)) return false;
+  }
+}
+
+}  // namespace
+
 bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
+  if (map.volumetric()) return voxel_line_of_sight(map, a, b, corner_cutting);
   // Amanatides-Woo traversal in exact integers. Seen from a's centre, the segment leaves the
   // current column after crossing x-distance ix + 1/2, i.e. at t = (2*ix + 1) / (2*|dx|), and
   // the current row at t = (2*iy + 1) / (2*|dy|). Cross-multiplied: compare (2*ix + 1) * |dy|

@@ -17,8 +17,9 @@ std::string to_string(Cell c) {
 }
 
 std::string Map::describe(Cell c) const {
-  if (!volumetric() || c.z != 0) return to_string(c);
-  return "(" + std::to_string(c.x) + "," + std::to_string(c.y) + ",0)";
+  std::string text = to_string(c);
+  if (volumetric() && c.z == 0) text.insert(text.size() - 1, ",0");
+  return text;
 }
 
 Eigen::Vector3d Map::position(Cell c) const { return {double(c.x), double(c.y), double(c.z)}; }

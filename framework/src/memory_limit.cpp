@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <charconv>
@@ -27,6 +28,9 @@ namespace {
 // present and rounds the per-cell part up to cover terrains.
 constexpr std::uint64_t kBytesPerCell = 64;
 constexpr std::uint64_t kBytesPerEdge = 32;
+// A voxel world's edge stores its target and its move (4 + 1; aco/graph.hpp says why), and the
+// colony's pheromone and float heuristic (8 + 4); rounded up.
+constexpr std::uint64_t kBytesPerVoxelEdge = 20;
 constexpr std::uint64_t kFallbackLimit = std::uint64_t(4) << 30;
 
 std::atomic<std::uint64_t> g_limit{0};  // 0: the default
@@ -56,11 +60,20 @@ std::string limit_origin() {
 }  // namespace
 
 std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood) {
-  if (width <= 0 || height <= 0) return 0;
-  // int by int fits in 62 bits; times at most 64 + 16 * 32 = 576 bytes it would not, so saturate.
-  const std::uint64_t cells = std::uint64_t(width) * std::uint64_t(height);
-  const std::uint64_t per_cell = kBytesPerCell + kBytesPerEdge * static_cast<std::uint64_t>(neighbourhood);
-  if (cells > std::numeric_limits<std::uint64_t>::max() / per_cell) return std::numeric_limits<std::uint64_t>::max();
+  return planning_memory_estimate(width, height, 1, neighbourhood);
+}
+
+std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height, std::int64_t depth,
+                                       Neighbourhood neighbourhood) {
+  if (width <= 0 || height <= 0 || depth <= 0) return 0;
+  constexpr auto kMax = std::numeric_limits<std::uint64_t>::max();
+  // int by int fits in 62 bits; times a depth or the bytes per cell it may not, so saturate.
+  std::uint64_t cells = std::uint64_t(width) * std::uint64_t(height);
+  if (cells > kMax / std::uint64_t(depth)) return kMax;
+  cells *= std::uint64_t(depth);
+  const std::uint64_t per_edge = volumetric(neighbourhood) ? kBytesPerVoxelEdge : kBytesPerEdge;
+  const std::uint64_t per_cell = kBytesPerCell + per_edge * static_cast<std::uint64_t>(neighbourhood);
+  if (cells > kMax / per_cell) return kMax;
   return cells * per_cell;
 }
 
@@ -80,13 +93,29 @@ std::uint64_t memory_limit() {
 
 void check_planning_memory(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood,
                            const std::string& name) {
-  const std::uint64_t estimate = planning_memory_estimate(width, height, neighbourhood);
+  check_planning_memory(width, height, 1, neighbourhood, name);
+}
+
+void check_planning_memory(std::int64_t width, std::int64_t height, std::int64_t depth, Neighbourhood neighbourhood,
+                           const std::string& name) {
+  const std::uint64_t estimate = planning_memory_estimate(width, height, depth, neighbourhood);
   const std::uint64_t limit = memory_limit();
   if (estimate <= limit) return;
-  throw Error(name + ": a " + std::to_string(width) + "x" + std::to_string(height) + " map needs about " +
-              format_bytes(estimate) + " to plan on (estimate with the " +
+  const std::string size = std::to_string(width) + "x" + std::to_string(height) +
+                           (depth > 1 || volumetric(neighbourhood) ? "x" + std::to_string(depth) : "");
+  throw Error(name + ": a " + size + " map needs about " + format_bytes(estimate) + " to plan on (estimate with the " +
               std::to_string(static_cast<int>(neighbourhood)) + "-neighbourhood), more than the memory limit of " +
               format_bytes(limit) + " (" + limit_origin() + "): refused");
+}
+
+void check_voxel_graph_memory(std::int64_t voxels, std::int64_t edges, const std::string& name) {
+  const std::uint64_t estimate = std::uint64_t(std::max<std::int64_t>(voxels, 0)) * kBytesPerCell +
+                                 std::uint64_t(std::max<std::int64_t>(edges, 0)) * kBytesPerVoxelEdge;
+  const std::uint64_t limit = memory_limit();
+  if (estimate <= limit) return;
+  throw Error(name + ": " + std::to_string(voxels) + " voxels with " + std::to_string(edges) + " edges need about " +
+              format_bytes(estimate) + " to plan on, more than the memory limit of " + format_bytes(limit) + " (" +
+              limit_origin() + "): refused");
 }
 
 std::uint64_t parse_memory_size(const std::string& text, const std::string& option) {

@@ -29,6 +29,28 @@ double distance_to_cell(const Eigen::Vector2d& a, const Eigen::Vector2d& b, cons
   return d;
 }
 
+// The cells whose closed interval along one axis holds v (in cells): two on their border. The
+// tolerance takes in the rounding of a position divided back by a terrain's cell size.
+std::pair<int, int> cells_around(double v) {
+  constexpr double kTolerance = 1e-9;
+  return {static_cast<int>(std::ceil(v - 0.5 - kTolerance)), static_cast<int>(std::floor(v + 0.5 + kTolerance))};
+}
+
+// on_free_cell in a voxel world, whose voxel (x, y, z) is the unit cube centred on (x, y, z).
+bool on_free_voxel(const Map& map, const Eigen::Vector3d& p) {
+  if (!(p.x() > -1.0 && p.y() > -1.0 && p.z() > -1.0 && p.x() < map.width() && p.y() < map.height() &&
+        p.z() < map.depth()))
+    return false;
+  const auto [x_low, x_high] = cells_around(p.x());
+  const auto [y_low, y_high] = cells_around(p.y());
+  const auto [z_low, z_high] = cells_around(p.z());
+  for (int z = z_low; z <= z_high; ++z)
+    for (int y = y_low; y <= y_high; ++y)
+      for (int x = x_low; x <= x_high; ++x)
+        if (map.passable({x, y, z})) return true;
+  return false;
+}
+
 }  // namespace
 
 Waypoints to_waypoints(const Graph& graph, std::span<const NodeId> path) {
@@ -44,14 +66,14 @@ double polyline_length(std::span<const Eigen::Vector3d> points) {
   return length;
 }
 
-int count_turns(std::span<const Eigen::Vector3d> points) {
+int count_turns(std::span<const Eigen::Vector3d> points, bool in_space) {
   int turns = 0;
   Eigen::Vector3d heading = Eigen::Vector3d::Zero();  // direction of the last non-empty segment
   for (std::size_t i = 1; i < points.size(); ++i) {
     // Heading on the ground: on terrain the climb angle changes at almost every waypoint, and
     // that is no turn for the robot's steering.
     Eigen::Vector3d step = points[i] - points[i - 1];
-    step.z() = 0.0;
+    if (!in_space) step.z() = 0.0;
     if (step.squaredNorm() == 0.0) continue;  // a repeated waypoint is no move, and hides no turn
     if (heading.squaredNorm() > 0.0) {
       // Same heading when parallel and pointing the same way (relative tolerance).
@@ -66,19 +88,14 @@ int count_turns(std::span<const Eigen::Vector3d> points) {
 bool on_free_cell(const Graph& graph, const Eigen::Vector3d& point) {
   // Cell (x, y) is centred on origin + (x, y) * unit (Map::position), a square of side unit.
   const Map& map = *graph.map;
+  if (graph.volumetric) return on_free_voxel(map, point);
   const Eigen::Vector3d origin = map.position({0, 0});
   const double unit_x = map.position({1, 0}).x() - origin.x(), unit_y = map.position({0, 1}).y() - origin.y();
   const double x = (point.x() - origin.x()) / unit_x, y = (point.y() - origin.y()) / unit_y;
   if (!(x > -1.0 && y > -1.0 && x < map.width() && y < map.height())) return false;  // beyond every cell's border
-  // The cells whose closed square holds the point: two along an axis on their border. The
-  // tolerance takes in the rounding of a position divided back by a terrain's cell size.
-  constexpr double kTolerance = 1e-9;
-  const auto cells = [](double v) {
-    return std::pair{static_cast<int>(std::ceil(v - 0.5 - kTolerance)),
-                     static_cast<int>(std::floor(v + 0.5 + kTolerance))};
-  };
-  const auto [x_low, x_high] = cells(x);
-  const auto [y_low, y_high] = cells(y);
+  // The cells whose closed square holds the point.
+  const auto [x_low, x_high] = cells_around(x);
+  const auto [y_low, y_high] = cells_around(y);
   for (int cy = y_low; cy <= y_high; ++cy)
     for (int cx = x_low; cx <= x_high; ++cx)
       if (map.passable({cx, cy})) return true;
@@ -94,11 +111,11 @@ std::string waypoint_problem(const Graph& graph, NodeId start, NodeId goal, std:
     if (!on_free_cell(graph, points[i])) return which + "lies on no free cell";
   }
   if (points.front() != graph.positions[start])
-    return "the first waypoint, " + to_text(points.front()) + ", is not the start " + to_string(graph.cell(start)) +
-           " at " + to_text(graph.positions[start]);
+    return "the first waypoint, " + to_text(points.front()) + ", is not the start " +
+           graph.map->describe(graph.cell(start)) + " at " + to_text(graph.positions[start]);
   if (points.back() != graph.positions[goal])
-    return "the last waypoint, " + to_text(points.back()) + ", is not the goal " + to_string(graph.cell(goal)) +
-           " at " + to_text(graph.positions[goal]);
+    return "the last waypoint, " + to_text(points.back()) + ", is not the goal " +
+           graph.map->describe(graph.cell(goal)) + " at " + to_text(graph.positions[goal]);
   return "";
 }
 

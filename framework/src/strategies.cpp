@@ -23,6 +23,7 @@ LocalPlanner::~LocalPlanner() = default;
 MapReader::~MapReader() = default;
 
 void Strategy::begin_run(const Context&) {}
+bool Strategy::supports_voxel_worlds() const { return false; }
 
 void Heuristic::compute_powered(const Context& context, std::span<double> eta_beta) {
   compute(context, eta_beta);

@@ -71,7 +71,8 @@ class Search {
     dimensions_ = active.size();
     if (dimensions_ > static_cast<std::size_t>(s_.max_weights)) share_weights_by_block(active);
     // Longer than any walk without repeated nodes: each edge cost counted once per direction.
-    penalty_ = std::accumulate(g_.costs.begin(), g_.costs.end(), 1.0);
+    penalty_ = 1.0;
+    for (EdgeId e = 0; e < g_.num_edges(); ++e) penalty_ += g_.cost(e);
   }
 
   PlannerResult run() {

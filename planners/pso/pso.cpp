@@ -169,7 +169,7 @@ WaypointWalk walk_waypoints(const Graph& g, std::span<const Cell> cells) {
       }
       const EdgeId e = g.edge_by_move(g.node(at), next->x - at.x, next->y - at.y);
       if (e >= 0) {
-        w.length += g.costs[e];
+        w.length += g.cost(e);
       } else {
         w.length += g.distance(g.node(at), g.node(*next));
         ++w.infeasible;

@@ -21,16 +21,17 @@ nlohmann::json point(const Eigen::Vector3d& p, bool three_d) {
 
 nlohmann::json cell(const aco::Graph& g, aco::NodeId n) {
   const aco::Cell c = g.cell(n);
-  return nlohmann::json::array({c.x, c.y});
+  return g.volumetric ? nlohmann::json::array({c.x, c.y, c.z}) : nlohmann::json::array({c.x, c.y});
 }
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-std::string cell_text(const aco::Graph& g, aco::NodeId n) { return aco::to_string(g.cell(n)); }
+std::string cell_text(const aco::Graph& g, aco::NodeId n) { return g.map->describe(g.cell(n)); }
 
 std::string map_line(const aco::Graph& graph) {
+  const std::string layers = graph.volumetric ? "x" + std::to_string(graph.depth) + " voxels" : "";
   return "map:      " + graph.map->name() + " (" + std::to_string(graph.width) + "x" + std::to_string(graph.height) +
-         "), " + aco::describe(graph.options) + "\n";
+         layers + "), " + aco::describe(graph.options) + "\n";
 }
 
 // Whether the summary's other lines show `key`: the map line the graph's, the colony line its
@@ -88,7 +89,7 @@ std::string pipeline_lines(const PlanReport& report) {
 
 // The measures of one run.
 nlohmann::json run_json(const aco::Graph& graph, const PlanRun& o) {
-  bool three_d = false;
+  bool three_d = graph.volumetric;
   for (const auto& p : graph.positions) three_d = three_d || p.z() != 0.0;
   nlohmann::json j;
   j["solved"] = o.solved();
@@ -126,6 +127,7 @@ nlohmann::json config_json(const PlanReport& report, const PlanRun& o) {
   j["map"] = graph.map->name();
   j["width"] = graph.width;
   j["height"] = graph.height;
+  if (graph.volumetric) j["depth"] = graph.depth;
   j["start"] = cell(graph, o.start);
   j["goal"] = cell(graph, o.goal);
   return j;
@@ -205,9 +207,12 @@ std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, Nod
     runs.push_back(std::move(o));
   }
   const auto optimal = astar(graph, start, goal);
+  for (auto& o : runs)
+    if (optimal) o.optimal_length = optimal->length;
+  // The exact any-angle optimum (Anya) and its corridor are the plane's: none in a voxel world.
+  if (graph.volumetric) return runs;
   const OptimalCorridor corridor(*graph.map, graph.cell(start), graph.cell(goal));
   for (auto& o : runs) {
-    if (optimal) o.optimal_length = optimal->length;
     if (corridor.optimum()) o.any_angle_length = corridor.optimum()->length;
     if (o.solved()) o.optimal_corridor = corridor.contains(o.path);
   }

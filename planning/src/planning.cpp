@@ -90,8 +90,9 @@ void run_ompl(const PlanContext& c, PlanOutcome& o) {
 #endif
 
 const Planner kPlanners[] = {
-    {"aco", "the colony", no_parameters, nullptr, run_aco},
-    {"astar", "exact shortest path on the same graph (reference)", no_parameters, nullptr, run_astar},
+    {"aco", "the colony", no_parameters, nullptr, run_aco, false, /*volumetric=*/true},
+    {"astar", "exact shortest path on the same graph (reference)", no_parameters, nullptr, run_astar, false,
+     /*volumetric=*/true},
     {"ifwa", "improved fireworks (paper 004)", fireworks_parameters,
      [](const ParameterValues& v) { fireworks_settings(v); }, run_ifwa},
     {"pso", "particle swarm over waypoints (paper 000's baseline)", pso_parameters, nullptr, run_pso},
@@ -138,9 +139,36 @@ std::vector<std::string> planners_with_parameters() {
 
 std::span<const ParamSpec> planner_parameters(const std::string& planner) { return find_planner(planner).parameters(); }
 
+namespace {
+
+// A voxel world is planned only by what says it can (Strategy::supports_voxel_worlds()): a plugin
+// written for grids would read a voxel's neighbours as a grid's and plan wrong without a word.
+void check_volumetric(const Graph& graph, const Planner& planner, const RunSpec& run, const PipelinePlugins& pipeline) {
+  if (!graph.volumetric) return;
+  const std::string world = graph.map->name() + " is a voxel world";
+  if (!planner.volumetric)
+    throw Error("planner '" + std::string(planner.name) + "' plans on 2D maps only; " + world +
+                " (planners for voxel worlds: aco, astar)");
+  const auto refuse = [&](const Strategy* plugin, const char* slot) {
+    if (plugin != nullptr && !plugin->supports_voxel_worlds())
+      throw Error(describe_plugin(*plugin, slot) + " does not plan in 3D; " + world +
+                  " (acoplan --list-plugins marks the plugins that do)");
+  };
+  if (run.planner == "aco") {
+    refuse(pipeline.init.get(), "init");
+    refuse(pipeline.heuristic.get(), "heuristic");
+    refuse(pipeline.update.get(), "update");
+    refuse(pipeline.deadlock.get(), "deadlock");
+  }
+  refuse(pipeline.smoother.get(), "smoother");
+}
+
+}  // namespace
+
 PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal, const RunSpec& run) {
   const Planner& planner = find_planner(run.planner);
   const PipelinePlugins pipeline = instantiate(registry, run.pipeline);
+  check_volumetric(graph, planner, run, pipeline);
   FigureSink figures;
   PlanOutcome o;
   o.seed = run.colony.seed;
@@ -175,7 +203,7 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
             " (waypoints must be finite and on free cells, from the start's position to the goal's)");
     }
     o.length = polyline_length(o.path);
-    o.turns = count_turns(o.path);
+    o.turns = count_turns(o.path, graph.volumetric);
   }
   o.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - began).count();
   o.properties.merge(figures.figures());

@@ -33,8 +33,9 @@ std::vector<PresetInfo> list_presets() {
 
 std::string default_preset(const std::filesystem::path& map_or_scenario) {
   std::filesystem::path map = map_or_scenario;
-  if (map.extension() == ".scen") map.replace_extension();
+  if (map.extension() == ".scen" || map.extension() == ".3dscen") map.replace_extension();
   const std::string extension = map.extension().string();
+  if (extension == ".3dmap" || extension == ".bt" || extension == ".ot") return "voxel";
   return extension == ".asc" || extension == ".pgm" ? "terrain" : "robust";
 }
 

@@ -38,9 +38,11 @@ const SettingsTable<TerrainOptions>& terrain_table() {
 const SettingsTable<GraphOptions>& graph_table() {
   using G = GraphOptions;
   static const SettingsTable<G> table({
-      choice("neighbourhood", &G::neighbourhood, {"4", "8", "16"},
-             {Neighbourhood::four, Neighbourhood::eight, Neighbourhood::sixteen},
-             "moves per cell: 4 straight, 8 with diagonals, 16 with knight moves"),
+      choice("neighbourhood", &G::neighbourhood, {"4", "8", "16", "6", "18", "26"},
+             {Neighbourhood::four, Neighbourhood::eight, Neighbourhood::sixteen, Neighbourhood::six,
+              Neighbourhood::eighteen, Neighbourhood::twenty_six},
+             "moves per cell: 4 straight, 8 with diagonals, 16 with knight moves; in a voxel world 6 (faces), "
+             "18 (and edges), 26 (and corners)"),
       field("corner-cutting", &G::corner_cutting, "",
             "let a diagonal step pass between two blocked side cells (the MATLAB code's rule; off = Moving AI rule)"),
   });
@@ -83,9 +85,11 @@ std::vector<std::pair<std::string, ParamValue>> run_values(const RunSpec& spec) 
     keys.emplace_back("scen", p.scen.string());
     keys.emplace_back("scen-index", std::int64_t{p.scen_index});
   }
-  // Cells as the keys take them: "X,Y".
+  // Cells as the keys take them: "X,Y", and ",Z" above the ground layer.
   for (const auto& [key, cell] : {std::pair{"start", p.start}, std::pair{"goal", p.goal}})
-    if (cell) keys.emplace_back(key, std::to_string(cell->x) + "," + std::to_string(cell->y));
+    if (cell)
+      keys.emplace_back(key, std::to_string(cell->x) + "," + std::to_string(cell->y) +
+                                 (cell->z != 0 ? "," + std::to_string(cell->z) : ""));
   auto add = [&keys](const std::string& prefix, const ParameterValues& values) {
     for (const auto& [name, value] : values.all()) keys.emplace_back(prefix + name, value);
   };
@@ -131,24 +135,33 @@ const ParamSpec& planner_parameter() {
 }
 
 Cell parse_cell(const std::string& text, const std::string& key) {
-  Cell c;
-  const auto comma = text.find(',');
-  auto whole = [](std::string_view s, int& v) {
-    auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    return ec == std::errc() && p == s.data() + s.size();
-  };
-  if (comma == std::string::npos || !whole(std::string_view(text).substr(0, comma), c.x) ||
-      !whole(std::string_view(text).substr(comma + 1), c.y))
-    throw KeyError(key, key + ": '" + text + "' is not a cell; expected X,Y such as 3,7");
-  return c;
+  // "X,Y", or "X,Y,Z" in a voxel world.
+  std::vector<int> values;
+  std::string_view rest(text);
+  bool valid = true;
+  for (;;) {
+    const auto comma = rest.find(',');
+    const std::string_view part = rest.substr(0, comma);
+    int v = 0;
+    auto [p, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
+    valid = valid && !part.empty() && ec == std::errc() && p == part.data() + part.size();
+    values.push_back(v);
+    if (comma == std::string_view::npos) break;
+    rest.remove_prefix(comma + 1);
+  }
+  if (!valid || values.size() < 2 || values.size() > 3)
+    throw KeyError(key, key + ": '" + text + "' is not a cell; expected X,Y such as 3,7 (X,Y,Z in a voxel world)");
+  return {values[0], values[1], values.size() == 3 ? values[2] : 0};
 }
 
 void check_cell(const Map& map, Cell c, const std::string& what) {
-  if (!map.contains(c))
-    throw Error(what + " " + to_string(c) + " is outside the " + std::to_string(map.width()) + "x" +
-                std::to_string(map.height()) + " map " + map.name());
+  if (!map.contains(c)) {
+    const std::string size = std::to_string(map.width()) + "x" + std::to_string(map.height()) +
+                             (map.volumetric() ? "x" + std::to_string(map.depth()) + " voxel world " : " map ");
+    throw Error(what + " " + map.describe(c) + " is outside the " + size + map.name());
+  }
   if (!map.passable(c))
-    throw Error(what + " " + to_string(c) + " is blocked: " + map.blocked_reason(c) + " (" + map.name() + ")");
+    throw Error(what + " " + map.describe(c) + " is blocked: " + map.blocked_reason(c) + " (" + map.name() + ")");
 }
 
 std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem::path& file, const std::string& format,

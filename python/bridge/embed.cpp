@@ -195,8 +195,8 @@ class PythonObject final : public Object {
     if (cells_.is_none() || width_ != g.width || height_ != g.height) make_cells(g);
     const py::object graph = namespace_(
         "width"_a = g.width, "height"_a = g.height, "node_count"_a = g.num_nodes(), "edge_count"_a = g.num_edges(),
-        "offsets"_a = lent.lend(g.offsets), "targets"_a = lent.lend(g.targets), "costs"_a = lent.lend(g.costs),
-        "reverse"_a = g.reverse.empty() ? py::object(py::none()) : py::object(lent.lend(g.reverse)),
+        "offsets"_a = lent.lend(g.offsets), "targets"_a = lent.lend(g.targets), "costs"_a = lent.lend(g.edge_costs),
+        "reverse"_a = g.reverse_edges.empty() ? py::object(py::none()) : py::object(lent.lend(g.reverse_edges)),
         "positions"_a = lent.lend(g.positions.empty() ? nullptr : g.positions.front().data(),
                                   {static_cast<py::ssize_t>(g.positions.size()), 3}, false),
         "cells"_a = cells_, "neighbourhood"_a = static_cast<int>(g.options.neighbourhood),

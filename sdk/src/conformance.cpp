@@ -90,7 +90,7 @@ Ant walk(const Problem& problem, const std::vector<NodeId>& nodes) {
     const EdgeId e = problem.graph.find_edge(nodes[i - 1], nodes[i]);
     if (e < 0) throw Error("conformance: a walk steps between nodes that are not neighbours");
     ant.edges.push_back(e);
-    ant.length += problem.graph.costs[e];
+    ant.length += problem.graph.cost(e);
   }
   ant.arrived = !nodes.empty() && nodes.back() == problem.goal;
   return ant;

@@ -18,8 +18,9 @@
 namespace aco::studies {
 namespace {
 
-std::string path_json(const aco::Waypoints& path) {
-  const bool flat = std::all_of(path.begin(), path.end(), [](const auto& p) { return p.z() == 0.0; });
+// [[x, y], ...], or [[x, y, z], ...] on a terrain (heights) or in a voxel world (layers).
+std::string path_json(const aco::Waypoints& path, bool in_space = false) {
+  const bool flat = !in_space && std::all_of(path.begin(), path.end(), [](const auto& p) { return p.z() == 0.0; });
   nlohmann::json j = nlohmann::json::array();
   for (const auto& p : path) {
     if (flat)
@@ -209,7 +210,7 @@ TrialRecord TrialRunner::plan(const TrialOrder& t) {
   r.time_s = o.time_ms / 1000.0;
   r.ant_steps = static_cast<std::uint64_t>(o.count("ant_steps"));
   r.stopped_by = o.text("stopped_by");
-  r.path_json = path_json(o.path);
+  r.path_json = path_json(o.path, graph->volumetric);
   r.best_so_far = o.search.best_so_far;
   r.elapsed_s = o.search.elapsed_s;
   r.walks = o.search.walks;

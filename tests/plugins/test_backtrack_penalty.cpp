@@ -23,7 +23,7 @@ TEST_CASE("backtrack_penalty: a stuck ant dies and the pheromone into its last h
     const bool penalised = cell.y == 1 && cell.x >= 3 && cell.x <= 5;  // the last three nodes
     for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) {
       INFO("edge into " << aco::to_string(cell));
-      CHECK(tau[g.reverse[e]] == Approx(penalised ? 0.5 : 2.0));
+      CHECK(tau[g.reverse_edge(e)] == Approx(penalised ? 0.5 : 2.0));
     }
   }
   CHECK(forbidden == std::vector<std::uint8_t>(g.num_nodes(), 0));
@@ -35,7 +35,7 @@ TEST_CASE("backtrack_penalty: a stuck ant dies and the pheromone into its last h
   aco::Trail t2_trail(t2);
   policy->after_iteration(c, {one, nullptr, nullptr}, t2_trail, forbidden);
   const aco::NodeId start = g.node({0, 1});
-  for (aco::EdgeId e = g.edges_begin(start); e < g.edges_end(start); ++e) CHECK(t2[g.reverse[e]] == 2.0);
+  for (aco::EdgeId e = g.edges_begin(start); e < g.edges_end(start); ++e) CHECK(t2[g.reverse_edge(e)] == 2.0);
   const aco::NodeId second = g.node({1, 1});
-  for (aco::EdgeId e = g.edges_begin(second); e < g.edges_end(second); ++e) CHECK(t2[g.reverse[e]] == Approx(0.5));
+  for (aco::EdgeId e = g.edges_begin(second); e < g.edges_end(second); ++e) CHECK(t2[g.reverse_edge(e)] == Approx(0.5));
 }

@@ -73,7 +73,7 @@ TEST_CASE("direction with gamma 0 is the distance heuristic, and distance=step u
 
   auto step = test::make<aco::Heuristic>("heuristic", "direction", {{"gamma", "1"}, {"distance", "step"}});
   step->compute(context, a);
-  for (aco::EdgeId e = 0; e < g.num_edges(); ++e) CHECK(a[e] == Approx(1.0 / g.costs[e]));
+  for (aco::EdgeId e = 0; e < g.num_edges(); ++e) CHECK(a[e] == Approx(1.0 / g.cost(e)));
   // Knight move (1,2) after heading +x: d = sqrt 5, turn = atan2(2,1) / pi.
   const auto f = factors_after(g, *step, context, {0, 0}, {1, 0});
   const double turn = std::atan2(2.0, 1.0) / M_PI;

@@ -21,7 +21,7 @@ TEST_CASE("distance gives eta = 1 / d(next node, goal), floored near the goal", 
   // Every edge into the same node has the same eta.
   const aco::NodeId j = graph.node({1, 1});
   for (aco::EdgeId e = graph.edges_begin(j); e < graph.edges_end(j); ++e)
-    CHECK(eta[graph.reverse[e]] == Approx(1.0 / std::sqrt(5.0)));
+    CHECK(eta[graph.reverse_edge(e)] == Approx(1.0 / std::sqrt(5.0)));
   test::make<aco::Heuristic>("heuristic", "distance", {{"min_distance", "0.5"}})->compute(context, eta);
   CHECK(eta[graph.find_edge(graph.node({2, 2}), graph.node({3, 2}))] == Approx(2.0));
 }

@@ -8,7 +8,7 @@ namespace {
 double into(const aco::Graph& g, const std::vector<double>& tau, aco::Cell c) {
   const aco::NodeId n = g.node(c);
   double sum = 0;
-  for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) sum += tau[g.reverse[e]];
+  for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) sum += tau[g.reverse_edge(e)];
   return sum / g.degree(n);
 }
 double on(const aco::Graph& g, const std::vector<double>& tau, aco::Cell a, aco::Cell b) {
@@ -58,7 +58,7 @@ TEST_CASE("gaussian onto cells: each path cell spreads Q/L * psi * N(x) to cells
   // Every edge into a cell gets the same deposit.
   const aco::NodeId n = g.node({2, 5});
   for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e)
-    CHECK(tau[g.reverse[e]] == Approx(into(g, tau, {2, 5})));
+    CHECK(tau[g.reverse_edge(e)] == Approx(into(g, tau, {2, 5})));
 }
 
 TEST_CASE("gaussian deposits more on the inside of a bend than on the outside", "[plugin][gaussian]") {

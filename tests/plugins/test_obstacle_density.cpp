@@ -27,7 +27,7 @@ TEST_CASE("obstacle_density: tau of every edge into j = gamma * free share of j'
     INFO("cell " << aco::to_string(cell));
     REQUIRE(g.degree(j) > 0);
     for (aco::EdgeId e = g.edges_begin(j); e < g.edges_end(j); ++e)
-      CHECK(tau[g.reverse[e]] == Approx(4.0 * free / 8.0));
+      CHECK(tau[g.reverse_edge(e)] == Approx(4.0 * free / 8.0));
   }
   for (double t : tau) CHECK(t > 0.0);
 }

@@ -656,8 +656,8 @@ std::vector<double> distances_from(const aco::Graph& graph, aco::NodeId from) {
     if (dist > d[n]) continue;
     for (aco::EdgeId e = graph.edges_begin(n); e != graph.edges_end(n); ++e) {
       const aco::NodeId m = graph.targets[e];
-      if (dist + graph.costs[e] < d[m]) {
-        d[m] = dist + graph.costs[e];
+      if (dist + graph.cost(e) < d[m]) {
+        d[m] = dist + graph.cost(e);
         open.push({d[m], m});
       }
     }

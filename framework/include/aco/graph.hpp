@@ -1,6 +1,7 @@
 #pragma once
 // The compact graph the colony runs on: CSR neighbour arrays with Euclidean step costs.
-// Node id = y * width + x for every cell; blocked cells simply have no edges.
+// Node id = (z * height + y) * width + x for every cell (z = 0 but in voxel worlds); blocked
+// cells simply have no edges.
 #include <Eigen/Core>
 #include <boost/config.hpp>
 #include <cstdint>
@@ -15,11 +16,18 @@ namespace aco {
 using NodeId = std::int32_t;
 using EdgeId = std::int32_t;
 
-enum class Neighbourhood { four = 4, eight = 8, sixteen = 16 };
+// 4, 8, 16: grids and terrains. 6 (faces), 18 (and edges), 26 (and corners): voxel worlds.
+enum class Neighbourhood { four = 4, eight = 8, sixteen = 16, six = 6, eighteen = 18, twenty_six = 26 };
+
+// Whether the neighbourhood moves in 3D (6, 18, 26).
+constexpr bool volumetric(Neighbourhood n) {
+  return n == Neighbourhood::six || n == Neighbourhood::eighteen || n == Neighbourhood::twenty_six;
+}
 
 struct GraphOptions {
   Neighbourhood neighbourhood = Neighbourhood::eight;
-  // Off: a diagonal step needs both side cells free (Moving AI rule).
+  // Off: a diagonal step needs both side cells free (Moving AI rule); in a voxel world, every
+  // voxel of the box the step spans (Moving AI's voxel benchmarks).
   // On: only the target cell must be free (the rule of the papers' MATLAB code).
   bool corner_cutting = false;
 };
@@ -29,45 +37,66 @@ std::string describe(const GraphOptions& options);  // "8-neighbourhood, no corn
 struct Move {
   int dx;
   int dy;
+  int dz = 0;
 };
 
-// The moves of a neighbourhood in the graph's move order: straight, then diagonal, then knight.
+// The moves of a neighbourhood in the graph's move order: straight, then diagonal, then knight;
+// in 3D the 6 faces, then the 12 edges, then the 8 corners.
 std::span<const Move> moves(Neighbourhood neighbourhood);
 
+// A voxel world's graph has up to 26 edges per voxel: stored like a grid's, 16 bytes per edge
+// would make a 256x256x128 world's graph alone 3 GB. So in a voxel world an edge stores only its
+// target and its move, and its cost and reverse are computed from the move (cost(),
+// reverse_edge()); edge_costs and reverse_edges are empty there. On grids and terrains, where a
+// step's cost depends on heights, both are stored as before.
 struct BOOST_SYMBOL_VISIBLE Graph {
   const Map* map = nullptr;
   GraphOptions options;
   int width = 0;
   int height = 0;
+  int depth = 1;  // layers: more than 1 in a voxel world only
+  bool volumetric = false;  // a voxel world's graph (6-, 18- or 26-neighbourhood)
   std::vector<EdgeId> offsets;  // edges of node n: [offsets[n], offsets[n+1])
   std::vector<NodeId> targets;  // per edge
-  std::vector<double> costs;  // per edge, Euclidean length between cell positions
-  std::vector<EdgeId> reverse;  // per edge: the edge target->source (every move here is reversible)
+  std::vector<double> edge_costs;  // per edge, Euclidean length between cell positions; empty in 3D
+  std::vector<EdgeId> reverse_edges;  // per edge: the edge target->source; empty in 3D
+  std::vector<std::uint8_t> edge_moves;  // per edge in 3D: its index in moves(); empty in 2D
   std::vector<Eigen::Vector3d> positions;  // per node
+  std::vector<std::uint32_t> move_mask;  // per node: which moves (in the graph's move order) have an edge
 
-  int num_nodes() const { return width * height; }
+  int num_nodes() const { return width * height * depth; }
   int num_edges() const { return static_cast<int>(targets.size()); }
   EdgeId edges_begin(NodeId n) const { return offsets[n]; }
   EdgeId edges_end(NodeId n) const { return offsets[n + 1]; }
   int degree(NodeId n) const { return offsets[n + 1] - offsets[n]; }
-  NodeId source(EdgeId e) const { return targets[reverse[e]]; }
+  // The step's Euclidean length (every move here is reversible).
+  double cost(EdgeId e) const { return volumetric ? move_length(edge_moves[e]) : edge_costs[e]; }
+  // The edge target->source (every move here is reversible).
+  EdgeId reverse_edge(EdgeId e) const;
+  NodeId source(EdgeId e) const { return targets[reverse_edge(e)]; }
 
-  NodeId node(Cell c) const { return c.y * width + c.x; }
-  Cell cell(NodeId n) const { return {n % width, n / width}; }
+  NodeId node(Cell c) const { return (c.z * height + c.y) * width + c.x; }
+  Cell cell(NodeId n) const {
+    if (depth == 1) return {n % width, n / width, 0};
+    const int layer = width * height, in_layer = n % layer;
+    return {in_layer % width, in_layer / width, n / layer};
+  }
   bool passable(NodeId n) const { return map->passable(cell(n)); }
-  std::vector<std::uint16_t> move_mask;  // per node: which moves (in the graph's move order) have an edge
 
   // Edge from a to b, or -1 if they are not neighbours.
   EdgeId find_edge(NodeId a, NodeId b) const;
-  // Edge leaving `from` by the move (dx, dy), or -1; O(1), no division.
-  EdgeId edge_by_move(NodeId from, int dx, int dy) const;
+  // Edge leaving `from` by the move (dx, dy, dz), or -1; O(1), no division.
+  EdgeId edge_by_move(NodeId from, int dx, int dy, int dz = 0) const;
   double distance(NodeId a, NodeId b) const { return (positions[a] - positions[b]).norm(); }
+  // The length of the 3D move with index k in moves(): 1, sqrt 2 or sqrt 3.
+  static double move_length(int k);
 };
 
-// Builds the graph of a map. Knight moves (16-neighbourhood) need the two cells their
-// segment crosses to be free, with or without corner cutting: the segment passes through
-// the middle of the edge those two cells share, never through a corner. The 16-neighbourhood
-// on a map with no room for a knight move (2x2, 1xN) is an Error.
+// Builds the graph of a map. A voxel world (Map::volumetric()) takes the 6-, 18- or
+// 26-neighbourhood and every other map the 4-, 8- or 16-; the other kind is an Error. Knight moves (16-neighbourhood)
+// need the two cells their segment crosses to be free, with or without corner cutting: the segment passes through the
+// middle of the edge those two cells share, never through a corner. The 16-neighbourhood on a map with no room for a
+// knight move (2x2, 1xN) is an Error.
 Graph build_graph(const Map& map, const GraphOptions& options);
 
 // Whether goal can be reached from start at all (breadth-first search).
@@ -108,6 +137,10 @@ double path_length(const Graph& graph, std::span<const NodeId> path);
 // through a vertex, must also be Map::step_allowed; on flat maps this adds nothing.
 // Note: with corner cutting this is stricter than the move rule for a single diagonal step,
 // which may squeeze between two blocked cells.
+// In a voxel world the same in 3D: every voxel whose interior the segment between the voxel
+// centres passes through must be free; where it passes through an edge or a corner shared by
+// several voxels, the box those voxels span obeys the move rule (without corner cutting every
+// voxel of it free, with corner cutting not all of the ones beside the segment blocked).
 bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting);
 
 // line_of_sight for any two points in the plane (x = column, y = row, in cells; cell (x, y) is the

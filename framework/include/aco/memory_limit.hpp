@@ -18,6 +18,10 @@ namespace aco {
 // memory_limit.cpp). Exact in 64 bits for any int width and height.
 BOOST_SYMBOL_VISIBLE std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height,
                                                             Neighbourhood neighbourhood);
+// The same for a voxel world of `depth` layers (a 6-, 18- or 26-neighbourhood; a voxel world's
+// graph stores less per edge, aco/graph.hpp).
+BOOST_SYMBOL_VISIBLE std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height, std::int64_t depth,
+                                                            Neighbourhood neighbourhood);
 
 // The limit in force: a MemoryLimit's while one lives, else default_memory_limit().
 BOOST_SYMBOL_VISIBLE std::uint64_t memory_limit();
@@ -29,6 +33,13 @@ BOOST_SYMBOL_VISIBLE std::uint64_t default_memory_limit();
 // more than the limit.
 BOOST_SYMBOL_VISIBLE void check_planning_memory(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood,
                                                 const std::string& name);
+BOOST_SYMBOL_VISIBLE void check_planning_memory(std::int64_t width, std::int64_t height, std::int64_t depth,
+                                                Neighbourhood neighbourhood, const std::string& name);
+
+// A voxel world's graph, once its edges are counted (before they are stored): refuses (Error) one
+// whose voxels and edges would need more than the limit. The estimate of a whole world above
+// counts every possible edge, so it is the check of a file's header; this one is the run's.
+BOOST_SYMBOL_VISIBLE void check_voxel_graph_memory(std::int64_t voxels, std::int64_t edges, const std::string& name);
 
 // A size as --max-memory takes it: bytes ("1048576") or a whole number with a binary unit K, M,
 // G or T, optionally followed by B or iB, any case ("512M", "4G", "2GiB"). Zero, negative,

@@ -18,12 +18,13 @@ Waypoints to_waypoints(const Graph& graph, std::span<const NodeId> path);
 double polyline_length(std::span<const Eigen::Vector3d> points);
 // Number of heading changes along the path: interior waypoints where the direction of travel
 // in the (x, y) plane changes (collinear repeats are not turns; on terrain, neither is a change
-// of slope alone).
-int count_turns(std::span<const Eigen::Vector3d> points);
+// of slope alone). In space (a voxel world, where z is a layer and not a height), the direction
+// in 3D: a climb or a descent that begins is a turn too.
+int count_turns(std::span<const Eigen::Vector3d> points, bool in_space = false);
 
 // Whether a point in planning units lies on a passable cell of the graph's map (its x and y; z is
-// the terrain's height). A point on the border of cells lies on each of them: a waypoint on the
-// corner of an obstacle, where a shortest any-angle path turns, is on a free cell when one cell
+// the terrain's height; in a voxel world x, y and z, on a free voxel). A point on the border of cells lies on each of
+// them: a waypoint on the corner of an obstacle, where a shortest any-angle path turns, is on a free cell when one cell
 // it touches is free.
 bool on_free_cell(const Graph& graph, const Eigen::Vector3d& point);
 

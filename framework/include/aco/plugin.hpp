@@ -47,8 +47,10 @@ namespace aco {
 //     DeadlockPolicy::after_iteration() takes a Trail.
 // 13: Strategy::begin_run() (the lifecycle); Heuristic::specs() replaces varies_by_iteration(),
 //     updates_by_node() and uses_walk().
+// 14: voxel worlds: Cell::z, Map::depth() and volumetric(), Graph's depth, 26-move masks, cost()
+//     and reverse_edge(), Strategy::supports_voxel_worlds().
 // A literal, so the record can spell it; kPluginAbiVersion is the one to use in code.
-#define ACO_FRAMEWORK_PLUGIN_ABI 13
+#define ACO_FRAMEWORK_PLUGIN_ABI 14
 inline constexpr std::uint32_t kPluginAbiVersion = ACO_FRAMEWORK_PLUGIN_ABI;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";

@@ -48,6 +48,23 @@ inline std::vector<SettingsField<PotentialFieldGains>> potential_field_fields() 
 BOOST_SYMBOL_VISIBLE std::vector<Eigen::Vector2d> potential_forces(const Graph& graph, NodeId start, NodeId goal,
                                                                    const PotentialFieldGains& gains);
 
+// The field of a graph, in the plane (grids, terrains: potential_forces()) or, in a voxel world,
+// in space: the same attraction and repulsion in 3D, the window a cube, every blocked voxel
+// pushing with h = 1 (a voxel world has no heights). What the plugins read per edge.
+class BOOST_SYMBOL_VISIBLE PotentialField {
+ public:
+  PotentialField(const Graph& graph, NodeId start, NodeId goal, const PotentialFieldGains& gains);
+  // F_tot at the edge's source along the edge's unit direction.
+  double along(EdgeId e) const;
+  // |F_tot| at the edge's source.
+  double strength(EdgeId e) const;
+
+ private:
+  const Graph& graph_;
+  std::vector<Eigen::Vector2d> planar_;  // per node, on a grid or terrain
+  std::vector<Eigen::Vector3d> spatial_;  // per node, in a voxel world
+};
+
 // Unit direction of edge e in the map plane.
 inline Eigen::Vector2d planar_direction(const Graph& graph, EdgeId e) {
   return (graph.positions[graph.targets[e]] - graph.positions[graph.source(e)]).head<2>().normalized();

@@ -85,6 +85,10 @@ class BOOST_SYMBOL_VISIBLE Strategy {
  public:
   virtual ~Strategy();
   virtual void begin_run(const Context& context);
+  // Whether it plans in voxel worlds (Graph::volumetric: cells with z, up to 26 moves, costs and
+  // reverse edges by move). False unless a plugin says so: hosts refuse a plugin that does not
+  // in a voxel world, with a message naming it, rather than let a grid's assumptions plan wrong.
+  virtual bool supports_voxel_worlds() const;
 };
 
 // Slot "init": the pheromone of every edge before the first iteration.

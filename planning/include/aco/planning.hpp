@@ -67,6 +67,8 @@ struct Planner {
   // Plans in the plane, not on the graph: its path is a polyline at any angles, which plan() takes
   // as it is (checked, measured; no smoother, which resolve_run() refuses for it) with no grid path.
   bool continuous = false;
+  // Plans in voxel worlds too (the 6-, 18- and 26-neighbourhoods); others are refused there.
+  bool volumetric = false;
 };
 
 // aco (the colony), astar (exact reference), ifwa (paper 004), pso (paper 000's baseline), and

@@ -16,6 +16,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class Backtrack final : public aco::DeadlockPolicy {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit Backtrack(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
   // How often ants backed off: a measure of how maze-like the map is for this colony.
   int on_stuck(const aco::Context& c, std::span<const aco::NodeId>) const override {

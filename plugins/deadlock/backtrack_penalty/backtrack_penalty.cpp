@@ -18,6 +18,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class BacktrackPenalty final : public aco::DeadlockPolicy {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit BacktrackPenalty(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }
@@ -32,7 +33,7 @@ class BacktrackPenalty final : public aco::DeadlockPolicy {
       for (std::size_t i = first; i < ant.nodes.size(); ++i) {
         const aco::NodeId n = ant.nodes[i];
         for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) {
-          const aco::EdgeId into = g.reverse[e];
+          const aco::EdgeId into = g.reverse_edge(e);
           trail.set(into, trail[into] * p_.penalty);
         }
       }

@@ -19,6 +19,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class ClearAndTabu final : public aco::DeadlockPolicy {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit ClearAndTabu(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }

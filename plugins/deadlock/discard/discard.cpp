@@ -5,6 +5,7 @@ namespace {
 
 class DiscardPolicy final : public aco::DeadlockPolicy {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit DiscardPolicy(const aco::ParameterValues&) {}
   int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override { return 0; }
 };

@@ -20,6 +20,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class AdaptiveHeuristic final : public aco::Heuristic {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit AdaptiveHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   // The same multiplications, in the same order, for the iterations a node missed (update_node()).
@@ -29,7 +30,7 @@ class AdaptiveHeuristic final : public aco::Heuristic {
     const double w = weight(c);
     const aco::Graph& g = *c.graph;
     for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
-      const double base = 1.0 / (g.costs[e] + g.distance(g.targets[e], c.goal));
+      const double base = 1.0 / (g.cost(e) + g.distance(g.targets[e], c.goal));
       eta[e] = p_.exponent ? std::pow(base, w) : base * w;
     }
   }
@@ -44,7 +45,7 @@ class AdaptiveHeuristic final : public aco::Heuristic {
       step_.resize(eta_beta.size());
       const double dw = -1.0 / c.max_iterations;
       for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
-        const double base = 1.0 / (g.costs[e] + g.distance(g.targets[e], c.goal));
+        const double base = 1.0 / (g.cost(e) + g.distance(g.targets[e], c.goal));
         eta_beta[e] = std::pow(eta_beta[e], c.beta);
         step_[e] = p_.exponent ? std::pow(base, c.beta * dw) : 0.0;
       }

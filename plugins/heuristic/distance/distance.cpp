@@ -18,6 +18,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class DistanceHeuristic final : public aco::Heuristic {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit DistanceHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
   void compute(const aco::Context& c, std::span<double> eta) override {
     const aco::Graph& g = *c.graph;

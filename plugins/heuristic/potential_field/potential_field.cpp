@@ -33,19 +33,19 @@ class PotentialFieldHeuristic final : public aco::Heuristic {
 
   // Only w changes between iterations, so a node's edges need nothing from earlier iterations.
   aco::HeuristicSpecs specs() const override { return {.varies_by_iteration = true, .updates_by_node = true}; }
+  bool supports_voxel_worlds() const override { return true; }
 
   // Per edge, once per run: the distance heuristic, a * max(0, cos phi) and base^beta.
   void begin_run(const aco::Context& c) override {
     const aco::Graph& g = *c.graph;
-    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, p_.gains);
+    const aco::PotentialField field(g, c.start, c.goal, p_.gains);
     base_.resize(g.num_edges());
     boost_.resize(g.num_edges());
     base_beta_.resize(g.num_edges());
     for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
       base_[e] = 1.0 / std::max(g.distance(g.targets[e], c.goal), p_.min_distance);
-      const Eigen::Vector2d& force = forces[g.source(e)];
-      const double strength = force.norm();
-      boost_[e] = strength > 0.0 ? p_.a * std::max(0.0, force.dot(aco::planar_direction(g, e)) / strength) : 0.0;
+      const double strength = field.strength(e);
+      boost_[e] = strength > 0.0 ? p_.a * std::max(0.0, field.along(e) / strength) : 0.0;
       base_beta_[e] = std::pow(base_[e], c.beta);
     }
     beta_ = c.beta;

@@ -20,6 +20,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class ProgressHeuristic final : public aco::Heuristic {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit ProgressHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
   void compute(const aco::Context& c, std::span<double> eta) override {
     const aco::Graph& g = *c.graph;
@@ -27,7 +28,7 @@ class ProgressHeuristic final : public aco::Heuristic {
       if (g.degree(i) == 0) continue;
       const double from = g.distance(i, c.goal);
       for (aco::EdgeId e = g.edges_begin(i); e < g.edges_end(i); ++e) {
-        const double r = std::clamp((from - g.distance(g.targets[e], c.goal)) / g.costs[e], -1.0, 1.0);
+        const double r = std::clamp((from - g.distance(g.targets[e], c.goal)) / g.cost(e), -1.0, 1.0);
         eta[e] = p_.floor + (1.0 - p_.floor) * 0.5 * (1.0 + r);
       }
     }

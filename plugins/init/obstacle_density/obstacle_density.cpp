@@ -1,6 +1,6 @@
 // Obstacle-density initial pheromone (paper 003, eq. 7-8): tau_ij(0) = gamma * f(j), f(j) = share
-// of free cells among the 8 neighbours of j. Cells outside the map count as blocked, so cells on
-// the map's edge start low, as the paper wants.
+// of free cells among the 8 neighbours of j (in a voxel world, the 26 neighbours of voxel j).
+// Cells outside the map count as blocked, so cells on the map's edge start low, as the paper wants.
 #include "aco/plugin.hpp"
 
 namespace {
@@ -16,6 +16,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class ObstacleDensityInit final : public aco::PheromoneInit {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit ObstacleDensityInit(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   void initialize(const aco::Context& c, std::span<double> tau) override {
@@ -24,11 +25,13 @@ class ObstacleDensityInit final : public aco::PheromoneInit {
   }
 
   static double free_share(const aco::Map& map, aco::Cell j) {
+    const int layers = map.volumetric() ? 1 : 0;
     int free = 0;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx)
-        if ((dx != 0 || dy != 0) && map.passable({j.x + dx, j.y + dy})) ++free;
-    return free / 8.0;
+    for (int dz = -layers; dz <= layers; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          if ((dx != 0 || dy != 0 || dz != 0) && map.passable({j.x + dx, j.y + dy, j.z + dz})) ++free;
+    return free / (layers ? 26.0 : 8.0);
   }
 
  private:

@@ -28,14 +28,15 @@ const aco::SettingsTable<Parameters> kParams(
 class PotentialFieldInit final : public aco::PheromoneInit {
  public:
   explicit PotentialFieldInit(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
+  bool supports_voxel_worlds() const override { return true; }
 
   void initialize(const aco::Context& c, std::span<double> tau) override {
     const aco::Graph& g = *c.graph;
-    const std::vector<Eigen::Vector2d> forces = aco::potential_forces(g, c.start, c.goal, p_.gains);
+    const aco::PotentialField field(g, c.start, c.goal, p_.gains);
     // The force is measured against k, its strength in the open; with k = 0 against theta.
     const double unit = p_.gains.k > 0.0 ? p_.gains.k : std::max(p_.gains.theta, 1e-300);
     for (aco::EdgeId e = 0; e < g.num_edges(); ++e) {
-      const double along = forces[g.source(e)].dot(aco::planar_direction(g, e)) / unit;
+      const double along = field.along(e) / unit;
       const double share = 0.5 * (1.0 + std::clamp(along, -1.0, 1.0));
       tau[e] = p_.tau0 * (p_.floor + (1.0 - p_.floor) * share);
     }

@@ -15,6 +15,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class UniformInit final : public aco::PheromoneInit {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit UniformInit(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
   void initialize(const aco::Context&, std::span<double> tau) override { std::fill(tau.begin(), tau.end(), p_.tau0); }
 

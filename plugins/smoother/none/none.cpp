@@ -6,6 +6,7 @@ namespace {
 
 class NoSmoother final : public aco::Smoother {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit NoSmoother(const aco::ParameterValues&) {}
   std::vector<Eigen::Vector3d> smooth(const aco::Context& c, std::span<const aco::NodeId> path) const override {
     return aco::to_waypoints(*c.graph, path);

@@ -7,6 +7,7 @@
 // than the move rule (a corner-cutting diagonal between two blocked cells).
 #include <cstddef>
 
+#include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/plugin.hpp"
 #include "aco/path.hpp"
@@ -28,10 +29,13 @@ const aco::SettingsTable<Parameters> kParams({
 
 class PruneSmoother final : public aco::Smoother {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit PruneSmoother(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   std::vector<Eigen::Vector3d> smooth(const aco::Context& c, std::span<const aco::NodeId> path) const override {
     const aco::Graph& g = *c.graph;
+    if (g.volumetric && p_.clearance > 0.0)
+      throw aco::Error("prune.clearance is measured in the plane: a voxel world takes prune with clearance 0 only");
     std::vector<Eigen::Vector3d> points;
     for (const std::size_t k : aco::greedy_shortcuts(path.size(), p_.max_lookahead, [&](std::size_t i, std::size_t j) {
            const aco::Cell from = g.cell(path[i]), to = g.cell(path[j]);

@@ -22,6 +22,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class AcsUpdate final : public aco::PheromoneUpdate {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit AcsUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)), local_(p_.xi) {}
 
   void start(const aco::Context& c, std::span<double> tau) override {

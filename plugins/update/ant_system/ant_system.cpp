@@ -16,6 +16,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class AntSystemUpdate final : public aco::PheromoneUpdate {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit AntSystemUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
   void update(const aco::Context&, const aco::Iteration& iteration, std::span<double> tau) override {
     aco::evaporate(tau, p_.rho);

@@ -38,6 +38,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class EliteUpdate final : public aco::PheromoneUpdate {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit EliteUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)), local_(p_.local_rho) {}
 
   void start(const aco::Context& c, std::span<double> tau) override {

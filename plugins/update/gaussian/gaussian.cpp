@@ -2,7 +2,7 @@
 // only on it. Every step of the path spreads y(x) = psi / sqrt(2 pi sigma) * exp(-(x - mu)^2 /
 // (2 sigma^2)) to its neighbourhood within the cutoff radius (x = length of the offset), scaled
 // by Q / L_k, and the contributions add up, so the inside of a bend, near both of its legs,
-// collects the most.
+// collects the most. In a voxel world the neighbourhood is the ball of that radius.
 #include <cmath>
 #include <vector>
 
@@ -36,17 +36,25 @@ const aco::SettingsTable<Parameters> kParams({
 
 class GaussianUpdate final : public aco::PheromoneUpdate {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit GaussianUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {
     // The kernel depends only on the offset: tabulate it once.
     const double psi = p_.psi, mu = p_.mu, sigma = p_.sigma, cutoff = p_.cutoff;
     const int r = static_cast<int>(std::floor(cutoff));
+    const auto y = [&](double x) {
+      return psi / std::sqrt(2 * M_PI * sigma) * std::exp(-(x - mu) * (x - mu) / (2 * sigma * sigma));
+    };
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx) {
         const double x = std::hypot(dx, dy);
-        if (x <= cutoff)
-          kernel_.push_back(
-              {dx, dy, psi / std::sqrt(2 * M_PI * sigma) * std::exp(-(x - mu) * (x - mu) / (2 * sigma * sigma))});
+        if (x <= cutoff) kernel_.push_back({dx, dy, 0, y(x)});
       }
+    for (int dz = -r; dz <= r; ++dz)
+      for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+          const double x = std::sqrt(dx * dx + dy * dy + dz * dz);
+          if (x <= cutoff) ball_.push_back({dx, dy, dz, y(x)});
+        }
   }
 
   void update(const aco::Context& c, const aco::Iteration& it, std::span<double> tau) override {
@@ -64,19 +72,22 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
   struct Offset {
     int dx;
     int dy;
+    int dz;
     double weight;
   };
+
+  const std::vector<Offset>& kernel(const aco::Graph& g) const { return g.volumetric ? ball_ : kernel_; }
 
   // Step a -> b deposits y(|o|) on the step a+o -> b+o, where that is an edge of the graph.
   void spread_onto_edges(const aco::Graph& g, const aco::Ant& ant, std::span<double> tau) const {
     const double scale = p_.q / ant.length;
     for (std::size_t i = 0; i < ant.edges.size(); ++i) {
       const aco::Cell a = g.cell(ant.nodes[i]), b = g.cell(ant.nodes[i + 1]);
-      const int dx = b.x - a.x, dy = b.y - a.y;
-      for (const Offset& k : kernel_) {
-        const aco::Cell from{a.x + k.dx, a.y + k.dy};
-        if (from.x < 0 || from.y < 0 || from.x >= g.width || from.y >= g.height) continue;
-        const aco::EdgeId e = g.edge_by_move(g.node(from), dx, dy);
+      const int dx = b.x - a.x, dy = b.y - a.y, dz = b.z - a.z;
+      for (const Offset& k : kernel(g)) {
+        const aco::Cell from{a.x + k.dx, a.y + k.dy, a.z + k.dz};
+        if (!g.map->contains(from)) continue;
+        const aco::EdgeId e = g.edge_by_move(g.node(from), dx, dy, dz);
         if (e >= 0) tau[e] += scale * k.weight;
       }
     }
@@ -88,8 +99,8 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
     touched_.clear();
     for (aco::NodeId p : ant.nodes) {
       const aco::Cell cell = g.cell(p);
-      for (const Offset& k : kernel_) {
-        const aco::Cell near{cell.x + k.dx, cell.y + k.dy};
+      for (const Offset& k : kernel(g)) {
+        const aco::Cell near{cell.x + k.dx, cell.y + k.dy, cell.z + k.dz};
         if (!g.map->contains(near)) continue;
         const aco::NodeId n = g.node(near);
         if (spread_[n] == 0.0) touched_.push_back(n);
@@ -98,13 +109,14 @@ class GaussianUpdate final : public aco::PheromoneUpdate {
     }
     const double scale = p_.q / ant.length;
     for (aco::NodeId n : touched_) {
-      for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) tau[g.reverse[e]] += scale * spread_[n];
+      for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) tau[g.reverse_edge(e)] += scale * spread_[n];
       spread_[n] = 0.0;
     }
   }
 
   Parameters p_;
-  std::vector<Offset> kernel_;
+  std::vector<Offset> kernel_;  // the disc of the cutoff radius, for grids and terrains
+  std::vector<Offset> ball_;  // its ball, for voxel worlds
   std::vector<double> spread_;  // per node, zero between ants (cells mode)
   std::vector<aco::NodeId> touched_;  // nodes with a non-zero spread_
 };

@@ -32,6 +32,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class MaxMinUpdate final : public aco::PheromoneUpdate {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit MaxMinUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   void begin_run(const aco::Context& c) override {

@@ -28,6 +28,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class PopulationUpdate final : public aco::PheromoneUpdate {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit PopulationUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   void begin_run(const aco::Context&) override { population_.clear(); }

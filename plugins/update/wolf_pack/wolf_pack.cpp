@@ -39,6 +39,7 @@ const aco::SettingsTable<Parameters> kParams({
 
 class WolfPackUpdate final : public aco::PheromoneUpdate {
  public:
+  bool supports_voxel_worlds() const override { return true; }
   explicit WolfPackUpdate(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
 
   void update(const aco::Context&, const aco::Iteration& it, std::span<double> tau) override {

@@ -1,0 +1,267 @@
+// Voxel worlds: the 6-, 18- and 26-neighbourhoods, the 3D corner rule, 3D line of sight, exact
+// optima, and the colony with the plugins that declare they plan in 3D.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <queue>
+#include <random>
+#include <set>
+#include <tuple>
+
+#include "aco/astar.hpp"
+#include "aco/error.hpp"
+#include "aco/graph.hpp"
+#include "aco/path.hpp"
+#include "aco/pipeline.hpp"
+#include "aco/planning.hpp"
+#include "aco/run_spec.hpp"
+#include "aco/voxel.hpp"
+#include "support.hpp"
+
+using Catch::Contains;
+
+namespace {
+
+aco::Graph build(const aco::Map& map, aco::Neighbourhood n, bool corner_cutting = false) {
+  return aco::build_graph(map, {n, corner_cutting});
+}
+
+// A world with every voxel blocked with probability `density` (fixed seed).
+aco::VoxelMap random_world(int w, int h, int d, double density, unsigned seed) {
+  aco::VoxelMap map(w, h, d, "random");
+  std::mt19937 rng(seed);
+  std::bernoulli_distribution blocked(density);
+  for (int z = 0; z < d; ++z)
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) map.set_blocked({x, y, z}, blocked(rng));
+  return map;
+}
+
+// The move rule written out on its own: the target free and, without corner cutting, every voxel
+// of the box the move spans.
+bool reference_move(const aco::Map& map, aco::Cell a, int dx, int dy, int dz, bool corner_cutting) {
+  const aco::Cell b{a.x + dx, a.y + dy, a.z + dz};
+  if (!map.passable(a) || !map.passable(b)) return false;
+  if (corner_cutting) return true;
+  for (int x = std::min(a.x, b.x); x <= std::max(a.x, b.x); ++x)
+    for (int y = std::min(a.y, b.y); y <= std::max(a.y, b.y); ++y)
+      for (int z = std::min(a.z, b.z); z <= std::max(a.z, b.z); ++z)
+        if (!map.passable({x, y, z})) return false;
+  return true;
+}
+
+// Dijkstra over the reference moves: the exact optimum, independent of Graph.
+double reference_optimum(const aco::Map& map, aco::Cell start, aco::Cell goal, int neighbourhood) {
+  const int w = map.width(), h = map.height(), d = map.depth();
+  const auto id = [&](aco::Cell c) { return (c.z * h + c.y) * w + c.x; };
+  std::vector<double> dist(static_cast<std::size_t>(w) * h * d, INFINITY);
+  using Entry = std::pair<double, std::tuple<int, int, int>>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  dist[id(start)] = 0;
+  open.push({0.0, {start.x, start.y, start.z}});
+  while (!open.empty()) {
+    const auto [g, xyz] = open.top();
+    open.pop();
+    const aco::Cell c{std::get<0>(xyz), std::get<1>(xyz), std::get<2>(xyz)};
+    if (g > dist[id(c)]) continue;
+    if (c == goal) return g;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const int axes = (dx != 0) + (dy != 0) + (dz != 0);
+          if (axes == 0 || (neighbourhood == 6 && axes > 1) || (neighbourhood == 18 && axes > 2)) continue;
+          if (!reference_move(map, c, dx, dy, dz, false)) continue;
+          const aco::Cell n{c.x + dx, c.y + dy, c.z + dz};
+          const double step = std::sqrt(double(axes));
+          if (g + step < dist[id(n)]) {
+            dist[id(n)] = g + step;
+            open.push({g + step, {n.x, n.y, n.z}});
+          }
+        }
+  }
+  return INFINITY;
+}
+
+}  // namespace
+
+TEST_CASE("a voxel world's graph has the 6, 18 and 26 moves, with costs and reverse edges by move", "[voxel][graph]") {
+  const aco::VoxelMap open(3, 3, 3, "open");
+  for (auto [n, expected] : {std::pair{aco::Neighbourhood::six, 6}, std::pair{aco::Neighbourhood::eighteen, 18},
+                             std::pair{aco::Neighbourhood::twenty_six, 26}}) {
+    const aco::Graph g = build(open, n);
+    INFO(aco::describe(g.options));
+    CHECK(g.volumetric);
+    CHECK(g.num_nodes() == 27);
+    CHECK(g.edge_costs.empty());  // the lean voxel graph stores none
+    CHECK(g.degree(g.node({1, 1, 1})) == expected);
+    std::set<std::tuple<int, int, int>> seen;
+    for (aco::NodeId a = 0; a < g.num_nodes(); ++a)
+      for (aco::EdgeId e = g.edges_begin(a); e < g.edges_end(a); ++e) {
+        const aco::NodeId b = g.targets[e];
+        CHECK(g.cost(e) == Approx(g.distance(a, b)));
+        CHECK(g.targets[g.reverse_edge(e)] == a);
+        CHECK(g.source(e) == a);
+        CHECK(g.find_edge(a, b) == e);
+        const aco::Cell ca = g.cell(a), cb = g.cell(b);
+        CHECK(g.node(ca) == a);
+        seen.insert({cb.x - ca.x, cb.y - ca.y, cb.z - ca.z});
+      }
+    CHECK(static_cast<int>(seen.size()) == expected);
+  }
+}
+
+TEST_CASE("without corner cutting a 3D move needs every voxel of its box free, as the voxel benchmarks say",
+          "[voxel][graph]") {
+  const aco::VoxelMap world = random_world(6, 5, 4, 0.3, 7);
+  for (bool corner_cutting : {false, true}) {
+    const aco::Graph g = build(world, aco::Neighbourhood::twenty_six, corner_cutting);
+    for (int z = 0; z < 4; ++z)
+      for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 6; ++x)
+          for (const aco::Move& m : aco::moves(aco::Neighbourhood::twenty_six)) {
+            const aco::Cell a{x, y, z};
+            INFO(aco::to_string(a) << " + (" << m.dx << "," << m.dy << "," << m.dz << "), corner cutting "
+                                   << corner_cutting);
+            CHECK((g.edge_by_move(g.node(a), m.dx, m.dy, m.dz) >= 0) ==
+                  reference_move(world, a, m.dx, m.dy, m.dz, corner_cutting));
+          }
+  }
+}
+
+TEST_CASE("a voxel world takes the 3D neighbourhoods and a 2D map the 2D ones", "[voxel][graph]") {
+  const aco::VoxelMap world(4, 4, 4, "cube");
+  CHECK_THROWS_WITH(build(world, aco::Neighbourhood::eight),
+                    Contains("cube is a voxel world: it takes the 6-, 18- or 26-neighbourhood"));
+  const auto grid = test::grid({"....", "...."});
+  CHECK_THROWS_WITH(build(grid, aco::Neighbourhood::twenty_six), Contains("the 26-neighbourhood is for voxel worlds"));
+  CHECK_THROWS_WITH(aco::VoxelMap(4, 0, 2, "flat"), Contains("flat: voxel world size 4x0x2 is empty"));
+}
+
+TEST_CASE("3D A* finds the exact optimum of every neighbourhood", "[voxel][astar]") {
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    aco::VoxelMap world = random_world(9, 8, 7, 0.25, seed);
+    const aco::Cell start{0, 0, 0}, goal{8, 7, 6};
+    world.set_blocked(start, false);
+    world.set_blocked(goal, false);
+    for (int n : {6, 18, 26}) {
+      const aco::Graph g = build(world, static_cast<aco::Neighbourhood>(n));
+      const double expected = reference_optimum(world, start, goal, n);
+      const auto found = aco::astar(g, g.node(start), g.node(goal));
+      INFO("seed " << seed << ", " << n << "-neighbourhood");
+      REQUIRE(found.has_value() == std::isfinite(expected));
+      if (found) {
+        CHECK(found->length == Approx(expected).epsilon(1e-12));
+        CHECK(aco::path_length(g, found->nodes) == Approx(found->length));
+      }
+    }
+  }
+}
+
+TEST_CASE("3D line of sight enters no blocked voxel and obeys the box rule where it passes an edge or a corner",
+          "[voxel][graph]") {
+  aco::VoxelMap world(5, 5, 5, "sight");
+  CHECK(aco::line_of_sight(world, {0, 0, 0}, {4, 3, 2}, false));
+  world.set_blocked({2, 2, 2}, true);
+  CHECK_FALSE(aco::line_of_sight(world, {0, 0, 0}, {4, 4, 4}, false));  // through the blocked centre
+  CHECK_FALSE(aco::line_of_sight(world, {2, 2, 0}, {2, 2, 4}, true));
+  CHECK(aco::line_of_sight(world, {0, 0, 0}, {4, 0, 0}, false));
+  // Through the edge between (2,2,1) and (3,3,1): the box's other voxels must be free.
+  aco::VoxelMap edge(5, 5, 3, "edge");
+  edge.set_blocked({3, 2, 1}, true);
+  CHECK_FALSE(aco::line_of_sight(edge, {1, 1, 1}, {4, 4, 1}, false));
+  CHECK(aco::line_of_sight(edge, {1, 1, 1}, {4, 4, 1}, true));  // one side free: corner cutting grazes
+  edge.set_blocked({2, 3, 1}, true);
+  CHECK_FALSE(aco::line_of_sight(edge, {1, 1, 1}, {4, 4, 1}, true));  // both sides: no squeezing through
+  // Sampled check on random worlds: a segment said clear has every sample in a free voxel.
+  for (unsigned seed = 1; seed <= 4; ++seed) {
+    const aco::VoxelMap w = random_world(7, 7, 7, 0.15, seed);
+    std::mt19937 rng(seed);
+    std::uniform_int_distribution<int> coord(0, 6);
+    for (int k = 0; k < 300; ++k) {
+      const aco::Cell a{coord(rng), coord(rng), coord(rng)}, b{coord(rng), coord(rng), coord(rng)};
+      if (!aco::line_of_sight(w, a, b, false)) continue;
+      for (int s = 0; s <= 1000; ++s) {
+        const double t = s / 1000.0;
+        const double x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y), z = a.z + t * (b.z - a.z);
+        const aco::Cell c{int(std::lround(x)), int(std::lround(y)), int(std::lround(z))};
+        INFO(aco::to_string(a) << " -> " << aco::to_string(b) << " at t = " << t);
+        REQUIRE(w.passable(c));
+      }
+    }
+  }
+}
+
+TEST_CASE("the colony plans in a voxel world with every plugin that says it can", "[voxel][colony]") {
+  aco::VoxelMap world(12, 10, 8, "pillars");
+  for (int z = 0; z < 6; ++z)
+    for (int y = 0; y < 10; ++y)
+      if (y != 4) world.set_blocked({6, y, z}, true);  // a wall with a slot and open above
+  const aco::Cell start{1, 1, 0}, goal{10, 8, 1};
+  const aco::Graph g = build(world, aco::Neighbourhood::twenty_six);
+  const double optimum = aco::astar(g, g.node(start), g.node(goal))->length;
+  const std::vector<std::vector<std::pair<std::string, std::string>>> pipelines{
+      {{"init", "uniform"}, {"heuristic", "distance"}, {"update", "ant_system"}, {"deadlock", "discard"}},
+      {{"init", "potential_field"}, {"heuristic", "potential_field"}, {"update", "elite"}, {"deadlock", "backtrack"}},
+      {{"init", "obstacle_density"},
+       {"heuristic", "direction"},
+       {"update", "gaussian"},
+       {"deadlock", "clear_and_tabu"}},
+      {{"init", "uniform"}, {"heuristic", "adaptive"}, {"update", "wolf_pack"}, {"deadlock", "backtrack_penalty"}},
+      {{"init", "uniform"}, {"heuristic", "progress"}, {"update", "max_min"}, {"deadlock", "backtrack"}},
+      {{"init", "uniform"}, {"heuristic", "distance"}, {"update", "acs"}, {"deadlock", "backtrack"}},
+      {{"init", "uniform"}, {"heuristic", "distance"}, {"update", "population"}, {"deadlock", "backtrack"}},
+  };
+  for (const auto& choice : pipelines) {
+    aco::Keys keys(choice.begin(), choice.end());
+    keys["smoother"] = "prune";
+    const auto spec = test::pipeline(keys);
+    const auto p = aco::instantiate(test::plugins(), spec);
+    aco::ColonySettings s;
+    s.ants = 20;
+    s.iterations = 15;
+    for (bool bidirectional : {false, true}) {
+      s.bidirectional = bidirectional;
+      const auto r = aco::run_pipeline(test::plugins(), spec, p, g, g.node(start), g.node(goal), s);
+      INFO(choice[0].second << " " << choice[1].second << " " << choice[2].second << " " << choice[3].second
+                            << (bidirectional ? ", bidirectional" : ""));
+      REQUIRE(r.solved);
+      CHECK(aco::path_length(g, r.path) == Approx(r.length));
+      CHECK(r.length >= optimum - 1e-9);
+      auto context = test::context(g, start, goal);
+      const aco::Waypoints smoothed = p.smoother->smooth(context, r.path);
+      CHECK(aco::waypoint_problem(g, g.node(start), g.node(goal), smoothed).empty());
+      CHECK(aco::polyline_length(smoothed) <= r.length + 1e-9);
+      for (std::size_t i = 1; i < smoothed.size(); ++i) {
+        const auto cell = [](const Eigen::Vector3d& v) { return aco::Cell{int(v.x()), int(v.y()), int(v.z())}; };
+        CHECK(aco::line_of_sight(world, cell(smoothed[i - 1]), cell(smoothed[i]), false));
+      }
+    }
+  }
+}
+
+TEST_CASE("plan() refuses a planner or plugin that does not plan in 3D, naming it", "[voxel][planning]") {
+  aco::VoxelMap world(6, 6, 4, "box.3dmap");
+  const aco::Graph g = build(world, aco::Neighbourhood::twenty_six);
+  aco::Keys keys{{"smoother", "taut"}};
+  auto run = aco::resolve_run(keys, test::plugins());
+  CHECK_THROWS_WITH(aco::plan(test::plugins(), g, g.node({0, 0, 0}), g.node({5, 5, 3}), run),
+                    Contains("smoother/taut") && Contains("does not plan in 3D; box.3dmap is a voxel world"));
+  run = aco::resolve_run({{"planner", "pso"}}, test::plugins());
+  CHECK_THROWS_WITH(aco::plan(test::plugins(), g, g.node({0, 0, 0}), g.node({5, 5, 3}), run),
+                    Contains("planner 'pso' plans on 2D maps only; box.3dmap is a voxel world"));
+  run = aco::resolve_run({{"planner", "astar"}}, test::plugins());
+  const auto outcome = aco::plan(test::plugins(), g, g.node({0, 0, 0}), g.node({5, 5, 3}), run);
+  CHECK(outcome.solved());
+  CHECK(outcome.length == Approx(std::sqrt(3.0) * 3 + std::sqrt(2.0) * 2));
+}
+
+TEST_CASE("cells parse as X,Y or X,Y,Z and name their layer in a voxel world", "[voxel][keys]") {
+  CHECK(aco::parse_cell("3,4,5", "start") == aco::Cell{3, 4, 5});
+  CHECK(aco::parse_cell("3,4", "start") == aco::Cell{3, 4, 0});
+  CHECK_THROWS_WITH(aco::parse_cell("3,4,5,6", "goal"), Contains("expected X,Y such as 3,7 (X,Y,Z in a voxel world)"));
+  CHECK_THROWS_WITH(aco::parse_cell("3,,5", "goal"), Contains("is not a cell"));
+  const aco::VoxelMap world(4, 4, 4, "w");
+  CHECK(world.describe({1, 2, 0}) == "(1,2,0)");
+  CHECK(aco::to_string(aco::Cell{1, 2, 3}) == "(1,2,3)");
+  CHECK(aco::to_string(aco::Cell{1, 2}) == "(1,2)");
+}

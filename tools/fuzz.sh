@@ -18,14 +18,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 mode="${1:-short}"
 shift || true
-read -r -a targets <<<"${FUZZ_TARGETS:-movingai_map movingai_scen matrix_map ros_map esri_ascii pgm_heights ini_config experiment}"
+read -r -a targets <<<"${FUZZ_TARGETS:-movingai_map movingai_scen matrix_map ros_map esri_ascii pgm_heights movingai_voxels voxel_scen ini_config experiment}"
 [[ "$mode" =~ ^(short|long)$ ]] || targets=("$mode")
 out=build/fuzz
 # short's executions per harness, each about 15 s on 2 busy shared cores: a number, not a time,
 # so that a slower or busier machine runs the same inputs. A new harness needs its entry.
 declare -A short_runs=(
   [movingai_map]=120000 [movingai_scen]=120000 [matrix_map]=250000 [ros_map]=3500 [esri_ascii]=120000
-  [pgm_heights]=200000 [ini_config]=3500 [experiment]=3000
+  [pgm_heights]=200000 [movingai_voxels]=120000 [voxel_scen]=120000 [ini_config]=3500 [experiment]=3000
 )
 
 # libFuzzer mutates with the operands of the comparisons an input made, and pointers are among
@@ -47,6 +47,8 @@ seed_files() {
   case "$1" in
     movingai_map) find data/maps data/terrain -name '*.map' ;;
     movingai_scen) find data/maps data/terrain -name '*.scen' ;;
+    movingai_voxels) find data/maps/voxel -name '*.3dmap' ;;
+    voxel_scen) find data/maps/voxel -name '*.3dscen' ;;
     matrix_map) find data/maps/classic20 -name '*.txt' ;;
     esri_ascii) find data/terrain -name '*.asc' ;;
     ini_config) find data/presets data/scenarios -name '*.ini' ;;

@@ -42,6 +42,12 @@ const std::vector<BuiltinMapFormat>& builtin_map_formats() {
        [](const std::filesystem::path& file, const TerrainOptions&) -> std::unique_ptr<Map> {
          return std::make_unique<OccupancyGrid>(load_movingai_map(file));
        }},
+      {"movingai3d",
+       {".3dmap"},
+       "Moving AI .3dmap voxel world ('voxel W H D', then one blocked voxel 'x y z' a line)",
+       [](const std::filesystem::path& file, const TerrainOptions&) -> std::unique_ptr<Map> {
+         return std::make_unique<VoxelMap>(load_movingai_voxels(file));
+       }},
       {"ros",
        {".yaml", ".yml"},
        "ROS map_server YAML and its PGM image (unknown cells blocked)",

@@ -10,6 +10,7 @@
 #include <limits>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 #include "aco/error.hpp"
 #include "aco/input_file.hpp"
@@ -98,6 +99,43 @@ std::ifstream open(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw Error(file.string() + ": cannot open file");
   return in;
+}
+
+// Splits a line at blanks and tabs into at most `max` words, without the stream machinery of
+// split_whitespace(): a voxel world has hundreds of thousands of lines. Returns the number of
+// words, max + 1 if there are more.
+std::size_t split_fields(const std::string& line, std::string_view* words, std::size_t max) {
+  std::size_t n = 0;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i == line.size()) break;
+    const std::size_t begin = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    if (n == max) return max + 1;
+    words[n++] = std::string_view(line).substr(begin, i - begin);
+  }
+  return n;
+}
+
+template <class Number>
+bool parse_number(std::string_view text, Number& value) {
+  const char* end = text.data() + text.size();
+  auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+// A voxel world's size is checked like a grid's, its voxels taken as cells of the leanest
+// neighbourhood: the run's own (6, 18 or 26 neighbours) is checked again when the graph is built.
+void check_voxel_memory(int width, int height, int depth, const std::string& name) {
+  const std::int64_t voxels = std::int64_t{width} * height * depth;
+  const std::uint64_t estimate = planning_memory_estimate(voxels, 1, Neighbourhood::four);
+  const std::uint64_t limit = memory_limit();
+  if (estimate > limit)
+    throw Error(name + ": a " + std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(depth) +
+                " voxel world needs at least " + format_bytes(estimate) +
+                " to plan on, more than the memory limit of " + format_bytes(limit) +
+                " (--max-memory sets it): refused");
 }
 
 }  // namespace
@@ -406,6 +444,65 @@ TerrainMap load_height_pgm(const std::filesystem::path& file, const TerrainOptio
   return read_height_pgm(in, file.string(), options);
 }
 
+VoxelMap read_movingai_voxels(std::istream& in, const std::string& name) {
+  LineReader reader(in, name);
+  std::string line;
+  std::string_view f[4];
+  if (!reader.next(line)) reader.fail_at(1, "empty voxel file (expected a first line 'voxel WIDTH HEIGHT DEPTH')");
+  if (split_fields(line, f, 4) != 4 || f[0] != "voxel")
+    reader.fail("expected a first line 'voxel WIDTH HEIGHT DEPTH', found '" + line + "'");
+  const int width = parse_dimension(reader, std::string(f[1]), "width");
+  const int height = parse_dimension(reader, std::string(f[2]), "height");
+  const int depth = parse_dimension(reader, std::string(f[3]), "depth");
+  check_voxel_memory(width, height, depth, name);
+  VoxelMap map(width, height, depth, name);
+  const int size[3] = {width, height, depth};
+  static const char* const kAxis[3] = {"x", "y", "z"};
+  while (reader.next(line)) {
+    const std::size_t n = split_fields(line, f, 3);
+    if (n == 0) continue;
+    if (n != 3)
+      reader.fail("expected a blocked voxel 'x y z', found " + std::string(n > 3 ? "more than 3" : std::to_string(n)) +
+                  " field" + (n == 1 ? "" : "s") + " in '" + line + "'");
+    int c[3];
+    for (int i = 0; i < 3; ++i) {
+      if (!parse_number(f[i], c[i]))
+        reader.fail(std::string(kAxis[i]) + " '" + std::string(f[i]) + "' is not a whole number");
+      if (c[i] < 0 || c[i] >= size[i])
+        reader.fail("voxel (" + std::string(f[0]) + "," + std::string(f[1]) + "," + std::string(f[2]) +
+                    ") is outside the " + std::to_string(width) + "x" + std::to_string(height) + "x" +
+                    std::to_string(depth) + " world (" + kAxis[i] + " must be 0 to " + std::to_string(size[i] - 1) +
+                    ")");
+    }
+    map.set_blocked({c[0], c[1], c[2]}, true);
+  }
+  return map;
+}
+
+VoxelMap load_movingai_voxels(const std::filesystem::path& file) {
+  std::ifstream in = open(file);
+  return read_movingai_voxels(in, file.string());
+}
+
+void write_movingai_voxels(const VoxelMap& map, std::ostream& out) {
+  std::string text = "voxel " + std::to_string(map.width()) + " " + std::to_string(map.height()) + " " +
+                     std::to_string(map.depth()) + "\n";
+  char buffer[48];
+  for (int x = 0; x < map.width(); ++x)
+    for (int y = 0; y < map.height(); ++y)
+      for (int z = 0; z < map.depth(); ++z) {
+        if (!map.blocked({x, y, z})) continue;
+        char* p = buffer;
+        for (const int v : {x, y, z}) {
+          if (p != buffer) *p++ = ' ';
+          p = std::to_chars(p, buffer + sizeof buffer, v).ptr;
+        }
+        *p++ = '\n';
+        text.append(buffer, p);
+      }
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+
 std::vector<Scenario> read_scenarios(std::istream& in, const std::string& name) {
   LineReader reader(in, name);
   std::string line;
@@ -437,13 +534,56 @@ std::vector<Scenario> read_scenarios(std::istream& in, const std::string& name) 
 }
 
 std::vector<Scenario> load_scenarios(const std::filesystem::path& file) {
+  if (file.extension() == ".3dscen") return load_voxel_scenarios(file);
   std::ifstream in = open(file);
   return read_scenarios(in, file.string());
 }
 
+std::vector<Scenario> read_voxel_scenarios(std::istream& in, const std::string& name) {
+  LineReader reader(in, name);
+  std::string line;
+  std::string_view f[8];
+  if (!reader.next(line)) reader.fail_at(1, "empty scenario file (expected 'version 1')");
+  if (split_fields(line, f, 2) != 2 || f[0] != "version" || (f[1] != "1" && f[1] != "1.0"))
+    reader.fail("expected 'version 1', found '" + line + "'");
+  if (!reader.next(line) || split_fields(line, f, 1) != 1)
+    reader.fail_at(2, "expected the map's file name on line 2 (e.g. 'Simple.3dmap')");
+  const std::string map_path(f[0]);
+  std::vector<Scenario> scenarios;
+  while (reader.next(line)) {
+    const std::size_t n = split_fields(line, f, 8);
+    if (n == 0) continue;
+    if (n != 7 && n != 8)
+      reader.fail("expected 8 fields (start x y z, goal x y z, optimal length, ratio), found " +
+                  std::string(n > 8 ? "more than 8" : std::to_string(n)));
+    Scenario s;
+    s.map_path = map_path;
+    s.volumetric = true;
+    int c[6];
+    for (int i = 0; i < 6; ++i)
+      if (!parse_number(f[i], c[i]) || c[i] < 0)
+        reader.fail(std::string(i < 3 ? "start " : "goal ") + "xyz"[i % 3] + " '" + std::string(f[i]) +
+                    "' is not a whole number of at least 0");
+    s.start = {c[0], c[1], c[2]};
+    s.goal = {c[3], c[4], c[5]};
+    if (!parse_number(f[6], s.optimal_length) || !std::isfinite(s.optimal_length) || s.optimal_length < 0)
+      reader.fail("optimal length '" + std::string(f[6]) + "' is not a number of at least 0");
+    if (n == 8 && (!parse_number(f[7], s.ratio) || !std::isfinite(s.ratio) || s.ratio < 0))
+      reader.fail("ratio '" + std::string(f[7]) + "' is not a number of at least 0");
+    scenarios.push_back(s);
+  }
+  return scenarios;
+}
+
+std::vector<Scenario> load_voxel_scenarios(const std::filesystem::path& file) {
+  std::ifstream in = open(file);
+  return read_voxel_scenarios(in, file.string());
+}
+
 std::filesystem::path scenario_map_file(const std::filesystem::path& scen_file) {
-  if (scen_file.extension() != ".scen")
-    throw Error(scen_file.string() + ": a scenario file name must end in .scen (e.g. arena.map.scen)");
+  if (scen_file.extension() != ".scen" && scen_file.extension() != ".3dscen")
+    throw Error(scen_file.string() +
+                ": a scenario file name must end in .scen (e.g. arena.map.scen) or .3dscen (e.g. Simple.3dmap.3dscen)");
   std::filesystem::path map = scen_file;
   map.replace_extension();
   return map;

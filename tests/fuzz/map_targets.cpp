@@ -77,9 +77,25 @@ void pgm_heights(std::string_view input) {
   });
 }
 
+void movingai_voxels(std::string_view input) {
+  expect_no_crash([&] {
+    auto in = stream(input);
+    aco::read_movingai_voxels(in, "fuzz.3dmap");
+  });
+}
+
+void voxel_scen(std::string_view input) {
+  expect_no_crash([&] {
+    auto in = stream(input);
+    aco::read_voxel_scenarios(in, "fuzz.3dmap.3dscen");
+  });
+}
+
 constexpr Target kTargets[] = {
-    {"movingai_map", movingai_map}, {"movingai_scen", movingai_scen}, {"matrix_map", matrix_map},
-    {"ros_map", ros_map},           {"esri_ascii", esri_ascii},       {"pgm_heights", pgm_heights},
+    {"movingai_map", movingai_map},       {"movingai_scen", movingai_scen},
+    {"matrix_map", matrix_map},           {"ros_map", ros_map},
+    {"esri_ascii", esri_ascii},           {"pgm_heights", pgm_heights},
+    {"movingai_voxels", movingai_voxels}, {"voxel_scen", voxel_scen},
 };
 
 }  // namespace

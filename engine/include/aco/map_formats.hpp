@@ -22,7 +22,7 @@ struct BuiltinMapFormat {
   std::unique_ptr<Map> (*read)(const std::filesystem::path& file, const TerrainOptions& terrain);
 };
 
-// movingai (.map), ros (.yaml, .yml), esri_ascii (.asc), height_pgm (.pgm), matrix.
+// movingai (.map), movingai3d (.3dmap), ros (.yaml, .yml), esri_ascii (.asc), height_pgm (.pgm), matrix.
 const std::vector<BuiltinMapFormat>& builtin_map_formats();
 const BuiltinMapFormat* find_builtin_map_format(const std::string& name);
 

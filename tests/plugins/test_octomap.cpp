@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "aco/map_formats.hpp"
@@ -216,6 +217,30 @@ TEST_CASE("octomap: its sample is a small room", "[plugin][octomap]") {
   CHECK(room->blocked({3, 0, 0}));  // the crate
   CHECK(room->blocked_count() == 3);
   CHECK(read(scratch_file("sample.bt", sample))->blocked({3, 2, 1}));  // the corner never observed
+}
+
+TEST_CASE("octomap: .ot files of the other tree types with occupancy", "[plugin][octomap]") {
+  // One voxel at the deepest level: 16 inner nodes, each with its first child only (towards
+  // lower keys), then the leaf, whose key is 0 on every axis: the corner -32768 voxels from 0.
+  const auto one_voxel = [](const std::string& id, std::size_t extra, float leaf) {
+    std::string file = "# Octomap OcTree file\nid " + id + "\nsize 17\nres 0.5\ndata\n";
+    const auto node = [&](float log_odds, unsigned char children) {
+      std::string n = full_node(log_odds, children);
+      return n.insert(sizeof(float), std::string(extra, '\x7f'));  // the colour, between value and children
+    };
+    for (int level = 0; level < 16; ++level) file += node(leaf, 1);
+    return file + node(leaf, 0);
+  };
+  for (const auto& [id, extra] :
+       std::vector<std::pair<std::string, std::size_t>>{{"OcTree", 0}, {"ColorOcTree", 3}, {"OcTreeStamped", 0}}) {
+    INFO(id);
+    const auto occupied = read(scratch_file(id + "_occupied.ot", one_voxel(id, extra, 2.0f)));
+    check_size(*occupied, 1, 1, 1);
+    CHECK(occupied->origin() == Eigen::Vector3d(-16384, -16384, -16384));
+    CHECK(occupied->blocked({0, 0, 0}));
+    const auto free = read(scratch_file(id + "_free.ot", one_voxel(id, extra, -2.0f)));
+    CHECK(free->passable({0, 0, 0}));
+  }
 }
 
 TEST_CASE("octomap: every refusal names the file and the cause", "[plugin][octomap]") {

@@ -93,8 +93,9 @@ class OctoMapReader final : public aco::MapReader {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) throw aco::Error(name + ": no such OctoMap file");
     std::ifstream in(file, std::ios::binary);
+    if (!in) throw aco::Error(name + ": cannot open the OctoMap file");
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in.good() && !in.eof()) throw aco::Error(name + ": cannot read the OctoMap file");
+    if (in.bad()) throw aco::Error(name + ": cannot read the OctoMap file");
     const Header header = parse_header(bytes, name);
     check_nodes(bytes, header, name);
     if (header.size == 0) throw aco::Error(name + ": the tree is empty (0 nodes): nothing to plan in");

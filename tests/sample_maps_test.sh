@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # The sample maps of data/maps/ros and data/maps/heights are what the commands of their READMEs
 # ("How ... made") write: runs those commands as written, with the build's tools and a temporary
-# folder for the maps' own, and compares every file byte for byte.
-#   tests/sample_maps_test.sh SOURCE_DIR TOOLS_DIR
+# folder for the maps' own, and compares every file byte for byte. Other folders of data/maps
+# (octomap) when named.
+#   tests/sample_maps_test.sh SOURCE_DIR TOOLS_DIR [FOLDER...]
 set -euo pipefail
 source=$(cd "$1" && pwd) tools=$(cd "$2" && pwd)
+folders=("${@:3}")
+((${#folders[@]})) || folders=(ros heights)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-for folder in ros heights; do
+for folder in "${folders[@]}"; do
   shipped="$source/data/maps/$folder"
   mkdir "$work/$folder"
   grep -E '^build/release/tools/aco_' "$shipped/README.md" |

@@ -16,11 +16,14 @@ set -euo pipefail
 # libompl-dev: the 'ompl' planner (planners/ompl; without it the build leaves the planner out) and
 # an OMPL benchmark log for the test that OMPL's own tools read our databases, with ompl-demos
 # (ompl_benchmark_statistics) and sqlite3.
+# liboctomap-dev: the map plugin map/octomap (.bt and .ot voxel worlds) and tools/octomapgen,
+# which made data/maps/octomap (without it the build leaves both out).
 packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
           nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev catch2 clang libclang-rt-14-dev
           chromium python3 openmpi-bin libopenmpi-dev python3-dev pybind11-dev python3-numpy python3-pandas
           python3-pytest python3-matplotlib python3-venv python3-pip python3-setuptools python3-wheel ccache mypy
-          python3-nbclient python3-nbformat python3-ipykernel clang-format-14 libompl-dev ompl-demos sqlite3 "$@")
+          python3-nbclient python3-nbformat python3-ipykernel clang-format-14 libompl-dev ompl-demos sqlite3
+          liboctomap-dev "$@")
 # r-cran-irace: tools/irace/run.sh and the irace_tuning_run test. Installed without its
 # recommended packages: they pull in hundreds of R packages (GDAL, spatial statistics) irace never loads.
 packages_without_recommends=(r-cran-irace)

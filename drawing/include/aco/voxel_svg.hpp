@@ -1,0 +1,32 @@
+#pragma once
+// A voxel world as SVG, for reports: an isometric view (the surface voxels as shaded cubes drawn
+// back to front, the path on top) and/or horizontal slices (one panel per chosen layer, with the
+// path's points in that layer).
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "aco/voxel_view.hpp"
+
+namespace aco {
+
+struct VoxelSvgStyle {
+  bool isometric = true;  // the isometric view, seen from above the world's far (x, y) corner
+  std::vector<int> slices;  // layers z drawn as panels, in this order; outside the world: refused
+  double isometric_width = 640;  // pixels the isometric view is scaled to fit
+  double slice_width = 200;  // pixels per slice panel (its longer side)
+  // Surface cubes drawn at most in the isometric view; more: coarsened (VoxelSurface), which the
+  // legend says. Every drawn cube is up to three polygons.
+  std::size_t max_cubes = 30'000;
+};
+
+// Deterministic. Throws aco::Error for a slice outside the world or a style drawing nothing.
+std::string render_voxel_svg(const VoxelWorldView& view, const VoxelSvgStyle& style = {});
+void write_voxel_svg(const std::filesystem::path& file, const VoxelWorldView& view, const VoxelSvgStyle& style = {});
+
+// Layers for VoxelSvgStyle::slices: `count` of them spread evenly over a world `depth` layers deep,
+// the lowest and the highest included, ascending (all of them when the world has no more).
+std::vector<int> spread_layers(int depth, int count);
+
+}  // namespace aco

@@ -217,6 +217,15 @@ TEST_CASE("a voxel world's SVG: isometric cubes back to front, the path on top, 
   require_well_formed(slices_only);
   CHECK(slices_only.find("id=\"isometric\"") == std::string::npos);
 
+  // More faces than max_faces: coarser cubes, which the legend says.
+  aco::VoxelSvgStyle few;
+  few.max_faces = 30;
+  const std::string coarse = aco::render_voxel_svg(s.view, few);
+  require_well_formed(coarse);
+  CHECK(count(coarse, "<path class=") <= 30);
+  CHECK_THAT(coarse, Contains("isometric view: each cube is 3 x 3 x 3 voxels, blocked where any of them is"));
+  CHECK(svg.find("each cube is") == std::string::npos);
+
   CHECK(aco::spread_layers(32, 4) == std::vector<int>{0, 10, 20, 31});
   CHECK(aco::spread_layers(3, 5) == std::vector<int>{0, 1, 2});
   CHECK(aco::spread_layers(8, 1) == std::vector<int>{0});

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -92,6 +93,15 @@ void polyline(std::ostream& out, const std::vector<std::pair<double, double>>& p
 void end_mark(std::ostream& out, const char* id, std::pair<double, double> at, double radius, const char* colour) {
   out << "<circle id=\"" << id << "\" cx=\"" << num(at.first) << "\" cy=\"" << num(at.second) << "\" r=\""
       << num(radius) << "\" fill=\"" << colour << "\" stroke=\"#fff\" stroke-width=\"1\"/>\n";
+}
+
+// The faces draw_isometric() draws: a cube's top, +x and +y faces not covered by a neighbour.
+std::size_t visible_faces(const VoxelSurface& surface) {
+  std::size_t faces = 0;
+  for (const Cell& c : surface.cubes())
+    faces += !surface.blocked({c.x, c.y, c.z + 1}) + !surface.blocked({c.x + 1, c.y, c.z}) +
+             !surface.blocked({c.x, c.y + 1, c.z});
+  return faces;
 }
 
 // The isometric view at (left, top), `width` wide; returns its height.
@@ -323,7 +333,15 @@ std::string render_voxel_svg(const VoxelWorldView& view, const VoxelSvgStyle& st
   double y = kTitleHeight, width = 0;
   std::optional<VoxelSurface> surface;
   if (style.isometric) {
-    surface.emplace(map, style.max_cubes);
+    // Coarser until the faces fit: each try allows fewer cubes than the last drew.
+    std::size_t max_cubes = std::numeric_limits<std::size_t>::max();
+    for (;;) {
+      surface.emplace(map, max_cubes);
+      const std::size_t faces = visible_faces(*surface), cubes = surface->cubes().size();
+      if (faces <= style.max_faces || cubes <= 1) break;
+      max_cubes =
+          std::min(cubes - 1, static_cast<std::size_t>(double(cubes) * double(style.max_faces) / double(faces)));
+    }
     y += draw_isometric(parts, view, *surface, kMargin, y, style.isometric_width) + kGap;
     width = style.isometric_width;
   }

@@ -16,9 +16,10 @@ struct VoxelSvgStyle {
   std::vector<int> slices;  // layers z drawn as panels, in this order; outside the world: refused
   double isometric_width = 640;  // pixels the isometric view is scaled to fit
   double slice_width = 200;  // pixels per slice panel (its longer side)
-  // Surface cubes drawn at most in the isometric view; more: coarsened (VoxelSurface), which the
-  // legend says. Every drawn cube is up to three polygons.
-  std::size_t max_cubes = 30'000;
+  // Cube faces drawn at most in the isometric view (the top and the two sides facing the viewer
+  // where no cube covers them; some 70 bytes each); more: the world is drawn in coarser cubes
+  // (VoxelSurface), which the legend says. 20,000 faces keep the file under 1.5 MB.
+  std::size_t max_faces = 20'000;
 };
 
 // Deterministic. Throws aco::Error for a slice outside the world or a style drawing nothing.

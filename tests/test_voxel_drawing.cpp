@@ -183,7 +183,7 @@ TEST_CASE("the 3D page is one file: three.js inside, the world's data, a legend,
   }
 }
 
-TEST_CASE("a voxel world's SVG: isometric cubes back to front, the path on top, slices; deterministic",
+TEST_CASE("a voxel world's SVG: isometric cubes back to front, the path on top, slices, deterministic",
           "[voxel][drawing]") {
   Sample s;
   s.view.title = "sample <3>";

@@ -92,7 +92,7 @@ function build(scene) {
     scene.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(points),
                              new THREE.LineBasicMaterial({color: colour('gridPath')})));
   }
-  const endRadius = Math.max(0.45, radius * 2.5);
+  const endRadius = Math.max(0.45, radius * 2.5, extent * 0.02);
   for (const [name, cell] of [['start', world.start], ['goal', world.goal]]) {
     if (!cell) continue;
     const ball = new THREE.Mesh(new THREE.SphereGeometry(endRadius, 24, 16),

@@ -729,7 +729,7 @@ def durations(run: Run):
             (GETTING_STARTED, "fast-tests"): f"{int(passed[2])} tests, {about(seconds)} with `-j2`"}
 
 
-@section("pictures", "15 s", "the SVGs of docs/images/: a route, a terrain, an acosim run, report plots",
+@section("pictures", "15 s", "the SVGs of docs/images/: a route, a terrain, an acosim run, report plots, a voxel world",
          [(BENCHMARKS, "pictures")])
 def pictures(run: Run):
     (ROOT / IMAGES).mkdir(parents=True, exist_ok=True)
@@ -738,6 +738,8 @@ def pictures(run: Run):
     run.tool(ACOPLAN, *route, "--svg", IMAGES / "route.svg", "--svg-pheromone")
     run.tool(ACOPLAN, "--scen", "data/terrain/epf50.asc.scen", "--svg", IMAGES / "terrain.svg")
     run.tool(ACOSIM, "data/scenarios/paper003_moving.yaml", "--svg", IMAGES / "acosim.svg")
+    # docs/maps.md's voxel world: the test program's small world (its 3D page stays in the build).
+    run.tool(BUILD / "tests/aco_voxel_sample", "small", BUILD / "voxel-world.html", IMAGES / "voxel-world.svg")
     db = Path("build/results/paper004.db")
     db.parent.mkdir(parents=True, exist_ok=True)
     run.tool(ACOBENCH, "run", "data/experiments/paper004.yaml", "--db", db)

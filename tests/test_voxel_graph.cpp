@@ -8,7 +8,13 @@
 #include <set>
 #include <tuple>
 
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
 #include "aco/astar.hpp"
+#include "aco/map_io.hpp"
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/path.hpp"
@@ -264,4 +270,92 @@ TEST_CASE("cells parse as X,Y or X,Y,Z and name their layer in a voxel world", "
   CHECK(world.describe({1, 2, 0}) == "(1,2,0)");
   CHECK(aco::to_string(aco::Cell{1, 2, 3}) == "(1,2,3)");
   CHECK(aco::to_string(aco::Cell{1, 2}) == "(1,2)");
+}
+
+namespace {
+
+// A small voxel world on disk: a 12x10x8 block with a wall that has a slot and is open above.
+std::filesystem::path wall_world_file() {
+  aco::VoxelMap world(12, 10, 8, "wall");
+  for (int z = 0; z < 6; ++z)
+    for (int y = 0; y < 10; ++y)
+      if (y != 4) world.set_blocked({6, y, z}, true);
+  std::ostringstream text;
+  aco::write_movingai_voxels(world, text);
+  return test::temp_file("wall.3dmap", text.str());
+}
+
+}  // namespace
+
+TEST_CASE("acoplan plans in a voxel world: the voxel preset, X,Y,Z cells, paths with z", "[voxel][acoplan]") {
+  const auto file = wall_world_file();
+  const auto r = test::acoplan(
+      {"--map", file.string(), "--start", "1,1,0", "--goal", "10,8,1", "--ants", "20", "--iterations", "20", "--json"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(r.out);
+  CHECK(j["depth"] == 8);
+  CHECK(j["start"] == nlohmann::json::array({1, 1, 0}));
+  CHECK(j["goal"] == nlohmann::json::array({10, 8, 1}));
+  CHECK(j["config"]["neighbourhood"] == "26");  // the voxel preset
+  CHECK(j["config"]["smoother"] == "prune");
+  REQUIRE(j["solved"] == true);
+  CHECK(j["path"].front() == nlohmann::json::array({1.0, 1.0, 0.0}));
+  CHECK(j["path"].back() == nlohmann::json::array({10.0, 8.0, 1.0}));
+  for (const auto& cell : j["grid_path"]) CHECK(cell.size() == 3);
+  CHECK(j["optimal_length"].get<double>() <= j["grid_length"].get<double>() + 1e-9);
+  CHECK(j["any_angle_length"].is_null());  // the exact any-angle optimum is the plane's
+
+  const auto summary =
+      test::acoplan({"--map", file.string(), "--start", "1,1,0", "--goal", "10,8,1", "--iterations", "5"});
+  CHECK_THAT(summary.out, Contains("(12x10x8 voxels), 26-neighbourhood") && Contains("the default for voxel worlds"));
+}
+
+TEST_CASE("acoplan refuses what does not fit a voxel world, with messages naming it", "[voxel][acoplan]") {
+  const auto file = wall_world_file().string();
+  const auto fails = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args{"--map", file, "--start", "1,1,0", "--goal", "10,8,1", "--iterations", "2"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = test::acoplan(args);
+    CHECK(r.exit_code != 0);
+    return r.err;
+  };
+  CHECK_THAT(fails({"--smoother", "taut"}), Contains("smoother/taut") && Contains("does not plan in 3D"));
+  CHECK_THAT(fails({"--neighbourhood", "8"}), Contains("it takes the 6-, 18- or 26-neighbourhood"));
+  CHECK_THAT(fails({"--planner", "ifwa"}), Contains("planner 'ifwa' plans on 2D maps only"));
+  CHECK_THAT(test::acoplan({"--map", file, "--start", "1,1,9", "--goal", "10,8,1"}).err,
+             Contains("start (1,1,9) is outside the 12x10x8 voxel world"));
+  CHECK_THAT(test::acoplan({"--map", file, "--start", "6,0,0", "--goal", "10,8,1"}).err,
+             Contains("start (6,0,0) is blocked"));
+  const auto grid = test::acoplan({"--map", (test::data_dir() / "maps/classic20/map1.txt").string(), "--start", "0,0",
+                                   "--goal", "19,19", "--iterations", "2", "--html", "/tmp/never.html"});
+  CHECK_THAT(grid.err, Contains("--html draws voxel worlds in 3D"));
+}
+
+TEST_CASE("acoplan --html and --svg draw a voxel world's run", "[voxel][acoplan][drawing]") {
+  const auto file = wall_world_file();
+  const auto html = file.parent_path() / "run.html", svg = file.parent_path() / "run.svg";
+  const auto r = test::acoplan({"--map", file.string(), "--start", "1,1,0", "--goal", "10,8,1", "--iterations", "10",
+                                "--html", html.string(), "--svg", svg.string(), "--svg-pheromone"});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  std::ifstream page(html), picture(svg);
+  const std::string page_text((std::istreambuf_iterator<char>(page)), {}),
+      svg_text((std::istreambuf_iterator<char>(picture)), {});
+  CHECK_THAT(page_text, Contains("<!DOCTYPE html>") && Contains("wall.3dmap"));
+  CHECK_THAT(page_text, !Contains("src=\"http") && !Contains("href=\"http"));  // offline: three.js is inside
+  CHECK_THAT(svg_text, Contains("<svg") && Contains("polyline"));
+}
+
+TEST_CASE("acoplan plans a Moving AI voxel scenario and A* matches its optimal length", "[voxel][acoplan]") {
+  const auto scen = test::data_dir() / "maps/voxel/warframe/Simple.3dmap.3dscen";
+  const auto scenarios = aco::load_scenarios(scen);
+  for (int index : {0, 9999}) {
+    const auto r =
+        test::acoplan({"--scen", scen.string(), "--scen-index", std::to_string(index), "--planner", "astar", "--json"});
+    INFO("scenario " << index << ": " << r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["grid_length"].get<double>() == Approx(scenarios[index].optimal_length).epsilon(1e-7));
+  }
 }

@@ -125,17 +125,10 @@ bool parse_number(std::string_view text, Number& value) {
   return ec == std::errc() && ptr == end;
 }
 
-// A voxel world's size is checked like a grid's, its voxels taken as cells of the leanest
-// neighbourhood: the run's own (6, 18 or 26 neighbours) is checked again when the graph is built.
+// A voxel world's size is checked with the leanest neighbourhood (6): the run's own edges are
+// counted and checked again when the graph is built.
 void check_voxel_memory(int width, int height, int depth, const std::string& name) {
-  const std::int64_t voxels = std::int64_t{width} * height * depth;
-  const std::uint64_t estimate = planning_memory_estimate(voxels, 1, Neighbourhood::four);
-  const std::uint64_t limit = memory_limit();
-  if (estimate > limit)
-    throw Error(name + ": a " + std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(depth) +
-                " voxel world needs at least " + format_bytes(estimate) +
-                " to plan on, more than the memory limit of " + format_bytes(limit) +
-                " (--max-memory sets it): refused");
+  check_planning_memory(width, height, depth, Neighbourhood::six, name);
 }
 
 }  // namespace

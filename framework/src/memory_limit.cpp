@@ -101,9 +101,10 @@ void check_planning_memory(std::int64_t width, std::int64_t height, std::int64_t
   const std::uint64_t estimate = planning_memory_estimate(width, height, depth, neighbourhood);
   const std::uint64_t limit = memory_limit();
   if (estimate <= limit) return;
+  const bool world = depth > 1 || volumetric(neighbourhood);
   const std::string size = std::to_string(width) + "x" + std::to_string(height) +
-                           (depth > 1 || volumetric(neighbourhood) ? "x" + std::to_string(depth) : "");
-  throw Error(name + ": a " + size + " map needs about " + format_bytes(estimate) + " to plan on (estimate with the " +
+                           (world ? "x" + std::to_string(depth) + " voxel world" : " map");
+  throw Error(name + ": a " + size + " needs about " + format_bytes(estimate) + " to plan on (estimate with the " +
               std::to_string(static_cast<int>(neighbourhood)) + "-neighbourhood), more than the memory limit of " +
               format_bytes(limit) + " (" + limit_origin() + "): refused");
 }

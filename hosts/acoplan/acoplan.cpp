@@ -15,11 +15,49 @@
 #include "aco/svg.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/version.hpp"
+#include "aco/voxel_html.hpp"
+#include "aco/voxel_svg.hpp"
 
 namespace acoplan {
 namespace {
 
+// A voxel world's run as its pictures show it. The pheromone (--svg-pheromone): per voxel the
+// strongest edge into it, for the voxels above the median (most voxels keep the initial value, and
+// a world has millions), the strongest few thousand of them.
+aco::VoxelWorldView voxel_view(const acoplan::Request& r, const aco::Graph& graph, const aco::PlanRun& o) {
+  aco::VoxelWorldView view(*graph.map);
+  view.title = aco::run_title(graph.map->name(), o.solved(), o.length, o.seed);
+  view.path = o.path;
+  for (aco::NodeId n : o.search.path) view.grid_path.push_back(graph.cell(n));
+  view.start = graph.cell(o.start);
+  view.goal = graph.cell(o.goal);
+  if (!r.host.svg_pheromone || o.pheromone.empty()) return view;
+  std::vector<double> into(graph.num_nodes(), 0.0);
+  for (aco::EdgeId e = 0; e < graph.num_edges(); ++e)
+    into[graph.targets[e]] = std::max(into[graph.targets[e]], o.pheromone[e]);
+  std::vector<aco::NodeId> nodes;
+  for (aco::NodeId n = 0; n < graph.num_nodes(); ++n)
+    if (graph.degree(n) > 0) nodes.push_back(n);
+  if (nodes.empty()) return view;
+  const auto stronger = [&](aco::NodeId a, aco::NodeId b) { return into[a] != into[b] ? into[a] > into[b] : a < b; };
+  const auto middle = nodes.begin() + static_cast<std::ptrdiff_t>(nodes.size() / 2);
+  std::nth_element(nodes.begin(), middle, nodes.end(), stronger);
+  const double median = into[*middle];
+  constexpr std::size_t kStrongest = 5000;
+  const auto kept = nodes.begin() + static_cast<std::ptrdiff_t>(std::min(kStrongest, nodes.size() / 2));
+  std::partial_sort(nodes.begin(), kept, middle, stronger);  // ties by node id: the same picture every run
+  for (auto n = nodes.begin(); n != kept && into[*n] > median; ++n)
+    view.pheromone.emplace_back(graph.cell(*n), into[*n]);
+  return view;
+}
+
 void write_picture(const acoplan::Request& r, const aco::Graph& graph, const aco::PlanRun& o) {
+  if (graph.volumetric) {
+    aco::VoxelSvgStyle style;
+    style.slices = aco::spread_layers(graph.depth, 4);
+    aco::write_voxel_svg(*r.svg, voxel_view(r, graph, o), style);
+    return;
+  }
   aco::RunPicture picture;
   picture.title = aco::run_title(graph.map->name(), o.solved(), o.length, o.seed);
   picture.start = o.start;
@@ -108,6 +146,11 @@ int plan(const acoplan::Request& r, std::ostream& out) {
     return a.solved() != b.solved() ? a.solved() : a.length < b.length;
   });
   if (r.svg) write_picture(r, graph, *best);
+  if (r.html) {
+    if (!graph.volumetric)
+      throw aco::Error("--html draws voxel worlds in 3D; " + graph.map->name() + " is a 2D map (use --svg)");
+    aco::write_voxel_html(*r.html, voxel_view(r, graph, *best));
+  }
   const bool all_solved = std::all_of(runs.begin(), runs.end(), [](const auto& o) { return o.solved(); });
   return all_solved || r.output.irace ? aco::kExitOk : aco::kExitNoPath;
 }

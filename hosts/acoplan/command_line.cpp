@@ -27,7 +27,9 @@ const aco::SettingsTable<HostSettings>& host_settings_table() {
   using S = HostSettings;
   static const aco::SettingsTable<S> table({
       aco::field("threads", &S::threads, "0:1024", aco::kThreadsHelp),
-      aco::field("svg-pheromone", &S::svg_pheromone, "", "also draw the final pheromone field in the --svg picture"),
+      aco::field(
+          "svg-pheromone", &S::svg_pheromone, "",
+          "also draw the final pheromone field in the --svg picture (and the strongest voxels' in --html's page)"),
       aco::field("repeat", &S::repeat, "1:1000000",
                  "plan N times with seeds seed, seed+1, ...; print mean and standard deviation (--svg shows the best "
                  "run)"),
@@ -268,7 +270,8 @@ Request parse_command_line(int argc, const char* const* argv) {
                                                          "start cell (column, row from the top, 0-based)")(
       "goal", po::value<std::string>()->value_name("X,Y"), "goal cell")(
       "scen", po::value<std::string>()->value_name("FILE"),
-      "Moving AI scenario file; start and goal come from --scen-index, the map from FILE minus .scen unless --map")(
+      "Moving AI scenario file (.scen, or .3dscen for voxel worlds); start and goal come from --scen-index, the map "
+      "from FILE minus .scen (.3dscen) unless --map")(
       "dump-irace-params", po::value<std::string>()->value_name("FILE"),
       "write irace's parameter file (colony and plugin parameters) to FILE (- = stdout) and exit")(
       "irace-slots", po::value<std::string>()->value_name("SLOTS"),
@@ -277,12 +280,16 @@ Request parse_command_line(int argc, const char* const* argv) {
       "irace-plugin", po::value<std::string>()->value_name("SLOT/NAME"),
       "with --dump-irace-params: only this plugin's parameters, its slot fixed to it (e.g. update/mine)")(
       "svg", po::value<std::string>()->value_name("FILE"),
-      "write a picture of the map, the path and the convergence curve")(
-      "config", po::value<std::string>()->value_name("FILE"), "read options from an INI file (command line wins)")(
+      "write a picture of the map, the path and the convergence curve (a voxel world: an isometric view and "
+      "slices)")(
+      "html", po::value<std::string>()->value_name("FILE"),
+      "voxel worlds: write one self-contained page showing the world, the path, start and goal in 3D (three.js "
+      "inside; turn and zoom with the mouse; works offline)")("config", po::value<std::string>()->value_name("FILE"),
+                                                              "read options from an INI file (command line wins)")(
       "preset", po::value<std::string>()->value_name("NAME"),
       "read options from the named preset's INI file (see --list-presets; command line wins); default: robust on 2D "
-      "maps, terrain on height maps, unless --config is given")("list-presets", po::bool_switch(),
-                                                                "list the named presets and exit")(
+      "maps, terrain on height maps, voxel on voxel worlds, unless --config is given")(
+      "list-presets", po::bool_switch(), "list the named presets and exit")(
       "print-config", po::bool_switch(), "print the full resolved configuration as a config file and exit")(
       "list-plugins", po::bool_switch(), "list the plugins found and exit")(
       "describe", po::value<std::string>()->value_name("SLOT/NAME"),
@@ -408,6 +415,7 @@ Request parse_command_line(int argc, const char* const* argv) {
     r.host = read_settings(vm, host_settings_table());
     r.output = read_settings(vm, output_settings_table());
     if (auto v = text(vm, "svg")) r.svg = *v;
+    if (auto v = text(vm, "html")) r.html = *v;
     r.max_memory = host_options.max_memory_bytes();
     if (vm.count("preset"))
       r.pipeline_source = vm["preset"].as<std::string>();
@@ -415,8 +423,9 @@ Request parse_command_line(int argc, const char* const* argv) {
       r.pipeline_source = "none (--config " + vm["config"].as<std::string>() + ")";
     else {
       const std::string preset = default_preset(vm);
-      r.pipeline_source = preset + " (the default for " + (preset == "terrain" ? "height" : "2D") +
-                          " maps; --preset NAME for another, --list-presets for the papers')";
+      const std::string kind = preset == "terrain" ? "height maps" : preset == "voxel" ? "voxel worlds" : "2D maps";
+      r.pipeline_source =
+          preset + " (the default for " + kind + "; --preset NAME for another, --list-presets for the papers')";
     }
     if (vm["print-config"].as<bool>()) {
       r.action = Request::Action::print_config;

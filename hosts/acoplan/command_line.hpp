@@ -51,6 +51,7 @@ struct Request {
   std::string irace_plugin;  // --irace-plugin SLOT/NAME: only its parameters ("" = the slots')
 
   std::optional<std::filesystem::path> svg;
+  std::optional<std::filesystem::path> html;  // a voxel world's 3D page
   std::optional<std::uint64_t> max_memory;  // --max-memory in bytes; none: the default limit
 
   HostSettings host;

@@ -28,6 +28,16 @@ nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::js
 
 std::string cell_text(const aco::Graph& g, aco::NodeId n) { return g.map->describe(g.cell(n)); }
 
+// " (x,y)", or " (x,y,z)" in a voxel world; the stream's precision.
+std::string waypoint_text(const aco::Graph& g, const Eigen::Vector3d& p) {
+  std::ostringstream text;
+  text.precision(2);
+  text << std::fixed << " (" << p.x() << "," << p.y();
+  if (g.volumetric) text << "," << p.z();
+  text << ")";
+  return text.str();
+}
+
 std::string map_line(const aco::Graph& graph) {
   const std::string layers = graph.volumetric ? "x" + std::to_string(graph.depth) + " voxels" : "";
   return "map:      " + graph.map->name() + " (" + std::to_string(graph.width) + "x" + std::to_string(graph.height) +
@@ -339,12 +349,12 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
   for (aco::NodeId n : o.search.path) out << " " << cell_text(graph, n);
   if (!grid_path) {
     out << std::setprecision(2);
-    for (const auto& p : o.path) out << " (" << p.x() << "," << p.y() << ")";
+    for (const auto& p : o.path) out << waypoint_text(graph, p);
   }
   out << "\n";
   if (grid_path && o.path != aco::to_waypoints(graph, o.search.path)) {
     out << "smoothed:" << std::setprecision(2);
-    for (const auto& p : o.path) out << " (" << p.x() << "," << p.y() << ")";
+    for (const auto& p : o.path) out << waypoint_text(graph, p);
     out << "\n";
   }
   return out.str();

@@ -206,7 +206,10 @@ LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry) {
                   " has " + std::to_string(scenarios.size()) + " scenarios");
     const Scenario& s = scenarios[spec.scen_index];
     p.map = load_problem_map(spec, registry);
-    if (p.map->width() != s.width || p.map->height() != s.height)
+    if (s.volumetric != p.map->volumetric())
+      throw Error(spec.scen.string() + ": its scenarios are for " + (s.volumetric ? "a voxel world" : "a 2D map") +
+                  ", but " + p.map->name() + " is " + (p.map->volumetric() ? "a voxel world" : "a 2D map"));
+    if (!s.volumetric && (p.map->width() != s.width || p.map->height() != s.height))
       throw Error(spec.scen.string() + ": scenario " + std::to_string(spec.scen_index) + " is for a " +
                   std::to_string(s.width) + "x" + std::to_string(s.height) + " map, but " + p.map->name() + " is " +
                   std::to_string(p.map->width()) + "x" + std::to_string(p.map->height()));
@@ -240,9 +243,10 @@ ProblemSpec resolve_problem_keys(const Keys& problem, const Keys& map_keys, Plug
   if (problem.count("scen-index") && p.scen.empty())
     throw KeyError(key_prefix + "scen-index", key_prefix + "scen-index needs " + key_prefix + "scen");
   // The map file: --map, or the scenario's (a scenario file misnamed is load_problem()'s to say).
-  const std::filesystem::path map_file = !p.map.empty()                  ? p.map
-                                         : p.scen.extension() == ".scen" ? scenario_map_file(p.scen)
-                                                                         : std::filesystem::path();
+  const bool scenario_file = p.scen.extension() == ".scen" || p.scen.extension() == ".3dscen";
+  const std::filesystem::path map_file = !p.map.empty()  ? p.map
+                                         : scenario_file ? scenario_map_file(p.scen)
+                                                         : std::filesystem::path();
   if (!map_file.empty()) {
     const std::string format = problem.count("map-format") ? problem.at("map-format") : "";
     std::tie(p.map_format, p.map_parameters) = resolve_map_format(map_file, format, map_keys, registry, key_prefix);

@@ -1,9 +1,11 @@
 #include "aco/studies/plots.hpp"
+#include "aco/voxel_svg.hpp"
 
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -562,7 +564,41 @@ std::string line_chart_svg(const LineChart& chart) {
   return out.str();
 }
 
+namespace {
+
+std::string voxel_paths_svg(const aco::Map& map, const std::vector<MapPath>& paths) {
+  aco::VoxelWorldView view(map);
+  view.title = map.name() + ": no path";
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const MapPath& path : paths) {
+    if (path.layers.size() != path.points.size()) continue;
+    std::vector<Eigen::Vector3d> points;
+    for (std::size_t i = 0; i < path.points.size(); ++i)
+      points.emplace_back(path.points[i][0], path.points[i][1], path.layers[i]);
+    double length = 0.0;
+    for (std::size_t i = 1; i < points.size(); ++i) length += (points[i] - points[i - 1]).norm();
+    if (points.empty() || !(length < shortest)) continue;
+    shortest = length;
+    view.path = std::move(points);
+    view.title = map.name() + ": the shortest path, " + path.label;
+  }
+  if (!view.path.empty()) {
+    const auto voxel = [](const Eigen::Vector3d& p) {
+      return aco::Cell{int(std::lround(p.x())), int(std::lround(p.y())), int(std::lround(p.z()))};
+    };
+    view.start = voxel(view.path.front());
+    view.goal = voxel(view.path.back());
+  }
+  aco::VoxelSvgStyle style;
+  style.isometric_width = 480;
+  style.max_faces = 8000;  // a report holds one per problem
+  return aco::render_voxel_svg(view, style);
+}
+
+}  // namespace
+
 std::string map_paths_svg(const aco::Map& map, const std::vector<MapPath>& paths) {
+  if (map.volumetric()) return voxel_paths_svg(map, paths);
   const int w = map.width(), h = map.height();
   const double scale = std::max(2.0, std::min(24.0, 480.0 / std::max(w, h)));
   const double cell = w > 1 ? map.position({1, 0}).x() - map.position({0, 0}).x() : 1.0;

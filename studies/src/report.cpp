@@ -666,7 +666,9 @@ aco::Keys problem_map_keys(const Analysis& a, const ProblemRecord& problem, cons
 
 // Whether two maps draw alike: the same cells blocked, the same cell size.
 bool same_picture(const aco::Map& x, const aco::Map& y) {
-  if (x.width() != y.width() || x.height() != y.height() || x.position({1, 0}) != y.position({1, 0})) return false;
+  if (x.width() != y.width() || x.height() != y.height() || x.depth() != y.depth() ||
+      x.position({1, 0}) != y.position({1, 0}))
+    return false;
   for (int row = 0; row < x.height(); ++row)
     for (int column = 0; column < x.width(); ++column)
       if (x.passable({column, row}) != y.passable({column, row})) return false;
@@ -700,8 +702,10 @@ std::vector<Figure> path_pictures(const Analysis& a, std::size_t p, FigureFiles&
     if (!r.best) continue;
     MapPath path{
         a.configs[r.config].second.name + " " + fixed(r.best->length, 2), static_cast<std::size_t>(r.config), {}};
-    for (const auto& point : nlohmann::json::parse(r.best->path_json))
+    for (const auto& point : nlohmann::json::parse(r.best->path_json)) {
       path.points.push_back({point[0].get<double>(), point[1].get<double>()});
+      if (point.size() == 3) path.layers.push_back(point[2].get<double>());
+    }
     paths.emplace_back(&a.configs[r.config].second, std::move(path));
   }
   try {

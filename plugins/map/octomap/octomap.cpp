@@ -58,10 +58,6 @@ constexpr const char* kBinaryHeader = "# Octomap OcTree binary file";
 constexpr const char* kFullHeader = "# Octomap OcTree file";
 constexpr unsigned kTreeDepth = 16;  // OctoMap's keys: 16 bits per axis
 constexpr std::int64_t kKeyOrigin = 32768;  // the key whose voxel starts at coordinate 0
-// Planning memory per voxel at the least the graph will need, the 6-neighbourhood: per cell 64
-// bytes and per edge 32, as aco::planning_memory_estimate() counts (memory_limit.cpp). The run's
-// own neighbourhood is checked again when the graph is built.
-constexpr std::uint64_t kBytesPerVoxel = 64 + 6 * 32;
 
 enum class Format { binary, full };
 
@@ -314,7 +310,10 @@ std::unique_ptr<aco::Map> OctoMapReader::rasterise(Tree& tree, const std::string
     throw aco::Error(name + ": a " + grid + " voxel grid at " + number(resolution) + " m per voxel is " +
                      std::to_string(voxels) +
                      " voxels, more than the graph's 32-bit node ids allow; choose a coarser map.resolution");
-  const std::uint64_t needed = std::uint64_t(voxels) * (kBytesPerVoxel + (p_.unknown_blocked ? sizeof(double) : 0));
+  // Planning memory at the least the graph will need, the 6-neighbourhood's (the run's own edges are
+  // counted and checked when the graph is built), and the reader's own per-voxel unknown share.
+  const std::uint64_t needed = aco::planning_memory_estimate(count[0], count[1], count[2], aco::Neighbourhood::six) +
+                               std::uint64_t(voxels) * (p_.unknown_blocked ? sizeof(double) : 0);
   if (needed > aco::memory_limit())
     throw aco::Error(
         name + ": a " + grid + " voxel grid at " + number(resolution) + " m per voxel needs about " +

@@ -105,9 +105,12 @@ struct MapPath {
   std::string label;  // its legend entry
   std::size_t style;  // its series_style()
   std::vector<std::array<double, 2>> points;  // where the path went: x and y of the map's positions
+  std::vector<double> layers;  // in a voxel world, each point's z
 };
 
-// The map (blocked cells dark) with the paths on it and a legend beside it.
+// The map (blocked cells dark) with the paths on it and a legend beside it. A voxel world is drawn
+// as an isometric view with the shortest of the paths (a view of the world holds one), named in
+// its title.
 std::string map_paths_svg(const aco::Map& map, const std::vector<MapPath>& paths);
 
 }  // namespace aco::studies

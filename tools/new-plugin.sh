@@ -57,7 +57,7 @@ case "$slot" in
   // The best ant'"'"'s first edge gains; the same step backwards, which no ant took, only evaporates.
   const aco::EdgeId first = ants.view().best->edges.front();
   CHECK(tau[first] > 1.0);
-  CHECK(tau[problem.graph.reverse[first]] < 1.0);' ;;
+  CHECK(tau[problem.graph.reverse_edge(first)] < 1.0);' ;;
   deadlock) interface=DeadlockPolicy; method='  int on_stuck(const aco::Context&, std::span<const aco::NodeId>) const override {
     return static_cast<int>(p_.value);  // nodes to step back; 0 lets the ant die
   }'

@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 
 #include <algorithm>
+#include <functional>
 
 #include "aco/parallel.hpp"
 
@@ -49,12 +50,18 @@ void rescale_mean(std::span<double> tau, double mean) {
 
 void LocalUpdate::start(std::span<double> tau, double mean) {
   rescale_mean(tau, mean);
-  start_.assign(tau.begin(), tau.end());
+  const bool uniform = std::adjacent_find(tau.begin(), tau.end(), std::not_equal_to<>()) == tau.end();
+  if (uniform) {
+    std::vector<double>().swap(start_);
+    uniform_start_ = tau.empty() ? 0.0 : tau.front();
+  } else {
+    start_.assign(tau.begin(), tau.end());
+  }
 }
 
 void LocalUpdate::apply(std::span<const Ant> ants, std::span<double> tau) const {
   for (const Ant& ant : ants)
-    for (EdgeId e : ant.edges) tau[e] = (1.0 - xi_) * tau[e] + xi_ * start_[e];
+    for (EdgeId e : ant.edges) tau[e] = (1.0 - xi_) * tau[e] + xi_ * (start_.empty() ? uniform_start_ : start_[e]);
 }
 
 }  // namespace aco

@@ -43,7 +43,10 @@ class BOOST_SYMBOL_VISIBLE LocalUpdate {
 
  private:
   double xi_;
+  // The starting values: one number when they are all equal (the uniform init), else per edge. A
+  // copy of a voxel world's field would be the colony's largest array after the field itself.
   std::vector<double> start_;
+  double uniform_start_ = 0.0;
 };
 
 }  // namespace aco

@@ -999,50 +999,6 @@ aco::VoxelMap cave_world(VoxelSize s, aco::Rng& rng, const std::string& name) {
   return m;
 }
 
-// The Moving AI voxel benchmarks' move rule: b is one of a's 26 neighbours and every voxel of the
-// box they span is free.
-bool voxel_step_allowed(const aco::VoxelMap& m, aco::Cell a, aco::Cell b) {
-  for (int z = std::min(a.z, b.z); z <= std::max(a.z, b.z); ++z)
-    for (int y = std::min(a.y, b.y); y <= std::max(a.y, b.y); ++y)
-      for (int x = std::min(a.x, b.x); x <= std::max(a.x, b.x); ++x)
-        if (!m.passable({x, y, z})) return false;
-  return true;
-}
-
-// Exact shortest length from `start` to `goal` under that rule, by Dijkstra (stopping at the
-// goal); nullopt if the goal cannot be reached.
-std::optional<double> voxel_distance(const aco::VoxelMap& m, aco::Cell start, aco::Cell goal) {
-  const std::int64_t w = m.width(), h = m.height();
-  auto index = [&](aco::Cell c) { return (std::int64_t{c.z} * h + c.y) * w + c.x; };
-  std::vector<double> dist(static_cast<std::size_t>(m.voxels()), std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, std::int64_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  dist[index(start)] = 0;
-  open.push({0.0, index(start)});
-  const double cost[4] = {0.0, 1.0, std::sqrt(2.0), std::sqrt(3.0)};
-  while (!open.empty()) {
-    const auto [d, v] = open.top();
-    open.pop();
-    if (d > dist[v]) continue;
-    const aco::Cell c{int(v % w), int(v / w % h), int(v / (w * h))};
-    if (c == goal) return d;
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int axes = (dx != 0) + (dy != 0) + (dz != 0);
-          if (axes == 0) continue;
-          const aco::Cell n{c.x + dx, c.y + dy, c.z + dz};
-          if (!voxel_step_allowed(m, c, n)) continue;
-          const double nd = d + cost[axes];
-          if (nd < dist[index(n)]) {
-            dist[index(n)] = nd;
-            open.push({nd, index(n)});
-          }
-        }
-  }
-  return std::nullopt;
-}
-
 // The 3D octile distance, the heuristic the .3dscen ratio column divides by.
 double voxel_octile(aco::Cell a, aco::Cell b) {
   int d[3] = {std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z)};
@@ -1059,6 +1015,8 @@ std::string voxel_scenarios(const aco::VoxelMap& m, const std::string& map_file,
   const auto& part = parts.front();
   const std::int64_t w = m.width(), h = m.height();
   auto cell = [&](std::int64_t v) { return aco::Cell{int(v % w), int(v / w % h), int(v / (w * h))}; };
+  // The benchmarks' moves: 26 neighbours, every voxel of a move's box free (no corner cutting).
+  const aco::Graph graph = aco::build_graph(m, {aco::Neighbourhood::twenty_six, false});
   for (int k = 0; k < count; ++k) {
     // As Moving AI's generator does, problems a straight line solves are redrawn: up to 8 times,
     // so that an open world still gets its scenarios.
@@ -1068,7 +1026,8 @@ std::string voxel_scenarios(const aco::VoxelMap& m, const std::string& map_file,
       start = cell(part[rng.below(part.size())]);
       goal = start;
       while (goal == start) goal = cell(part[rng.below(part.size())]);
-      length = voxel_distance(m, start, goal);
+      const auto found = aco::astar(graph, graph.node(start), graph.node(goal));
+      length = found ? std::optional<double>(found->length) : std::nullopt;
       if (!length) throw aco::Error(m.name() + ": a voxel of the largest part is unreachable (a bug)");
       if (*length > voxel_octile(start, goal) + 1e-9) break;
     }

@@ -444,7 +444,7 @@ TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range val
   expect_error({"--ants", "many"}, "--ants: 'many' is not a whole number");
   expect_error({"--update.rho", "1.5"}, "--update.rho: 1.5 is outside the range (0, 1]");
   expect_error({"--update.rho", "-0.1"}, "--update.rho: -0.1 is outside the range (0, 1]");
-  expect_error({"--neighbourhood", "6"}, "--neighbourhood: '6' is not one of 4,8,16");
+  expect_error({"--neighbourhood", "12"}, "--neighbourhood: '12' is not one of 4,8,16,6,18,26");
   // acoplan's own settings are checked by their tables.
   expect_error({"--repeat", "0"}, "--repeat: 0 is outside the range [1, 1000000]");
   expect_error({"--threads", "-1"}, "--threads: -1 is outside the range [0, 1024]");

@@ -869,7 +869,7 @@ def voxel_city_memory(run: Run) -> str:
     """A 256x256x128 city planned under a 4 GiB limit: peak memory and time, from GNU time."""
     folder = ROOT / "build/results/voxel"
     folder.mkdir(parents=True, exist_ok=True)
-    run.tool(BUILD / "tools/mapgen/aco_mapgen", "--voxel", "city", "256x256x128", "7", folder, "3")
+    run.tool(BUILD / "tools/aco_mapgen", "--voxel", "city", "256x256x128", "7", folder, "3")
     scen = folder / "city256x256x128-s7.3dmap.3dscen"
     rows = []
     for label, extra in [("A\*", ["--planner", "astar"]), ("voxel preset, 20 ants x 20 iterations", ["--ants", "20", "--iterations", "20"]),

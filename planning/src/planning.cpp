@@ -152,7 +152,7 @@ void check_volumetric(const Graph& graph, const Planner& planner, const RunSpec&
   const auto refuse = [&](const Strategy* plugin, const char* slot) {
     if (plugin != nullptr && !plugin->supports_voxel_worlds())
       throw Error(describe_plugin(*plugin, slot) + " does not plan in 3D; " + world +
-                  " (acoplan --list-plugins marks the plugins that do)");
+                  " (docs/voxel-worlds.md lists the plugins that do)");
   };
   if (run.planner == "aco") {
     refuse(pipeline.init.get(), "init");

@@ -2,7 +2,8 @@
 # aco-plugin-check must fail, naming plugin, parameters and check, on plugins that break its
 # rules: tests/fixtures/nonconforming_update.cpp (not deterministic; NaN at q = 10; refuses
 # rho = 0, which its range admits), lingering_update.cpp (keeps per-run state across runs) and
-# throwing_update.cpp (throws 42 from its factory when asked; throws in iteration 3, as Context::iteration, by default).
+# throwing_update.cpp (throws 42 from its factory when asked; throws in iteration 3, as Context::iteration, by default)
+# and flat_init.cpp (claims voxel worlds but reads Graph::edge_costs, empty there: fails in 3D only).
 #   tests/plugin_check_catches_test.sh ACO_PLUGIN_CHECK FAULTY_PLUGIN_DIR
 set -euo pipefail
 check=$1 dir=$2
@@ -21,6 +22,18 @@ expect_failures "$dir/aco_update_nonconforming.so" \
   '^FAIL update/nonconforming \[q=10\] values: .*nan' \
   '^PASS update/nonconforming \[q=0\] values$' \
   '^FAIL update/nonconforming \[rho=0\] constructs: refused rho=0, which its declared range 0:1 admits (evaporation must be positive); declare the range (0:1 or accept the value$'
+# Not claiming voxel worlds: not run in 3D, said once, not a failure.
+expect_failures "$dir/aco_update_nonconforming.so" \
+  '^SKIP update/nonconforming \[defaults\] 3D: not run in 3D: it does not claim voxel worlds (supports_voxel_worlds() is false)$'
+[ "$("$check" "$dir/aco_update_nonconforming.so" | grep -c ' 3D')" = 1 ]
+# Claiming them and failing there: the 2D checks pass, the 3D values check fails, saying where.
+expect_failures "$dir/aco_init_flat.so" \
+  '^PASS init/flat \[defaults\] values$' \
+  '^PASS init/flat \[defaults\] reused$' \
+  '^FAIL init/flat \[defaults\] 3D values: voxels: tau after initialize()\[0\] = nan (must be finite and > 0) (and [0-9]* more) \[in a voxel world Graph::edge_costs and reverse_edges are empty: use cost(e) and reverse_edge(e); cells have z, moves dz\]$' \
+  '^PASS init/flat \[defaults\] 3D deterministic$' \
+  '^PASS init/flat \[defaults\] 3D threads$' \
+  '^PASS init/flat \[defaults\] 3D reused$'
 expect_failures "$dir/aco_update_lingering.so" \
   '^PASS update/lingering \[defaults\] deterministic$' \
   '^FAIL update/lingering \[defaults\] reused: a second run of the same object, after runs on other maps, differs from its first: '

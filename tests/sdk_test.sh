@@ -95,7 +95,10 @@ for plugin in "$prefix"/lib/aco/plugins/aco_*.so; do
   "$bin/aco-plugin-check" "$plugin" >> "$work/check-bundled.log" ||
     { grep -v "^PASS" "$work/check-bundled.log" >&2; exit 1; }
 done
-[ "$(grep -c "^PASS update/ant_system \[defaults\]" "$work/check-bundled.log")" = 4 ]  # values, deterministic, threads, reused
+[ "$(grep -c "^PASS update/ant_system \[defaults\] [a-z]*$" "$work/check-bundled.log")" = 4 ]  # values, deterministic, threads, reused
+# ... the same four in voxel worlds for a plugin that claims them; one that does not is not run there.
+[ "$(grep -c "^PASS update/ant_system \[defaults\] 3D [a-z]*$" "$work/check-bundled.log")" = 4 ]
+grep -q "^SKIP smoother/taut \[defaults\] 3D: not run in 3D: " "$work/check-bundled.log"
 
 # Planning with the installed host: the six scaffolds, then the example.
 acoplan="$bin/acoplan"

@@ -122,12 +122,19 @@ case "$slot" in
   CHECK(map->passable({0, 0}));' ;;
   *) echo "$me: unknown SLOT '$slot' (init, heuristic, update, deadlock, smoother, local, map)" >&2; exit 2 ;;
 esac
-# Where a run's state goes (a map reader has no runs).
+# Where a run's state goes (a map reader has no runs), and, for the slots a voxel world's run
+# fills, how to plan there too.
 lifecycle=""
 [ "$slot" = map ] || lifecycle='  // One object may serve several runs: what your hooks keep from one call to the next during a
   // run, set it in begin_run(const aco::Context&), which every run calls first
   // (docs/writing-plugins.md, "The lifecycle").
 '
+case "$slot" in
+  init|heuristic|update|deadlock|smoother) lifecycle+='  // Plans in voxel worlds (3D) too? Handle them (Graph::cost(e) and reverse_edge(e), cells with z,
+  // moves with dz; docs/writing-plugins.md, "Voxel worlds") and say so, for aco-plugin-check to check:
+  // bool supports_voxel_worlds() const override { return true; }
+' ;;
+esac
 # Never over an existing project: the author's code would be lost.
 if [ -e "$dir/CMakeLists.txt" ] || [ -e "$dir/${name}.cpp" ]; then
   echo "$me: $dir already holds a plugin project (CMakeLists.txt or ${name}.cpp); choose another DIR" >&2

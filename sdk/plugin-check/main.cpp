@@ -1,5 +1,6 @@
 // aco-plugin-check FILE.so|FOLDER...: the conformance checks (aco/conformance.hpp) on every plugin
-// in each file (a folder: each aco_*.so in it), one line per check, then the failures again;
+// in each file (a folder: each aco_*.so in it), on 2D maps and, for a plugin that claims them, on
+// voxel worlds ("3D ..." lines), one line per check, then the failures again;
 // exits 1 (aco::kExitError) if any check failed, 2 (aco::kExitUsage) on a usage error.
 #include <algorithm>
 #include <cstdlib>
@@ -19,6 +20,9 @@ int main(int argc, char** argv) {
         "Runs every plugin in each file at its defaults and at the ends of its parameter ranges on tiny maps and\n"
         "checks that its values are finite and non-negative, that it is deterministic per seed, that 1 and 4\n"
         "threads give the same result, and that an object reused for another run gives what a fresh one gives.\n"
+        "A plugin that claims voxel worlds (supports_voxel_worlds()) is checked again on small voxel worlds\n"
+        "(26-neighbourhood): lines '3D values', '3D deterministic', '3D threads', '3D reused'; one that does not\n"
+        "gets a line 'SKIP ... 3D: not run in 3D'.\n"
         "Whole-number range ends above N (default 100) are run at N. --set gives a parameter the value every run\n"
         "starts from (a text parameter, such as the python plugins' class). A FOLDER checks every plugin library\n"
         "(aco_*.so) in it.\n";

@@ -83,6 +83,44 @@ std::vector<Problem> standard_problems() {
   return problems;
 }
 
+Problem make_voxel_problem(std::shared_ptr<const VoxelMap> world, Cell start, Cell goal, Neighbourhood neighbourhood) {
+  GraphOptions options;
+  options.neighbourhood = neighbourhood;
+  options.corner_cutting = false;
+  Problem p{world->name(), world, build_graph(*world, options), 0, 0};
+  p.start = p.graph.node(start);
+  p.goal = p.graph.node(goal);
+  return p;
+}
+
+std::vector<Problem> voxel_problems() {
+  auto voxels = std::make_shared<VoxelMap>(10, 8, 6, "voxels");
+  auto block = [&](int x0, int x1, int y0, int y1, int z0, int z1) {
+    for (int z = z0; z <= z1; ++z)
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) voxels->set_blocked({x, y, z}, true);
+  };
+  block(5, 5, 0, 7, 0, 5);  // a wall across x = 5 ...
+  for (int z = 3; z <= 4; ++z)
+    for (int y = 5; y <= 6; ++y) voxels->set_blocked({5, y, z}, false);  // ... with a 2x2 gap high up
+  block(2, 2, 2, 2, 0, 5);  // pillars, floor to ceiling
+  block(3, 3, 5, 5, 0, 5);
+  block(7, 7, 2, 2, 0, 3);  // one that ends below the ceiling
+  block(0, 2, 6, 7, 2, 2);  // an overhang
+  block(8, 9, 0, 1, 0, 1);  // the corner voxel (9,0,0) walled in: no ant reaches it
+  voxels->set_blocked({9, 0, 0}, false);
+  auto floors = std::make_shared<VoxelMap>(4, 4, 7, "floors");
+  for (int y = 0; y < 4; ++y)
+    for (int x = 0; x < 4; ++x) {
+      floors->set_blocked({x, y, 2}, x != 3 || y != 3);  // a floor with a hole at (3,3)
+      floors->set_blocked({x, y, 4}, x != 0 || y != 0);  // and one with a hole at (0,0)
+    }
+  std::vector<Problem> problems;
+  problems.push_back(make_voxel_problem(voxels, {0, 0, 0}, {9, 7, 5}));
+  problems.push_back(make_voxel_problem(floors, {0, 0, 0}, {3, 3, 6}));
+  return problems;
+}
+
 Ant walk(const Problem& problem, const std::vector<NodeId>& nodes) {
   Ant ant;
   ant.nodes = nodes;
@@ -346,6 +384,22 @@ void run_slot(Heuristic& heuristic, const Problem& problem, Trace& trace) {
   }
 }
 
+// "(1, 2, 3)"
+std::string text(const Eigen::Vector3d& p) {
+  return "(" + number(p.x()) + ", " + number(p.y()) + ", " + number(p.z()) + ")";
+}
+
+// The cell whose centre (graph position) the point is exactly, if any.
+std::optional<Cell> centre_of(const Graph& g, const Eigen::Vector3d& p) {
+  if (!p.allFinite()) return std::nullopt;
+  const auto in = [](double v, int size) { return v > -0.5 && v < size - 0.5; };
+  if (!in(p.x(), g.width) || !in(p.y(), g.height) || !in(p.z(), g.depth)) return std::nullopt;
+  const Cell c{static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())),
+               g.volumetric ? static_cast<int>(std::lround(p.z())) : 0};
+  if (g.positions[g.node(c)] != p) return std::nullopt;
+  return c;
+}
+
 // What the engine's ants read of a trail: tau(e) for every edge, or the stored value where that
 // is negative or NaN (the check's business, which reading within the bounds would hide).
 std::vector<double> read(const Trail& trail) {
@@ -409,6 +463,25 @@ void run_slot(Smoother& smoother, const Problem& problem, Trace& trace) {
     if ((points.front() - problem.graph.positions[path.front()]).norm() > 1e-9 ||
         (points.back() - problem.graph.positions[path.back()]).norm() > 1e-9)
       trace.problem(what + " does not begin at the path's first node and end at its last");
+    // As plan() checks them: every waypoint on a free cell (a free voxel in 3D). And where two
+    // consecutive waypoints are cell centres, the straight line between them is free by the
+    // graph's corner rule (in 3D through every layer it crosses, not only the start's).
+    const auto& g = problem.graph;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (points[i].allFinite() && !on_free_cell(g, points[i])) {
+        trace.problem(what + ": waypoint " + std::to_string(i) + " (0-based), " + text(points[i]) +
+                      ", lies on no free " + (g.volumetric ? "voxel" : "cell"));
+        break;
+      }
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      const auto a = centre_of(g, points[i - 1]), b = centre_of(g, points[i]);
+      if (a && b && !line_of_sight(*g.map, *a, *b, g.options.corner_cutting)) {
+        trace.problem(what + ": the segment from waypoint " + std::to_string(i - 1) + " " + text(points[i - 1]) +
+                      " to waypoint " + std::to_string(i) + " " + text(points[i]) + " passes through a blocked " +
+                      (g.volumetric ? "voxel" : "cell"));
+        break;
+      }
+    }
   }
 }
 
@@ -494,17 +567,22 @@ void run_slot(MapReader& reader, const Problem& problem, Trace& trace) {
   if (!map) return trace.problem("read() of its sample returned no map");
   trace.add(map->width());
   trace.add(map->height());
-  if (map->width() <= 0 || map->height() <= 0)
-    return trace.problem("its sample reads into a " + std::to_string(map->width()) + "x" +
-                         std::to_string(map->height()) + " map");
+  trace.add(map->depth());
+  const std::string size = std::to_string(map->width()) + "x" + std::to_string(map->height()) +
+                           (map->depth() != 1 ? "x" + std::to_string(map->depth()) : "");
+  if (map->width() <= 0 || map->height() <= 0 || map->depth() <= 0)
+    return trace.problem("its sample reads into a " + size + (map->volumetric() ? " voxel world" : " map"));
+  if (map->depth() > 1 && !map->volumetric())
+    return trace.problem("its sample reads into a " + size + " map of several layers that is not volumetric()");
   std::vector<double> free_positions;
-  for (int y = 0; y < map->height(); ++y)
-    for (int x = 0; x < map->width(); ++x) {
-      trace.add(map->passable({x, y}) ? 1.0 : 0.0);
-      if (!map->passable({x, y})) continue;
-      const Eigen::Vector3d p = map->position({x, y});
-      free_positions.insert(free_positions.end(), {p.x(), p.y(), p.z()});
-    }
+  for (int z = 0; z < map->depth(); ++z)  // every layer of a voxel world
+    for (int y = 0; y < map->height(); ++y)
+      for (int x = 0; x < map->width(); ++x) {
+        trace.add(map->passable({x, y, z}) ? 1.0 : 0.0);
+        if (!map->passable({x, y, z})) continue;
+        const Eigen::Vector3d p = map->position({x, y, z});
+        free_positions.insert(free_positions.end(), {p.x(), p.y(), p.z()});
+      }
   trace.add_checked(free_positions, "positions of the sample's free cells", -INFINITY);
 }
 
@@ -524,7 +602,19 @@ void run_colony_with(Interface& plugin, const Problem& problem, const ColonySett
   const ColonyResult result = run_colony(problem.graph, problem.start, problem.goal, pipeline, settings);
   if (result.solved) {
     trace.add_checked(std::span(&result.length, 1), "path length");
-    if (std::abs(result.length - path_length(problem.graph, result.path)) > 1e-9 * (1 + result.length))
+    // The path goes from start to goal along graph edges (in 3D: moves with dz too).
+    const Graph& g = problem.graph;
+    if (result.path.empty() || result.path.front() != problem.start || result.path.back() != problem.goal)
+      trace.problem("the path does not go from the start to the goal");
+    bool along_edges = true;
+    for (std::size_t i = 1; along_edges && i < result.path.size(); ++i)
+      if (g.find_edge(result.path[i - 1], result.path[i]) < 0) {
+        trace.problem("the path's step " + std::to_string(i - 1) + " (0-based) from " +
+                      to_string(g.cell(result.path[i - 1])) + " to " + to_string(g.cell(result.path[i])) +
+                      " is no edge of the graph");
+        along_edges = false;
+      }
+    if (along_edges && std::abs(result.length - path_length(g, result.path)) > 1e-9 * (1 + result.length))
       trace.problem("the path's length is not the sum of its steps");
   }
   for (const NodeId n : result.path) trace.add(n);
@@ -577,6 +667,8 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
   const PluginIdentity who{plugin.slot, plugin.name, plugin.file.string()};
   const std::string label = plugin.slot + "/" + plugin.name;
   const std::vector<Problem> problems = standard_problems();
+  const std::vector<Problem> voxels = options.voxel_worlds ? voxel_problems() : std::vector<Problem>{};
+  bool said_not_3d = false;  // the SKIP line of a plugin that does not claim voxel worlds, once
   const bool colony = !std::is_same_v<Interface, Smoother> && !std::is_same_v<Interface, LocalPlanner> &&
                       !std::is_same_v<Interface, MapReader>;
   const std::vector<ParameterSet> sets = parameter_sets(descriptor.parameters(), options.integer_cap);
@@ -641,40 +733,76 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
       result("constructs", "the factory threw " + describe_current_exception(), CheckResult::Status::fail);
       continue;
     }
-    auto pass = [&](std::unique_ptr<Interface> instance, int threads) {
-      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-      tbb::task_arena arena(threads);
-      return arena.execute([&] { return Pass<Interface>(*instance, problems, options, colony); });
-    };
-    // A run on 1 thread and one on 4: the same output shows determinism and thread independence
-    // at once. Only when they differ does another run on 1 thread tell which of the two failed.
-    const Pass<Interface> one = pass(std::move(first), 1);
-    std::string by_threads = difference(one.trace, pass(make(), 4).trace);
-    std::string nondeterminism;
-    if (!by_threads.empty()) {
-      nondeterminism = difference(one.trace, pass(make(), 1).trace);
-      if (!nondeterminism.empty()) by_threads = "not separable: two runs on 1 thread differ as well";
-    }
     using S = CheckResult::Status;
-    const auto& problems_found = one.trace.problems;
-    result("values",
-           problems_found.empty()
-               ? ""
-               : problems_found.front() +
-                     (problems_found.size() > 1 ? " (and " + std::to_string(problems_found.size() - 1) + " more)" : ""),
-           problems_found.empty() ? S::pass : S::fail);
-    result("deterministic", nondeterminism, nondeterminism.empty() ? S::pass : S::fail);
-    result("threads", by_threads.empty() ? "" : "1 vs 4 threads: " + by_threads,
-           by_threads.empty() ? S::pass : S::fail);
-    if (!Pass<Interface>::kHasRuns) continue;
-    if (!nondeterminism.empty())
-      result("reused", "two runs of fresh objects differ already", S::skip);
-    else
-      result("reused",
-             one.reuse.empty()
-                 ? ""
-                 : "a second run of the same object, after runs on other maps, differs from its first: " + one.reuse,
-             one.reuse.empty() ? S::pass : S::fail);
+    // The four checks on `worlds`, the first pass with `fresh`; `prefix` ("" or "3D ") names them.
+    auto run_checks = [&](const std::string& prefix, const std::vector<Problem>& worlds,
+                          std::unique_ptr<Interface> fresh) {
+      auto pass = [&](std::unique_ptr<Interface> instance, int threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        tbb::task_arena arena(threads);
+        return arena.execute([&] { return Pass<Interface>(*instance, worlds, options, colony); });
+      };
+      // A run on 1 thread and one on 4: the same output shows determinism and thread independence
+      // at once. Only when they differ does another run on 1 thread tell which of the two failed.
+      const Pass<Interface> one = pass(std::move(fresh), 1);
+      std::string by_threads = difference(one.trace, pass(make(), 4).trace);
+      std::string nondeterminism;
+      if (!by_threads.empty()) {
+        nondeterminism = difference(one.trace, pass(make(), 1).trace);
+        if (!nondeterminism.empty()) by_threads = "not separable: two runs on 1 thread differ as well";
+      }
+      const auto& problems_found = one.trace.problems;
+      // In a voxel world, what a plugin written for grids gets wrong.
+      const std::string hint = prefix.empty() ? ""
+                                              : " [in a voxel world Graph::edge_costs and reverse_edges are empty: "
+                                                "use cost(e) and reverse_edge(e); cells have z, moves dz]";
+      result(
+          prefix + "values",
+          problems_found.empty()
+              ? ""
+              : problems_found.front() +
+                    (problems_found.size() > 1 ? " (and " + std::to_string(problems_found.size() - 1) + " more)" : "") +
+                    hint,
+          problems_found.empty() ? S::pass : S::fail);
+      result(prefix + "deterministic", nondeterminism, nondeterminism.empty() ? S::pass : S::fail);
+      result(prefix + "threads", by_threads.empty() ? "" : "1 vs 4 threads: " + by_threads,
+             by_threads.empty() ? S::pass : S::fail);
+      if (!Pass<Interface>::kHasRuns) return;
+      if (!nondeterminism.empty())
+        result(prefix + "reused", "two runs of fresh objects differ already", S::skip);
+      else
+        result(prefix + "reused",
+               one.reuse.empty()
+                   ? ""
+                   : "a second run of the same object, after runs on other maps, differs from its first: " + one.reuse,
+               one.reuse.empty() ? S::pass : S::fail);
+    };
+    // Whether this object plans in voxel worlds, asked before its first run (as plan() asks).
+    // A map reader has no runs to check there (its sample is read whatever its dimension).
+    const bool in_3d = options.voxel_worlds && Pass<Interface>::kHasRuns;
+    bool claims_3d = false;
+    std::string claim_failed;
+    if (in_3d) {
+      try {
+        claims_3d = first->supports_voxel_worlds();
+      } catch (...) {
+        claim_failed = describe_current_exception();
+      }
+    }
+    if (options.grids) run_checks("", problems, std::move(first));
+    if (!in_3d) continue;
+    if (!claim_failed.empty()) {
+      result("3D", "supports_voxel_worlds() threw " + claim_failed, S::fail);
+    } else if (!claims_3d) {
+      // Once per plugin: every set after the first that does not claim them would say the same.
+      if (!said_not_3d)
+        result("3D", "not run in 3D: it does not claim voxel worlds (supports_voxel_worlds() is false)", S::skip);
+      said_not_3d = true;
+    } else if (std::is_same_v<Interface, LocalPlanner>) {
+      result("3D", "not run in 3D: a local planner drives in the plane (acosim); no voxel world reaches it", S::skip);
+    } else {
+      run_checks("3D ", voxels, first ? std::move(first) : make());
+    }
   }
 }
 

@@ -29,8 +29,10 @@ const aco::SettingsTable<Parameters> kParams({
 
 class PruneSmoother final : public aco::Smoother {
  public:
-  bool supports_voxel_worlds() const override { return true; }
   explicit PruneSmoother(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
+  // In voxel worlds with clearance 0 only: the clearance is measured in the plane. (Claiming them
+  // with a clearance, every run there would fail; plan() refuses the object instead.)
+  bool supports_voxel_worlds() const override { return p_.clearance <= 0.0; }
 
   std::vector<Eigen::Vector3d> smooth(const aco::Context& c, std::span<const aco::NodeId> path) const override {
     const aco::Graph& g = *c.graph;

@@ -13,6 +13,14 @@
 //                  trace of earlier runs); not for map readers, which have no runs
 // (The run on 4 threads is the second run when it agrees with the first; when it does not,
 // another run on 1 thread tells nondeterminism from thread dependence.)
+// The same four checks run again, as "3D values", "3D deterministic", "3D threads" and
+// "3D reused", on the voxel worlds below (26-neighbourhood, no corner cutting) for every parameter
+// set whose object claims voxel worlds (Strategy::supports_voxel_worlds()). A plugin that does not
+// claim them gets one line "SKIP ... 3D: ..." saying it was not run in 3D (a local planner, which
+// drives in the plane, likewise); a map reader gets none (it has no runs; its sample is checked
+// whatever its dimension). In both dimensions the values check also asks that a colony run's path
+// steps along graph edges from start to goal and that a smoother's waypoints lie on free cells
+// (voxels) with a free straight line between any two that are cell centres.
 // A value the plugin's factory refuses with aco::Error (a combination it rejects, like a > b)
 // is reported as skipped, not failed; any other exception is a failure.
 #include <cstdint>
@@ -33,13 +41,15 @@
 #include "aco/map_reader.hpp"
 #include "aco/slots.hpp"
 #include "aco/plugin_registry.hpp"
+#include "aco/voxel.hpp"
 
 namespace aco::conformance {
 
-// A standard tiny map with its graph (8-neighbourhood, no corner cutting), start and goal.
+// A standard tiny map with its graph (8-neighbourhood, no corner cutting; a voxel world's
+// 26-neighbourhood, no corner cutting), start and goal.
 struct Problem {
-  std::string name;  // "open", "obstacles", "dead end", "corridor"
-  std::shared_ptr<const OccupancyGrid> map;  // shared: graph.map points to it
+  std::string name;  // "open", "obstacles", "dead end", "corridor"; "voxels", "floors"
+  std::shared_ptr<const Map> map;  // shared: graph.map points to it (an OccupancyGrid or a VoxelMap)
   Graph graph;
   NodeId start = 0;
   NodeId goal = 0;
@@ -56,6 +66,17 @@ std::vector<Problem> standard_problems();
 
 // A Problem from rows of text ('#' blocked), start and goal given as cells.
 Problem make_problem(const std::string& name, const std::vector<std::string>& rows, Cell start, Cell goal);
+
+// The voxel worlds a plugin claiming them (Strategy::supports_voxel_worlds()) is checked on too,
+// each with its graph (26-neighbourhood, no corner cutting): "voxels" 10x8x6, a wall across x = 5
+// with a 2x2 gap high up, pillars, an overhang and a walled-in voxel no ant can reach, from
+// (0,0,0) to (9,7,5); "floors" 4x4x7, two floors with a hole each, at opposite corners, from
+// (0,0,0) to (3,3,6). The goal is reachable on each.
+std::vector<Problem> voxel_problems();
+
+// A Problem in a voxel world, start and goal given as cells with z.
+Problem make_voxel_problem(std::shared_ptr<const VoxelMap> world, Cell start, Cell goal,
+                           Neighbourhood neighbourhood = Neighbourhood::twenty_six);
 
 // The ants of one iteration, owning what Iteration points to.
 struct IterationCase {
@@ -100,6 +121,10 @@ struct Options {
   // Values every parameter set runs with (aco-plugin-check --set NAME=VALUE): a text parameter's
   // above all, which the sets never vary (python's class has no value that runs everywhere).
   std::map<std::string, std::string> fixed;
+  // Which worlds to run the plugins on: the standard 2D maps, and the voxel worlds (for the
+  // parameter sets whose object claims them). A test may run the 3D checks alone.
+  bool grids = true;
+  bool voxel_worlds = true;
   ColonySettings colony = [] {
     ColonySettings s;
     s.ants = 8;
@@ -112,7 +137,9 @@ struct Options {
 struct CheckResult {
   std::string plugin;  // "update/ant_system"
   std::string parameters;  // ParameterSet::label
-  std::string check;  // "values", "deterministic", "threads" ("constructs" when skipped or failed)
+  // "values", "deterministic", "threads", "reused" ("constructs" when skipped or failed); in the
+  // voxel worlds "3D values", "3D deterministic", "3D threads", "3D reused" ("3D" when not run)
+  std::string check;
   enum class Status { pass, fail, skip } status = Status::pass;
   std::string detail;  // what failed, where (map, iteration, value)
 

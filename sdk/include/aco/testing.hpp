@@ -25,9 +25,11 @@ namespace aco::testing {
 using conformance::create;  // the plugin of a slot in a library file
 using conformance::IterationCase;  // one iteration's ants; view() is the Iteration
 using conformance::make_problem;  // a map from rows of text
+using conformance::make_voxel_problem;  // a voxel world (aco::VoxelMap) with start and goal
 using conformance::Problem;  // a map, its graph, start, goal; context(iteration)
 using conformance::standard_iterations;  // ants arrived, no ant arrived, all ants dead
 using conformance::standard_problems;  // open, obstacles, dead end, corridor
+using conformance::voxel_problems;  // voxels, floors: voxel worlds, 26-neighbourhood
 using conformance::walk;  // an Ant along given nodes
 
 // Every check aco-plugin-check makes, on every plugin of the file, as one Catch2 check each

@@ -79,6 +79,9 @@ def test_the_bundled_voxel_files_load():
     except aco.Error as error:  # a build without OctoMap has no map/octomap plugin
         pytest.skip(str(error))
     assert hall.volumetric and hall.array.any()
+    free = np.argwhere(~hall.array)[:, ::-1]  # (x, y, z) of the free voxels, [z, y, x] reversed
+    result = aco.astar(hall, tuple(free[0]), tuple(free[-1]))
+    assert result.solved and result.preset == "voxel" and result.grid_path.shape[1] == 3
 
 
 def test_scenarios_of_a_3dscen_have_voxels_and_their_optimum():

@@ -47,6 +47,10 @@ Configuration default_pipeline(const std::filesystem::path& file, const YAML::No
     if (p.simulation) return Configuration();
     kinds.insert(aco::default_preset(p.map));
   }
+  if (kinds.size() > 1 && kinds.count("voxel"))
+    fail(file, doc["problems"],
+         "the problems mix voxel worlds and 2D maps, whose graphs no run shares (6, 18 or 26 moves in a voxel "
+         "world): study them in experiments of their own");
   if (kinds.size() > 1)
     fail(file, doc["problems"],
          "the problems mix 2D maps and height maps, whose recommended pipelines differ: name one "

@@ -658,3 +658,28 @@ TEST_CASE("a simulation experiment has one fingerprint whichever path names it",
   const auto absolute = aco::studies::load_experiment(std::filesystem::absolute(file), test::plugins());
   CHECK(relative.fingerprint(test::plugins()) == absolute.fingerprint(test::plugins()));
 }
+
+TEST_CASE("an experiment's problem in a voxel world names voxels, and 2D problems keep their fingerprint",
+          "[acobench][voxel]") {
+  const std::string simple = (test::data_dir() / "maps/voxel/warframe/Simple.3dmap").string();
+  const std::string problems = "name: voxels\nproblems:\n  - {name: list, map: " + simple +
+                               ", start: [56, 76, 52], goal: [48, 85, 45]}\n  - {name: text, map: " + simple +
+                               ", start: '56,76,52', goal: '48,85,0'}\n";
+  const auto e = load(problems + "baseline: {name: b, iterations: 2}\n");
+  REQUIRE(e.problems.size() == 2);
+  CHECK(e.problems[0].start == aco::Cell{56, 76, 52});
+  CHECK(e.problems[1].start == aco::Cell{56, 76, 52});
+  CHECK(e.problems[1].goal == aco::Cell{48, 85, 0});
+  // z where it is not 0; a 2D problem's cells as stored before voxel worlds.
+  const std::string fingerprint = e.fingerprint(test::plugins());
+  CHECK_THAT(fingerprint,
+             Contains("\"start\":[56,76,52]") && Contains("\"goal\":[48,85,45]") && Contains("\"goal\":[48,85],"));
+  CHECK_THAT(load(kSmall).fingerprint(test::plugins()), Contains("\"goal\":[19,19]") && Contains("\"start\":[0,0]"));
+  // No run plans both: a voxel world takes 6, 18 or 26 moves, a 2D map 4, 8 or 16.
+  CHECK_THROWS_WITH(load(problems + "  - {map: " + map1() + ", start: [0, 0], goal: [19, 19]}\nbaseline: {name: b}\n"),
+                    Contains("the problems mix voxel worlds and 2D maps"));
+  CHECK_THROWS_WITH(load("name: x\nproblems:\n  - {map: " + map1() +
+                         ", start: [0, 0, 0, 1], goal: [1, 1]}\n"
+                         "baseline: {name: b}\n"),
+                    Contains("'start' must be a cell [x, y] (or [x, y, z] in a voxel world)"));
+}

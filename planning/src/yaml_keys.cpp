@@ -8,6 +8,7 @@
 #include "aco/parameters.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/presets.hpp"
+#include "aco/run_spec.hpp"
 
 namespace aco::yaml {
 
@@ -51,10 +52,19 @@ bool boolean(const std::filesystem::path& file, const YAML::Node& node, const st
   fail(file, node, "'" + key + "' must be true or false, not '" + text + "'");
 }
 
-Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key) {
+Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, bool voxels) {
   if (node.IsSequence() && node.size() == 2)
     return {integer(file, node[0], key + "[0]", 0), integer(file, node[1], key + "[1]", 0)};
-  fail(file, node, "'" + key + "' must be a cell [x, y]");
+  if (voxels && node.IsSequence() && node.size() == 3)
+    return {integer(file, node[0], key + "[0]", 0), integer(file, node[1], key + "[1]", 0),
+            integer(file, node[2], key + "[2]", 0)};
+  if (voxels && node.IsScalar()) {
+    try {
+      return parse_cell(node.Scalar(), key);
+    } catch (const Error&) {}
+  }
+  fail(file, node,
+       "'" + key + "' must be a cell [x, y]" + std::string(voxels ? " (or [x, y, z] in a voxel world)" : ""));
 }
 
 void only_keys(const std::filesystem::path& file, const YAML::Node& map, const std::vector<std::string>& allowed,

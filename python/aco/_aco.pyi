@@ -8,6 +8,8 @@ import numpy as np
 import numpy.typing as npt
 
 _Path = Union[str, os.PathLike]
+# A cell: (x, y), or (x, y, z) in a voxel world.
+_Cell = Tuple[int, ...]
 
 # --- The module, its errors -------------------------------------------------------------------
 
@@ -18,20 +20,23 @@ class PluginError(Error): ...
 
 # --- Maps and runs -------------------------------------------------------------------------------
 
+# blocked: 2D [y, x], or 3D [z, y, x] (a voxel world); heights: 2D [y, x]
 class ArrayMap:
     def __init__(self, blocked: Optional[npt.ArrayLike], heights: Optional[npt.ArrayLike], cell_size: float,
                  name: str) -> None: ...
 
-# ("grid", blocked bool array, 1.0, name) or ("terrain", heights float array, cell size, name)
+# ("occupancy", blocked bool array, 1.0, name) or ("terrain", heights float array, cell size, name);
+# a voxel world's blocked array is 3D, [z, y, x]
 def map_arrays(file: _Path, terrain_keys: Dict[str, str]) -> Tuple[str, np.ndarray, float, str]: ...
 
 # (acoplan's --json object as text, the preset or config the keys were laid over, the cell size,
 # each iteration's best length, the final pheromone per edge if kept)
-def plan(map: Union[_Path, ArrayMap], start: Tuple[int, int], goal: Tuple[int, int], keys: Dict[str, str],
+def plan(map: Union[_Path, ArrayMap], start: _Cell, goal: _Cell, keys: Dict[str, str],
          preset: str, config: str, threads: int, max_memory: Optional[str],
          keep_pheromone: bool) -> Tuple[str, str, float, List[float], List[float]]: ...
 
-# A Moving AI .scen file's problems: dicts with map, start, goal, optimal_length, bucket, width, height
+# A Moving AI .scen (or .3dscen) file's problems: dicts with map, start, goal ((x, y, z) from a
+# .3dscen), optimal_length, bucket, width, height
 def scenarios(file: _Path) -> List[Dict[str, Any]]: ...
 
 # --- Plugins, presets and run keys ---------------------------------------------------------------
@@ -65,8 +70,8 @@ def expected_running_time(hitting_times: Sequence[float], efforts: Sequence[floa
 
 # --- Pictures and simulation ---------------------------------------------------------------------
 
-def run_svg(map: Union[_Path, ArrayMap], keys: Dict[str, str], start: Tuple[int, int], goal: Tuple[int, int],
-            grid_path: Sequence[Tuple[int, int]], path: Sequence[Sequence[float]], solved: bool, length: float,
+def run_svg(map: Union[_Path, ArrayMap], keys: Dict[str, str], start: _Cell, goal: _Cell,
+            grid_path: Sequence[_Cell], path: Sequence[Sequence[float]], solved: bool, length: float,
             seed: int, best_so_far: Sequence[float], iteration_best: Sequence[float], pheromone: Sequence[float],
             optimal_length: float) -> str: ...
 def map_svg(map: Union[_Path, ArrayMap], terrain_keys: Dict[str, str]) -> str: ...

@@ -15,7 +15,7 @@ import numpy as np
 
 from . import _aco, _live
 
-Cell = Tuple[int, int]
+Cell = Tuple[int, ...]  # (x, y); (x, y, z) in a voxel world
 Error = _aco.Error
 _SCOPES = frozenset(_aco.key_scopes())
 _SLOTS = ("init", "heuristic", "update", "deadlock", "smoother", "local")
@@ -26,7 +26,7 @@ _NODATA = -9999.0
 
 
 class Map:
-    """A map to plan on: an occupancy grid or a terrain of heights.
+    """A map to plan on: an occupancy grid, a terrain of heights or a voxel world.
 
     Make one from a numpy array with ``aco.Map(array)``. ``kind="occupancy"``: every cell that is
     not ``free`` (default 0) is blocked; ``kind="terrain"``: the values are heights (NaN = no data)
@@ -36,6 +36,11 @@ class Map:
     x: cell (x, y) is ``array[y, x]``, as on the command line. ``map.array`` holds the cells: True
     = blocked for an occupancy grid, the heights for a terrain.
 
+    A 3D array is a voxel world (``volumetric`` True), occupancy only: voxel (x, y, z) is
+    ``array[z, y, x]``, layers z from the ground up, each layer a grid as above, so
+    ``array.shape`` is (depth, height, width). A float array of only 0 and 1 needs no ``kind``
+    here (a terrain is 2D); ``free`` works as on a grid.
+
     Load a map file with ``aco.Map.load(path)``; write one with ``map.save(path)``.
     """
 
@@ -44,13 +49,17 @@ class Map:
         if isinstance(array, (str, bytes, os.PathLike)):
             raise Error(f"aco.Map takes an array; load the map file {os.fsdecode(array)!r} with aco.Map.load(path)")
         array = np.asarray(array)
-        if array.ndim != 2 or array.shape[0] == 0 or array.shape[1] == 0:
-            raise Error(f"a map array must be 2D and not empty, not of shape {array.shape}")
+        if array.ndim not in (2, 3) or 0 in array.shape:
+            raise Error(f"a map array must be 2D (a grid, a terrain) or 3D (a voxel world, [z, y, x]) and not empty, "
+                        f"not of shape {array.shape}")
         if not (np.issubdtype(array.dtype, np.number) or array.dtype == np.bool_):
             raise Error(f"a map array holds bools or integers (occupancy) or floats (heights), not {array.dtype}")
-        self.kind = _kind_of(array) if kind is None else kind
-        if self.kind not in _KINDS:
+        if kind is not None and kind not in _KINDS:
             raise Error(f"kind must be 'occupancy' or 'terrain', not {kind!r}")
+        if array.ndim == 3:
+            self.kind = _voxel_kind(array, kind, free)
+        else:
+            self.kind = _kind_of(array) if kind is None else kind
         if self.kind == "terrain":
             if free is not None:
                 raise Error("free= says which value of an occupancy grid is free; a terrain holds heights (NaN = no data)")
@@ -58,15 +67,19 @@ class Map:
         else:
             self.array = np.ascontiguousarray(array != (0 if free is None else free))
         self.cell_size = float(cell_size)
-        self.name = name or f"numpy {self.kind} {array.shape[1]}x{array.shape[0]}"
+        if self.volumetric and self.cell_size != 1.0:
+            raise Error("a voxel world plans in voxels: its cell_size is 1")
+        self.name = name or (f"numpy voxel world {self.width}x{self.height}x{self.depth}" if self.volumetric
+                             else f"numpy {self.kind} {self.width}x{self.height}")
         self.file: Optional[str] = None
         self.terrain_keys: dict = {}
 
     @classmethod
     def load(cls, path: Union[str, os.PathLike], **terrain_keys: Any) -> "Map":
         """Loads any map file acoplan reads (Moving AI .map, ROS .yaml, ESRI .asc, PGM .pgm, 0/1
-        text). Terrain keys (``height_scale``, ``cell_size`` for PGM images) are applied here and
-        to every plan on this map."""
+        text; the voxel worlds of Moving AI .3dmap and, through the map plugin, OctoMap .bt/.ot).
+        Terrain keys (``height_scale``, ``cell_size`` for PGM images) and a map plugin's keys
+        (``map_format``, ``map_...``) are applied here and to every plan on this map."""
         keys = _keys(terrain_keys)
         with _python_spelling():
             kind, array, cell_size, name = _aco.map_arrays(os.fspath(path), keys)
@@ -79,10 +92,21 @@ class Map:
         """Writes the map as a file that aco.Map.load() and acoplan read, in the format of its
         ending: an occupancy grid as a Moving AI map (.map: '.' free, '@' blocked) or, with any
         other ending but a terrain format's, a 0/1 matrix (.txt); a terrain as an ESRI ASCII grid
-        (.asc, with its cell size; NaN cells as NODATA). Heights are written exactly."""
+        (.asc, with its cell size; NaN cells as NODATA); a voxel world as a Moving AI .3dmap (its
+        blocked voxels). Heights are written exactly."""
         path = os.fspath(path)
         ending = os.path.splitext(path)[1].lower()
-        if self.kind == "terrain":
+        if self.volumetric:
+            if ending != ".3dmap":
+                raise Error(f"{path}: a voxel world is saved as a Moving AI voxel map, a file ending in .3dmap")
+            # x, then y, then z, as aco::write_movingai_voxels (and HOG2) write them.
+            x, y, z = np.nonzero(self.array.transpose(2, 1, 0))
+            lines = [f"voxel {self.width} {self.height} {self.depth}"]
+            lines += [f"{a} {b} {c}" for a, b, c in zip(x.tolist(), y.tolist(), z.tolist())]
+            text = "\n".join(lines) + "\n"
+        elif ending == ".3dmap":
+            raise Error(f"{path}: a .3dmap is a voxel world's file; this map is 2D (a voxel world is a 3D array)")
+        elif self.kind == "terrain":
             if ending != ".asc":
                 raise Error(f"{path}: a terrain is saved as an ESRI ASCII grid, a file ending in .asc")
             text = self._esri_ascii()
@@ -108,16 +132,30 @@ class Map:
 
     @property
     def width(self) -> int:
-        return self.array.shape[1]
+        """Columns: x."""
+        return self.array.shape[-1]
 
     @property
     def height(self) -> int:
-        return self.array.shape[0]
+        """Rows: y."""
+        return self.array.shape[-2]
+
+    @property
+    def depth(self) -> int:
+        """Layers: z; 1 for a grid or a terrain."""
+        return self.array.shape[0] if self.array.ndim == 3 else 1
+
+    @property
+    def volumetric(self) -> bool:
+        """A voxel world: cells are (x, y, z), ``array[z, y, x]``."""
+        return self.array.ndim == 3
 
     def __array__(self, dtype=None):
         return self.array if dtype is None else self.array.astype(dtype)
 
     def __repr__(self) -> str:
+        if self.volumetric:
+            return f"aco.Map({self.name!r}, voxel world, {self.width}x{self.height}x{self.depth})"
         return f"aco.Map({self.name!r}, {self.kind}, {self.width}x{self.height})"
 
     def _native(self) -> Any:
@@ -144,17 +182,31 @@ def _kind_of(array: np.ndarray) -> str:
     return "terrain"
 
 
+def _voxel_kind(array: np.ndarray, kind: Optional[str], free: Any) -> str:
+    """A 3D array's kind: a voxel world is occupancy only; floats without kind only 0 and 1."""
+    if kind == "terrain":
+        raise Error("a 3D array is a voxel world of free and blocked voxels, kind='occupancy'; a terrain's heights "
+                    "are a 2D array")
+    if kind is None and free is None and np.issubdtype(array.dtype, np.floating) and not np.isin(array, (0.0, 1.0)).all():
+        raise Error("a 3D float array is a voxel world: only 0 (free) and 1 (blocked), or say kind='occupancy' "
+                    "(every value but free= blocked)")
+    return "occupancy"
+
+
 @dataclasses.dataclass(frozen=True)
 class Scenario:
-    """One problem of a Moving AI scenario file (.scen), as acoplan --scen plans it:
-    ``aco.plan(s.map, s.start, s.goal)``.
+    """One problem of a Moving AI scenario file (.scen, or .3dscen of a voxel world), as acoplan
+    --scen plans it: ``aco.plan(s.map, s.start, s.goal)``.
 
-    map             the map file: the scenario file's name without .scen (arena.map for arena.map.scen)
-    start, goal     cells (x, y)
+    map             the map file: the scenario file's name without .scen (arena.map for
+                    arena.map.scen; Simple.3dmap for Simple.3dmap.3dscen)
+    start, goal     cells (x, y); voxels (x, y, z) from a .3dscen
     optimal_length  the file's optimum: octile distance with 8 moves and no corner cutting
-                    (acoplan's defaults: ``aco.astar`` finds the same length)
-    bucket          Moving AI's difficulty bucket
-    width, height   the size of the map the scenario is for
+                    (acoplan's defaults: ``aco.astar`` finds the same length); in a voxel world
+                    with 26 moves (1, sqrt 2, sqrt 3), every voxel of a step's box free (the
+                    voxel preset's graph)
+    bucket          Moving AI's difficulty bucket (0 in a .3dscen, which has none)
+    width, height   the size of the map the scenario is for (0 in a .3dscen, which states none)
     """
 
     map: str
@@ -169,7 +221,8 @@ class Scenario:
 def load_scenarios(path: Union[str, os.PathLike]) -> List[Scenario]:
     """The problems of a Moving AI scenario file (.scen), in the file's order."""
     with _python_spelling():
-        return [Scenario(**{**s, "map": os.fspath(s["map"])}) for s in _aco.scenarios(os.fspath(path))]
+        return [Scenario(**{**s, "map": os.fspath(s["map"]), "start": tuple(s["start"]), "goal": tuple(s["goal"])})
+                for s in _aco.scenarios(os.fspath(path))]
 
 
 class Result:
@@ -180,10 +233,14 @@ class Result:
     (x * cell_size, y * cell_size). Cells are counted in columns and rows.
 
     path            the final path (after the smoother) as an (n, 2) float array of world x, y,
-                    on a terrain (n, 3) with the height as z; world units
+                    on a terrain (n, 3) with the height as z; world units. In a voxel world
+                    (n, 3): x, y and z in voxels
     path_cells      ``path``'s x and y in cells, an (n, 2) float array: over ``imshow(map.array)``
-                    draw it with ``plot(*result.path_cells.T)``, on a terrain as on a grid
-    grid_path       the planner's best grid path as an (n, 2) int array of cells (x, y)
+                    draw it with ``plot(*result.path_cells.T)``, on a terrain as on a grid; in a
+                    voxel world (n, 3), x, y and z (the same as ``path``)
+    grid_path       the planner's best grid path as an (n, 2) int array of cells (x, y); in a
+                    voxel world (n, 3), voxels (x, y, z)
+    volumetric      planned in a voxel world (``depth`` its layers; start, goal in ``json`` (x, y, z))
     cell_size       the world size of a cell
     solved, reason  whether a path was found, and why not
     length          length of ``path``; grid_length of ``grid_path``, both in world units (None for a
@@ -214,9 +271,13 @@ class Result:
         self.length = record["length"]
         self.grid_length = record["grid_length"]
         self.optimal_length = record["optimal_length"]
-        self.path = np.array(record["path"], dtype=np.float64).reshape(-1, 3 if record["path"] and len(record["path"][0]) == 3 else 2)
-        self.path_cells = self.path[:, :2] / cell_size
-        self.grid_path = np.array(record["grid_path"], dtype=np.int64).reshape(-1, 2)
+        # acoplan's JSON gives a voxel world's depth (and its cells x, y, z); grids and terrains have none.
+        self.volumetric: bool = "depth" in record
+        self.depth: int = record.get("depth", 1)
+        three_d = self.volumetric or bool(record["path"] and len(record["path"][0]) == 3)
+        self.path = np.array(record["path"], dtype=np.float64).reshape(-1, 3 if three_d else 2)
+        self.path_cells = self.path / cell_size if self.volumetric else self.path[:, :2] / cell_size
+        self.grid_path = np.array(record["grid_path"], dtype=np.int64).reshape(-1, 3 if self.volumetric else 2)
         self.convergence = np.array([np.nan if v is None else v for v in record["convergence"]], dtype=np.float64)
         self.iterations: int = record["iterations"]
         self.best_iteration: int = record["best_iteration"]
@@ -389,10 +450,11 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
     """Plans a path from start to goal with the ant colony (or another planner), as acoplan does.
 
     map         an aco.Map, a numpy array (see aco.Map) or a map file's path
-    start       the start cell (x, y): x the column, y the row from the top, 0-based, whole numbers
-    goal        the goal cell (x, y)
+    start       the start cell (x, y): x the column, y the row from the top, 0-based, whole numbers;
+                in a voxel world (x, y, z), z the layer from the ground (a 3D array's [z, y, x])
+    goal        the goal cell (x, y), or (x, y, z)
     preset      the named pipeline the keys are laid over (aco.presets()); default: robust on
-                occupancy grids, terrain on height maps, as acoplan's
+                occupancy grids, terrain on height maps, voxel in voxel worlds, as acoplan's
     config      an acoplan config file instead of a preset
     keys        run keys as acoplan's options without dashes: {"update.rho": 0.1, "max-slope": 30}
     threads     worker threads, 0 = all cores (at most 1024, as acoplan); results do not depend on it
@@ -468,11 +530,10 @@ def astar(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], g
 
 
 def _cell(cell: Sequence[int], what: str) -> Cell:
-    try:
-        x, y = cell
-    except (TypeError, ValueError):
-        raise Error(f"{what} must be a cell (x, y), not {cell!r}") from None
-    return _whole(x, what, cell), _whole(y, what, cell)
+    """(x, y) or (x, y, z); which of them the map needs, the native module says (it knows the map)."""
+    if isinstance(cell, (str, bytes)) or not hasattr(cell, "__len__") or len(cell) not in (2, 3):
+        raise Error(f"{what} must be a cell (x, y), or (x, y, z) in a voxel world, not {cell!r}")
+    return tuple(_whole(v, what, cell) for v in cell)
 
 
 def _whole(value: Any, what: str, cell: Sequence[int]) -> int:

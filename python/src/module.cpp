@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -35,6 +36,8 @@
 #include "aco/terrain.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/version.hpp"
+#include "aco/voxel.hpp"
+#include "aco/voxel_svg.hpp"
 
 namespace py = pybind11;
 
@@ -52,7 +55,8 @@ aco::PluginRegistry& registry() {
   return *instance;
 }
 
-// A map given as an array (from aco.Map): occupancy (nonzero = blocked) or heights (NaN = no data).
+// A map given as an array (from aco.Map): occupancy (nonzero = blocked; a 3D array [z, y, x] is a
+// voxel world) or heights (NaN = no data).
 struct ArrayMap {
   py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast> blocked;
   py::array_t<double, py::array::c_style | py::array::forcecast> heights;
@@ -67,6 +71,16 @@ std::unique_ptr<aco::Map> make_map(const ArrayMap& source, const aco::TerrainOpt
     return std::make_unique<aco::TerrainMap>(width, height, source.cell_size, std::move(heights), terrain.max_slope_deg,
                                              source.name);
   }
+  if (source.blocked.ndim() == 3) {
+    const int depth = static_cast<int>(source.blocked.shape(0)), height = static_cast<int>(source.blocked.shape(1)),
+              width = static_cast<int>(source.blocked.shape(2));
+    auto world = std::make_unique<aco::VoxelMap>(width, height, depth, source.name);
+    const auto voxels = source.blocked.unchecked<3>();
+    for (int z = 0; z < depth; ++z)
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) world->set_blocked({x, y, z}, voxels(z, y, x) != 0);
+    return world;
+  }
   const int height = static_cast<int>(source.blocked.shape(0)), width = static_cast<int>(source.blocked.shape(1));
   auto grid = std::make_unique<aco::OccupancyGrid>(width, height, source.name);
   const auto cells = source.blocked.unchecked<2>();
@@ -75,7 +89,8 @@ std::unique_ptr<aco::Map> make_map(const ArrayMap& source, const aco::TerrainOpt
   return grid;
 }
 
-// A map file as arrays, for aco.Map.load(): ("occupancy", blocked, 1.0, name) or ("terrain", heights, cell size, name).
+// A map file as arrays, for aco.Map.load(): ("occupancy", blocked, 1.0, name) or ("terrain", heights, cell size,
+// name); a voxel world's blocked array is 3D, [z, y, x].
 py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain_keys) {
   aco::Keys keys = terrain_keys;
   keys["map"] = file.string();
@@ -87,6 +102,15 @@ py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) out(y, x) = terrain->elevation({x, y});
     return py::make_tuple("terrain", heights, terrain->cell_size(), map->name());
+  }
+  if (map->volumetric()) {
+    const py::ssize_t d = map->depth();
+    py::array_t<bool> blocked({d, h, w});
+    auto out = blocked.mutable_unchecked<3>();
+    for (int z = 0; z < d; ++z)
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) out(z, y, x) = !map->passable({x, y, z});
+    return py::make_tuple("occupancy", blocked, 1.0, map->name());
   }
   py::array_t<bool> blocked({h, w});
   auto out = blocked.mutable_unchecked<2>();
@@ -114,8 +138,35 @@ class SignalCheck {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
-std::string cell_text(const std::pair<int, int>& cell) {
-  return std::to_string(cell.first) + "," + std::to_string(cell.second);
+// A cell from Python: (x, y) on a grid or terrain, (x, y, z) in a voxel world.
+using CellArg = std::vector<int>;
+
+// "x,y" or "x,y,z", as the command line writes a cell.
+std::string cell_text(const CellArg& cell) {
+  std::string text;
+  for (const int v : cell) {
+    if (!text.empty()) text += ',';
+    text += std::to_string(v);
+  }
+  return text;
+}
+
+aco::Cell to_cell(const CellArg& cell) {
+  if (cell.size() < 2 || cell.size() > 3) throw aco::Error("a cell is (x, y), or (x, y, z) in a voxel world");
+  return {cell[0], cell[1], cell.size() == 3 ? cell[2] : 0};
+}
+
+// A voxel world's cells are (x, y, z), a grid's or a terrain's (x, y): the other count is refused
+// before anything else is said of the cell (acoplan reads "X,Y" in a voxel world as layer 0).
+void check_arity(const aco::Map& map, const CellArg& cell, const std::string& what) {
+  const std::string given = what + " (" + cell_text(cell) + ")";
+  const std::string size = std::to_string(map.width()) + "x" + std::to_string(map.height());
+  if (map.volumetric() && cell.size() != 3)
+    throw aco::Error(given + " has no z, but " + map.name() + " is a " + size + "x" + std::to_string(map.depth()) +
+                     " voxel world: give its cells as (x, y, z)");
+  if (!map.volumetric() && cell.size() != 2)
+    throw aco::Error(given + " has a z, but " + map.name() + " is a " + size +
+                     " 2D map: give its cells as (x, y) (a voxel world's cells have a z)");
 }
 
 // One run, as acoplan's: the keys over the pipeline file (a preset, a config file, or the
@@ -123,9 +174,9 @@ std::string cell_text(const std::pair<int, int>& cell) {
 // JSON, the pipeline's source, the map's cell size (the world units of the path per cell), and
 // what the run's picture needs and the JSON leaves out: each iteration's best length and, with
 // keep_pheromone, the final pheromone per edge.
-py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pair<int, int> start,
-               std::pair<int, int> goal, const aco::Keys& keys, const std::string& preset, const std::string& config,
-               std::int64_t threads, const std::optional<std::string>& max_memory, bool keep_pheromone) {
+py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, const CellArg& start, const CellArg& goal,
+               const aco::Keys& keys, const std::string& preset, const std::string& config, std::int64_t threads,
+               const std::optional<std::string>& max_memory, bool keep_pheromone) {
   aco::KeyedValues changes;
   changes.keys = keys;
   changes.keys["start"] = cell_text(start);
@@ -135,8 +186,12 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
   std::string source = preset;
   if (!config.empty())
     source = "none (config " + config + ")";
+  else if (source.empty() && file)
+    source = aco::default_preset(*file);
   else if (source.empty())
-    source = file ? aco::default_preset(*file) : std::get<ArrayMap>(map).heights.size() ? "terrain" : "robust";
+    source = std::get<ArrayMap>(map).heights.size()        ? "terrain"
+             : std::get<ArrayMap>(map).blocked.ndim() == 3 ? "voxel"
+                                                           : "robust";
   const aco::KeyedValues pipeline = config.empty() ? aco::preset_keys(source) : aco::config_file_keys(config);
   aco::RunSpec run = aco::resolve_run(aco::over_pipeline_file(pipeline, changes).keys, registry(), "--");
   run.colony.between_iterations = SignalCheck();  // Ctrl-C stops the colony after its iteration
@@ -148,16 +203,17 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, std::pa
     py::gil_scoped_release unlocked;  // plugins written in Python take it back (python bridge plugins)
     const aco::MemoryLimit memory(max_memory ? std::optional(aco::parse_memory_size(*max_memory, "max_memory"))
                                              : std::nullopt);
-    std::unique_ptr<aco::Map> owned;
-    aco::Cell from{start.first, start.second}, to{goal.first, goal.second};
-    if (file) {
-      aco::LoadedProblem problem = aco::load_problem(run.problem, &registry());
-      owned = std::move(problem.map);
-    } else {
-      owned = make_map(std::get<ArrayMap>(map), run.problem.terrain);
-      aco::check_cell(*owned, from, "start");
-      aco::check_cell(*owned, to, "goal");
-    }
+    // load_problem()'s steps, with the cells' count of coordinates checked first.
+    const std::unique_ptr<aco::Map> owned =
+        file ? aco::load_problem_map(run.problem, &registry()) : make_map(std::get<ArrayMap>(map), run.problem.terrain);
+    check_arity(*owned, start, "start");
+    check_arity(*owned, goal, "goal");
+    const aco::Cell from = to_cell(start), to = to_cell(goal);
+    aco::check_cell(*owned, from, "start");
+    aco::check_cell(*owned, to, "goal");
+    if (keep_pheromone && owned->volumetric())
+      throw aco::Error("svg_pheromone: the picture of a voxel world (" + owned->name() +
+                       ") draws no pheromone field; plan without it");
     if (const auto* terrain = dynamic_cast<const aco::TerrainMap*>(owned.get())) cell_size = terrain->cell_size();
     const aco::Graph graph = aco::build_graph(*owned, run.graph);
     const aco::ThreadLimit limit(threads);
@@ -386,7 +442,7 @@ py::dict read_trials(const std::filesystem::path& database) {
 using MapSource = std::variant<std::filesystem::path, ArrayMap>;
 
 // The map and graph a run planned on, made again from the map and the run's problem and graph keys
-// (its resolved config), as the run made them.
+// (its resolved config), as the run made them. A voxel world's pictures need no graph: none.
 struct PlannedOn {
   std::unique_ptr<aco::Map> map;
   aco::Graph graph;
@@ -411,25 +467,66 @@ PlannedOn planned_on(const MapSource& source, const aco::Keys& run_keys) {
   PlannedOn on;
   on.map = file ? aco::load_problem_map(run.problem, &registry())
                 : make_map(std::get<ArrayMap>(source), run.problem.terrain);
-  on.graph = aco::build_graph(*on.map, run.graph);
+  if (!on.map->volumetric()) on.graph = aco::build_graph(*on.map, run.graph);
   return on;
 }
 
-aco::NodeId node_of(const aco::Graph& graph, std::pair<int, int> cell, const std::string& what) {
-  const aco::Cell c{cell.first, cell.second};
-  if (!graph.map->contains(c)) throw aco::Error(what + " " + cell_text(cell) + " is outside the map");
-  return graph.node(c);
+aco::Cell cell_of(const aco::Map& map, const CellArg& cell, const std::string& what) {
+  check_arity(map, cell, what);
+  const aco::Cell c = to_cell(cell);
+  if (!map.contains(c)) throw aco::Error(what + " " + cell_text(cell) + " is outside the map");
+  return c;
+}
+
+aco::NodeId node_of(const aco::Graph& graph, const CellArg& cell, const std::string& what) {
+  return graph.node(cell_of(*graph.map, cell, what));
+}
+
+// The layers a run's voxel picture slices: the start's, the goal's and the path's highest.
+std::vector<int> run_layers(const aco::VoxelWorldView& view) {
+  std::vector<int> layers;
+  if (view.start) layers.push_back(view.start->z);
+  if (view.goal) layers.push_back(view.goal->z);
+  if (!view.grid_path.empty())
+    layers.push_back(
+        std::max_element(view.grid_path.begin(), view.grid_path.end(), [](auto& a, auto& b) { return a.z < b.z; })->z);
+  std::sort(layers.begin(), layers.end());
+  layers.erase(std::unique(layers.begin(), layers.end()), layers.end());
+  return layers;
+}
+
+// A voxel world's picture of a run (aco::render_voxel_svg): the isometric view with the paths,
+// start and goal, and a slice per layer of run_layers().
+std::string voxel_run_svg(const aco::Map& world, const std::string& title, const CellArg& start, const CellArg& goal,
+                          const std::vector<CellArg>& grid_path, const std::vector<std::vector<double>>& path) {
+  aco::VoxelWorldView view{world};
+  view.title = title;
+  view.start = cell_of(world, start, "start");
+  view.goal = cell_of(world, goal, "goal");
+  for (const auto& cell : grid_path) view.grid_path.push_back(cell_of(world, cell, "a grid path's cell"));
+  for (const auto& point : path) {
+    if (point.size() != 3) throw aco::Error("a path's point in a voxel world needs x, y and z");
+    view.path.emplace_back(point[0], point[1], point[2]);
+  }
+  aco::VoxelSvgStyle style;
+  style.slices = run_layers(view);
+  return aco::render_voxel_svg(view, style);
 }
 
 // acoplan's picture of a run (aco::render_svg), from the run's fields as aco.Result holds them.
-std::string run_svg(const MapSource& source, const aco::Keys& run_keys, std::pair<int, int> start,
-                    std::pair<int, int> goal, const std::vector<std::pair<int, int>>& grid_path,
-                    const std::vector<std::vector<double>>& path, bool solved, double length, std::uint64_t seed,
-                    const std::vector<double>& best_so_far, const std::vector<double>& iteration_best,
-                    const std::vector<double>& pheromone, double optimal_length) {
+std::string run_svg(const MapSource& source, const aco::Keys& run_keys, const CellArg& start, const CellArg& goal,
+                    const std::vector<CellArg>& grid_path, const std::vector<std::vector<double>>& path, bool solved,
+                    double length, std::uint64_t seed, const std::vector<double>& best_so_far,
+                    const std::vector<double>& iteration_best, const std::vector<double>& pheromone,
+                    double optimal_length) {
   const PlannedOn on = planned_on(source, run_keys);
+  const std::string title = aco::run_title(on.map->name(), solved, length, seed);
+  if (on.map->volumetric()) {
+    if (!pheromone.empty()) throw aco::Error("the picture of a voxel world draws no pheromone field");
+    return voxel_run_svg(*on.map, title, start, goal, grid_path, path);
+  }
   aco::RunPicture picture;
-  picture.title = aco::run_title(on.map->name(), solved, length, seed);
+  picture.title = title;
   picture.start = node_of(on.graph, start, "start");
   picture.goal = node_of(on.graph, goal, "goal");
   for (const auto& cell : grid_path) picture.grid_path.push_back(node_of(on.graph, cell, "a grid path's cell"));
@@ -447,8 +544,14 @@ std::string run_svg(const MapSource& source, const aco::Keys& run_keys, std::pai
   return aco::render_svg(on.graph, picture);
 }
 
+// The map alone; a voxel world isometric, with slices at its lowest, middle and highest layers.
 std::string map_svg(const MapSource& source, const aco::Keys& terrain_keys) {
-  return aco::render_map_svg(planned_on(source, terrain_keys).graph);
+  const PlannedOn on = planned_on(source, terrain_keys);
+  if (!on.map->volumetric()) return aco::render_map_svg(on.graph);
+  const aco::VoxelWorldView view{*on.map};
+  aco::VoxelSvgStyle style;
+  style.slices = aco::spread_layers(on.map->depth(), 3);
+  return aco::render_voxel_svg(view, style);
 }
 
 // One simulation as acosim runs it: the scenario with its run keys changed, and what happened.
@@ -538,11 +641,14 @@ PYBIND11_MODULE(_aco, m) {
   // A Moving AI .scen file's problems, with the map file acoplan --scen reads them on.
   m.def("scenarios", [](const std::filesystem::path& file) {
     py::list list;
+    // A .3dscen's cells are voxels (x, y, z); it states no bucket and no map size (0).
+    const auto cell = [](const aco::Scenario& s, aco::Cell c) {
+      return s.volumetric ? py::make_tuple(c.x, c.y, c.z) : py::make_tuple(c.x, c.y);
+    };
     for (const auto& s : aco::load_scenarios(file))
-      list.append(
-          py::dict(py::arg("map") = aco::scenario_map_file(file), py::arg("start") = std::pair(s.start.x, s.start.y),
-                   py::arg("goal") = std::pair(s.goal.x, s.goal.y), py::arg("optimal_length") = s.optimal_length,
-                   py::arg("bucket") = s.bucket, py::arg("width") = s.width, py::arg("height") = s.height));
+      list.append(py::dict(py::arg("map") = aco::scenario_map_file(file), py::arg("start") = cell(s, s.start),
+                           py::arg("goal") = cell(s, s.goal), py::arg("optimal_length") = s.optimal_length,
+                           py::arg("bucket") = s.bucket, py::arg("width") = s.width, py::arg("height") = s.height));
     return list;
   });
   m.def("plugins", &plugins);

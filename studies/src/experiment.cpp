@@ -47,6 +47,10 @@ Configuration default_pipeline(const std::filesystem::path& file, const YAML::No
     if (p.simulation) return Configuration();
     kinds.insert(aco::default_preset(p.map));
   }
+  if (kinds.size() > 1 && kinds.count("voxel"))
+    fail(file, doc["problems"],
+         "the problems mix voxel worlds and 2D maps, whose graphs no run shares (6, 18 or 26 moves in a voxel "
+         "world): study them in experiments of their own");
   if (kinds.size() > 1)
     fail(file, doc["problems"],
          "the problems mix 2D maps and height maps, whose recommended pipelines differ: name one "
@@ -156,8 +160,8 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
       } catch (const aco::Error& e) {
         fail(file, entry, e.what());
       }
-      p.start = cell(file, entry["start"], "start");
-      p.goal = cell(file, entry["goal"], "goal");
+      p.start = cell(file, entry["start"], "start", /*voxels=*/true);
+      p.goal = cell(file, entry["goal"], "goal", /*voxels=*/true);
       p.name = entry["name"] ? scalar(file, entry["name"], "name") : std::filesystem::path(map).stem().string();
       problems.push_back(std::move(p));
     }
@@ -440,16 +444,19 @@ std::string Experiment::relative_to_file(const std::filesystem::path& path) cons
   return (relative.empty() ? absolute : relative).generic_string();
 }
 
+std::vector<int> cell_json(aco::Cell c) {
+  if (c.z == 0) return {c.x, c.y};
+  return {c.x, c.y, c.z};
+}
+
 std::string Experiment::fingerprint(const aco::PluginRegistry& registry) const {
   nlohmann::json j;
   j["format"] = 1;
   j["repetitions"] = repetitions;
   j["seed"] = seed;
   for (const auto& p : problems) {
-    nlohmann::json problem = {{"name", p.name},
-                              {"map", relative_to_file(p.map)},
-                              {"start", {p.start.x, p.start.y}},
-                              {"goal", {p.goal.x, p.goal.y}}};
+    nlohmann::json problem = {
+        {"name", p.name}, {"map", relative_to_file(p.map)}, {"start", cell_json(p.start)}, {"goal", cell_json(p.goal)}};
     if (!p.map_format.empty()) problem["map-format"] = p.map_format;
     for (const auto& [name, value] : p.map_parameters.all()) problem["map." + name] = aco::to_string(value);
     // A scenario's world is its file's: the file named, not its contents (as a map is).

@@ -57,8 +57,8 @@ class Runner {
       const aco::Graph& graph = trials_.graph(static_cast<int>(i), base);
       const auto optimal = aco::astar(graph, graph.node(p.start), graph.node(p.goal));
       nlohmann::json setup = {{"map", e.relative_to_file(p.map)},
-                              {"start", {p.start.x, p.start.y}},
-                              {"goal", {p.goal.x, p.goal.y}},
+                              {"start", cell_json(p.start)},
+                              {"goal", cell_json(p.goal)},
                               {"reference", aco::describe(base.graph)}};
       if (p.bucket >= 0) setup["bucket"] = p.bucket;
       // The map's reader, when not the built-in one its ending names: the report reads it again.

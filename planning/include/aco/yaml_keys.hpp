@@ -23,7 +23,9 @@ std::string where(const std::filesystem::path& file, const YAML::Node& node);  /
 std::string scalar(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);
 int integer(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, int low);
 bool boolean(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);  // true or false
-Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);  // [x, y]
+// [x, y]; with `voxels` also [x, y, z] and the command line's "x,y" and "x,y,z" (an experiment's
+// problems, whose map may be a voxel world).
+Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, bool voxels = false);
 // Fails on a key of `map` that is not allowed, naming the nearest allowed one.
 void only_keys(const std::filesystem::path& file, const YAML::Node& map, const std::vector<std::string>& allowed,
                const std::string& what);

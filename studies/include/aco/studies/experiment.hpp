@@ -19,6 +19,10 @@
 
 namespace aco::studies {
 
+// A problem's cell as stored (fingerprint, problem setup): [x, y], or [x, y, z] where z is not 0
+// (a voxel world's cell above the ground), so 2D problems keep the fingerprints stored before.
+std::vector<int> cell_json(aco::Cell c);
+
 struct Problem {
   std::string name;  // unique within the experiment
   std::filesystem::path map;  // resolved against the experiment file's folder

@@ -856,6 +856,7 @@ def voxel(run: Run):
                "scenario unless the table says otherwise.\n\n"
                + table(["world", "scenarios", "pipeline", "solved", "grid gap % (mean)", "grid gap % (worst)",
                         "final / optimum (mean)", "time per run", "ns per ant step"], rows))
+    run.commands.clear()  # the memory region's stamp lists its own commands only
     memory = voxel_city_memory(run)
     return {(VOXEL, "voxel-quality"): quality, (VOXEL, "voxel-memory"): memory}
 

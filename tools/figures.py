@@ -868,8 +868,8 @@ def stored_voxel_optimum(scen: str, index: int) -> float:
 
 def voxel_city_memory(run: Run) -> str:
     """A 256x256x128 city planned under a 4 GiB limit: peak memory and time, from GNU time."""
-    folder = ROOT / "build/results/voxel"
-    folder.mkdir(parents=True, exist_ok=True)
+    folder = Path("build/results/voxel")  # from the project's root, as the tools run
+    (ROOT / folder).mkdir(parents=True, exist_ok=True)
     run.tool(BUILD / "tools/aco_mapgen", "--voxel", "city", "256x256x128", "7", folder, "3")
     scen = folder / "city256x256x128-s7.3dmap.3dscen"
     rows = []

@@ -2,15 +2,16 @@
 # tools/irace/tune-preset.sh prepares the presets' tuning on generated maps and irace accepts it
 # (--check: irace reads the scenario, the parameter file and the forbidden expressions, and runs
 # two configurations): robust's 69 instances from aco_mapgen --benchmark at 64 cells and more,
-# terrain's 24 from aco_terraingen with A*'s lengths, only terrain's search has `search`, and
-# robust-any-angle has robust's instances and adds walk-length.
+# terrain's 24 from aco_terraingen with A*'s lengths, only terrain's search has `search`,
+# robust-any-angle has robust's instances and adds walk-length, and voxel has 30 instances on
+# generated voxel worlds.
 #   tests/irace_tune_preset.sh ACOPLAN SOURCE_DIR WORK_DIR
 set -euo pipefail
 acoplan=$1 source=$2 work=$3
 fail() { echo "tune-preset: $*" >&2; exit 1; }
 rm -rf "$work" && mkdir -p "$work"
 export ACOPLAN="$acoplan"
-for preset in robust robust-any-angle terrain; do
+for preset in robust robust-any-angle terrain voxel; do
   "$source/tools/irace/tune-preset.sh" "$preset" "$work/$preset" --check > "$work/$preset.log" 2>&1 ||
     { cat "$work/$preset.log"; fail "$preset: tune-preset.sh failed"; }
   grep -q "Check successful" "$work/$preset.log" || { cat "$work/$preset.log"; fail "$preset: irace's check failed"; }
@@ -30,4 +31,7 @@ read -r _ map _ _ sx sy gx gy length < <(sed -n 2p "$work/terrain/maps/hills40-s
 astar="$("$acoplan" --planner astar --map "$work/terrain/maps/$map" --start "$sx,$sy" --goal "$gx,$gy" --json |
   /usr/bin/python3 -c 'import json, sys; print(json.load(sys.stdin)["length"])')"
 [ "$astar" = "$length" ] || fail "terrain scenario length $length, A* $astar"
-echo "tune-preset.sh: robust, robust-any-angle and terrain prepared, irace's check passed"
+# voxel: 30 instances on generated voxel worlds of other seeds than the bundled ones.
+[ "$(wc -l < "$work/voxel/instances.txt")" -eq 30 ] || fail "voxel: not 30 instances"
+! grep -q -- '-s1.3dmap' "$work/voxel/instances.txt" || fail "voxel: a bundled world's seed among the instances"
+echo "tune-preset.sh: robust, robust-any-angle, terrain and voxel prepared, irace's check passed"

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Tunes a recommended pipeline with irace on generated training maps, never on the bundled ones:
-#   tools/irace/tune-preset.sh robust|robust-any-angle|terrain TUNING_DIR [IRACE_OPTIONS...]
+#   tools/irace/tune-preset.sh robust|robust-any-angle|terrain|voxel TUNING_DIR [IRACE_OPTIONS...]
 # robust, the 2D preset: `aco_mapgen --benchmark` maps of seed TUNE_SEED (default 4242; the
 # bundled ones are seed 1), every family at 64 cells a side and more (random, room, maze: 64 and
 # 512; cave and hall: 256 and 512), scenarios 9, 14 and 19 of each (the middle and the long half).
 # terrain, the height-map preset: aco_terraingen hills of 40, 64, 100 and 128 cells a side (three
 # seeds each from TUNE_SEED), corner to corner both ways.
+# voxel, the voxel-world preset: aco_mapgen --voxel cities, forests and caves of 48x48x24 (two
+# seeds each from TUNE_SEED; the bundled worlds are seed 1 at 64x64x32), five scenarios each, with
+# the 26-neighbourhood.
 # robust-any-angle: robust's maps, judged by the final path: the preset's taut smoother runs and a
 # run costs its final path's gap to the exact any-angle optimum (--irace-cost
 # any-angle-gap-penalised); the search adds presets/any-angle.params (line-of-sight walks).
@@ -24,7 +27,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-usage="usage: $(basename "$0") robust|robust-any-angle|terrain TUNING_DIR [IRACE_OPTIONS...]"
+usage="usage: $(basename "$0") robust|robust-any-angle|terrain|voxel TUNING_DIR [IRACE_OPTIONS...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 preset="$1"
 dir="$2"
@@ -72,7 +75,18 @@ case "$preset" in
       done
     done
     cat "$here/presets/common.params" "$here/presets/terrain.params" > "$dir/search.params" ;;
-  *) echo "tune-preset.sh: no search space for preset '$preset' (robust, robust-any-angle or terrain)" >&2; exit 2 ;;
+  voxel)
+    for kind in city forest caves; do
+      for s in 0 1; do
+        world="$dir/maps/${kind}48x48x24-s$((seed + s)).3dmap"
+        [ -e "$world.3dscen" ] ||
+          "$root/build/release/tools/aco_mapgen" --voxel "$kind" 48x48x24 "$((seed + s))" "$dir/maps" 5 > /dev/null
+        for index in 0 1 2 3 4; do echo "$world.3dscen --scen-index $index" >> "$dir/instances.txt"; done
+      done
+    done
+    cp "$here/presets/common.params" "$dir/search.params"
+    final=(--neighbourhood 26) ;;
+  *) echo "tune-preset.sh: no search space for preset '$preset' (robust, robust-any-angle, terrain or voxel)" >&2; exit 2 ;;
 esac
 # Copies in TUNING_DIR: the tuning reads nothing of the tree while it runs.
 cp "$here/presets/fixed.ini" "$dir/fixed.ini"

@@ -28,6 +28,7 @@ class ArrayMap:
 # ("occupancy", blocked bool array, 1.0, name) or ("terrain", heights float array, cell size, name);
 # a voxel world's blocked array is 3D, [z, y, x]
 def map_arrays(file: _Path, terrain_keys: Dict[str, str]) -> Tuple[str, np.ndarray, float, str]: ...
+def voxel_map_text(map: ArrayMap) -> str: ...
 
 # (acoplan's --json object as text, the preset or config the keys were laid over, the cell size,
 # each iteration's best length, the final pheromone per edge if kept)

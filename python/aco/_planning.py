@@ -99,11 +99,7 @@ class Map:
         if self.volumetric:
             if ending != ".3dmap":
                 raise Error(f"{path}: a voxel world is saved as a Moving AI voxel map, a file ending in .3dmap")
-            # x, then y, then z, as aco::write_movingai_voxels (and HOG2) write them.
-            x, y, z = np.nonzero(self.array.transpose(2, 1, 0))
-            lines = [f"voxel {self.width} {self.height} {self.depth}"]
-            lines += [f"{a} {b} {c}" for a, b, c in zip(x.tolist(), y.tolist(), z.tolist())]
-            text = "\n".join(lines) + "\n"
+            text = _aco.voxel_map_text(_aco.ArrayMap(self.array, None, 1.0, self.name))
         elif ending == ".3dmap":
             raise Error(f"{path}: a .3dmap is a voxel world's file; this map is 2D (a voxel world is a 3D array)")
         elif self.kind == "terrain":

@@ -15,6 +15,7 @@
 #include <future>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
@@ -636,6 +637,16 @@ PYBIND11_MODULE(_aco, m) {
         return a;
       }));
   m.def("map_arrays", &map_arrays, py::arg("file"), py::arg("terrain_keys"));
+  // A voxel world's .3dmap text, as acoplan and aco_mapgen write it (aco::write_movingai_voxels).
+  m.def(
+      "voxel_map_text",
+      [](const ArrayMap& source) {
+        const auto world = make_map(source, {});
+        std::ostringstream text;
+        aco::write_movingai_voxels(dynamic_cast<const aco::VoxelMap&>(*world), text);
+        return text.str();
+      },
+      py::arg("map"));
   m.def("plan", &plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::arg("keys"), py::arg("preset"),
         py::arg("config"), py::arg("threads"), py::arg("max_memory"), py::arg("keep_pheromone"));
   // A Moving AI .scen file's problems, with the map file acoplan --scen reads them on.

@@ -11,6 +11,7 @@
 
 #include "aco/error.hpp"
 #include "aco/map.hpp"
+#include "aco/path.hpp"
 #include "aco/svg.hpp"
 #include "aco/studies/statistics.hpp"
 
@@ -575,8 +576,7 @@ std::string voxel_paths_svg(const aco::Map& map, const std::vector<MapPath>& pat
     std::vector<Eigen::Vector3d> points;
     for (std::size_t i = 0; i < path.points.size(); ++i)
       points.emplace_back(path.points[i][0], path.points[i][1], path.layers[i]);
-    double length = 0.0;
-    for (std::size_t i = 1; i < points.size(); ++i) length += (points[i] - points[i - 1]).norm();
+    const double length = aco::polyline_length(points);
     if (points.empty() || !(length < shortest)) continue;
     shortest = length;
     view.path = std::move(points);

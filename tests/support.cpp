@@ -17,6 +17,9 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <optional>
+#include <queue>
+#include <limits>
 
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
@@ -148,6 +151,49 @@ pid_t spawn(const std::vector<std::string>& argv, const std::vector<std::string>
 }
 
 }  // namespace
+
+bool reference_voxel_move(const aco::Map& map, aco::Cell a, int dx, int dy, int dz, bool corner_cutting) {
+  const aco::Cell b{a.x + dx, a.y + dy, a.z + dz};
+  if (!map.passable(a) || !map.passable(b)) return false;
+  if (corner_cutting) return true;
+  for (int x = std::min(a.x, b.x); x <= std::max(a.x, b.x); ++x)
+    for (int y = std::min(a.y, b.y); y <= std::max(a.y, b.y); ++y)
+      for (int z = std::min(a.z, b.z); z <= std::max(a.z, b.z); ++z)
+        if (!map.passable({x, y, z})) return false;
+  return true;
+}
+
+std::optional<double> reference_voxel_distance(const aco::Map& map, aco::Cell start, aco::Cell goal,
+                                               int neighbourhood) {
+  const std::int64_t w = map.width(), h = map.height(), d = map.depth();
+  const auto id = [&](aco::Cell c) { return (c.z * h + c.y) * w + c.x; };
+  std::vector<double> dist(static_cast<std::size_t>(w * h * d), std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, std::int64_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  dist[id(start)] = 0.0;
+  open.push({0.0, id(start)});
+  while (!open.empty()) {
+    const auto [g, v] = open.top();
+    open.pop();
+    if (g > dist[v]) continue;
+    const aco::Cell c{int(v % w), int(v / w % h), int(v / (w * h))};
+    if (c == goal) return g;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const int axes = (dx != 0) + (dy != 0) + (dz != 0);
+          if (axes == 0 || (neighbourhood == 6 && axes > 1) || (neighbourhood == 18 && axes > 2)) continue;
+          if (!reference_voxel_move(map, c, dx, dy, dz, false)) continue;
+          const aco::Cell n{c.x + dx, c.y + dy, c.z + dz};
+          const double step = std::sqrt(double(axes));
+          if (g + step < dist[id(n)]) {
+            dist[id(n)] = g + step;
+            open.push({g + step, id(n)});
+          }
+        }
+  }
+  return std::nullopt;
+}
 
 CommandResult run(const std::vector<std::string>& argv, const std::vector<std::string>& env) {
   const auto dir = fresh_dir();

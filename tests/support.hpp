@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <random>
 #include <set>
 #include <utility>
@@ -123,6 +124,15 @@ class RecordingUpdate final : public aco::PheromoneUpdate {
 // nodes, no node may repeat, it has arrived exactly when it ends at `goal`, and then its length
 // is the sum of its step costs.
 std::string walk_problem(const aco::Graph& graph, const aco::Ant& ant, aco::NodeId start, aco::NodeId goal);
+
+// Voxel worlds' move rule written out apart from aco::Graph (and from aco_mapgen): b = a + (dx, dy,
+// dz) free and, without corner cutting, every voxel of the box the move spans, as Moving AI's voxel
+// benchmarks define it.
+bool reference_voxel_move(const aco::Map& map, aco::Cell a, int dx, int dy, int dz, bool corner_cutting);
+// The exact shortest length from start to goal over those moves without corner cutting, costs 1,
+// sqrt 2 and sqrt 3 (neighbourhood 6, 18 or 26), by a Dijkstra of its own; nullopt if unreachable.
+std::optional<double> reference_voxel_distance(const aco::Map& map, aco::Cell start, aco::Cell goal,
+                                               int neighbourhood = 26);
 
 struct CommandResult {
   int exit_code = -1;

@@ -43,51 +43,6 @@ aco::VoxelMap random_world(int w, int h, int d, double density, unsigned seed) {
   return map;
 }
 
-// The move rule written out on its own: the target free and, without corner cutting, every voxel
-// of the box the move spans.
-bool reference_move(const aco::Map& map, aco::Cell a, int dx, int dy, int dz, bool corner_cutting) {
-  const aco::Cell b{a.x + dx, a.y + dy, a.z + dz};
-  if (!map.passable(a) || !map.passable(b)) return false;
-  if (corner_cutting) return true;
-  for (int x = std::min(a.x, b.x); x <= std::max(a.x, b.x); ++x)
-    for (int y = std::min(a.y, b.y); y <= std::max(a.y, b.y); ++y)
-      for (int z = std::min(a.z, b.z); z <= std::max(a.z, b.z); ++z)
-        if (!map.passable({x, y, z})) return false;
-  return true;
-}
-
-// Dijkstra over the reference moves: the exact optimum, independent of Graph.
-double reference_optimum(const aco::Map& map, aco::Cell start, aco::Cell goal, int neighbourhood) {
-  const int w = map.width(), h = map.height(), d = map.depth();
-  const auto id = [&](aco::Cell c) { return (c.z * h + c.y) * w + c.x; };
-  std::vector<double> dist(static_cast<std::size_t>(w) * h * d, INFINITY);
-  using Entry = std::pair<double, std::tuple<int, int, int>>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  dist[id(start)] = 0;
-  open.push({0.0, {start.x, start.y, start.z}});
-  while (!open.empty()) {
-    const auto [g, xyz] = open.top();
-    open.pop();
-    const aco::Cell c{std::get<0>(xyz), std::get<1>(xyz), std::get<2>(xyz)};
-    if (g > dist[id(c)]) continue;
-    if (c == goal) return g;
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const int axes = (dx != 0) + (dy != 0) + (dz != 0);
-          if (axes == 0 || (neighbourhood == 6 && axes > 1) || (neighbourhood == 18 && axes > 2)) continue;
-          if (!reference_move(map, c, dx, dy, dz, false)) continue;
-          const aco::Cell n{c.x + dx, c.y + dy, c.z + dz};
-          const double step = std::sqrt(double(axes));
-          if (g + step < dist[id(n)]) {
-            dist[id(n)] = g + step;
-            open.push({g + step, {n.x, n.y, n.z}});
-          }
-        }
-  }
-  return INFINITY;
-}
-
 }  // namespace
 
 TEST_CASE("a voxel world's graph has the 6, 18 and 26 moves, with costs and reverse edges by move", "[voxel][graph]") {
@@ -129,7 +84,7 @@ TEST_CASE("without corner cutting a 3D move needs every voxel of its box free, a
             INFO(aco::to_string(a) << " + (" << m.dx << "," << m.dy << "," << m.dz << "), corner cutting "
                                    << corner_cutting);
             CHECK((g.edge_by_move(g.node(a), m.dx, m.dy, m.dz) >= 0) ==
-                  reference_move(world, a, m.dx, m.dy, m.dz, corner_cutting));
+                  test::reference_voxel_move(world, a, m.dx, m.dy, m.dz, corner_cutting));
           }
   }
 }
@@ -151,12 +106,12 @@ TEST_CASE("3D A* finds the exact optimum of every neighbourhood", "[voxel][astar
     world.set_blocked(goal, false);
     for (int n : {6, 18, 26}) {
       const aco::Graph g = build(world, static_cast<aco::Neighbourhood>(n));
-      const double expected = reference_optimum(world, start, goal, n);
+      const auto expected = test::reference_voxel_distance(world, start, goal, n);
       const auto found = aco::astar(g, g.node(start), g.node(goal));
       INFO("seed " << seed << ", " << n << "-neighbourhood");
-      REQUIRE(found.has_value() == std::isfinite(expected));
+      REQUIRE(found.has_value() == expected.has_value());
       if (found) {
-        CHECK(found->length == Approx(expected).epsilon(1e-12));
+        CHECK(found->length == Approx(*expected).epsilon(1e-12));
         CHECK(aco::path_length(g, found->nodes) == Approx(found->length));
       }
     }

@@ -53,42 +53,6 @@ std::string file_bytes(const fs::path& file) {
 
 fs::path voxel_dir() { return test::data_dir() / "maps" / "voxel" / "warframe"; }
 
-// The benchmark's move rule, written here apart from aco_mapgen's: 26 neighbours, a step allowed
-// only if every voxel of the box it spans is free, costs 1, sqrt 2 and sqrt 3.
-std::optional<double> reference_distance(const aco::VoxelMap& m, aco::Cell start, aco::Cell goal) {
-  const std::int64_t w = m.width(), h = m.height();
-  auto id = [&](aco::Cell c) { return (std::int64_t{c.z} * h + c.y) * w + c.x; };
-  std::vector<double> dist(static_cast<std::size_t>(m.voxels()), std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, std::int64_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  dist[id(start)] = 0;
-  open.push({0, id(start)});
-  while (!open.empty()) {
-    const auto [d, v] = open.top();
-    open.pop();
-    if (d > dist[v]) continue;
-    const aco::Cell c{int(v % w), int(v / w % h), int(v / (w * h))};
-    if (c == goal) return d;
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          if (!dx && !dy && !dz) continue;
-          const aco::Cell n{c.x + dx, c.y + dy, c.z + dz};
-          bool free = true;
-          for (const int bx : {c.x, n.x})
-            for (const int by : {c.y, n.y})
-              for (const int bz : {c.z, n.z}) free = free && m.passable({bx, by, bz});
-          if (!free) continue;
-          const double step = std::sqrt(double(dx * dx + dy * dy + dz * dz));
-          if (d + step < dist[id(n)]) {
-            dist[id(n)] = d + step;
-            open.push({d + step, id(n)});
-          }
-        }
-  }
-  return std::nullopt;
-}
-
 // Whether `b` can be reached from `a` by face steps through free voxels.
 bool face_connected(const aco::VoxelMap& m, aco::Cell a, aco::Cell b) {
   const std::int64_t w = m.width(), h = m.height();
@@ -303,7 +267,7 @@ TEST_CASE("The Simple world's optimal lengths are the benchmark rule's: no corne
   const auto s = aco::load_voxel_scenarios(voxel_dir() / "Simple.3dmap.3dscen");
   for (std::size_t i = 0; i < s.size(); i += 2000) {
     INFO("scenario " << i);
-    const auto length = reference_distance(m, s[i].start, s[i].goal);
+    const auto length = test::reference_voxel_distance(m, s[i].start, s[i].goal);
     REQUIRE(length);
     CHECK(*length == Approx(s[i].optimal_length).margin(1e-7));
   }
@@ -336,7 +300,7 @@ TEST_CASE("aco_mapgen --voxel writes worlds of the size asked, the same bytes fo
       REQUIRE(m.passable(p.goal));
       CHECK_FALSE(p.start == p.goal);
       CHECK(face_connected(m, p.start, p.goal));
-      const auto length = reference_distance(m, p.start, p.goal);
+      const auto length = test::reference_voxel_distance(m, p.start, p.goal);
       REQUIRE(length);
       CHECK(*length == Approx(p.optimal_length).margin(1e-7));
       CHECK(p.ratio == Approx(p.optimal_length / octile3(p.start, p.goal)).margin(0.0006));

@@ -217,12 +217,11 @@ std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, Nod
     runs.push_back(std::move(o));
   }
   const auto optimal = astar(graph, start, goal);
-  for (auto& o : runs)
-    if (optimal) o.optimal_length = optimal->length;
-  // The exact any-angle optimum (Anya) and its corridor are the plane's: none in a voxel world.
-  if (graph.volumetric) return runs;
+  // The exact any-angle optimum and its corridor exist on occupancy grids only (none on terrains
+  // and voxel worlds: OptimalCorridor leaves them empty).
   const OptimalCorridor corridor(*graph.map, graph.cell(start), graph.cell(goal));
   for (auto& o : runs) {
+    if (optimal) o.optimal_length = optimal->length;
     if (corridor.optimum()) o.any_angle_length = corridor.optimum()->length;
     if (o.solved()) o.optimal_corridor = corridor.contains(o.path);
   }

@@ -104,6 +104,8 @@ PROGRAMS = (r"(acoplan|acobench|acosim|aco-plugin-check|aco-new-plugin|aco_mapge
             r"|tools/[\w.-]+|build/release/[\w/.-]+)")
 OUTPUT_OPTIONS = {"--svg", "--out", "--db", "--csv", "--html", "--dump-irace-params", "--shard", "--benchmark"}
 SLOTS = r"(init|heuristic|update|deadlock|smoother|local|map)"
+# Map generators: a path without a file extension is the folder they write into.
+GENERATORS = r"(.*/)?(aco_mapgen|aco_terraingen)"
 
 
 def inline_command_problems(path, display, root):
@@ -114,9 +116,12 @@ def inline_command_problems(path, display, root):
         words = span.group(1).split()
         if not re.fullmatch(PROGRAMS, words[0]) or len(words) < 2:
             continue
+        generator = re.fullmatch(GENERATORS, words[0])
         for previous, word in zip(words, words[1:]):
             word = word.rstrip(",;")
             if word.startswith("-") or "=" in word or previous in OUTPUT_OPTIONS or word.endswith(".db"):
+                continue
+            if generator and "." not in os.path.basename(word):
                 continue
             if not (re.search(r"\.(map|scen|yaml|ini|asc|pgm|txt|so|shapes)$", word) or "/" in word):
                 continue

@@ -4,7 +4,8 @@
 # Each FUNCTION becomes `std::string_view NS::FUNCTION()`. The text is split into raw string
 # literals of at most 60,000 bytes (compilers limit a literal's length: MSVC to 64 KiB, and g++
 # slows down on multi-megabyte ones) joined once, on the first call. A file holding the literals'
-# closing delimiter is refused.
+# closing delimiter is refused. The literals are plain char arrays, not constexpr string_views:
+# clang's constant evaluator gives up measuring a 60,000-byte literal (its step limit).
 cmake_minimum_required(VERSION 3.22)
 set(chunk_bytes 60000)
 set(delimiter "aco_embed")
@@ -24,7 +25,7 @@ foreach(input IN LISTS inputs)
   endif()
   string(LENGTH "${text}" length)
   get_filename_component(name "${path}" NAME)
-  string(APPEND code "\n// ${name}: ${length} bytes\nstd::string_view ${function}() {\n  static constexpr std::string_view chunks[] = {\n")
+  string(APPEND code "\n// ${name}: ${length} bytes\nstd::string_view ${function}() {\n  static const char* const chunks[] = {\n")
   if(length EQUAL 0)
     string(APPEND code "\"\",\n")
   endif()
@@ -34,7 +35,7 @@ foreach(input IN LISTS inputs)
     string(APPEND code "R\"${delimiter}(${chunk})${delimiter}\",\n")
     math(EXPR offset "${offset} + ${chunk_bytes}")
   endwhile()
-  string(APPEND code "  };\n  static const std::string text = [] {\n    std::string joined;\n    for (const auto chunk : chunks) joined += chunk;\n    return joined;\n  }();\n  return text;\n}\n")
+  string(APPEND code "  };\n  static const std::string text = [] {\n    std::string joined;\n    for (const char* chunk : chunks) joined += chunk;\n    return joined;\n  }();\n  return text;\n}\n")
 endforeach()
 string(APPEND code "\n}  // namespace ${NAMESPACE}\n")
 # Written only when changed, so that an unchanged input compiles nothing again.

@@ -35,12 +35,14 @@ PLUGINS = (os.path.join(os.path.dirname(os.path.dirname(ACOPLAN)), "lib/aco/plug
 
 
 def problems(scen_dir, per_scen, pattern):
-    """Up to per_scen scenarios of each .scen file, evenly spread over its list (which the
+    """Up to per_scen scenarios of each .scen or .3dscen file, evenly spread over its list (which the
     generators order from short to long)."""
     out = []
     for scen in sorted(glob.glob(os.path.join(scen_dir, "**", pattern), recursive=True)):
         with open(scen) as f:
-            count = sum(1 for line in f if line.strip() and not line.startswith("version"))
+            # A scenario line has 9 fields (.scen) or 8 (.3dscen); the headers ("version 1", and
+            # the world's name in a .3dscen) have fewer.
+            count = sum(1 for line in f if len(line.split()) >= 8)
         picks = sorted({round(i * (count - 1) / max(per_scen - 1, 1)) for i in range(per_scen)}) if per_scen > 1 else [count - 1]
         out += [(scen, i) for i in picks if i < count]
     return out

@@ -8,7 +8,8 @@
 # seeds each from TUNE_SEED), corner to corner both ways.
 # voxel, the voxel-world preset: aco_mapgen --voxel cities, forests and caves of 48x48x24 (two
 # seeds each from TUNE_SEED; the bundled worlds are seed 1 at 64x64x32), five scenarios each, with
-# the 26-neighbourhood.
+# the 26-neighbourhood. VOXEL_KINDS (default "city forest caves") and VOXEL_SIZE (default
+# 48x48x24) choose other worlds, e.g. caves only, where pipelines' gaps differ.
 # robust-any-angle: robust's maps, judged by the final path: the preset's taut smoother runs and a
 # run costs its final path's gap to the exact any-angle optimum (--irace-cost
 # any-angle-gap-penalised); the search adds presets/any-angle.params (line-of-sight walks).
@@ -76,11 +77,12 @@ case "$preset" in
     done
     cat "$here/presets/common.params" "$here/presets/terrain.params" > "$dir/search.params" ;;
   voxel)
-    for kind in city forest caves; do
+    size="${VOXEL_SIZE:-48x48x24}"
+    for kind in ${VOXEL_KINDS:-city forest caves}; do
       for s in 0 1; do
-        world="$dir/maps/${kind}48x48x24-s$((seed + s)).3dmap"
+        world="$dir/maps/${kind}${size}-s$((seed + s)).3dmap"
         [ -e "$world.3dscen" ] ||
-          "$root/build/release/tools/aco_mapgen" --voxel "$kind" 48x48x24 "$((seed + s))" "$dir/maps" 5 > /dev/null
+          "$root/build/release/tools/aco_mapgen" --voxel "$kind" "$size" "$((seed + s))" "$dir/maps" 5 > /dev/null
         for index in 0 1 2 3 4; do echo "$world.3dscen --scen-index $index" >> "$dir/instances.txt"; done
       done
     done

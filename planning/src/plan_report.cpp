@@ -28,7 +28,7 @@ nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::js
 
 std::string cell_text(const aco::Graph& g, aco::NodeId n) { return g.map->describe(g.cell(n)); }
 
-// " (x,y)", or " (x,y,z)" in a voxel world; the stream's precision.
+// " (x,y)", or " (x,y,z)" in a voxel world, to two decimals.
 std::string waypoint_text(const aco::Graph& g, const Eigen::Vector3d& p) {
   std::ostringstream text;
   text.precision(2);
@@ -346,13 +346,11 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
   if (!figures.empty()) out << "figures: " << figures << "\n";
   out << "path:    ";
   for (aco::NodeId n : o.search.path) out << " " << cell_text(graph, n);
-  if (!grid_path) {
-    out << std::setprecision(2);
+  if (!grid_path)
     for (const auto& p : o.path) out << waypoint_text(graph, p);
-  }
   out << "\n";
   if (grid_path && o.path != aco::to_waypoints(graph, o.search.path)) {
-    out << "smoothed:" << std::setprecision(2);
+    out << "smoothed:";
     for (const auto& p : o.path) out << waypoint_text(graph, p);
     out << "\n";
   }

@@ -133,7 +133,7 @@ YAML
 query() { /usr/bin/python3 -c 'import sqlite3, sys; print(sqlite3.connect(sys.argv[1]).execute(sys.argv[2]).fetchone()[0])' "$work/figures.db" "$1"; }
 [ "$(query "SELECT count(*) FROM properties WHERE name = 'update/rank_based_as.ranked_deposits' AND value > 0")" = 2 ]
 [ "$(query "SELECT count(*) FROM properties WHERE name = 'evaluations' AND value > 0")" = 2 ]
-head -1 "$work/figures-report/runs.csv" | grep -q ",evaluations,update/rank_based_as.ranked_deposits$"
+head -1 "$work/figures-report/runs.csv" | grep -q ",evaluations,optimal_corridor_walked,update/rank_based_as.ranked_deposits$"
 grep -q "^| ranked | update/rank_based_as.ranked_deposits | 2 |" "$work/figures-report/report.md"
 grep -q "^| ranked | update | rank_based_as | 1.0 | optimised | [0-9a-f]\{64\} | $work/rank_based_as/plugins/aco_update_rank_based_as.so |$" \
   "$work/figures-report/report.md"

@@ -236,6 +236,8 @@ void check_same_run(const aco::ColonyResult& a, const aco::ColonyResult& b) {
   CHECK(a.ant_steps == b.ant_steps);
   CHECK(a.pheromone == b.pheromone);
   CHECK(a.walks == b.walks);
+  CHECK(a.corridors == b.corridors);
+  CHECK(a.restarts == b.restarts);
 }
 
 void check_anytime_curves(const aco::SearchResult& r, std::uint64_t total_walks) {

@@ -76,7 +76,8 @@ aco::Context context(const aco::Graph& graph, aco::Cell start, aco::Cell goal, i
                      int max_iterations = 100);
 
 // Checks (Catch CHECKs) that two colony runs are the same bit for bit: path, length, curves,
-// arrivals, ant steps, walks and final pheromone, every double compared exactly (the times aside).
+// arrivals, ant steps, walks, final pheromone, corridors walked and restarts, every double compared
+// exactly (the times aside).
 void check_same_run(const aco::ColonyResult& a, const aco::ColonyResult& b);
 
 // Checks the anytime curves of a search: as long as its iterations, the time since the search

@@ -20,6 +20,7 @@
 #include "support.hpp"
 
 using Catch::Contains;
+using Catch::EndsWith;
 
 namespace {
 
@@ -195,15 +196,16 @@ TEST_CASE("acobench keeps the figures and the planners' properties per trial: da
   std::getline(csv, header);
   std::string fixed_columns;
   for (const auto& name : aco::studies::runs_csv_columns()) fixed_columns += (fixed_columns.empty() ? "" : ",") + name;
-  CHECK(header ==
-        fixed_columns +
-            ",deadlock/backtrack.backoffs,deadlock/figures.last_iteration,deadlock/figures.stuck,evaluations");
+  CHECK(header == fixed_columns +
+                      ",corridors,deadlock/backtrack.backoffs,deadlock/figures.last_iteration,deadlock/figures.stuck,"
+                      "evaluations,optimal_corridor_walked");
   int counted_rows = 0;
   while (std::getline(csv, line)) {
     if (line.find("\"counted\"") == std::string::npos) continue;
     ++counted_rows;
     CHECK_THAT(line, Contains(",,5,"));  // no backoffs (the baseline's robust preset backtracks), last_iteration, stuck
-    CHECK(line.back() == ',');  // no evaluations for the colony
+    // No evaluations for the colony; whether its walks took the optimum's corridor.
+    CHECK_THAT(line, EndsWith(",,0") || EndsWith(",,1"));
   }
   CHECK(counted_rows == 3);
   // The report: a table of each configuration's figures, the plugins it ran, and a warning of the

@@ -339,7 +339,7 @@ TEST_CASE("tools/irace/forbidden.txt names parameters of the dumped file", "[aco
     for (std::sregex_iterator it(code.begin(), code.end(), identifier), end; it != end; ++it)
       CHECK(names.count(it->str()));
   }
-  CHECK(expressions == 2);
+  CHECK(expressions == 5);
 }
 
 TEST_CASE("acoplan --irace-slots limits the tuned slots and --dump-irace-params writes files and honours --plugin-dir",
@@ -388,7 +388,7 @@ TEST_CASE("acoplan --irace-plugin dumps one plugin's parameters with its slot fi
   const auto one = test::acoplan({"--dump-irace-params", "-", "--irace-plugin", "update/max_min"});
   REQUIRE(one.exit_code == 0);
   const auto parameters = parse_irace_parameters(one.out);
-  REQUIRE(parameters.size() == 6);
+  REQUIRE(parameters.size() == 7);
   // A choice of one: irace passes --update max_min itself, and nothing is conditional on it.
   CHECK(parameters[0].name == "update");
   CHECK(parameters[0].values() == std::vector<std::string>{"max_min"});

@@ -14,11 +14,13 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
+#include <optional>
 
 #ifdef __linux__
 #include <sys/mman.h>
 #endif
 
+#include "aco/corridor.hpp"
 #include "aco/dead_ends.hpp"
 #include "aco/error.hpp"
 #include "aco/figures.hpp"
@@ -281,11 +283,11 @@ class Colony {
     ant.length = length;
   }
 
-  // The deadlock and update strategies learn from a finished iteration. Returns its best ant.
-  const Ant* learn(std::span<const Ant> ants) {
-    const Ant* iteration_best = nullptr;
-    for (const Ant& ant : ants)
-      if (ant.arrived && (iteration_best == nullptr || ant.length < iteration_best->length)) iteration_best = &ant;
+  // The deadlock and update strategies learn from a finished iteration; `corridors` holds each
+  // ant's corridor key (aco::CorridorKeys; none in voxel worlds). Returns the length of its
+  // shortest arrived walk (ColonyResult::none if none arrived).
+  double learn(std::span<Ant> ants, std::span<const std::uint64_t> corridors) {
+    const Ant* iteration_best = shortest(ants);
     if (iteration_best != nullptr && (!has_best_ || iteration_best->length < best_.length)) {
       best_ = *iteration_best;
       has_best_ = true;
@@ -295,16 +297,94 @@ class Colony {
         for (EdgeId e : best_.edges) best_grid_length_ += g_.cost(e);
       }
     }
-    if (s_.null_model != NullModel::none) return iteration_best;  // the twins learn nothing
-    const Iteration view{ants, iteration_best, best()};
+    const double length = iteration_best != nullptr ? iteration_best->length : ColonyResult::none;
+    if (s_.null_model != NullModel::none) return length;  // the twins learn nothing
+    const Ant* best_so_far = best();
+    if (epochs()) {
+      // The strategies see the epoch: its walks, the ones through settled corridors derated, and
+      // its best, so that a fresh trail is not marked with an earlier epoch's corridor at once.
+      if (s_.corridor_derate > 0.0 && !settled_.empty() && !corridors.empty())
+        for (std::size_t k = 0; k < ants.size(); ++k)
+          if (ants[k].arrived && std::binary_search(settled_.begin(), settled_.end(), corridors[k]))
+            ants[k].length *= 1.0 + s_.corridor_derate;
+      iteration_best = shortest(ants);
+      if (iteration_best != nullptr && (!has_epoch_best_ || iteration_best->length < epoch_best_.length)) {
+        epoch_best_ = *iteration_best;
+        epoch_best_corridor_ =
+            corridors.empty() ? 0 : corridors[static_cast<std::size_t>(iteration_best - ants.data())];
+        has_epoch_best_ = true;
+        epoch_improved_ = context_.iteration;
+      }
+      best_so_far = has_epoch_best_ ? &epoch_best_ : nullptr;
+    }
+    const Iteration view{ants, iteration_best, best_so_far};
     p_.deadlock->after_iteration(context_, view, trail_, forbidden_);
     if (check_every_hook_) check_pheromone(*p_.deadlock, "deadlock", "after_iteration()");
     forbidden_[context_.start] = forbidden_[context_.goal] = 0;
     publish_forbidden();
     p_.update->update_trail(context_, view, trail_);
     if (check_every_hook_) check_pheromone(*p_.update, "update", "update()");
+    if (s_.goal_memory) remember_ways_to_goal(ants);
     plain_ = trail_.plain();
-    return iteration_best;
+    if (s_.restart_after > 0 && context_.iteration - epoch_improved_ >= s_.restart_after) restart();
+    return length;
+  }
+
+  int restarts() const { return restarts_; }
+  // Epochs: restarts, or islands, whose colonies start afresh when they duplicate a corridor.
+  bool epochs() const { return s_.restart_after > 0 || s_.colonies > 1; }
+  // The epoch's best walk (derated length) and its corridor; none before one arrives in the epoch.
+  const Ant* epoch_best() const { return has_epoch_best_ ? &epoch_best_ : nullptr; }
+  std::uint64_t epoch_corridor() const { return epoch_best_corridor_; }
+
+  // ColonySettings::goal_memory, in ant order. A node's first distance is only remembered: on the
+  // first walks every node would improve, and marking all their edges would mark nothing.
+  void remember_ways_to_goal(std::span<const Ant> ants) {
+    if (to_goal_.empty()) to_goal_.assign(static_cast<std::size_t>(g_.num_nodes()), ColonyResult::none);
+    for (const Ant& ant : ants) {
+      if (!ant.arrived) continue;
+      double remaining = 0.0;
+      for (std::size_t i = ant.edges.size(); i-- > 0;) {
+        const EdgeId e = ant.edges[i];
+        remaining += g_.cost(e);
+        double& known = to_goal_[static_cast<std::size_t>(ant.nodes[i])];
+        if (!(remaining < known)) continue;
+        const bool seen = known != ColonyResult::none;
+        known = remaining;
+        if (!seen) continue;
+        const NodeId n = ant.nodes[i];
+        double strongest = 0.0;
+        for (EdgeId f = g_.edges_begin(n); f < g_.edges_end(n); ++f) strongest = std::max(strongest, trail_[f]);
+        if (trail_[e] < strongest) trail_.set(e, strongest);
+      }
+    }
+  }
+
+  static const Ant* shortest(std::span<const Ant> ants) {
+    const Ant* best = nullptr;
+    for (const Ant& ant : ants)
+      if (ant.arrived && (best == nullptr || ant.length < best->length)) best = &ant;
+    return best;
+  }
+
+  // A new epoch: the epoch's corridor is settled, and the init and update plugins start a new run
+  // on a fresh trail. The deadlock policy's forbidden nodes and the run's best path stay.
+  void restart() {
+    if (has_epoch_best_) {
+      const auto at = std::lower_bound(settled_.begin(), settled_.end(), epoch_best_corridor_);
+      if (at == settled_.end() || *at != epoch_best_corridor_) settled_.insert(at, epoch_best_corridor_);
+    }
+    has_epoch_best_ = false;
+    epoch_improved_ = context_.iteration + 1;
+    ++restarts_;
+    p_.init->begin_run(context_);
+    p_.update->begin_run(context_);
+    trail_ = Trail(tau_);
+    p_.init->initialize(context_, tau_);
+    check_pheromone(*p_.init, "init", "initialize()");
+    p_.update->start(context_, tau_);
+    check_pheromone(*p_.update, "update", "start()");
+    plain_ = trail_.plain();
   }
 
   // The last iteration's writes, which no ant reads: none may reach a result.
@@ -526,6 +606,15 @@ class Colony {
   Ant best_;
   double best_grid_length_ = 0.0;  // the sum of best_'s steps, which best_.length need not be
   bool has_best_ = false;
+  // Restarts (ColonySettings::restart_after): the epoch's best walk (lengths derated), its
+  // corridor, the iteration it was found in (or the epoch began), and the settled corridors.
+  Ant epoch_best_;
+  bool has_epoch_best_ = false;
+  std::uint64_t epoch_best_corridor_ = 0;
+  int epoch_improved_ = 0;
+  int restarts_ = 0;
+  std::vector<std::uint64_t> settled_;  // sorted
+  std::vector<double> to_goal_;  // goal_memory: per node, the shortest way on to the goal walked
 };
 
 // How many arrived ants of the iteration share the most common path.
@@ -611,12 +700,42 @@ using Clock = std::chrono::steady_clock;
 
 // The iteration loop shared by both searches: `construct` fills the forward colony's ants (and
 // the backward ones) for one iteration and returns the moves made.
+// Islands: the colonies ranked by their epoch's best walk, a colony whose best runs through a
+// better colony's corridor starts a new epoch (settling that corridor), so that they keep distinct
+// corridors. A colony with no walk in its epoch yet is left alone.
+void exchange_corridors(std::span<Colony* const> colonies) {
+  std::vector<Colony*> order(colonies.begin(), colonies.end());
+  const auto length = [](const Colony* c) { return c->epoch_best() ? c->epoch_best()->length : ColonyResult::none; };
+  std::stable_sort(order.begin(), order.end(), [&](const Colony* a, const Colony* b) { return length(a) < length(b); });
+  std::vector<std::uint64_t> kept;
+  for (Colony* colony : order) {
+    if (!colony->epoch_best()) continue;
+    if (std::find(kept.begin(), kept.end(), colony->epoch_corridor()) != kept.end())
+      colony->restart();
+    else
+      kept.push_back(colony->epoch_corridor());
+  }
+}
+
+// The iteration loop shared by the searches: `construct` fills every colony's ants for one
+// iteration and returns the moves made. `islands`: every colony walks from start to goal (the
+// islands search); otherwise colony 0 does, and a second colony is the bidirectional search's
+// backward one, whose walks are colony 0's reversed.
 template <class Construct>
-ColonyResult iterate(const ColonySettings& s, Clock::time_point started, std::span<Colony* const> colonies,
-                     std::span<std::vector<Ant>> ants, Construct&& construct) {
+ColonyResult iterate(const Graph& graph, const ColonySettings& s, Clock::time_point started,
+                     std::span<Colony* const> colonies, std::span<std::vector<Ant>> ants, bool islands,
+                     Construct&& construct) {
   ColonyResult result;
   const SearchClock clock;
   for (Colony* colony : colonies) colony->begin();
+  const std::size_t searching = islands ? colonies.size() : 1;
+  // The corridors walked; in voxel worlds corridors are not classes of one key.
+  std::optional<CorridorKeys> corridor_keys;
+  if (!graph.volumetric) corridor_keys.emplace(*graph.map);
+  std::vector<std::vector<std::uint64_t>> walk_corridors(searching);  // per ant of an iteration
+  for (std::size_t c = 0; c < searching && corridor_keys; ++c) walk_corridors[c].assign(ants[c].size(), 0);
+  std::vector<std::pair<double, std::uint64_t>> keyed_best(searching, {ColonyResult::none, 0});  // length, key
+  const std::uint64_t walks_per_iteration = static_cast<std::uint64_t>(s.ants) * (islands ? 1 : colonies.size());
   int last_improvement = 0;
   for (int it = 0; it < s.iterations; ++it) {
     for (Colony* colony : colonies) colony->prepare(it), colony->set_parallel(true);
@@ -624,21 +743,54 @@ ColonyResult iterate(const ColonySettings& s, Clock::time_point started, std::sp
     for (Colony* colony : colonies) colony->set_parallel(false);
 
     int arrived = 0;
-    for (const Ant& ant : ants[0]) arrived += ant.arrived ? 1 : 0;
-    const Ant* iteration_best = colonies[0]->learn(ants[0]);
-    for (std::size_t c = 1; c < colonies.size(); ++c) colonies[c]->learn(ants[c]);
-    if (iteration_best != nullptr && (!result.solved || iteration_best->length < result.length)) {
+    const auto walked_before = static_cast<std::ptrdiff_t>(result.corridors.size());
+    for (std::size_t c = 0; c < searching; ++c) {
+      // A walk's key is a pass over it: the ants' side by side, and a walk that retraces the
+      // colony's best path (most of them, once it converged) takes the best path's key.
+      const Ant* best = colonies[c]->best();
+      if (corridor_keys && best && best->length != keyed_best[c].first)
+        keyed_best[c] = {best->length, corridor_keys->key(graph, best->nodes)};
+      if (corridor_keys)
+        aco::parallel_for(
+            tbb::blocked_range<std::size_t>(0, ants[c].size()), [&](const tbb::blocked_range<std::size_t>& range) {
+              for (std::size_t k = range.begin(); k != range.end(); ++k) {
+                const Ant& ant = ants[c][k];
+                if (!ant.arrived) continue;
+                const bool retraces = best && ant.length == best->length && ant.nodes == best->nodes;
+                walk_corridors[c][k] = retraces ? keyed_best[c].second : corridor_keys->key(graph, ant.nodes);
+              }
+            });
+      for (std::size_t k = 0; k < ants[c].size(); ++k) {
+        if (!ants[c][k].arrived) continue;
+        ++arrived;
+        if (corridor_keys) result.corridors.push_back(walk_corridors[c][k]);
+      }
+    }
+    if (corridor_keys) {  // each corridor once, so that the list stays as short as the corridors are few
+      const auto fresh = result.corridors.begin() + walked_before;
+      std::sort(fresh, result.corridors.end());
+      std::inplace_merge(result.corridors.begin(), fresh, result.corridors.end());
+      result.corridors.erase(std::unique(result.corridors.begin(), result.corridors.end()), result.corridors.end());
+    }
+    double iteration_best = ColonyResult::none;
+    for (std::size_t c = 0; c < colonies.size(); ++c) {
+      const double length =
+          colonies[c]->learn(ants[c], c < searching ? std::span<const std::uint64_t>(walk_corridors[c])
+                                                    : std::span<const std::uint64_t>());
+      if (c < searching) iteration_best = std::min(iteration_best, length);
+    }
+    if (islands && corridor_keys && (it + 1) % s.exchange_every == 0) exchange_corridors(colonies);
+    if (iteration_best != ColonyResult::none && (!result.solved || iteration_best < result.length)) {
       result.solved = true;
-      result.length = iteration_best->length;
+      result.length = iteration_best;
       result.best_iteration = it + 1;
       last_improvement = it + 1;
     }
-    result.iteration_best.push_back(iteration_best ? iteration_best->length : ColonyResult::none);
+    result.iteration_best.push_back(iteration_best);
     result.best_so_far.push_back(result.length);
     result.arrived.push_back(arrived);
     result.iterations = it + 1;
-    clock.record(result,
-                 static_cast<std::uint64_t>(result.iterations) * static_cast<std::uint64_t>(s.ants) * colonies.size());
+    clock.record(result, static_cast<std::uint64_t>(result.iterations) * walks_per_iteration);
 
     if (s.stagnation > 0 && it + 1 - last_improvement >= s.stagnation) {
       result.stopped_by = StopReason::stagnation;
@@ -656,8 +808,15 @@ ColonyResult iterate(const ColonySettings& s, Clock::time_point started, std::sp
     if (s.between_iterations && it + 1 < s.iterations) s.between_iterations();
   }
   for (Colony* colony : colonies) colony->check_final_pheromone();
-  if (result.solved) result.path = colonies[0]->best()->nodes;
-  result.pheromone = colonies[0]->take_pheromone();
+  // The colony holding the shortest path (the first of equals); its pheromone is the picture's.
+  std::size_t winner = 0;
+  for (std::size_t c = 1; c < searching; ++c)
+    if (colonies[c]->best() &&
+        (!colonies[winner]->best() || colonies[c]->best()->length < colonies[winner]->best()->length))
+      winner = c;
+  if (result.solved) result.path = colonies[winner]->best()->nodes;
+  for (Colony* colony : colonies) result.restarts += colony->restarts();
+  result.pheromone = colonies[winner]->take_pheromone();
   return result;
 }
 
@@ -667,7 +826,7 @@ ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Col
   std::vector<std::vector<Ant>> ants(1, std::vector<Ant>(s.ants));
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&colony};
-  return iterate(s, started, colonies, ants, [&](int it) {
+  return iterate(graph, s, started, colonies, ants, false, [&](int it) {
     aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       Scratch& local = colony.local_scratch();
       for (int k = range.begin(); k != range.end(); ++k) {
@@ -687,7 +846,7 @@ ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, co
   std::vector<std::vector<Ant>> ants(2, std::vector<Ant>(s.ants));
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&forward, &backward};
-  return iterate(s, started, colonies, ants, [&](int it) {
+  return iterate(graph, s, started, colonies, ants, false, [&](int it) {
     aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       Scratch& fs = forward.local_scratch();
       Scratch& bs = backward.local_scratch();
@@ -695,6 +854,38 @@ ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, co
         const auto a = 2 * static_cast<std::uint64_t>(k), pairs = 2 * static_cast<std::uint64_t>(s.ants);
         Rng frng = walk_stream(s, it, a, pairs), brng = walk_stream(s, it, a + 1, pairs);
         steps[k] = construct_pair(graph, forward, backward, ants[0][k], ants[1][k], fs, bs, frng, brng);
+      }
+    });
+    return std::accumulate(steps.begin(), steps.end(), std::uint64_t{0});
+  });
+}
+
+// Islands: colony c walks ants [first[c], first[c + 1]) of each iteration, with the random
+// streams those ants have in a single colony.
+ColonyResult run_islands(const Graph& graph, NodeId start, NodeId goal, std::span<const ColonyStrategies> pipelines,
+                         const ColonySettings& s, bool check_every_hook, Clock::time_point started) {
+  const int count = s.colonies;
+  std::vector<std::unique_ptr<Colony>> owned;
+  std::vector<Colony*> colonies;
+  std::vector<std::vector<Ant>> ants;
+  std::vector<int> first{0};
+  for (int c = 0; c < count; ++c) {
+    ColonySettings own = s;
+    own.ants = s.ants / count + (c < s.ants % count ? 1 : 0);
+    owned.push_back(
+        std::make_unique<Colony>(graph, start, goal, pipelines[static_cast<std::size_t>(c)], own, check_every_hook));
+    colonies.push_back(owned.back().get());
+    ants.emplace_back(static_cast<std::size_t>(own.ants));
+    first.push_back(first.back() + own.ants);
+  }
+  std::vector<std::uint64_t> steps(s.ants, 0);
+  return iterate(graph, s, started, colonies, ants, true, [&](int it) {
+    aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
+      for (int k = range.begin(); k != range.end(); ++k) {
+        const auto c = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), k) - first.begin() - 1);
+        Rng rng = walk_stream(s, it, static_cast<std::uint64_t>(k), static_cast<std::uint64_t>(s.ants));
+        steps[k] =
+            colonies[c]->construct(ants[c][static_cast<std::size_t>(k - first[c])], colonies[c]->local_scratch(), rng);
       }
     });
     return std::accumulate(steps.begin(), steps.end(), std::uint64_t{0});
@@ -718,12 +909,23 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const ColonyStr
   if (!(s.time_limit >= 0 && std::isfinite(s.time_limit))) throw Error("time-limit must be finite and >= 0");
   if (!(s.same_path_fraction > 0 && s.same_path_fraction <= 1)) throw Error("same-path-fraction must be in (0, 1]");
   if (!(s.q0 >= 0 && s.q0 <= 1)) throw Error("q0 must be in [0, 1]");
+  if (s.restart_after < 0) throw Error("restart-after must be >= 0");
+  if (!(s.corridor_derate >= 0 && std::isfinite(s.corridor_derate)))
+    throw Error("corridor-derate must be finite and >= 0");
+  if (s.colonies < 1 || s.colonies > s.ants)
+    throw Error("colonies must be between 1 and the number of ants (" + std::to_string(s.ants) + ")");
+  if (s.exchange_every < 1) throw Error("exchange-every must be at least 1");
+  if (s.colonies > 1 && s.bidirectional)
+    throw Error("colonies > 1 works with the single search only (--search single)");
+  if (s.colonies > 1 && s.same_path_stop)
+    throw Error("same-path-stop works with one colony only: the islands' ants walk apart on purpose");
 }
 
 }  // namespace
 
 ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
-                        const ColonySettings& settings, const ColonyStrategies* backward) {
+                        const ColonySettings& settings, const ColonyStrategies* backward,
+                        std::span<const ColonyStrategies> islands) {
   check_inputs(graph, start, goal, pipeline, settings);
   if (start == goal) {
     ColonyResult trivial;
@@ -738,11 +940,27 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Col
     if (backward->init == pipeline.init || backward->update == pipeline.update)
       throw Error("the bidirectional search's two colonies must not share strategy objects (they keep per-run state)");
   }
+  std::vector<ColonyStrategies> island_pipelines{pipeline};
+  if (settings.colonies > 1) {
+    if (islands.size() + 1 != static_cast<std::size_t>(settings.colonies))
+      throw Error("colonies = " + std::to_string(settings.colonies) + " needs " +
+                  std::to_string(settings.colonies - 1) + " more sets of strategy objects, one per further colony");
+    for (const ColonyStrategies& more : islands) {
+      if (!more.init || !more.heuristic || !more.update || !more.deadlock)
+        throw Error("every colony of the islands needs an init, a heuristic, an update and a deadlock strategy");
+      for (const ColonyStrategies& other : island_pipelines)
+        if (more.init == other.init || more.update == other.update || more.deadlock == other.deadlock)
+          throw Error("the islands' colonies must not share strategy objects (they keep per-run state)");
+      island_pipelines.push_back(more);
+    }
+  }
   // A time limit counts from here: the colony's setup (its per-edge fields, dead-end filling) too.
   const Clock::time_point started = Clock::now();
   const auto run = [&](const ColonySettings& s, bool check_every_hook) {
-    return s.bidirectional ? run_bidirectional(graph, start, goal, pipeline, *backward, s, check_every_hook, started)
-                           : run_single(graph, start, goal, pipeline, s, check_every_hook, started);
+    if (s.bidirectional)
+      return run_bidirectional(graph, start, goal, pipeline, *backward, s, check_every_hook, started);
+    if (s.colonies > 1) return run_islands(graph, start, goal, island_pipelines, s, check_every_hook, started);
+    return run_single(graph, start, goal, pipeline, s, check_every_hook, started);
   };
   try {
     return run(settings, false);

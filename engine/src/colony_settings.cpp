@@ -42,6 +42,20 @@ const SettingsTable<ColonySettings>& colony_table() {
       field("sight-limit", &S::sight_limit, "0:1000000",
             "line-of-sight walks: the longest segment, in cells, checked from a waypoint (0 = no limit); a longer "
             "one ends a segment there"),
+      field("restart-after", &S::restart_after, "0:100000000",
+            "start the trail afresh after this many iterations without a shorter walk in the current epoch, and "
+            "settle the epoch's corridor (0 = never; the result is the shortest walk of every epoch)"),
+      field("corridor-derate", &S::corridor_derate, "0:10",
+            "with restart-after: a walk through a corridor an earlier epoch settled in is ranked and rewarded as if "
+            "1 + this times as long, so that the next epoch settles elsewhere (0 = plain restarts)"),
+      field("colonies", &S::colonies, "1:8",
+            "islands: this many colonies with trails of their own share the ants; every exchange-every iterations a "
+            "colony whose best walk runs through a better colony's corridor starts afresh (1 = one colony)"),
+      field("exchange-every", &S::exchange_every, "1:100000000",
+            "islands: iterations between two comparisons of the colonies' corridors"),
+      field("goal-memory", &S::goal_memory, "",
+            "every node keeps the shortest way on to the goal that arrived walks took from it; a walk that goes on "
+            "shorter from a node raises its edge there to the node's strongest pheromone (after the update)"),
       choice(
           "null-model", &S::null_model, {"none", "no-learning", "restarts"},
           {NullModel::none, NullModel::no_learning, NullModel::restarts},

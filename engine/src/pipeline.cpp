@@ -1,6 +1,7 @@
 #include "aco/pipeline.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "aco/error.hpp"
 
@@ -31,6 +32,16 @@ ColonyResult run_pipeline(PluginRegistry& registry, const PipelineSpec& spec, co
                           FigureSink* figures) {
   ColonyStrategies forward = pipeline.strategies();
   forward.figures = figures;
+  if (settings.colonies > 1) {
+    std::vector<PipelinePlugins> more;
+    std::vector<ColonyStrategies> islands;
+    for (int c = 1; c < settings.colonies; ++c) more.push_back(instantiate(registry, spec));
+    for (const PipelinePlugins& plugins : more) {
+      islands.push_back(plugins.strategies());
+      islands.back().figures = figures;
+    }
+    return run_colony(graph, start, goal, forward, settings, nullptr, islands);
+  }
   if (!settings.bidirectional) return run_colony(graph, start, goal, forward, settings);
   const PipelinePlugins backward = instantiate(registry, spec);
   ColonyStrategies backward_colony = backward.strategies();

@@ -1,15 +1,16 @@
 #include "aco/corridor.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 
 namespace aco {
 
-CorridorTest::CorridorTest(const Map& map) {
+std::vector<Cell> obstacles_inside(const Map& map) {
   const int w = map.width(), h = map.height();
   std::vector<std::uint8_t> seen(static_cast<std::size_t>(w) * h, 0);
-  std::vector<Cell> stack;
+  std::vector<Cell> stack, inside;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x) {
       const Cell first{x, y};
@@ -32,10 +33,15 @@ CorridorTest::CorridorTest(const Map& map) {
             }
           }
       }
-      // Inside the cell, off every half-cell line a grid path or an any-angle path runs along:
-      // no path passes through it, and the ray from it meets path vertices only by accident.
-      if (!edge) points_.emplace_back(x + 0.1875, y + 0.3125);
+      if (!edge) inside.push_back(first);
     }
+  return inside;
+}
+
+CorridorTest::CorridorTest(const Map& map) {
+  // Inside the cell, off every half-cell line a grid path or an any-angle path runs along:
+  // no path passes through it, and the ray from it meets path vertices only by accident.
+  for (const Cell& c : obstacles_inside(map)) points_.emplace_back(c.x + 0.1875, c.y + 0.3125);
   std::sort(points_.begin(), points_.end(), [](const auto& a, const auto& b) { return a.y() < b.y(); });
 }
 
@@ -66,15 +72,89 @@ bool CorridorTest::same(std::span<const Eigen::Vector3d> a, std::span<const Eige
   return std::all_of(winding.begin(), winding.end(), [](int n) { return n == 0; });
 }
 
+namespace {
+
+// SplitMix64's finaliser: well-spread keys from the obstacles' numbers, the same on every run.
+std::uint64_t obstacle_key(std::uint64_t n) {
+  std::uint64_t z = n * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+}  // namespace
+
+CorridorKeys::CorridorKeys(const Map& map)
+    : width_(map.width()),
+      height_(map.height()),
+      up_to_(static_cast<std::size_t>(map.width()) * static_cast<std::size_t>(map.height()), 0) {
+  const std::vector<Cell> cells = obstacles_inside(map);
+  obstacles_ = cells.size();
+  std::uint64_t n = 0;
+  for (const Cell& c : cells) up_to_[static_cast<std::size_t>(c.y) * width_ + c.x] = obstacle_key(++n);
+  for (int y = 0; y < height_; ++y)  // running sums along each row
+    for (int x = 1; x < width_; ++x)
+      up_to_[static_cast<std::size_t>(y) * width_ + x] += up_to_[static_cast<std::size_t>(y) * width_ + x - 1];
+}
+
+// The keys of the rays a segment crosses, signed. The ray of the obstacle in cell (ox, oy) runs
+// along y = oy - epsilon from x = ox on: a segment from a to b crosses it towards larger y when
+// ay < oy <= by and the segment's x at y = oy is larger than ox (it cannot equal ox, the centre
+// of a blocked cell, on a valid path), and back when by < oy <= ay.
+std::uint64_t CorridorKeys::crossing(double ax, double ay, double bx, double by) const {
+  if (ay == by) return 0;
+  const bool down = by > ay;  // towards larger y
+  const double low = down ? ay : by, high = down ? by : ay;
+  std::uint64_t sum = 0;
+  const auto first = static_cast<std::int64_t>(std::max(0.0, std::floor(low) + 1.0));
+  const auto last = static_cast<std::int64_t>(std::min<double>(height_ - 1.0, std::floor(high)));
+  for (std::int64_t r = first; r <= last; ++r) {
+    // The obstacles of the row left of x: those with ox <= floor(x) (ox == x is impossible).
+    const double x = std::floor(ax + (bx - ax) * (double(r) - ay) / (by - ay));
+    if (x >= 0.0) sum += keys_up_to(static_cast<int>(r), static_cast<int>(std::min<double>(x, width_ - 1.0)));
+  }
+  return down ? sum : std::uint64_t{0} - sum;
+}
+
+std::uint64_t CorridorKeys::key(std::span<const Eigen::Vector3d> path) const {
+  std::uint64_t sum = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    sum += crossing(path[i].x(), path[i].y(), path[i + 1].x(), path[i + 1].y());
+  return sum;
+}
+
+// crossing()'s rule, with a one-row step (every step of the 4- and 8-neighbourhoods) in integers:
+// it crosses the rays of the lower cell's row (larger y) at that cell's x.
+std::uint64_t CorridorKeys::key(const Graph& graph, std::span<const NodeId> walk) const {
+  std::uint64_t sum = 0;
+  for (std::size_t i = 0; i + 1 < walk.size(); ++i) {
+    const Cell a = graph.cell(walk[i]), b = graph.cell(walk[i + 1]);
+    if (b.y == a.y + 1)
+      sum += keys_up_to(b.y, b.x);
+    else if (b.y == a.y - 1)
+      sum -= keys_up_to(a.y, a.x);
+    else if (a.y != b.y)
+      sum += crossing(a.x, a.y, b.x, b.y);
+  }
+  return sum;
+}
+
 OptimalCorridor::OptimalCorridor(const Map& map, Cell start, Cell goal) {
   if (!dynamic_cast<const OccupancyGrid*>(&map)) return;
   optimum_ = any_angle_optimum(map, start, goal);
-  if (optimum_) test_.emplace(map);
+  if (!optimum_) return;
+  test_.emplace(map);
+  optimum_key_ = CorridorKeys(map).key(optimum_->waypoints);
 }
 
 std::optional<bool> OptimalCorridor::contains(std::span<const Eigen::Vector3d> path) const {
   if (!optimum_ || path.empty()) return std::nullopt;
   return test_->same(path, optimum_->waypoints);
+}
+
+std::optional<bool> OptimalCorridor::among(std::span<const std::uint64_t> corridor_keys) const {
+  if (!optimum_) return std::nullopt;
+  return std::find(corridor_keys.begin(), corridor_keys.end(), optimum_key_) != corridor_keys.end();
 }
 
 }  // namespace aco

@@ -207,6 +207,12 @@ std::vector<std::pair<std::string, Stats>> measures(const std::vector<PlanRun>& 
 
 }  // namespace
 
+void note_optimal_corridor_walked(const OptimalCorridor& corridor, PlanOutcome& run) {
+  if (!run.properties.count("corridors")) return;
+  if (const auto walked = corridor.among(run.corridors))
+    run.properties["optimal_corridor_walked"] = std::int64_t{*walked ? 1 : 0};
+}
+
 std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal,
                                const RunSpec& run, std::int64_t count) {
   RunSpec seeded = run;
@@ -224,6 +230,7 @@ std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, Nod
     if (optimal) o.optimal_length = optimal->length;
     if (corridor.optimum()) o.any_angle_length = corridor.optimum()->length;
     if (o.solved()) o.optimal_corridor = corridor.contains(o.path);
+    note_optimal_corridor_walked(corridor, o);
   }
   return runs;
 }
@@ -319,12 +326,18 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
         << std::setprecision(2) << 100.0 * (o.length / *o.any_angle_length - 1.0) << " % longer";
     if (o.optimal_corridor)
       out << ", " << (*o.optimal_corridor ? "in its corridor" : "in ANOTHER corridor than the optimum's");
+    const auto walked = o.properties.find("optimal_corridor_walked");
+    if (o.optimal_corridor == false && walked != o.properties.end())
+      out << (std::get<std::int64_t>(walked->second) ? " (its walks took the optimum's corridor, then left it)"
+                                                     : " (no walk took the optimum's corridor)");
     out << "\n" << std::setprecision(4);
   }
   if (planner == "aco") {
     out << "search:   best found after " << o.search.best_iteration << " of " << o.search.iterations
-        << " iterations (stopped by " << o.text("stopped_by") << "), " << o.count("ant_steps") << " ant steps, "
-        << std::setprecision(2) << o.time_ms << " ms";
+        << " iterations (stopped by " << o.text("stopped_by") << "), " << o.count("ant_steps") << " ant steps, ";
+    if (o.properties.count("corridors"))
+      out << o.count("corridors") << (o.count("corridors") == 1 ? " corridor" : " corridors") << " walked, ";
+    out << std::setprecision(2) << o.time_ms << " ms";
     if (o.count("ant_steps") > 0)
       out << " (" << std::setprecision(1) << o.time_ms * 1e6 / double(o.count("ant_steps")) << " ns per ant step)";
     out << "\n";

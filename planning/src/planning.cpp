@@ -26,6 +26,10 @@ void run_aco(const PlanContext& c, PlanOutcome& o) {
       run_pipeline(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony, &c.figures);
   o.properties["ant_steps"] = static_cast<std::int64_t>(colony.ant_steps);
   o.properties["stopped_by"] = std::string(to_string(colony.stopped_by));
+  if (!c.graph.volumetric) o.properties["corridors"] = static_cast<std::int64_t>(colony.corridors.size());
+  if (c.run.colony.restart_after > 0 || c.run.colony.colonies > 1)
+    o.properties["restarts"] = static_cast<std::int64_t>(colony.restarts);
+  o.corridors = std::move(colony.corridors);
   o.iteration_best = std::move(colony.iteration_best);
   o.pheromone = std::move(colony.pheromone);
   o.search = std::move(static_cast<SearchResult&>(colony));

@@ -64,6 +64,11 @@ std::vector<Column> columns() {
       {"gap %", [](const Result& r) { return fixed(r.gap, 2); }},
       {"over any-angle %", [](const Result& r) { return fixed(r.over_any_angle, 2); }},
       {"optimal corridor %", [](const Result& r) { return fixed(100 * r.optimal_corridor, 0); }},
+      {"other corridor: never walked / left",
+       [](const Result& r) {
+         return r.corridor_left < 0 ? std::string("-")
+                                    : std::to_string(r.corridor_never_walked) + " / " + std::to_string(r.corridor_left);
+       }},
       {"turns", [](const Result& r) { return fixed(r.turns, 1); }},
       {"best it.", [](const Result& r) { return fixed(r.best_iteration, 1); }},
       {"time ms", [](const Result& r) { return number(r.time_ms, 3); }},
@@ -254,18 +259,6 @@ std::vector<Table> pheromone_tables(const Analysis& a) {
                       std::to_string(better[i]) + " / " + std::to_string(worse[i]), verdict});
   }
   return {t};
-}
-
-// A property's value as a number, if it is one (a count, a real or a flag).
-std::optional<double> numeric(const aco::ParamValue& value) {
-  return std::visit(
-      [](const auto& v) -> std::optional<double> {
-        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>)
-          return std::nullopt;
-        else
-          return static_cast<double>(v);
-      },
-      value);
 }
 
 // Two final lengths this close (relative) are a tie: the same path up to rounding, as when both

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <variant>
 #include <nlohmann/json.hpp>
 
 #include "aco/error.hpp"
@@ -14,6 +15,18 @@ double gap_percent(double grid_length, double optimal) { return 100.0 * (grid_le
 double gap_percent(const TrialRecord& t, double optimal) { return gap_percent(t.grid_length, optimal); }
 
 bool unmeasured(const TrialRecord& t) { return !t.simulation && t.iterations > 0 && t.elapsed_s.empty(); }
+
+// A property's value as a number, if it is one (a count, a real or a flag).
+std::optional<double> numeric(const aco::ParamValue& value) {
+  return std::visit(
+      [](const auto& v) -> std::optional<double> {
+        if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::string>)
+          return std::nullopt;
+        else
+          return static_cast<double>(v);
+      },
+      value);
+}
 
 double mean_of(const std::vector<double>& v) {
   if (v.empty()) return NAN;
@@ -63,6 +76,12 @@ Analysis analyse(const ResultsDb& db) {
         if (optimal > 0 && t->grid_length > 0) r.gaps.push_back(gap_percent(*t, optimal));
         if (any_angle > 0) over_any_angle.push_back(100.0 * (t->length / any_angle - 1.0));
         if (t->optimal_corridor) in_corridor.push_back(*t->optimal_corridor ? 1.0 : 0.0);
+        const auto walked = t->properties.find("optimal_corridor_walked");
+        if (walked != t->properties.end()) {
+          if (r.corridor_left < 0) r.corridor_never_walked = r.corridor_left = 0;
+          if (t->optimal_corridor == false)
+            ++(numeric(walked->second) > 0.0 ? r.corridor_left : r.corridor_never_walked);
+        }
         if (!r.best || t->length < r.best->length) r.best = t;
       }
       r.length = summarize(r.lengths);

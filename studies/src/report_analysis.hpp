@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,6 +31,10 @@ struct Result {
   // any-angle optimum, %: NaN unless the problem has one.
   double over_any_angle = NAN;
   double optimal_corridor = NAN;  // share of the solved trials whose path is in the optimum's corridor
+  // The solved trials in another corridor than the optimum's, by whether any walk of theirs took the
+  // optimum's (property optimal_corridor_walked): never explored, or explored and then left.
+  // -1: no trial says (another planner, or runs stored before the property).
+  int corridor_never_walked = -1, corridor_left = -1;
   double turns = NAN, best_iteration = NAN, time_ms = NAN;
   double p = NAN, p_holm = NAN, a12 = NAN;  // against the baseline on this problem
   const TrialRecord* best = nullptr;
@@ -63,6 +68,8 @@ double gap_percent(const TrialRecord& t, double optimal);
 bool unmeasured(const TrialRecord& t);
 
 double mean_of(const std::vector<double>& v);  // NaN if empty
+// A run property's value as a number, if it is one (a count, a real or a flag).
+std::optional<double> numeric(const aco::ParamValue& value);
 double largest(const std::vector<double>& v);  // NaN if empty
 
 // Everything the report shows, from the database (Analysis::registry is the caller's to set).

@@ -12,6 +12,7 @@
 #include "aco/error.hpp"
 #include "aco/plugin_error.hpp"
 #include "aco/map_io.hpp"
+#include "aco/plan_report.hpp"
 #include "aco/plugin_call.hpp"
 #include "aco/simulation/batch.hpp"
 
@@ -190,7 +191,7 @@ TrialRecord TrialRunner::plan(const TrialOrder& t) {
   }
   run.colony.seed = trial_seed(experiment_.seed, problem.name, t.repetition);
   if (t.time_limit_s > 0.0) run.planner_parameters.set("time_limit", t.time_limit_s);
-  const aco::PlanOutcome o = aco::plan(registry_, *graph, graph->node(problem.start), graph->node(problem.goal), run);
+  aco::PlanOutcome o = aco::plan(registry_, *graph, graph->node(problem.start), graph->node(problem.goal), run);
   TrialRecord r;
   r.problem = t.problem;
   r.config = t.config;
@@ -199,10 +200,12 @@ TrialRecord TrialRunner::plan(const TrialOrder& t) {
   r.solved = o.solved();
   r.length = o.length;
   r.grid_length = o.search.length;
-  if (r.solved) {
+  if (r.solved || o.properties.count("corridors")) {
     const std::unique_lock lock(problems_->mutex);
-    r.optimal_corridor =
-        problems_->list[t.problem].corridor(run.problem.terrain, problem.start, problem.goal).contains(o.path);
+    const aco::OptimalCorridor& corridor =
+        problems_->list[t.problem].corridor(run.problem.terrain, problem.start, problem.goal);
+    if (o.solved()) r.optimal_corridor = corridor.contains(o.path);
+    aco::note_optimal_corridor_walked(corridor, o);
   }
   r.turns = o.turns;
   r.iterations = o.search.iterations;

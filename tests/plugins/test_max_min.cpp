@@ -1,4 +1,5 @@
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 
 #include "support.hpp"
@@ -119,4 +120,63 @@ TEST_CASE("max_min's lazy trail gives the values of its plain update", "[plugin]
     for (aco::EdgeId e = 0; e < f.graph.num_edges(); ++e) CHECK(trail[e] == Approx(tau[e]).epsilon(1e-12));
   }
   CHECK_FALSE(trail.plain());
+}
+
+TEST_CASE("max_min: after a reset the restart-best walk deposits, on a schedule counted from the reset",
+          "[plugin][max_min]") {
+  // ACOTSP's mmas_update: the best-so-far would mark the old corridor again at once.
+  Fixture f;
+  auto update = test::make<aco::PheromoneUpdate>("update", "max_min",
+                                                 {{"rho", "0.5"}, {"restart_after", "2"}, {"best_so_far_every", "2"}});
+  std::vector<double> tau(f.graph.num_edges(), 1.0);
+  update->begin_run(f.context);
+  update->start(f.context, tau);
+  const std::vector<aco::Ant> bests{f.best}, others{f.other};
+  const double tau_max = 1.0 / (0.5 * f.best.length);
+  for (int it = 0; it <= 2; ++it) {  // no shorter walk after iteration 0: the reset comes in iteration 2
+    f.context.iteration = it;
+    update->update(f.context, {bests, &bests[0], &bests[0]}, tau);
+  }
+  for (double t : tau) REQUIRE(t == Approx(tau_max));
+  // Iteration 3, the first after the reset, finds only `other`: the restart-best. (3 + 1 - 2) % 2 == 0,
+  // so the scheduled deposit is the restart-best's, not the best-so-far's.
+  f.context.iteration = 3;
+  update->update(f.context, {others, &others[0], &f.best}, tau);
+  const aco::EdgeId only_other = f.graph.find_edge(f.graph.node({0, 0}), f.graph.node({0, 1}));
+  const aco::EdgeId only_best = f.graph.find_edge(f.graph.node({0, 0}), f.graph.node({1, 0}));
+  const double tau_min = f.tau_min(tau_max, 0.05);
+  auto bounded = [&](double t) { return std::clamp(t, tau_min, tau_max); };
+  CHECK(tau[only_other] == Approx(bounded(0.5 * tau_max + 1.0 / f.other.length)));
+  CHECK(tau[only_best] == Approx(bounded(0.5 * tau_max)));
+  // Iteration 4 (an odd count from the reset) finds `best` again: the iteration best deposits it.
+  f.context.iteration = 4;
+  update->update(f.context, {bests, &bests[0], &bests[0]}, tau);
+  CHECK(tau[only_best] == Approx(bounded(0.5 * bounded(0.5 * tau_max) + 1.0 / f.best.length)));
+}
+
+TEST_CASE("max_min: restart_branching waits until the colony has converged", "[plugin][max_min]") {
+  Fixture f;
+  // The first iteration after iteration 0 whose update leaves every edge at tau_max (a reset).
+  const auto first_reset = [&f](const char* branching) {
+    auto update = test::make<aco::PheromoneUpdate>(
+        "update", "max_min", {{"rho", "0.1"}, {"restart_after", "1"}, {"restart_branching", branching}});
+    std::vector<double> tau(f.graph.num_edges(), 1.0);
+    aco::Context context = f.context;
+    update->begin_run(context);
+    update->start(context, tau);
+    const std::vector<aco::Ant> ants{f.best};
+    const double tau_max = 1.0 / (0.1 * f.best.length);
+    for (int it = 0; it < 30; ++it) {
+      context.iteration = it;
+      update->update(context, {ants, &ants[0], &ants[0]}, tau);
+      if (it > 0 && std::all_of(tau.begin(), tau.end(), [&](double t) { return t == Approx(tau_max); })) return it;
+    }
+    return -1;
+  };
+  CHECK(first_reset("0") == 1);
+  // Every walked node keeps all its edges near tau_max until the others evaporate below the
+  // lambda cut-off: a few iterations at rho = 0.1.
+  const int converged = first_reset("1.5");
+  CHECK(converged > 2);
+  CHECK(converged < 15);
 }

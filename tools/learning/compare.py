@@ -6,7 +6,9 @@ file (so a re-run with more variants only runs what is new), and prints per vari
 mean and worst gap of the grid path (grid_length / optimal_length - 1), mean and longest time
 (acoplan's time_ms: planning and smoothing); then, for
 each variant against the first, sign counts and a Wilcoxon signed-rank test over the
-(problem, seed) pairs.
+(problem, seed) pairs; then where the final paths went: the share in the exact any-angle
+optimum's corridor, the others split into never explored and explored then lost (acoplan's
+optimal_corridor_walked), the final path against the any-angle optimum and the corridors walked.
 
   tools/learning/compare.py --scen-dir /tmp/tune --per-scen 4 --seeds 1,2 \
       --config data/presets/robust.ini -v colony= -v nolearn=--null-model=no-learning \
@@ -55,7 +57,8 @@ def run(args_tuple):
     if p.returncode != 0:
         return {"error": p.stderr.strip()[-300:]}
     j = json.loads(p.stdout)
-    keep = {k: j.get(k) for k in ("solved", "grid_length", "optimal_length", "time_ms", "best_iteration", "iterations")}
+    keep = {k: j.get(k) for k in ("solved", "grid_length", "optimal_length", "time_ms", "best_iteration", "iterations",
+                                  "length", "any_angle_length", "optimal_corridor", "optimal_corridor_walked", "corridors")}
     if keep["time_ms"] is None:
         keep["time_ms"] = j.get("time", {}).get("total_ms") if isinstance(j.get("time"), dict) else None
     return keep
@@ -186,6 +189,32 @@ def table(variants, results, pairs):
             cmp = f"{sum(d < -1e-12 for d in diffs)}/{sum(abs(d) <= 1e-12 for d in diffs)}/{sum(d > 1e-12 for d in diffs)}"
             pval = f"{wilcoxon(diffs):.3g}"
         print(f"| {name} | {len(solved)}/{len(pairs)} | {mean:.3f} | {worst:.2f} | {sum(times) / len(times):.0f} | {max(times):.0f} | {cmp} | {pval} |")
+    corridor_table(variants, results, pairs)
+
+
+def corridor_table(variants, results, pairs):
+    """Where the final paths went: in the exact any-angle optimum's corridor, or in another one that
+    no walk of the run took (never explored) or that the colony settled in after walking the right
+    one (explored, then lost); the final path against the any-angle optimum; corridors walked."""
+    rows = []
+    for name, _ in variants:
+        runs = [results[(name,) + p] for p in pairs]
+        known = [r for r in runs if r.get("solved") and r.get("optimal_corridor") is not None]
+        if not known:
+            continue
+        outside = [r for r in known if not r["optimal_corridor"]]
+        never = sum(1 for r in outside if r.get("optimal_corridor_walked") == 0)
+        lost = sum(1 for r in outside if r.get("optimal_corridor_walked") == 1)
+        ratios = [r["length"] / r["any_angle_length"] for r in known if r.get("any_angle_length")]
+        walked = [r["corridors"] for r in runs if r.get("corridors") is not None]
+        rows.append(f"| {name} | {100 * (len(known) - len(outside)) / len(known):.1f} % | {never} | {lost} | "
+                    f"{sum(ratios) / len(ratios):.4f} | {max(ratios):.4f} | "
+                    + (f"{sum(walked) / len(walked):.0f} |" if walked else "- |"))
+    if rows:
+        print("\n| variant | in the optimum's corridor | other corridor, never walked | other corridor, walked then lost "
+              "| final / any-angle, mean | worst | corridors walked, mean |")
+        print("|---|---|---|---|---|---|---|")
+        print("\n".join(rows))
 
 
 if __name__ == "__main__":

@@ -67,6 +67,30 @@ struct ColonySettings {
   // the walk turns there. 32 halved the cost on 512x512 maps and gave the same final lengths
   // (docs/any-angle-ants.md).
   int sight_limit = 32;
+  // Restarts with a memory of corridors (docs/corridors.md): after restart_after iterations
+  // without a shorter walk in the current epoch, the init and update plugins start afresh on a
+  // fresh trail and the epoch's best corridor (aco::CorridorKeys) is settled; in later epochs a
+  // walk through a settled corridor is ranked and rewarded as if 1 + corridor_derate times as long,
+  // so that the colony settles elsewhere. The run's result is the shortest walk of every epoch.
+  // The strategies' best-so-far is the epoch's. 0 = one epoch. corridor_derate does nothing without
+  // epochs (restarts or islands), nor in voxel worlds, whose corridors have no keys. In the
+  // bidirectional search each colony restarts on its own, and the forward one derates.
+  int restart_after = 0;
+  double corridor_derate = 0.0;
+  // Islands (Middendorf, Reischle and Schmeck 2002): `colonies` colonies with trails of their own
+  // share each iteration's ants (the first ants % colonies of them one more). Every
+  // `exchange_every` iterations the colonies are ranked by their epoch's best walk, and a colony
+  // whose best runs through the corridor of a better colony's best starts a new epoch (its
+  // corridor settled, so derated with corridor_derate): the colonies keep distinct corridors (in
+  // voxel worlds, with no corridor keys, they only run side by side). Single search only. Each
+  // needs its own strategy objects (run_colony's `islands`). The result is the best of them all.
+  int colonies = 1;
+  int exchange_every = 10;
+  // Per-node learning of the way to the goal: every node keeps the shortest distance to the goal
+  // (grid steps) an arrived walk went on from it; a later walk that goes on shorter from a node it
+  // has been seen at raises its out-edge there to the node's strongest pheromone, after the
+  // update. A long walk through the right door then still marks that door.
+  bool goal_memory = false;
   NullModel null_model = NullModel::none;
   // Not a key: what a host calls after every iteration but the last, on the thread that called
   // run_colony(). It may throw to abandon the run (the Python package raises KeyboardInterrupt
@@ -102,6 +126,11 @@ struct ColonyResult : SearchResult {
   std::uint64_t ant_steps = 0;  // moves made by all ants, backtracking included
   StopReason stopped_by = StopReason::iterations;
   std::vector<double> pheromone;  // final tau per edge
+  // The corridors the arrived walks took, each once, as keys (aco::CorridorKeys, after the local
+  // search), in increasing order: how widely the colony searched, and with OptimalCorridor::among()
+  // whether it ever walked the optimum's corridor. None in voxel worlds.
+  std::vector<std::uint64_t> corridors;
+  int restarts = 0;  // epochs begun by restart_after
 };
 
 // Runs the colony in the calling thread's TBB arena. Throws Error if a strategy writes a
@@ -111,7 +140,10 @@ struct ColonyResult : SearchResult {
 // the writer: docs/writing-plugins.md, "What the engine checks"). With settings.bidirectional, `backward`
 // is the backward colony's pipeline: separate objects of the same (or other) plugins, since
 // strategies keep per-run state. Its result is the forward colony's view (its pheromone).
+// With settings.colonies = K > 1, `islands` holds the strategies of colonies 2..K: K - 1 more
+// sets of separate objects, as for the backward colony.
 ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
-                        const ColonySettings& settings, const ColonyStrategies* backward = nullptr);
+                        const ColonySettings& settings, const ColonyStrategies* backward = nullptr,
+                        std::span<const ColonyStrategies> islands = {});
 
 }  // namespace aco

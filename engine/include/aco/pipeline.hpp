@@ -33,8 +33,9 @@ struct PipelinePlugins {
 // Instantiates every slot's plugin with its resolved parameters (see resolve_run()).
 PipelinePlugins instantiate(PluginRegistry& registry, const PipelineSpec& spec);
 
-// run_colony() with a pipeline's plugins. The bidirectional search's backward colony gets its own
-// instances of the same plugins, instantiated here from `spec`. Both record into `figures`.
+// run_colony() with a pipeline's plugins. The bidirectional search's backward colony, and the
+// islands' further colonies, get their own instances of the same plugins, instantiated here from
+// `spec`. All record into `figures`.
 ColonyResult run_pipeline(PluginRegistry& registry, const PipelineSpec& spec, const PipelinePlugins& pipeline,
                           const Graph& graph, NodeId start, NodeId goal, const ColonySettings& settings,
                           FigureSink* figures = nullptr);

@@ -14,14 +14,20 @@
 #include <Eigen/Core>
 #include <boost/config.hpp>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include "aco/any_angle.hpp"
+#include "aco/graph.hpp"
 #include "aco/map.hpp"
 
 namespace aco {
+
+// The obstacles that can be gone around, one cell of each: the first, in row-major order, of every
+// 8-connected group of blocked cells that does not touch the map's edge.
+std::vector<Cell> obstacles_inside(const Map& map);
 
 class BOOST_SYMBOL_VISIBLE CorridorTest {
  public:
@@ -37,6 +43,34 @@ class BOOST_SYMBOL_VISIBLE CorridorTest {
   std::vector<Eigen::Vector2d> points_;  // one point inside each obstacle that can be gone around, by y
 };
 
+// A corridor as a number, for telling many walks' corridors apart at one look-up per step: the
+// h-signature of a path (Bhattacharya, Kumar, Likhachev, AAAI 2010, as teb_local_planner uses it).
+// Each obstacle of obstacles_inside() gets a random 64-bit key and a ray from its cell's centre
+// towards +x, just above the centre row (y - epsilon: rows grow downwards, so towards the row
+// before); a path's key is the sum of the keys of the rays it crosses, plus when it crosses
+// towards larger y and minus towards smaller y, modulo 2^64. Two paths between the same ends have
+// the same key exactly when they go round every obstacle on the same side (CorridorTest::same(),
+// up to a chance of 2^-64 per pair). The key of a path on its own means nothing: only equal or not.
+// Costs 8 bytes per cell.
+class BOOST_SYMBOL_VISIBLE CorridorKeys {
+ public:
+  explicit CorridorKeys(const Map& map);
+  // x, y in cell units (a flat grid's positions); z ignored.
+  std::uint64_t key(std::span<const Eigen::Vector3d> path) const;
+  // A walk on a graph of the map: its cells' x and y.
+  std::uint64_t key(const Graph& graph, std::span<const NodeId> walk) const;
+  std::size_t obstacles() const { return obstacles_; }
+
+ private:
+  std::uint64_t crossing(double ax, double ay, double bx, double by) const;
+  std::uint64_t keys_up_to(int row, int x) const { return up_to_[static_cast<std::size_t>(row) * width_ + x]; }
+  // Per cell (x, y): the sum of the keys of row y's obstacles at or left of x, the keys a crossing
+  // of row y at x counts. A table of the map's size, for one look-up per step of a walk.
+  int width_ = 0, height_ = 0;
+  std::vector<std::uint64_t> up_to_;
+  std::size_t obstacles_ = 0;
+};
+
 // A problem's yardstick for continuous paths: the exact any-angle optimum (aco/any_angle.hpp) and
 // its corridor. Flat grids only (the optimum knows no heights): on other maps nothing is known.
 class BOOST_SYMBOL_VISIBLE OptimalCorridor {
@@ -47,10 +81,15 @@ class BOOST_SYMBOL_VISIBLE OptimalCorridor {
   // Whether a path from start to goal runs through the optimum's corridor; none when there is no
   // optimum or no path.
   std::optional<bool> contains(std::span<const Eigen::Vector3d> path) const;
+  // Whether any of a search's walks went through the optimum's corridor, given the keys of the
+  // corridors they took (CorridorKeys on the same map; ColonyResult::corridors); none when there
+  // is no optimum.
+  std::optional<bool> among(std::span<const std::uint64_t> corridor_keys) const;
 
  private:
   std::optional<AnyAnglePath> optimum_;
   std::optional<CorridorTest> test_;
+  std::uint64_t optimum_key_ = 0;
 };
 
 }  // namespace aco

@@ -21,6 +21,14 @@ struct PlanRun : PlanOutcome {
   std::optional<bool> optimal_corridor;
 };
 
+class OptimalCorridor;
+
+// Sets a colony run's property "optimal_corridor_walked" (a run with "corridors"): 1 when any of
+// its walks took the optimum's corridor, 0 when none did. With the final path's corridor, that
+// tells a run that never explored the right corridor from one that explored it and left it.
+// Nothing where the optimum is unknown (maps other than flat grids, no path).
+void note_optimal_corridor_walked(const OptimalCorridor& corridor, PlanOutcome& run);
+
 // `count` runs of `run` with seeds seed, seed+1, ..., each with the A* optimum, the any-angle
 // optimum and its corridor.
 std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal,

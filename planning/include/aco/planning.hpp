@@ -31,13 +31,16 @@ struct PlanOutcome {
   double length = 0.0;  // of `path`
   int turns = 0;
   double time_ms = 0.0;
-  // Planner-specific measures (OMPL's run properties): "ant_steps" and "stopped_by" (aco),
+  // Planner-specific measures (OMPL's run properties): "ant_steps", "stopped_by" and "corridors"
+  // (aco; with the optimum's corridor known, "optimal_corridor_walked", set by plan_runs() and
+  // acobench: 1 if any walk took it, whether or not the best path stayed there),
   // "evaluations" (ifwa, pso: candidate solutions decoded into walks); and the figures the run's
   // plugins recorded (Context::record(), add()) as "<slot>/<plugin>.<name>", an integer (a count)
   // or a real. Hosts write them all alike: acoplan's --json, acobench's database and runs.csv.
   std::map<std::string, ParamValue> properties;
   std::vector<double> iteration_best;  // aco: per iteration, for pictures
   std::vector<double> pheromone;  // aco: final tau per edge, for pictures
+  std::vector<std::uint64_t> corridors;  // aco: the corridors its walks took (ColonyResult::corridors)
 
   bool solved() const { return search.solved; }
   std::int64_t count(const std::string& property) const;  // an integer property, 0 if absent

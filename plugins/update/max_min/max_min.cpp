@@ -15,6 +15,7 @@ struct Parameters {
   double p_best = 0.05;
   std::int64_t best_so_far_every = 0;
   std::int64_t restart_after = 0;
+  double restart_branching = 0.0;
 };
 
 const aco::SettingsTable<Parameters> kParams({
@@ -27,7 +28,11 @@ const aco::SettingsTable<Parameters> kParams({
         "the best-so-far ant deposits every n-th iteration, the iteration best otherwise; 0 = ACOTSP's schedule "
         "(every 25th iteration before iteration 25, 5th before 75, 3rd before 125, 2nd before 250, then always)"),
     aco::field("restart_after", &Parameters::restart_after, "0:1000000",
-               "reset every edge to tau_max after this many iterations without a shorter best-so-far path (0 = never)"),
+               "reset every edge to tau_max after this many iterations without a shorter restart-best path (0 = "
+               "never); after a reset the restart-best walk, found since, deposits in place of the best-so-far"),
+    aco::field("restart_branching", &Parameters::restart_branching, "0:1000",
+               "with restart_after: reset only once the colony has converged, when the mean lambda-branching factor "
+               "(lambda 0.05) over the restart-best walk's nodes is below this (ACOTSP: 1.00001); 0 = no such test"),
 });
 
 class MaxMinUpdate final : public aco::PheromoneUpdate {
@@ -37,8 +42,9 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
 
   void begin_run(const aco::Context& c) override {
     bounded_ = false;
-    best_length_ = std::numeric_limits<double>::infinity();
-    last_improvement_ = 0;
+    restart_best_ = {};
+    restart_length_ = std::numeric_limits<double>::infinity();
+    restart_found_ = restart_iteration_ = restarts_ = 0;
     // ACOTSP's "average number of choices" is (candidates + 1) / 2; here the candidates of a
     // decision are the neighbours, so the mean degree of the passable nodes.
     const aco::Graph& g = *c.graph;
@@ -59,23 +65,34 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
       trail.evaporate(p_.rho);
       return;
     }
+    // ACOTSP's restart-best: the best walk since the last reset, which is the best-so-far until the
+    // first reset (the engine's, read as it is, so that runs without a reset stay as they were).
     const aco::Ant& best = *it.best_so_far;
+    if (restarts_ == 0) {
+      if (best.length < restart_length_) restart_length_ = best.length, restart_found_ = c.iteration;
+    } else if (it.best != nullptr && (restart_best_.edges.empty() || it.best->length < restart_best_.length)) {
+      restart_best_ = *it.best;
+      restart_found_ = c.iteration;
+    }
     const double tau_max = p_.q / (p_.rho * best.length);
     const double p_dec = std::pow(p_.p_best, 1.0 / std::max<double>(1.0, double(best.edges.size())));
     const double tau_min = std::min(tau_max, tau_max * (1.0 - p_dec) / (choices_ * p_dec));
 
-    if (best.length < best_length_) {
-      best_length_ = best.length;
-      last_improvement_ = c.iteration;
-    }
-    if (p_.restart_after > 0 && c.iteration - last_improvement_ >= p_.restart_after) {
+    if (restart_due(c, restarts_ == 0 ? best : restart_best_, trail, tau_min, tau_max)) {
       trail.fill(tau_max);  // forget the trail; the engine keeps the best path
-      last_improvement_ = c.iteration;
+      restart_best_ = {};
+      restart_found_ = restart_iteration_ = c.iteration;
+      ++restarts_;
       c.add("restarts");
       return;
     }
-    const aco::Ant& depositor =
-        it.best == nullptr || (c.iteration + 1) % best_so_far_period(c.iteration) == 0 ? best : *it.best;
+    // Right after a reset, until an ant arrives, there is no restart-best: nothing deposits.
+    const aco::Ant* scheduled = restarts_ == 0 ? &best : restart_best_.edges.empty() ? nullptr : &restart_best_;
+    const int since = c.iteration - restart_iteration_;
+    const aco::Ant* depositor =
+        it.best == nullptr || (since + 1) % best_so_far_period(since) == 0 ? scheduled : it.best;
+    static const aco::Ant kNobody;
+    const aco::Ant& depositing = depositor != nullptr ? *depositor : kNobody;
     // ACOTSP's order, evaporate every edge, deposit, then bound every edge: the depositor's
     // edges get their evaporated values (within the last bounds) plus the deposit, bounded with
     // the rest by bound().
@@ -89,14 +106,14 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
       if (top > 0.0)
         for (double& t : tau) t *= tau_max / top;
       bounded_ = true;
-      for (aco::EdgeId e : depositor.edges) evaporated_.push_back(trail[e]);
+      for (aco::EdgeId e : depositing.edges) evaporated_.push_back(trail[e]);
     } else {
-      for (aco::EdgeId e : depositor.edges) evaporated_.push_back((1.0 - p_.rho) * trail[e]);
+      for (aco::EdgeId e : depositing.edges) evaporated_.push_back((1.0 - p_.rho) * trail[e]);
       trail.evaporate(p_.rho);
     }
     trail.bound(tau_min, tau_max);
-    for (std::size_t i = 0; i < depositor.edges.size(); ++i)
-      trail.set(depositor.edges[i], evaporated_[i] + p_.q / depositor.length);
+    for (std::size_t i = 0; i < depositing.edges.size(); ++i)
+      trail.set(depositing.edges[i], evaporated_[i] + p_.q / depositing.length);
   }
 
   // The same rule on plain values (callers other than the engine): every edge evaporated and
@@ -108,6 +125,28 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
   }
 
  private:
+  // ACOTSP's trigger: the restart-best has not improved for restart_after iterations and (with
+  // restart_branching) the colony has converged: the mean lambda-branching factor, over the nodes
+  // of the restart-best walk, is below restart_branching. Two readings differ from ACOTSP's, which
+  // counts over every city the edges above min + lambda (max - min) of the city's own edges: on a
+  // grid most nodes are never walked, so only the walk's nodes count; and the cut-off is lambda of
+  // the way from tau_min to tau_max, since a walked node's other edges decay together and would
+  // fall below the node's own cut-off after one iteration, long before ants stop taking them.
+  bool restart_due(const aco::Context& c, const aco::Ant& restart_best, const aco::Trail& trail, double tau_min,
+                   double tau_max) const {
+    if (p_.restart_after <= 0 || c.iteration - restart_found_ < p_.restart_after) return false;
+    if (p_.restart_branching <= 0.0 || restart_best.edges.empty()) return true;
+    const aco::Graph& g = *c.graph;
+    const double cutoff = tau_min + kLambda * (tau_max - tau_min);
+    double branches = 0.0;
+    for (std::size_t i = 0; i + 1 < restart_best.nodes.size(); ++i)
+      for (aco::EdgeId e = g.edges_begin(restart_best.nodes[i]); e < g.edges_end(restart_best.nodes[i]); ++e)
+        branches += trail[e] > cutoff;
+    return branches / double(restart_best.edges.size()) < p_.restart_branching;
+  }
+
+  // The best-so-far (after a reset, the restart-best) deposits every period-th iteration,
+  // counted from the start or the last reset.
   int best_so_far_period(int iteration) const {
     if (p_.best_so_far_every > 0) return static_cast<int>(p_.best_so_far_every);
     return iteration < 25 ? 25 : iteration < 75 ? 5 : iteration < 125 ? 3 : iteration < 250 ? 2 : 1;
@@ -115,8 +154,12 @@ class MaxMinUpdate final : public aco::PheromoneUpdate {
 
   Parameters p_;
   double choices_ = 1.0;
-  double best_length_ = std::numeric_limits<double>::infinity();
-  int last_improvement_ = 0;
+  static constexpr double kLambda = 0.05;  // ACOTSP's lambda for the branching factor
+  int restarts_ = 0;
+  double restart_length_ = std::numeric_limits<double>::infinity();  // before the first reset
+  aco::Ant restart_best_;  // after a reset: none (no edges) until an ant arrives
+  int restart_found_ = 0;  // the iteration restart_best_ was found in, or of the last reset
+  int restart_iteration_ = 0;  // of the last reset, 0 before any
   bool bounded_ = false;
   std::vector<double> evaporated_;  // per edge of the depositor, reused from iteration to iteration
 };

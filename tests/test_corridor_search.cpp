@@ -28,8 +28,8 @@ aco::ColonyResult run(const aco::Graph& graph, aco::Cell start, aco::Cell goal, 
   tbb::task_arena arena(threads);
   aco::ColonyResult result;
   arena.execute([&] {
-    result = aco::run_pipeline(registry, spec.pipeline, plugins, graph, graph.node(start), graph.node(goal),
-                               spec.colony);
+    result =
+        aco::run_pipeline(registry, spec.pipeline, plugins, graph, graph.node(start), graph.node(goal), spec.colony);
   });
   return result;
 }
@@ -44,8 +44,7 @@ aco::ColonyResult run_on_thread_counts(const aco::Graph& graph, aco::Cell start,
 
 // A block in the middle of an open room: two corridors, the one below the block shorter.
 const std::vector<std::string> kBlock = {
-    "............", "............", ".....##.....", ".....##.....",
-    ".....##.....", "............", "............",
+    "............", "............", ".....##.....", ".....##.....", ".....##.....", "............", "............",
 };
 
 }  // namespace
@@ -97,9 +96,12 @@ TEST_CASE("restarts settle the epoch's corridor and keep the run's best path", "
 TEST_CASE("restarts in the bidirectional search: each colony restarts on its own", "[colony][corridor]") {
   const auto map = test::grid(kBlock);
   const aco::Graph graph = aco::build_graph(map, {});
-  const aco::ColonyResult r = run_on_thread_counts(
-      graph, {0, 3}, {11, 4},
-      {{"ants", "10"}, {"iterations", "30"}, {"search", "bidirectional"}, {"restart-after", "3"}, {"corridor-derate", "0.5"}});
+  const aco::ColonyResult r = run_on_thread_counts(graph, {0, 3}, {11, 4},
+                                                   {{"ants", "10"},
+                                                    {"iterations", "30"},
+                                                    {"search", "bidirectional"},
+                                                    {"restart-after", "3"},
+                                                    {"corridor-derate", "0.5"}});
   REQUIRE(r.solved);
   CHECK(r.restarts > 0);
   CHECK(aco::path_length(graph, r.path) == Approx(r.length));
@@ -149,7 +151,8 @@ TEST_CASE("restarts and islands refuse settings they cannot honour, saying why",
     }
     return std::string("no error");
   };
-  CHECK_THAT(error({{"ants", "3"}, {"colonies", "4"}}), Contains("colonies must be between 1 and the number of ants (3)"));
+  CHECK_THAT(error({{"ants", "3"}, {"colonies", "4"}}),
+             Contains("colonies must be between 1 and the number of ants (3)"));
   CHECK_THAT(error({{"colonies", "2"}, {"search", "bidirectional"}}), Contains("single search only"));
   CHECK_THAT(error({{"colonies", "2"}, {"same-path-stop", "true"}}), Contains("same-path-stop works with one colony"));
   CHECK_THAT(error({{"colonies", "9"}}), Contains("colonies"));  // beyond its range
@@ -160,7 +163,8 @@ TEST_CASE("restarts and islands refuse settings they cannot honour, saying why",
     CHECK_THROWS_WITH(aco::run_colony(graph, graph.node({0, 3}), graph.node({11, 4}), a.pipeline(), settings),
                       Contains("needs 1 more sets of strategy objects"));
     const aco::ColonyStrategies same[] = {a.pipeline()};
-    CHECK_THROWS_WITH(aco::run_colony(graph, graph.node({0, 3}), graph.node({11, 4}), a.pipeline(), settings, nullptr, same),
-                      Contains("must not share strategy objects"));
+    CHECK_THROWS_WITH(
+        aco::run_colony(graph, graph.node({0, 3}), graph.node({11, 4}), a.pipeline(), settings, nullptr, same),
+        Contains("must not share strategy objects"));
   }
 }

@@ -192,16 +192,21 @@ class Colony {
       for (NodeId n = 0; n < g_.num_nodes(); ++n) fresh_[n].store(context_.iteration, std::memory_order_relaxed);
     }
     allocate(tau_, static_cast<std::size_t>(g_.num_edges()));
+    if (learning) return initialize_trail();
+    // With tau = 1 every candidate's tau^alpha is 1.
     trail_ = Trail(tau_);
-    if (learning) {
-      p_.init->initialize(context_, tau_);
-      check_pheromone(*p_.init, "init", "initialize()");
-      p_.update->start(context_, tau_);
-      check_pheromone(*p_.update, "update", "start()");
-    } else {
-      // With tau = 1 every candidate's tau^alpha is 1.
-      std::fill(tau_.begin(), tau_.end(), 1.0);
-    }
+    std::fill(tau_.begin(), tau_.end(), 1.0);
+    plain_ = trail_.plain();
+  }
+
+  // The init plugin's field, which the update rule may rescale (start()), as a plain trail: a
+  // run's first, and each restart's.
+  void initialize_trail() {
+    trail_ = Trail(tau_);
+    p_.init->initialize(context_, tau_);
+    check_pheromone(*p_.init, "init", "initialize()");
+    p_.update->start(context_, tau_);
+    check_pheromone(*p_.update, "update", "start()");
     plain_ = trail_.plain();
   }
 
@@ -379,12 +384,7 @@ class Colony {
     ++restarts_;
     p_.init->begin_run(context_);
     p_.update->begin_run(context_);
-    trail_ = Trail(tau_);
-    p_.init->initialize(context_, tau_);
-    check_pheromone(*p_.init, "init", "initialize()");
-    p_.update->start(context_, tau_);
-    check_pheromone(*p_.update, "update", "start()");
-    plain_ = trail_.plain();
+    initialize_trail();
   }
 
   // The last iteration's writes, which no ant reads: none may reach a result.
@@ -698,8 +698,6 @@ Rng walk_stream(const ColonySettings& s, int it, std::uint64_t k, std::uint64_t 
 
 using Clock = std::chrono::steady_clock;
 
-// The iteration loop shared by both searches: `construct` fills the forward colony's ants (and
-// the backward ones) for one iteration and returns the moves made.
 // Islands: the colonies ranked by their epoch's best walk, a colony whose best runs through a
 // better colony's corridor starts a new epoch (settling that corridor), so that they keep distinct
 // corridors. A colony with no walk in its epoch yet is left alone.

@@ -35,7 +35,6 @@
 
 namespace aco::colony_detail {
 
-
 // Asks the kernel to back a large, untouched buffer with transparent huge pages. On a 512x512 map
 // a per-edge field is 16 MB; faulting it in 4 kB pages costs tens of milliseconds per run, more
 // than the ants' work on a short run. A hint only: no effect elsewhere, never a change of result.

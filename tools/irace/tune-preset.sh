@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Tunes a recommended pipeline with irace on generated training maps, never on the bundled ones:
-#   tools/irace/tune-preset.sh robust|robust-any-angle|terrain|voxel TUNING_DIR [IRACE_OPTIONS...]
+#   tools/irace/tune-preset.sh robust|robust-any-angle|robust-corridors|terrain|voxel TUNING_DIR [IRACE_OPTIONS...]
 # robust, the 2D preset: `aco_mapgen --benchmark` maps of seed TUNE_SEED (default 4242; the
 # bundled ones are seed 1), every family at 64 cells a side and more (random, room, maze: 64 and
 # 512; cave and hall: 256 and 512), scenarios 9, 14 and 19 of each (the middle and the long half).
@@ -13,7 +13,10 @@
 # robust-any-angle: robust's maps, judged by the final path: the preset's taut smoother runs and a
 # run costs its final path's gap to the exact any-angle optimum (--irace-cost
 # any-angle-gap-penalised); the search adds presets/any-angle.params (line-of-sight walks).
-# Both search presets/common.params (terrain adds presets/terrain.params) on top of
+# robust-corridors: robust's maps and the building families (aco_mapgen's office, 8room and doors
+# of the same seeds), the robust preset as it is plus presets/corridors.params (islands, epochs,
+# goal memory, MAX-MIN's restarts: docs/corridors.md), starting from the preset and two colonies.
+# The others search presets/common.params (terrain adds presets/terrain.params) on top of
 # presets/fixed.ini, with acoplan --irace-cost gap-penalised (a run costs its gap g in % plus g
 # squared, so the worst runs count) --irace-effort TUNE_EFFORT (default 0.25 times the ants'
 # moves per walk over the optimal length: time, which the effort follows, counts too, and the
@@ -28,7 +31,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-usage="usage: $(basename "$0") robust|robust-any-angle|terrain|voxel TUNING_DIR [IRACE_OPTIONS...]"
+usage="usage: $(basename "$0") robust|robust-any-angle|robust-corridors|terrain|voxel TUNING_DIR [IRACE_OPTIONS...]"
 [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }
 preset="$1"
 dir="$2"
@@ -38,12 +41,16 @@ dir="$(cd "$dir" && pwd)"
 seed="${TUNE_SEED:-4242}"
 cost=gap-penalised
 final=()
+base=(--config "$dir/fixed.ini")  # what every candidate keeps
+first=()  # irace's first candidates
 acoplan="${ACOPLAN:-$root/build/release/hosts/acoplan/acoplan}"
 : > "$dir/instances.txt"
 case "$preset" in
-  robust | robust-any-angle)
+  robust | robust-any-angle | robust-corridors)
     [ -e "$dir/maps/hall512-64-s$((seed + 1)).map.scen" ] ||
       "$root/build/release/tools/aco_mapgen" --benchmark "$dir/maps" "$seed" > "$dir/maps.log"
+    [ "$preset" != robust-corridors ] || [ -e "$dir/maps/doors512-32-s$((seed + 1)).map.scen" ] ||
+      "$root/build/release/tools/aco_mapgen" --benchmark "$dir/maps" "$seed" office,8room,doors >> "$dir/maps.log"
     for scen in "$dir"/maps/*.map.scen; do
       [[ "$(basename "$scen")" =~ ^[a-z]+32- ]] && continue  # the 32x32 maps: every pipeline solves them
       for index in 9 14 19; do echo "$scen --scen-index $index" >> "$dir/instances.txt"; done
@@ -53,6 +60,11 @@ case "$preset" in
       cost=any-angle-gap-penalised
       final=(--smoother taut)  # fixed.ini's smoother is none: the grid gap does not need one
       cat "$here/presets/any-angle.params" >> "$dir/search.params"
+    fi
+    if [ "$preset" = robust-corridors ]; then
+      cp "$here/presets/corridors.params" "$dir/search.params"
+      base=(--preset robust --smoother none)
+      first=(--configurations-file "$here/presets/corridors.configurations")
     fi ;;
   terrain)
     for size in 40 64 100 128; do
@@ -88,11 +100,11 @@ case "$preset" in
     done
     cp "$here/presets/common.params" "$dir/search.params"
     final=(--neighbourhood 26) ;;
-  *) echo "tune-preset.sh: no search space for preset '$preset' (robust, robust-any-angle, terrain or voxel)" >&2; exit 2 ;;
+  *) echo "tune-preset.sh: no search space for preset '$preset' (robust, robust-any-angle, robust-corridors, terrain or voxel)" >&2; exit 2 ;;
 esac
 # Copies in TUNING_DIR: the tuning reads nothing of the tree while it runs.
 cp "$here/presets/fixed.ini" "$dir/fixed.ini"
-export ACOPLAN_OPTIONS="--threads 1 --config $dir/fixed.ini ${final[*]} --irace-cost $cost --irace-effort ${TUNE_EFFORT:-0.25}"
+export ACOPLAN_OPTIONS="--threads 1 ${base[*]} ${final[*]} --irace-cost $cost --irace-effort ${TUNE_EFFORT:-0.25}"
 export ACOPLAN_TIMEOUT="${ACOPLAN_TIMEOUT:-60}"
 exec "$here/run.sh" --params "$dir/search.params" --forbidden "$here/presets/budget.forbidden" "$dir" \
-  --train-instances-dir / --train-instances-file "$dir/instances.txt" --test-type t-test "$@"
+  --train-instances-dir / --train-instances-file "$dir/instances.txt" --test-type t-test "${first[@]}" "$@"

@@ -109,7 +109,8 @@ def main():
     ap.add_argument("--threads", type=int, default=1)
     ap.add_argument("--by-type", action="store_true", help="also one table per map type")
     ap.add_argument("--type-by", choices=("name", "folder"), default="name",
-                    help="a map's type: its file name up to the first digit (generated maps), or its folder (Moving AI's sets)")
+                    help="a map's type: its file name up to the first digit after its first letter "
+                         "(generated maps: 8room, maze, ...), or its folder (Moving AI's sets)")
     ap.add_argument("--cache", default="/tmp/learning-cache.jsonl")
     a = ap.parse_args()
 
@@ -158,12 +159,12 @@ def main():
         print(f"{len(errors)} runs failed, e.g.: {errors[0]}", file=sys.stderr)
     pairs = [(scen, index, seed) for scen, index in probs for seed in seeds]
     if a.by_type:
-        # One table per map type: the file name up to its first digit (maze, random, room, ...), or
-        # the folder it is in (dao, maze, room, street, ... of data/maps/movingai).
+        # One table per map type: the file name up to its first digit after a letter (8room, maze,
+        # random, ...), or the folder it is in (dao, maze, room, street, ... of data/maps/movingai).
         if a.type_by == "folder":
             kind = lambda scen: os.path.basename(os.path.dirname(scen))
         else:
-            kind = lambda scen: re.match(r"[^0-9]*", os.path.basename(scen)).group(0)
+            kind = lambda scen: re.match(r"[0-9]*[^0-9]*", os.path.basename(scen)).group(0)
         for t in sorted({kind(p[0]) for p in pairs}):
             print(f"\n{t}:")
             table(variants, results, [p for p in pairs if kind(p[0]) == t])

@@ -7,7 +7,8 @@
 //
 // aco_mapgen --benchmark OUTDIR writes the generated validation maps of data/maps/generated
 // (random, room, maze, cave and hall maps, 20 scenarios each; see write_benchmark); --large the
-// same families at 1024 and 2048 cells a side.
+// same families at 1024 and 2048 cells a side. A FAMILY list after the seed writes only those, and
+// the building families (office, 8room, doors: tools/mapgen/families.hpp) only when named.
 //
 // aco_mapgen --upsample MAP FACTOR OUTDIR [COUNT] draws a Moving AI map FACTOR times larger, with
 // COUNT scenarios: a large map of a real map's shape.
@@ -47,11 +48,21 @@
 #include "aco/map_io.hpp"
 #include "aco/rng.hpp"
 #include "aco/voxel.hpp"
+#include "families.hpp"
+#include "shapes.hpp"
 
 namespace {
 
 using aco::Cell;
 using aco::OccupancyGrid;
+using mapgen::blocked_cells;
+using mapgen::draw_parabola;
+using mapgen::fill_ellipse;
+using mapgen::fill_rect;
+using mapgen::format_density;
+using mapgen::near;
+using mapgen::scatter;
+using mapgen::scatter_isolated;
 
 struct PaperMap {
   std::string name;  // file stem: <name>.map, <name>.map.scen
@@ -61,103 +72,6 @@ struct PaperMap {
   int margin = 0;  // cells within this Chebyshev distance of start and goal must be free
   std::string seed_note;  // how the random part was drawn, for the summary line
 };
-
-// ---------------------------------------------------------------------------------------------
-// Shape helpers. All clip to the grid; coordinates are cells (x = column, y = row from the top).
-
-void block(OccupancyGrid& g, Cell c) {
-  if (g.contains(c)) g.set_blocked(c, true);
-}
-
-// Filled rectangle, corners inclusive.
-void fill_rect(OccupancyGrid& g, int x0, int y0, int x1, int y1) {
-  for (int y = y0; y <= y1; ++y)
-    for (int x = x0; x <= x1; ++x) block(g, {x, y});
-}
-
-// Filled axis-aligned ellipse: every cell whose centre lies inside it.
-void fill_ellipse(OccupancyGrid& g, double cx, double cy, double rx, double ry) {
-  for (int y = 0; y < g.height(); ++y)
-    for (int x = 0; x < g.width(); ++x) {
-      const double u = (x - cx) / rx;
-      const double v = (y - cy) / ry;
-      if (u * u + v * v <= 1.0) block(g, {x, y});
-    }
-}
-
-// The cells a curve passes through, given as densely sampled points (consecutive samples less
-// than one cell apart). Consecutive cells are joined 4-connected: where the curve steps
-// diagonally, the cell beside the step is blocked too, so the wall is sealed even for a planner
-// that cuts corners.
-void draw_curve(OccupancyGrid& g, const std::vector<Eigen::Vector2d>& points) {
-  std::optional<Cell> previous;
-  for (const auto& p : points) {
-    const Cell c{static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y()))};
-    if (previous && previous->x != c.x && previous->y != c.y) block(g, {c.x, previous->y});
-    block(g, c);
-    previous = c;
-  }
-}
-
-// Parabola u = k v^2 in the frame of its vertex: u along the axis (the side it opens to),
-// v across it, |v| <= half_width. axis need not be normalised.
-void draw_parabola(OccupancyGrid& g, Eigen::Vector2d vertex, Eigen::Vector2d axis, double k, double half_width) {
-  axis.normalize();
-  const Eigen::Vector2d across(-axis.y(), axis.x());
-  std::vector<Eigen::Vector2d> points;
-  constexpr double step = 0.05;
-  const int n = static_cast<int>(std::ceil(2.0 * half_width / step));
-  for (int i = 0; i <= n; ++i) {
-    const double v = -half_width + 2.0 * half_width * i / n;
-    points.push_back(vertex + axis * (k * v * v) + across * v);
-  }
-  draw_curve(g, points);
-}
-
-int blocked_cells(const OccupancyGrid& g) {
-  int count = 0;
-  for (int y = 0; y < g.height(); ++y)
-    for (int x = 0; x < g.width(); ++x) count += g.blocked({x, y}) ? 1 : 0;
-  return count;
-}
-
-std::string format_density(double p) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", p);
-  return buffer;
-}
-
-bool near(Cell a, Cell b, int radius) { return std::abs(a.x - b.x) <= radius && std::abs(a.y - b.y) <= radius; }
-
-// Blocks each free cell with probability p, except where keep_free says no. One draw per cell in
-// row-major order whatever the cell holds, so the pattern does not shift when a shape moves.
-void scatter(OccupancyGrid& g, aco::Rng& rng, double p, const std::function<bool(Cell)>& keep_free) {
-  for (int y = 0; y < g.height(); ++y)
-    for (int x = 0; x < g.width(); ++x) {
-      const bool hit = rng.uniform() < p;
-      const Cell c{x, y};
-      if (hit && !g.blocked(c) && !keep_free(c)) g.set_blocked(c, true);
-    }
-}
-
-// `count` isolated single cells: free, all 8 neighbours free and in the grid, not within `margin`
-// of start or goal. Drawn uniformly from the cells that qualify at each draw.
-void scatter_isolated(OccupancyGrid& g, aco::Rng& rng, int count, Cell start, Cell goal, int margin) {
-  for (int placed = 0; placed < count; ++placed) {
-    std::vector<Cell> candidates;
-    for (int y = 1; y + 1 < g.height(); ++y)
-      for (int x = 1; x + 1 < g.width(); ++x) {
-        const Cell c{x, y};
-        if (near(c, start, margin) || near(c, goal, margin)) continue;
-        bool clear = true;
-        for (int dy = -1; dy <= 1 && clear; ++dy)
-          for (int dx = -1; dx <= 1 && clear; ++dx) clear = !g.blocked({x + dx, y + dy});
-        if (clear) candidates.push_back(c);
-      }
-    if (candidates.empty()) throw aco::Error("no room left for an isolated obstacle cell");
-    g.set_blocked(candidates[rng.below(candidates.size())], true);
-  }
-}
 
 // ---------------------------------------------------------------------------------------------
 // Checks and lengths.
@@ -369,284 +283,6 @@ void write_map(const PaperMap& m, const std::filesystem::path& dir) {
             << format_length(cut) << ", 4-conn " << format_length(four) << "\n";
 }
 
-// ---------------------------------------------------------------------------------------------
-// Validation maps (--benchmark): random, room, maze, cave and hall maps in the style of the Moving
-// AI families, at sizes and parameters the recommended pipelines were not tuned on, each with a .scen of
-// scenarios spread over the path lengths, so that quality can be measured on maps nobody looked at
-// while choosing settings.
-
-// Each cell blocked with probability `density`.
-OccupancyGrid random_map(int size, double density, aco::Rng& rng, const std::string& name) {
-  OccupancyGrid g(size, size, name);
-  scatter(g, rng, density, [](Cell) { return false; });
-  return g;
-}
-
-// A random spanning tree of an n x n grid of cells (depth-first, random order of neighbours):
-// per cell, whether the edge to its right (h) and to its lower (v) neighbour is in the tree.
-struct SpanningTree {
-  std::vector<char> h, v;
-};
-
-SpanningTree random_spanning_tree(int n, aco::Rng& rng) {
-  SpanningTree tree{std::vector<char>(n * n, 0), std::vector<char>(n * n, 0)};
-  std::vector<char> visited(n * n, 0);
-  std::vector<std::pair<int, int>> stack{{0, 0}};
-  visited[0] = 1;
-  while (!stack.empty()) {
-    const auto [i, j] = stack.back();
-    std::vector<std::pair<int, int>> next;
-    for (const auto& [di, dj] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-      const int a = i + di, b = j + dj;
-      if (a >= 0 && b >= 0 && a < n && b < n && !visited[b * n + a]) next.push_back({a, b});
-    }
-    if (next.empty()) {
-      stack.pop_back();
-      continue;
-    }
-    const auto [a, b] = next[rng.below(next.size())];
-    (a != i ? tree.h : tree.v)[std::min(j, b) * n + std::min(i, a)] = 1;
-    visited[b * n + a] = 1;
-    stack.push_back({a, b});
-  }
-  return tree;
-}
-
-// Square rooms of `room` cells (walls included) on a grid; a spanning tree of doors (random
-// depth-first order) keeps every room reachable, and every other wall has a door with
-// probability `extra_doors`. A door is one free cell at a random place along the wall.
-OccupancyGrid room_map(int size, int room, double extra_doors, aco::Rng& rng, const std::string& name) {
-  OccupancyGrid g(size, size, name);
-  const int rooms = size / room;
-  for (int k = 1; k < rooms; ++k) {
-    fill_rect(g, k * room - 1, 0, k * room - 1, size - 1);
-    fill_rect(g, 0, k * room - 1, size - 1, k * room - 1);
-  }
-  // Wall between room (i, j) and its right (horizontal) or lower neighbour: open one cell of it.
-  const auto open_door = [&](int i, int j, bool horizontal) {
-    const int along = static_cast<int>(rng.below(room - 1));
-    if (horizontal)
-      g.set_blocked({(i + 1) * room - 1, j * room + along}, false);
-    else
-      g.set_blocked({i * room + along, (j + 1) * room - 1}, false);
-  };
-  const SpanningTree doors = random_spanning_tree(rooms, rng);
-  for (int j = 0; j < rooms; ++j)
-    for (int i = 0; i < rooms; ++i) {
-      if (i + 1 < rooms && (doors.h[j * rooms + i] || rng.uniform() < extra_doors)) open_door(i, j, true);
-      if (j + 1 < rooms && (doors.v[j * rooms + i] || rng.uniform() < extra_doors)) open_door(i, j, false);
-    }
-  return g;
-}
-
-// A maze with corridors `corridor` cells wide and one-cell walls: a perfect maze (random
-// depth-first backtracker), then every remaining wall between two corridor cells opened with
-// probability `loops`. Loops matter: in a perfect maze every cell off the solution lies in a dead
-// end, which dead-end filling removes before the first ant starts.
-OccupancyGrid maze_map(int size, int corridor, double loops, aco::Rng& rng, const std::string& name) {
-  OccupancyGrid g(size, size, name);
-  fill_rect(g, 0, 0, size - 1, size - 1);
-  const int pitch = corridor + 1;
-  const int cells = (size - 1) / pitch;
-  // Clear a rectangle of corridor: cell (i, j), or the wall from it to its right/lower neighbour.
-  const auto carve = [&](int i, int j, int di, int dj) {
-    const int x0 = 1 + i * pitch, y0 = 1 + j * pitch;
-    const int x1 = x0 + corridor - 1 + di * pitch, y1 = y0 + corridor - 1 + dj * pitch;
-    for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) g.set_blocked({x, y}, false);
-  };
-  const SpanningTree open = random_spanning_tree(cells, rng);
-  for (int j = 0; j < cells; ++j)
-    for (int i = 0; i < cells; ++i) {
-      carve(i, j, 0, 0);
-      if (open.h[j * cells + i]) carve(i, j, 1, 0);
-      if (open.v[j * cells + i]) carve(i, j, 0, 1);
-    }
-  for (int j = 0; j < cells; ++j)
-    for (int i = 0; i < cells; ++i) {
-      if (i + 1 < cells && !open.h[j * cells + i] && rng.uniform() < loops) carve(i, j, 1, 0);
-      if (j + 1 < cells && !open.v[j * cells + i] && rng.uniform() < loops) carve(i, j, 0, 1);
-    }
-  return g;
-}
-
-// The 4-connected parts of the free cells of an n x n grid (blocked[i] != 0: blocked), each a list
-// of cell indices in row-major order, in the order of their first cell.
-std::vector<std::vector<int>> free_parts(const std::vector<char>& blocked, int n) {
-  std::vector<int> label(blocked.size(), -1);
-  std::vector<std::vector<int>> parts;
-  for (int first = 0; first < n * n; ++first) {
-    if (blocked[first] || label[first] >= 0) continue;
-    std::vector<int> part{first};
-    label[first] = static_cast<int>(parts.size());
-    for (std::size_t k = 0; k < part.size(); ++k) {
-      const int x = part[k] % n, y = part[k] / n;
-      for (const auto& [dx, dy] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-        const int u = x + dx, v = y + dy;
-        if (u < 0 || v < 0 || u >= n || v >= n || blocked[v * n + u] || label[v * n + u] >= 0) continue;
-        label[v * n + u] = label[first];
-        part.push_back(v * n + u);
-      }
-    }
-    std::sort(part.begin(), part.end());
-    parts.push_back(std::move(part));
-  }
-  return parts;
-}
-
-// Caves in the style of game maps (Moving AI's dao and bg sets): large open caverns joined by a
-// few narrow tunnels. A cellular automaton on a grid `scale` times coarser than the map (each cell
-// blocked with probability 0.5, the border blocked, then five rounds of "blocked iff at least 5
-// of the 3x3 block are") leaves separate caverns; they are upsampled and smoothed twice by the
-// same rule on the map itself, which rounds the scale-cell staircases. Caverns of fewer than
-// `scale` x `scale` x 8 cells are filled; the others are joined by a minimum spanning tree of
-// straight tunnels 2 to 4 cells wide between their nearest cells, plus the next shortest
-// tunnel with probability `loops` per cavern, so there are few ways from one cavern to another.
-OccupancyGrid cave_map(int size, int scale, double loops, aco::Rng& rng, const std::string& name) {
-  const auto smooth = [](std::vector<char>& blocked, int n, int rounds) {
-    std::vector<char> next(blocked.size());
-    for (int round = 0; round < rounds; ++round) {
-      for (int y = 0; y < n; ++y)
-        for (int x = 0; x < n; ++x) {
-          int count = 0;
-          for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-              const int u = x + dx, v = y + dy;
-              count += u < 0 || v < 0 || u >= n || v >= n || blocked[v * n + u];
-            }
-          next[y * n + x] = count >= 5;
-        }
-      blocked.swap(next);
-    }
-  };
-  const int coarse = size / scale;
-  std::vector<char> cells(static_cast<std::size_t>(coarse) * coarse);
-  for (int y = 0; y < coarse; ++y)
-    for (int x = 0; x < coarse; ++x) {
-      const bool border = x == 0 || y == 0 || x == coarse - 1 || y == coarse - 1;
-      cells[y * coarse + x] = rng.uniform() < 0.5 || border;
-    }
-  smooth(cells, coarse, 5);
-  std::vector<char> fine(static_cast<std::size_t>(size) * size);
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x)
-      fine[y * size + x] = cells[std::min(y / scale, coarse - 1) * coarse + std::min(x / scale, coarse - 1)];
-  smooth(fine, size, 2);
-  std::vector<std::vector<int>> caverns;
-  for (auto& part : free_parts(fine, size)) {
-    if (static_cast<int>(part.size()) >= scale * scale * 8)
-      caverns.push_back(std::move(part));
-    else
-      for (int c : part) fine[c] = 1;
-  }
-  // The tunnel between two caverns: their nearest pair of cells, on a sample of each cavern's
-  // cells (every cell would cost |A| x |B|; a sample of 400 is within a few cells of it).
-  struct Tunnel {
-    double length;
-    int from, to;  // cells
-    std::size_t a, b;  // caverns
-  };
-  const auto sample = [](const std::vector<int>& part) {
-    std::vector<int> some;
-    const std::size_t step = std::max<std::size_t>(1, part.size() / 400);
-    for (std::size_t k = 0; k < part.size(); k += step) some.push_back(part[k]);
-    return some;
-  };
-  std::vector<std::vector<int>> samples;
-  for (const auto& cavern : caverns) samples.push_back(sample(cavern));
-  std::vector<Tunnel> tunnels;
-  for (std::size_t a = 0; a < caverns.size(); ++a)
-    for (std::size_t b = a + 1; b < caverns.size(); ++b) {
-      Tunnel best{std::numeric_limits<double>::infinity(), 0, 0, a, b};
-      for (int p : samples[a])
-        for (int q : samples[b]) {
-          const double d = std::hypot(p % size - q % size, p / size - q / size);
-          if (d < best.length) best = {d, p, q, a, b};
-        }
-      tunnels.push_back(best);
-    }
-  std::sort(tunnels.begin(), tunnels.end(), [](const Tunnel& x, const Tunnel& y) { return x.length < y.length; });
-  // Kruskal's minimum spanning tree over the caverns; a tunnel left out joins a cavern that has
-  // no extra tunnel yet with probability `loops`.
-  std::vector<std::size_t> root(caverns.size());
-  std::iota(root.begin(), root.end(), std::size_t{0});
-  const std::function<std::size_t(std::size_t)> find = [&](std::size_t i) {
-    return root[i] == i ? i : root[i] = find(root[i]);
-  };
-  std::vector<char> has_loop(caverns.size(), 0);
-  const auto dig = [&](const Tunnel& t) {
-    const double x0 = t.from % size, y0 = t.from / size, x1 = t.to % size, y1 = t.to / size;
-    const int width = 2 + static_cast<int>(rng.below(3));
-    const int steps = static_cast<int>(std::ceil(4.0 * t.length)) + 1;
-    for (int k = 0; k <= steps; ++k) {
-      const double x = x0 + (x1 - x0) * k / steps, y = y0 + (y1 - y0) * k / steps;
-      for (int dy = 0; dy < width; ++dy)
-        for (int dx = 0; dx < width; ++dx) {
-          const int u = static_cast<int>(std::lround(x)) + dx - width / 2,
-                    v = static_cast<int>(std::lround(y)) + dy - width / 2;
-          if (u > 0 && v > 0 && u < size - 1 && v < size - 1) fine[v * size + u] = 0;
-        }
-    }
-  };
-  for (const Tunnel& t : tunnels) {
-    if (find(t.a) != find(t.b)) {
-      root[find(t.a)] = find(t.b);
-      dig(t);
-    } else if (!has_loop[t.a] && !has_loop[t.b] && t.length < 4.0 * scale && rng.uniform() < loops) {
-      has_loop[t.a] = has_loop[t.b] = 1;
-      dig(t);
-    }
-  }
-  OccupancyGrid g(size, size, name);
-  for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) g.set_blocked({x, y}, fine[y * size + x]);
-  return g;
-}
-
-// Large rooms with few doors, as in the buildings of game maps: the map split recursively (binary
-// space partition, across its longer side) by one-cell walls until a room is less than 2 x
-// `room` + 1 cells a side, so rooms have `room` to 2 x `room` cells a side. Each wall gets one door
-// of 1 to 3 cells (so the rooms form a tree: one way from room to room) and, with probability
-// `loops`, a second one. A wall never ends in front of an earlier wall's door.
-OccupancyGrid hall_map(int size, int room, double loops, aco::Rng& rng, const std::string& name) {
-  OccupancyGrid g(size, size, name);
-  const auto closed = [&](int x, int y) { return !g.contains({x, y}) || g.blocked({x, y}); };
-  // The free rectangle [x0, x1] x [y0, y1], walls or the map's edge around it.
-  const std::function<void(int, int, int, int)> split = [&](int x0, int y0, int x1, int y1) {
-    const int w = x1 - x0 + 1, h = y1 - y0 + 1;
-    const bool vertical = w >= h;  // a vertical wall splits the width
-    const int side = vertical ? w : h;
-    if (side < 2 * room + 1) return;
-    // Where the wall may stand: `room` cells on either side, not in front of a door.
-    std::vector<int> places;
-    for (int at = (vertical ? x0 : y0) + room; at <= (vertical ? x1 : y1) - room; ++at)
-      if (vertical ? closed(at, y0 - 1) && closed(at, y1 + 1) : closed(x0 - 1, at) && closed(x1 + 1, at))
-        places.push_back(at);
-    if (places.empty()) return;
-    const int at = places[rng.below(places.size())];
-    const int length = vertical ? h : w;
-    if (vertical)
-      fill_rect(g, at, y0, at, y1);
-    else
-      fill_rect(g, x0, at, x1, at);
-    const int doors = rng.uniform() < loops ? 2 : 1;
-    for (int d = 0; d < doors; ++d) {
-      const int width = std::min(length, 1 + static_cast<int>(rng.below(3)));
-      const int along = static_cast<int>(rng.below(length - width + 1));
-      for (int k = along; k < along + width; ++k) g.set_blocked(vertical ? Cell{at, y0 + k} : Cell{x0 + k, at}, false);
-    }
-    if (vertical) {
-      split(x0, y0, at - 1, y1);
-      split(at + 1, y0, x1, y1);
-    } else {
-      split(x0, y0, x1, at - 1);
-      split(x0, at + 1, x1, y1);
-    }
-  };
-  split(0, 0, size - 1, size - 1);
-  return g;
-}
-
 // Exact distances from `from` over the graph (Dijkstra); infinity where unreachable. Used only to
 // choose goals at given distances, never by a planner.
 std::vector<double> distances_from(const aco::Graph& graph, aco::NodeId from) {
@@ -727,8 +363,11 @@ std::string scenarios(const OccupancyGrid& g, int count, aco::Rng& rng) {
 // first_seed shifts every seed, for a tuning set disjoint from the shipped one.
 // With `large`, all five families at 1024x1024 and 2048x2048 instead, one seed and 10 scenarios
 // each: the scale measurements' maps.
-// `family`: only that family's maps ("" = all).
-void write_benchmark(const std::filesystem::path& dir, int first_seed, bool large, const std::string& family) {
+// `families`: only those families' maps, comma-separated ("" = the five above). The building
+// families are written only when named, so that the shipped set stays what it is: office plans
+// (256 and 512), 8room (512x512 with 8-cell rooms, as Moving AI's 8room maps) and doors (rooms of
+// 32 to 64 cells, doors of 1 to 6 cells, at 256 and 512).
+void write_benchmark(const std::filesystem::path& dir, int first_seed, bool large, const std::string& families) {
   const int kScenarios = large ? 10 : 20;
   struct Spec {
     std::string family;
@@ -740,10 +379,22 @@ void write_benchmark(const std::filesystem::path& dir, int first_seed, bool larg
             : std::vector<Spec>{{"random", 32}, {"random", 64}, {"random", 512}, {"room", 32},  {"room", 64},
                                 {"room", 512},  {"maze", 32},   {"maze", 64},    {"maze", 512}, {"cave", 256},
                                 {"cave", 512},  {"hall", 256},  {"hall", 512}};
-  if (!family.empty() && std::none_of(specs.begin(), specs.end(), [&](const Spec& s) { return s.family == family; }))
-    throw aco::Error("no map family '" + family + "' (random, room, maze, cave, hall)");
-  for (const auto& spec : specs) {
-    if (!family.empty() && spec.family != family) continue;
+  const std::vector<Spec> buildings =
+      large ? std::vector<Spec>{{"office", 1024}, {"office", 2048}}
+            : std::vector<Spec>{{"office", 256}, {"office", 512}, {"8room", 512}, {"doors", 256}, {"doors", 512}};
+  std::vector<Spec> chosen;
+  std::stringstream list(families);
+  for (std::string family; std::getline(list, family, ',');) {
+    const std::size_t before = chosen.size();
+    for (const auto& known : {specs, buildings})
+      std::copy_if(known.begin(), known.end(), std::back_inserter(chosen),
+                   [&](const Spec& spec) { return spec.family == family; });
+    if (chosen.size() == before)
+      throw aco::Error("no map family '" + family + "' (random, room, maze, cave, hall" +
+                       (large ? ", office)" : ", office, 8room, doors)"));
+  }
+  if (families.empty()) chosen = specs;
+  for (const auto& spec : chosen) {
     const int seeds = spec.size <= 64 ? 3 : spec.size <= 512 ? 2 : 1;
     for (int seed = first_seed; seed < first_seed + seeds; ++seed) {
       aco::Rng rng(static_cast<std::uint64_t>(spec.size) * 1000 + seed);
@@ -753,27 +404,35 @@ void write_benchmark(const std::filesystem::path& dir, int first_seed, bool larg
         const double density = spec.size <= 64 ? 0.25 : 0.20;
         name = "random" + std::to_string(spec.size) + "-" + std::to_string(static_cast<int>(density * 100)) + "-s" +
                std::to_string(seed);
-        grid = random_map(spec.size, density, rng, name);
+        grid = mapgen::random_map(spec.size, density, rng, name);
       } else if (spec.family == "room") {
         const int room = spec.size <= 64 ? 8 : 32;
         name = "room" + std::to_string(spec.size) + "-" + std::to_string(room) + "-s" + std::to_string(seed);
-        grid = room_map(spec.size, room, 0.3, rng, name);
+        grid = mapgen::room_map(spec.size, room, 0.3, rng, name);
+      } else if (spec.family == "8room") {
+        name = "8room" + std::to_string(spec.size) + "-s" + std::to_string(seed);
+        grid = mapgen::room_map(spec.size, 8, 0.5, rng, name);
       } else if (spec.family == "cave") {
         const int scale = spec.size <= 256 ? 4 : spec.size <= 1024 ? 8 : 16;
         name = "cave" + std::to_string(spec.size) + "-" + std::to_string(scale) + "-s" + std::to_string(seed);
-        grid = cave_map(spec.size, scale, 0.3, rng, name);
-      } else if (spec.family == "hall") {
-        const int room = spec.size / 8;
-        name = "hall" + std::to_string(spec.size) + "-" + std::to_string(room) + "-s" + std::to_string(seed);
-        grid = hall_map(spec.size, room, 0.2, rng, name);
+        grid = mapgen::cave_map(spec.size, scale, 0.3, rng, name);
+      } else if (spec.family == "hall" || spec.family == "doors") {
+        const bool doors = spec.family == "doors";
+        const int room = spec.size / (doors ? 16 : 8);
+        name = spec.family + std::to_string(spec.size) + "-" + std::to_string(room) + "-s" + std::to_string(seed);
+        grid = mapgen::hall_map(spec.size, room, doors ? 0.3 : 0.2, doors ? 6 : 3, rng, name);
+      } else if (spec.family == "office") {
+        const int room = spec.size / 20;
+        name = "office" + std::to_string(spec.size) + "-" + std::to_string(room) + "-s" + std::to_string(seed);
+        grid = mapgen::office_map(spec.size, room, 0.3, rng, name);
       } else {
         const int corridor = spec.size <= 32 ? 1 : spec.size <= 64 ? 2 : 4;
         name = "maze" + std::to_string(spec.size) + "-" + std::to_string(corridor) + "-s" + std::to_string(seed);
-        grid = maze_map(spec.size, corridor, 0.05, rng, name);
+        grid = mapgen::maze_map(spec.size, corridor, 0.05, rng, name);
       }
       write_file(dir / (name + ".map"), movingai_map_text(*grid));
       write_file(dir / (name + ".map.scen"), scenarios(*grid, kScenarios, rng));
-      std::cout << name << ": " << spec.size << "x" << spec.size << ", " << blocked_cells(*grid) << " blocked, "
+      std::cout << name << ": " << spec.size << "x" << spec.size << ", " << mapgen::blocked_cells(*grid) << " blocked, "
                 << kScenarios << " scenarios\n";
     }
   }
@@ -1124,7 +783,8 @@ int main(int argc, char** argv) {
            "and paper004 into TERRAIN_OUTDIR if given (data/terrain); with --benchmark, the generated\n"
            "random, room, maze, cave and hall validation maps with 20 scenarios each (data/maps/generated);\n"
            "with --large, the same families at 1024x1024 and 2048x2048 with 10 scenarios each; FAMILY: only\n"
-           "that family's maps (random, room, maze, cave or hall)\n";
+           "those families' maps, comma-separated (random, room, maze, cave, hall; and the building families,\n"
+           "written only when named: office, 8room, doors)\n";
     return 1;
   }
   try {

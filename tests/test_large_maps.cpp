@@ -265,7 +265,7 @@ TEST_CASE("the large-map options give bit-identical results for any thread count
   const auto map = aco::load_map(test::data_dir() / "maps/movingai/arena.map");
   const aco::Graph graph = aco::build_graph(*map, {});
   tbb::global_control allow(tbb::global_control::max_allowed_parallelism, 4);
-  for (const bool bidirectional : {false, true}) {
+  for (const auto& [bidirectional, band_search] : {std::pair{false, 0}, {true, 0}, {false, 3}, {true, 3}}) {
     const aco::PipelineSpec spec =
         test::pipeline({{"heuristic", "progress"}, {"update", "acs"}, {"deadlock", "backtrack"}});
     aco::ColonySettings s;
@@ -277,6 +277,7 @@ TEST_CASE("the large-map options give bit-identical results for any thread count
     s.local_search = aco::LocalSearch::straighten;
     s.walk_limit = 2;
     s.bidirectional = bidirectional;
+    s.band_search = band_search;  // aco::BandSearch
     std::vector<aco::ColonyResult> results;
     for (int threads : {1, 2, 4}) {
       const auto pipeline = aco::instantiate(test::plugins(), spec);

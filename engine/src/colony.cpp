@@ -145,6 +145,7 @@ ColonyResult iterate(const Graph& graph, const ColonySettings& s, Clock::time_po
     for (Colony* colony : colonies) colony->prepare(it), colony->set_parallel(true);
     result.ant_steps += construct(it);
     for (Colony* colony : colonies) colony->set_parallel(false);
+    for (std::size_t c = 0; c < searching; ++c) colonies[c]->search_band(ants[c]);
 
     int arrived = 0;
     const auto walked_before = static_cast<std::ptrdiff_t>(result.corridors.size());

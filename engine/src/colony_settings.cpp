@@ -34,6 +34,9 @@ const SettingsTable<ColonySettings>& colony_table() {
              "shorten each arrived ant's walk before the update: cut its loops, or also straighten stretches of it"),
       field("local-search-window", &S::local_search_window, "2:4096",
             "longest stretch of a walk, in nodes, that straighten replaces by one straight segment"),
+      field("band-search", &S::band_search, "0:64",
+            "replace each iteration's shortest walk by the shortest path within this many moves of it, so it takes a "
+            "nearby door it missed (0 = none)"),
       field("walk-limit", &S::walk_limit, "0:1e6",
             "an ant dies after this many times as many moves as the best path so far has steps (0 = no limit)"),
       choice("walk-length", &S::walk_length, {"grid", "line-of-sight"}, {WalkLength::grid, WalkLength::line_of_sight},

@@ -155,7 +155,8 @@ class Colony {
         p_(pipeline),
         s_(settings),
         check_every_hook_(check_every_hook),
-        shortener_(graph, forbidden_, settings.local_search == LocalSearch::loops ? 0 : settings.local_search_window) {
+        shortener_(graph, forbidden_, settings.local_search == LocalSearch::loops ? 0 : settings.local_search_window),
+        band_(graph, forbidden_, settings.band_search) {
     context_.graph = &graph;
     context_.start = start;
     context_.goal = goal;
@@ -280,6 +281,20 @@ class Colony {
     }
     if (local_search_ && scratch != nullptr) shortener_.shorten(ant, scratch->walk);
     if (s_.walk_length == WalkLength::line_of_sight) ant.length = sight_length(g_, ant.nodes, s_.sight_limit);
+  }
+
+  // The band search (ColonySettings::band_search) on the iteration's shortest walk, before its
+  // corridor is keyed and the strategies learn from it. A walk that retraces the best path, which
+  // had its band search, is left alone (not in the restart twin, whose walks must not depend on
+  // each other).
+  void search_band(std::span<Ant> ants) {
+    if (s_.band_search == 0) return;
+    const Ant* walk = shortest(ants);
+    if (walk == nullptr) return;
+    Ant& ant = ants[static_cast<std::size_t>(walk - ants.data())];
+    if (s_.null_model != NullModel::restarts && has_best_ && ant.nodes == best_.nodes) return;
+    if (band_.improve(ant) && s_.walk_length == WalkLength::line_of_sight)
+      ant.length = sight_length(g_, ant.nodes, s_.sight_limit);
   }
 
   // A path of the other colony's walks, reversed: the same length, not pulled taut anew from
@@ -602,6 +617,7 @@ class Colony {
   std::vector<std::uint8_t> known_forbidden_;  // what the threads' marks hold (publish_forbidden())
   std::unique_ptr<ScratchPool> scratch_;
   WalkShortener shortener_;
+  BandSearch band_;
   bool local_search_ = false;
   HeuristicSpecs heuristic_;  // read once per run, after the heuristic's begin_run()
   std::uint64_t max_moves_ = std::numeric_limits<std::uint64_t>::max();

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
 
 namespace aco {
 
@@ -181,6 +185,78 @@ void WalkShortener::shorten(Ant& ant, WalkScratch& s) const {
     ant.edges[k] = g_.find_edge(ant.nodes[k], ant.nodes[k + 1]);
     ant.length += g_.cost(ant.edges[k]);
   }
+}
+
+BandSearch::BandSearch(const Graph& graph, const std::vector<std::uint8_t>& forbidden, int radius)
+    : g_(graph), forbidden_(forbidden), radius_(radius) {}
+
+bool BandSearch::improve(Ant& ant) {
+  if (stamp_.empty()) {
+    const auto n = static_cast<std::size_t>(g_.num_nodes());
+    stamp_.assign(n, 0);
+    hops_.resize(n);
+    via_.resize(n);
+    distance_.resize(n);
+  }
+  if (++current_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), 0);
+    current_ = 1;
+  }
+  const NodeId start = ant.nodes.front(), goal = ant.nodes.back();
+  const auto enter = [&](NodeId n, int hops) {
+    stamp_[n] = current_;
+    hops_[n] = hops;
+    via_[n] = -1;
+    distance_[n] = std::numeric_limits<double>::infinity();
+    queue_.push_back(n);
+  };
+  // The band: breadth-first from every node of the walk, `radius_` moves out, around forbidden nodes.
+  queue_.clear();
+  for (NodeId n : ant.nodes)
+    if (stamp_[n] != current_) enter(n, 0);
+  for (std::size_t k = 0; k < queue_.size(); ++k) {
+    const NodeId n = queue_[k];
+    if (hops_[n] == radius_) continue;
+    for (EdgeId e = g_.edges_begin(n); e < g_.edges_end(n); ++e) {
+      const NodeId t = g_.targets[e];
+      if (stamp_[t] != current_ && !forbidden_[t]) enter(t, hops_[n] + 1);
+    }
+  }
+  // Dijkstra from the start within the band; ties broken by node id, so the result is the same
+  // on every machine.
+  using Entry = std::pair<double, NodeId>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
+  distance_[start] = 0.0;
+  open.push({0.0, start});
+  while (!open.empty()) {
+    const auto [d, n] = open.top();
+    open.pop();
+    if (n == goal) break;
+    if (d > distance_[n]) continue;
+    for (EdgeId e = g_.edges_begin(n); e < g_.edges_end(n); ++e) {
+      const NodeId t = g_.targets[e];
+      if (stamp_[t] != current_ || d + g_.cost(e) >= distance_[t]) continue;
+      distance_[t] = d + g_.cost(e);
+      via_[t] = e;
+      open.push({distance_[t], t});
+    }
+  }
+  double walked = 0.0;
+  for (EdgeId e : ant.edges) walked += g_.cost(e);
+  // Only a real gain: summing the same steps in another order may differ in the last bits.
+  if (!(distance_[goal] < walked - 1e-9 * walked)) return false;
+  ant.nodes.clear();
+  ant.edges.clear();
+  for (NodeId n = goal; n != start; n = g_.source(via_[n])) {
+    ant.nodes.push_back(n);
+    ant.edges.push_back(via_[n]);
+  }
+  ant.nodes.push_back(start);
+  std::reverse(ant.nodes.begin(), ant.nodes.end());
+  std::reverse(ant.edges.begin(), ant.edges.end());
+  ant.length = 0.0;
+  for (EdgeId e : ant.edges) ant.length += g_.cost(e);
+  return true;
 }
 
 }  // namespace aco

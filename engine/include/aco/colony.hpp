@@ -57,6 +57,10 @@ struct ColonySettings {
   bool fill_dead_ends = false;
   LocalSearch local_search = LocalSearch::none;
   int local_search_window = 64;
+  // The band search (aco::BandSearch): each iteration's shortest walk is replaced by the shortest
+  // path among the nodes within band_search moves of it, so that it takes a nearby door or gap it
+  // missed (0 = none).
+  int band_search = 0;
   // An ant that has made walk_limit times as many moves as the best path so far has steps dies
   // (0 = no limit): on large maps a lost ant can otherwise fill whole rooms before it backs out.
   double walk_limit = 0.0;

@@ -56,4 +56,31 @@ class WalkShortener {
   double inverse_diagonal_ = 0.0;  // inverse_length_ of a diagonal move
 };
 
+// The band search: a large-neighbourhood local search (Pisinger and Ropke, "Large neighborhood
+// search", Handbook of Metaheuristics, 2010) whose neighbourhood is every path through the band
+// of nodes within `radius` moves of a walk. The walk's corridor stays the colony's choice; within
+// it the walk may take a nearby door, gap or side of an obstacle that it missed. Costs a
+// breadth-first pass over the band and a Dijkstra search in it: O(walk length x radius) nodes.
+class BandSearch {
+ public:
+  // `forbidden`: as WalkShortener's. `radius` >= 1.
+  BandSearch(const Graph& graph, const std::vector<std::uint8_t>& forbidden, int radius);
+
+  // Replaces an arrived ant's walk (start and goal kept) by the shortest path in its band if that
+  // is shorter, with its grid length; returns whether it did. The band's tables are allocated at
+  // the first call (20 bytes per node).
+  bool improve(Ant& ant);
+
+ private:
+  const Graph& g_;
+  const std::vector<std::uint8_t>& forbidden_;
+  int radius_;
+  std::vector<std::uint32_t> stamp_;  // per node: in the band of the current call if == current_
+  std::uint32_t current_ = 0;
+  std::vector<std::int32_t> hops_;  // per band node: moves from the walk
+  std::vector<EdgeId> via_;  // per band node: the edge of its shortest path from the start (-1: none yet)
+  std::vector<double> distance_;  // per band node: of that path
+  std::vector<NodeId> queue_;
+};
+
 }  // namespace aco

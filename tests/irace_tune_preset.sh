@@ -34,7 +34,7 @@ for family in office256-12 office512-25 8room512 doors256-16 doors512-32; do
     fail "robust-corridors: no $family instance"
 done
 grep -q '^colonies ' "$work/robust-corridors/parameters.txt" || fail "robust-corridors: colonies are not tuned"
-grep -q 'target-runner 1 .* --colonies 1 --restart-after 0 --goal-memory=false --update acs --update.rho 0.3 --q0 0.7"' "$work/robust-corridors.log" ||
+grep -q 'target-runner 1 .* --colonies 1 --restart-after 0 --goal-memory=false --update max_min --update.rho 0.3 --update.p_best 0.05 --update.restart_after 0 --q0 0.7 --band-search 16"' "$work/robust-corridors.log" ||
   fail "robust-corridors: irace did not run the preset's configurations"
 # Each terrain scenario's length is A*'s on its terrain.
 read -r _ map _ _ sx sy gx gy length < <(sed -n 2p "$work/terrain/maps/hills40-s4242.asc.scen")

@@ -82,7 +82,7 @@ TEST_CASE("acoplan --json reports every documented field", "[acoplan]") {
   CHECK(j["convergence_walks"].back() == 100 * j["config"]["ants"].get<int>());
   // The configuration: every run key with its resolved value, as --print-config and acobench name them.
   // Naming no pipeline runs the recommended one (data/presets/robust.ini).
-  CHECK(j["config"]["update"] == "acs");
+  CHECK(j["config"]["update"] == "max_min");
   CHECK(j["config"]["update.rho"] == 0.3);
   CHECK(j["config"]["corner-cutting"] == true);
   CHECK(j["config"]["seed"] == 3);
@@ -437,7 +437,9 @@ TEST_CASE("an unreachable goal is reported as unsolved with its own exit status"
 TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range values", "[acoplan][bad-input]") {
   expect_error({"--update", "nope"}, "unknown update plugin 'nope'");
   expect_error({"--update.rhoo", "0.5"}, "unknown option '--update.rhoo'; did you mean '--update.rho'?");
-  expect_error({"--update.p_best", "0.5"}, "the update plugin 'acs' has parameters: rho xi q tau0");
+  expect_error(
+      {"--update.xi", "0.5"},
+      "the update plugin 'max_min' has parameters: rho q p_best best_so_far_every restart_after restart_branching");
   expect_error({"--antz", "5"}, "did you mean '--ants'?");
   expect_error({"--ants", "0"}, "--ants: 0 is outside the range [1, 1000000]");
   expect_error({"--ants", "-3"}, "--ants: -3 is outside the range");
@@ -527,7 +529,7 @@ TEST_CASE("acoplan --repeat runs consecutive seeds and summarises them", "[acopl
   CHECK(s["length"]["mean"].get<double>() == Approx(mean));
   CHECK(s["length"]["sd"].get<double>() == Approx(std::sqrt(sum_sq / 5)).margin(1e-12));
   CHECK(s["turns"].contains("max"));
-  CHECK(j["config"]["update"] == "acs");
+  CHECK(j["config"]["update"] == "max_min");
   // Run 3 of the repetition is the same as a single run with its seed.
   json single = run_json({"--seed", "13", "--iterations", "30", "--corner-cutting"});
   CHECK(single["grid_path"] == j["runs"][3]["grid_path"]);
@@ -547,11 +549,12 @@ TEST_CASE("the shipped presets load and plan with the pipeline they document", "
   CHECK(robust["length"].get<double>() >= robust["any_angle_length"].get<double>() - 1e-9);
   CHECK(robust["config"]["smoother"] == "taut");
   CHECK(robust["config"]["heuristic"] == "progress");
-  CHECK(robust["config"]["update"] == "acs");
+  CHECK(robust["config"]["update"] == "max_min");
   CHECK(robust["config"]["deadlock"] == "backtrack");
   CHECK(robust["config"]["fill-dead-ends"] == true);
   CHECK(robust["config"]["local-search"] == "straighten");
   CHECK(robust["config"]["search"] == "single");
+  CHECK(robust["config"]["band-search"] == 16);
 
   const std::string hills = (test::data_dir() / "terrain/generated/hills40-s101.asc").string();
   const json terrain = run_json({"--config", (test::data_dir() / "presets/terrain.ini").string(), "--map", hills,

@@ -126,6 +126,7 @@ TEST_CASE("a sight limit cuts the taut segments: never shorter than without it, 
     s.walk_length = aco::WalkLength::line_of_sight;
     s.sight_limit = limit;
     s.local_search = aco::LocalSearch::none;  // the same walks whatever the limit
+    s.band_search = 0;
     const auto pipeline = aco::instantiate(test::plugins(), spec.pipeline);
     return aco::run_pipeline(test::plugins(), spec.pipeline, pipeline, graph, graph.node({1, 40}), graph.node({81, 40}),
                              s);

@@ -124,13 +124,14 @@ TEST_CASE("acoplan --irace prints only the final length, the same as --json's", 
 TEST_CASE(
     "acoplan --irace-cost: gap is the grid path's gap to A*, any-angle-gap the final path's to the any-angle optimum",
     "[acoplan][irace]") {
-  // A short run that stays above the optimum: one ant, one iteration, no local search.
+  // A short run that stays above the optimum: two ants, two iterations, no local search.
   const std::vector<std::string> args{
       "--scen",         (test::data_dir() / "maps/movingai/dao/arena2.map.scen").string(),
       "--scen-index",   "900",
       "--ants",         "2",
       "--iterations",   "2",
       "--local-search", "none",
+      "--band-search",  "0",
       "--q0",           "0",
       "--seed",         "3"};
   const auto r = test::acoplan(with(args, {"--json"}));

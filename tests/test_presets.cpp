@@ -135,7 +135,7 @@ TEST_CASE("acosim runs the recommended pipeline under a scenario naming none and
     return nlohmann::json::parse(r.out)["config"];
   };
   const auto bare = json_of({});
-  CHECK(bare["update"] == "acs");
+  CHECK(bare["update"] == "max_min");
   CHECK(bare["fill-dead-ends"] == true);
   CHECK(bare["local.follow"] == 0.5);  // the DWA's defaults: the measured best
   CHECK(bare["local.predict"] == true);

@@ -15,7 +15,8 @@
 # any-angle-gap-penalised); the search adds presets/any-angle.params (line-of-sight walks).
 # robust-corridors: robust's maps and the building families (aco_mapgen's office, 8room and doors
 # of the same seeds), the robust preset as it is plus presets/corridors.params (islands, epochs,
-# goal memory, MAX-MIN's restarts: docs/corridors.md), starting from the preset and two colonies.
+# goal memory, MAX-MIN's restarts, the band search: docs/corridors.md), starting from the preset,
+# the preset before issue 52 and two colonies (presets/corridors.configurations).
 # The others search presets/common.params (terrain adds presets/terrain.params) on top of
 # presets/fixed.ini, with acoplan --irace-cost gap-penalised (a run costs its gap g in % plus g
 # squared, so the worst runs count) --irace-effort TUNE_EFFORT (default 0.25 times the ants'

@@ -119,7 +119,9 @@ def inline_command_problems(path, display, root):
         generator = re.fullmatch(GENERATORS, words[0])
         for previous, word in zip(words, words[1:]):
             word = word.rstrip(",;")
-            if word.startswith("-") or "=" in word or previous in OUTPUT_OPTIONS or word.endswith(".db"):
+            # Databases, pictures and pages are what the programs write (a positional output such
+            # as aco_voxel_sample's), not what they read.
+            if word.startswith("-") or "=" in word or previous in OUTPUT_OPTIONS or word.endswith((".db", ".svg", ".html")):
                 continue
             if generator and "." not in os.path.basename(word):
                 continue

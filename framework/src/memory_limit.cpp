@@ -103,7 +103,7 @@ void check_planning_memory(std::int64_t width, std::int64_t height, std::int64_t
   if (estimate <= limit) return;
   const bool world = depth > 1 || volumetric(neighbourhood);
   const std::string size = std::to_string(width) + "x" + std::to_string(height) +
-                           (world ? "x" + std::to_string(depth) + " voxel world" : " map");
+                           (world ? std::string("x") + std::to_string(depth) + " voxel world" : " map");
   throw Error(name + ": a " + size + " needs about " + format_bytes(estimate) + " to plan on (estimate with the " +
               std::to_string(static_cast<int>(neighbourhood)) + "-neighbourhood), more than the memory limit of " +
               format_bytes(limit) + " (" + limit_origin() + "): refused");

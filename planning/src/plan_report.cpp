@@ -39,7 +39,7 @@ std::string waypoint_text(const aco::Graph& g, const Eigen::Vector3d& p) {
 }
 
 std::string map_line(const aco::Graph& graph) {
-  const std::string layers = graph.volumetric ? "x" + std::to_string(graph.depth) + " voxels" : "";
+  const std::string layers = graph.volumetric ? std::string("x") + std::to_string(graph.depth) + " voxels" : "";
   return "map:      " + graph.map->name() + " (" + std::to_string(graph.width) + "x" + std::to_string(graph.height) +
          layers + "), " + aco::describe(graph.options) + "\n";
 }

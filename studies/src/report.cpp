@@ -694,7 +694,7 @@ std::vector<Figure> path_pictures(const Analysis& a, std::size_t p, FigureFiles&
   for (const Result& r : a.results[p]) {
     if (!r.best) continue;
     MapPath path{
-        a.configs[r.config].second.name + " " + fixed(r.best->length, 2), static_cast<std::size_t>(r.config), {}};
+        a.configs[r.config].second.name + " " + fixed(r.best->length, 2), static_cast<std::size_t>(r.config), {}, {}};
     for (const auto& point : nlohmann::json::parse(r.best->path_json)) {
       path.points.push_back({point[0].get<double>(), point[1].get<double>()});
       if (point.size() == 3) path.layers.push_back(point[2].get<double>());

@@ -88,7 +88,7 @@ TEST_CASE("restarts settle the epoch's corridor and keep the run's best path", "
     const aco::ColonyResult once = run(graph, start, goal, plain);
     CHECK(once.restarts == 0);
     aco::Keys zero = plain;
-    zero["restart-after"] = "0";
+    zero["restart-after"] = std::string("0");
     test::check_same_run(run(graph, start, goal, zero), once);
   }
 }

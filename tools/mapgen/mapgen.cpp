@@ -59,14 +59,14 @@ using aco::Cell;
 using aco::OccupancyGrid;
 using mapgen::blocked_cells;
 using mapgen::draw_parabola;
-using mapgen::write_file;
-using mapgen::write_voxel_world;
 using mapgen::fill_ellipse;
 using mapgen::fill_rect;
 using mapgen::format_density;
 using mapgen::near;
 using mapgen::scatter;
 using mapgen::scatter_isolated;
+using mapgen::write_file;
+using mapgen::write_voxel_world;
 
 struct PaperMap {
   std::string name;  // file stem: <name>.map, <name>.map.scen
@@ -246,7 +246,6 @@ std::string format_length(double length) {
   std::snprintf(buffer, sizeof buffer, "%.8g", length);
   return buffer;
 }
-
 
 std::string movingai_map_text(const OccupancyGrid& g) {
   std::string map =
@@ -488,7 +487,6 @@ void write_ros_office(const std::filesystem::path& dir) {
              "free_thresh: 0.196\nmode: trinary\n");
   std::cout << "office.yaml, office.pgm: " << kWidth << "x" << kHeight << " cells at 0.1 m\n";
 }
-
 
 }  // namespace
 

@@ -24,6 +24,7 @@
 #include "aco/program_options_error.hpp"
 #include "aco/run_spec.hpp"
 #include "aco/strategies.hpp"
+#include "aco/yardsticks.hpp"
 
 namespace po = boost::program_options;
 
@@ -473,7 +474,7 @@ void time_scale(aco::PluginRegistry& registry, const std::filesystem::path& shar
     getrusage(RUSAGE_SELF, &usage);
     std::printf("%-34s %12d %12.1f %12.1f %14llu %8.2f %10.0f\n", name.c_str(), graph.num_edges(), t.median_ms,
                 t.ns_per_step, static_cast<unsigned long long>(t.total_steps / runs),
-                optimal && t.last.solved ? 100.0 * (t.mean_length / optimal->length - 1.0) : -1.0,
+                optimal && t.last.solved ? aco::gap_percent(t.mean_length, optimal->length) : -1.0,
                 usage.ru_maxrss / 1024.0);
   };
   const auto classic = load(std::filesystem::path(ACO_BENCH_DATA_DIR) / "maps/classic20/map1.txt");

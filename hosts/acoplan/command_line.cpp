@@ -165,11 +165,13 @@ po::parsed_options config_options(const po::options_description& options, const 
   return parsed;
 }
 
-// The preset a command naming neither --config nor --preset runs, by the kind of its map.
-std::string default_preset(const po::variables_map& vm) {
-  return aco::default_preset(vm.count("map")    ? vm["map"].as<std::string>()
-                             : vm.count("scen") ? vm["scen"].as<std::string>()
-                                                : "");
+// The pipeline the command runs: --preset's, --config's, or the recommended one for its map's kind.
+aco::PipelineSource pipeline_source(const po::variables_map& vm) {
+  const std::string map = vm.count("map")    ? vm["map"].as<std::string>()
+                          : vm.count("scen") ? vm["scen"].as<std::string>()
+                                             : "";
+  return aco::PipelineSource::choose(text(vm, "preset").value_or(""), text(vm, "config").value_or(""),
+                                     aco::map_kind(map), "--");
 }
 
 // Command line first, then the --config file: po keeps the first value stored for a key.
@@ -183,16 +185,8 @@ po::variables_map parse(const po::options_description& options, int argc, const 
       if (option.position_key >= 0)
         throw aco::Error("unexpected argument '" + option.value.front() + "' (options start with --)");
   po::store(parsed, vm);
-  if (vm.count("config") && vm.count("preset")) throw aco::Error("--config and --preset: give one of them");
   {
-    // Neither: the recommended pipeline for the map's kind, as if named.
-    std::string file;
-    if (vm.count("config"))
-      file = vm["config"].as<std::string>();
-    else if (vm.count("preset"))
-      file = aco::preset_file(vm["preset"].as<std::string>()).string();
-    else
-      file = aco::preset_file(default_preset(vm)).string();
+    const std::string file = pipeline_source(vm).file().string();
     const po::parsed_options settings = config_options(options, file, lenient, vm);
     try {
       po::store(settings, vm);
@@ -417,16 +411,7 @@ Request parse_command_line(int argc, const char* const* argv) {
     if (auto v = text(vm, "svg")) r.svg = *v;
     if (auto v = text(vm, "html")) r.html = *v;
     r.max_memory = host_options.max_memory_bytes();
-    if (vm.count("preset"))
-      r.pipeline_source = vm["preset"].as<std::string>();
-    else if (vm.count("config"))
-      r.pipeline_source = "none (--config " + vm["config"].as<std::string>() + ")";
-    else {
-      const std::string preset = default_preset(vm);
-      const std::string kind = preset == "terrain" ? "height maps" : preset == "voxel" ? "voxel worlds" : "2D maps";
-      r.pipeline_source =
-          preset + " (the default for " + kind + "; --preset NAME for another, --list-presets for the papers')";
-    }
+    r.pipeline_source = pipeline_source(vm).description("--");
     if (vm["print-config"].as<bool>()) {
       r.action = Request::Action::print_config;
       r.config = config_file(r);

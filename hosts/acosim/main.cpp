@@ -100,11 +100,9 @@ int main(int argc, char** argv) {
     aco::PluginRegistry registry(host.plugin_search_dirs());
     aco::simulation::Scenario scenario = aco::simulation::load_scenario(scenario_file, registry);
     {
-      aco::KeyedValues changes;
-      if (vm.count("preset") && vm.count("config")) throw aco::Error("--config and --preset: give one of them");
-      if (vm.count("preset")) changes = aco::preset_keys(vm["preset"].as<std::string>());
-      if (vm.count("config")) changes = aco::config_file_keys(vm["config"].as<std::string>());
-      changes = aco::overlay(changes, command_line_keys);
+      const auto given = [&vm](const char* key) { return vm.count(key) ? vm[key].as<std::string>() : std::string(); };
+      const aco::KeyedValues changes =
+          aco::overlay(aco::PipelineSource::named(given("preset"), given("config"), "--").keys(), command_line_keys);
       if (!changes.keys.empty()) scenario = aco::simulation::with_run_keys(scenario, changes, registry);
     }
     if (vm.count("batch")) {

@@ -31,12 +31,69 @@ std::vector<PresetInfo> list_presets() {
   return presets;
 }
 
-std::string default_preset(const std::filesystem::path& map_or_scenario) {
+MapKind map_kind(const std::filesystem::path& map_or_scenario) {
   std::filesystem::path map = map_or_scenario;
   if (map.extension() == ".scen" || map.extension() == ".3dscen") map.replace_extension();
   const std::string extension = map.extension().string();
-  if (extension == ".3dmap" || extension == ".bt" || extension == ".ot") return "voxel";
-  return extension == ".asc" || extension == ".pgm" ? "terrain" : "robust";
+  if (extension == ".3dmap" || extension == ".bt" || extension == ".ot") return MapKind::voxel;
+  return extension == ".asc" || extension == ".pgm" ? MapKind::terrain : MapKind::grid;
+}
+
+std::string recommended_preset(MapKind kind) {
+  switch (kind) {
+    case MapKind::terrain:
+      return "terrain";
+    case MapKind::voxel:
+      return "voxel";
+    case MapKind::grid:
+      break;
+  }
+  return "robust";
+}
+
+std::string default_preset(const std::filesystem::path& map_or_scenario) {
+  return recommended_preset(map_kind(map_or_scenario));
+}
+
+PipelineSource PipelineSource::named(const std::string& preset, const std::string& config,
+                                     const std::string& key_prefix) {
+  if (!preset.empty() && !config.empty())
+    throw Error(key_prefix + "config and " + key_prefix + "preset: give one of them");
+  PipelineSource source;
+  source.preset = preset;
+  source.config = config;
+  return source;
+}
+
+PipelineSource PipelineSource::choose(const std::string& preset, const std::string& config, MapKind kind,
+                                      const std::string& key_prefix) {
+  PipelineSource source = named(preset, config, key_prefix);
+  if (preset.empty() && config.empty()) {
+    source.preset = recommended_preset(kind);
+    source.recommended = true;
+  }
+  return source;
+}
+
+std::filesystem::path PipelineSource::file() const {
+  if (!config.empty()) return config;
+  return preset.empty() ? std::filesystem::path() : preset_file(preset);
+}
+
+KeyedValues PipelineSource::keys() const {
+  if (!config.empty()) return config_file_keys(config);
+  return preset.empty() ? KeyedValues() : preset_keys(preset);
+}
+
+std::string PipelineSource::name(const std::string& key_prefix) const {
+  return config.empty() ? preset : "none (" + key_prefix + "config " + config.string() + ")";
+}
+
+std::string PipelineSource::description(const std::string& key_prefix) const {
+  if (!recommended) return name(key_prefix);
+  const std::string kind = preset == "terrain" ? "height maps" : preset == "voxel" ? "voxel worlds" : "2D maps";
+  return preset + " (the default for " + kind + "; " + key_prefix + "preset NAME for another, " + key_prefix +
+         "list-presets for the papers')";
 }
 
 std::filesystem::path preset_file(const std::string& name) {

@@ -197,7 +197,8 @@ std::unique_ptr<Map> load_problem_map(const ProblemSpec& spec, PluginRegistry* r
   return load_map(file, spec.terrain);
 }
 
-LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry) {
+LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry,
+                           const std::function<void(const Map&)>& check_map) {
   LoadedProblem p;
   if (!spec.scen.empty()) {
     const auto scenarios = load_scenarios(spec.scen);
@@ -222,6 +223,7 @@ LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry) {
     p.start = *spec.start;
     p.goal = *spec.goal;
   }
+  if (check_map) check_map(*p.map);
   check_cell(*p.map, p.start, "start");
   check_cell(*p.map, p.goal, "goal");
   return p;

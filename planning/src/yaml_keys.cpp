@@ -122,8 +122,10 @@ aco::KeyedValues read_run_keys(const std::filesystem::path& file, const YAML::No
   const YAML::Node named = node["config"] ? node["config"] : node["preset"];
   aco::KeyedValues preset;
   try {
-    preset = node["preset"] ? preset_keys(scalar(file, named, "preset"))
-                            : config_file_keys((file.parent_path() / scalar(file, named, "config")).lexically_normal());
+    preset = node["preset"] ? PipelineSource::named(scalar(file, named, "preset"), "").keys()
+                            : PipelineSource::named(
+                                  "", (file.parent_path() / scalar(file, named, "config")).lexically_normal().string())
+                                  .keys();
   } catch (const Error& e) {
     fail(file, named, e.what());
   }

@@ -30,11 +30,20 @@ class ArrayMap:
 def map_arrays(file: _Path, terrain_keys: Dict[str, str]) -> Tuple[str, np.ndarray, float, str]: ...
 def voxel_map_text(map: ArrayMap) -> str: ...
 
-# (acoplan's --json object as text, the preset or config the keys were laid over, the cell size,
-# each iteration's best length, the final pheromone per edge if kept)
+# 100 (length / optimal - 1), the gap of aco.Result and of the reports
+def gap_percent(length: float, optimal: float) -> float: ...
+
+# A run of plan(), kept native: its picture and the map it planned on, without reading the map again
+class PlannedRun:
+    def svg(self) -> str: ...
+    # as map_arrays()
+    def map_arrays(self) -> Tuple[str, np.ndarray, float, str]: ...
+
+# (acoplan's --json object as a dict, the preset or config the keys were laid over, the cell size,
+# the run; it keeps the final pheromone per edge for its picture if asked)
 def plan(map: Union[_Path, ArrayMap], start: _Cell, goal: _Cell, keys: Dict[str, str],
          preset: str, config: str, threads: int, max_memory: Optional[str],
-         keep_pheromone: bool) -> Tuple[str, str, float, List[float], List[float]]: ...
+         keep_pheromone: bool) -> Tuple[Dict[str, Any], str, float, PlannedRun]: ...
 
 # A Moving AI .scen (or .3dscen) file's problems: dicts with map, start, goal ((x, y, z) from a
 # .3dscen), optimal_length, bucket, width, height
@@ -71,10 +80,6 @@ def expected_running_time(hitting_times: Sequence[float], efforts: Sequence[floa
 
 # --- Pictures and simulation ---------------------------------------------------------------------
 
-def run_svg(map: Union[_Path, ArrayMap], keys: Dict[str, str], start: _Cell, goal: _Cell,
-            grid_path: Sequence[_Cell], path: Sequence[Sequence[float]], solved: bool, length: float,
-            seed: int, best_so_far: Sequence[float], iteration_best: Sequence[float], pheromone: Sequence[float],
-            optimal_length: float) -> str: ...
 def map_svg(map: Union[_Path, ArrayMap], terrain_keys: Dict[str, str]) -> str: ...
 
 class Simulation:

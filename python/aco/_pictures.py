@@ -3,12 +3,12 @@ aco.plot() for matplotlib."""
 from __future__ import annotations
 
 import os
-from typing import Any, Optional, Tuple, Union
+from typing import Any, Optional, Union
 
 import numpy as np
 
 from . import _aco
-from ._planning import Error, Map, Result, _text
+from ._planning import Error, Map, Result, _keys
 
 
 def _planned(result: Result) -> dict:
@@ -18,22 +18,12 @@ def _planned(result: Result) -> dict:
     return planned
 
 
-def _cell(cell: Any) -> Tuple[int, ...]:
-    """(x, y), or a voxel world's (x, y, z)."""
-    return tuple(int(v) for v in cell)
-
-
 def run_svg(result: Result) -> str:
     """acoplan's picture of the run (``acoplan --svg``): the map, the grid path and the final path,
     start and goal, the convergence curve against the optimum; the pheromone field too when
     planned with ``svg_pheromone=True``. A voxel world's is isometric (the drawing library's
     voxel SVG), with a slice at the start's, the goal's and the path's highest layer."""
-    planned = _planned(result)
-    keys = {key: _text(value) for key, value in result.config.items()}
-    return _aco.run_svg(planned["source"], keys, _cell(result.json["start"]), _cell(result.json["goal"]),
-                        [_cell(cell) for cell in result.grid_path], result.path.tolist(), result.solved,
-                        result.length or 0.0, result.seed, result.convergence.tolist(),
-                        planned["iteration_best"], planned["pheromone"], result.optimal_length or 0.0)
+    return _planned(result)["run"].svg()
 
 
 def map_svg(map: Map) -> str:
@@ -48,13 +38,16 @@ def write_svg(result: Result, path: Union[str, os.PathLike]) -> None:
 
 
 def run_map(result: Result) -> Map:
-    """The aco.Map the run planned on (a map file read again, with the run's terrain keys)."""
+    """The aco.Map the run planned on (a map file's as the run read it, with the run's terrain keys)."""
     planned = _planned(result)
     map = planned["map"]
     if map is None:
         terrain = {key: value for key, value in result.config.items()
                    if key in ("max-slope", "height-scale", "cell-size", "map-format") or key.startswith("map.")}
-        map = planned["map"] = Map.load(planned["source"], **terrain)
+        kind, array, cell_size, name = planned["run"].map_arrays()
+        map = planned["map"] = Map(array, cell_size, name, kind=kind)
+        map.file = planned["source"]
+        map.terrain_keys = _keys(terrain)
     return map
 
 

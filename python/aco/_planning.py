@@ -5,7 +5,6 @@ import contextlib
 import dataclasses
 import functools
 import itertools
-import json
 import operator
 import os
 import re
@@ -286,7 +285,7 @@ class Result:
         self.figures: dict = {key: value for key, value in record.items() if "/" in key or key.startswith("plugin.")}
         self.gap_percent: Optional[float] = None
         if self.solved and self.optimal_length and self.grid_length is not None:
-            gap = 100.0 * (self.grid_length / self.optimal_length - 1.0)
+            gap = _aco.gap_percent(self.grid_length, self.optimal_length)
             # A path as long as the optimum may differ from it in the last bits (another order of the sums).
             self.gap_percent = 0.0 if abs(gap) < 1e-9 else gap
 
@@ -495,14 +494,13 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
     with _LiveObjects() as live, _python_spelling():
         for name, value in live.keys(given, f"o{next(_live_names)}").items():
             text_keys[_key(name)] = _text(value)
-        record, used, cell_size, iteration_best, pheromone = _aco.plan(
+        record, used, cell_size, planned = _aco.plan(
             source, _cell(start, "start"), _cell(goal, "goal"), text_keys, preset or "",
             os.fspath(config) if config is not None else "", int(threads),
             None if max_memory is None else _text(max_memory), bool(svg_pheromone))
-    result = Result(json.loads(record), used, cell_size)
-    # What the picture needs besides the result (aco._pictures); a map file is read again only to plot.
-    result._planned = {"source": source, "map": map if isinstance(map, Map) else None,
-                       "iteration_best": iteration_best, "pheromone": pheromone}
+    result = Result(record, used, cell_size)
+    # The native run, which draws the picture from the map it planned on (aco._pictures).
+    result._planned = {"run": planned, "source": source, "map": map if isinstance(map, Map) else None}
     if svg is not None:
         from ._pictures import write_svg
         write_svg(result, svg)

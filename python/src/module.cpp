@@ -7,6 +7,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -23,7 +25,9 @@
 #include "aco/map_io.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/pipeline.hpp"
-#include "aco/plan_report.hpp"
+#include "aco/plan_request.hpp"
+#include "aco/run_pictures.hpp"
+#include "aco/run_report.hpp"
 #include "aco/planning.hpp"
 #include "aco/plugin_catalog.hpp"
 #include "aco/plugin_error.hpp"
@@ -35,7 +39,6 @@
 #include "aco/studies/statistics.hpp"
 #include "aco/svg.hpp"
 #include "aco/terrain.hpp"
-#include "aco/thread_limit.hpp"
 #include "aco/version.hpp"
 #include "aco/voxel.hpp"
 #include "aco/voxel_svg.hpp"
@@ -90,34 +93,38 @@ std::unique_ptr<aco::Map> make_map(const ArrayMap& source, const aco::TerrainOpt
   return grid;
 }
 
-// A map file as arrays, for aco.Map.load(): ("occupancy", blocked, 1.0, name) or ("terrain", heights, cell size,
-// name); a voxel world's blocked array is 3D, [z, y, x].
-py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain_keys) {
-  aco::Keys keys = terrain_keys;
-  keys["map"] = file.string();
-  const auto map = aco::load_problem_map(aco::resolve_problem(keys, registry(), "--"), &registry());
-  const py::ssize_t w = map->width(), h = map->height();
-  if (const auto* terrain = dynamic_cast<const aco::TerrainMap*>(map.get())) {
+// A map as arrays, for aco.Map: ("occupancy", blocked, 1.0, name) or ("terrain", heights, cell size, name); a
+// voxel world's blocked array is 3D, [z, y, x].
+py::tuple arrays_of(const aco::Map& map) {
+  const py::ssize_t w = map.width(), h = map.height();
+  if (const auto* terrain = dynamic_cast<const aco::TerrainMap*>(&map)) {
     py::array_t<double> heights({h, w});
     auto out = heights.mutable_unchecked<2>();
     for (int y = 0; y < h; ++y)
       for (int x = 0; x < w; ++x) out(y, x) = terrain->elevation({x, y});
-    return py::make_tuple("terrain", heights, terrain->cell_size(), map->name());
+    return py::make_tuple("terrain", heights, terrain->cell_size(), map.name());
   }
-  if (map->volumetric()) {
-    const py::ssize_t d = map->depth();
+  if (map.volumetric()) {
+    const py::ssize_t d = map.depth();
     py::array_t<bool> blocked({d, h, w});
     auto out = blocked.mutable_unchecked<3>();
     for (int z = 0; z < d; ++z)
       for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) out(z, y, x) = !map->passable({x, y, z});
-    return py::make_tuple("occupancy", blocked, 1.0, map->name());
+        for (int x = 0; x < w; ++x) out(z, y, x) = !map.passable({x, y, z});
+    return py::make_tuple("occupancy", blocked, 1.0, map.name());
   }
   py::array_t<bool> blocked({h, w});
   auto out = blocked.mutable_unchecked<2>();
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) out(y, x) = !map->passable({x, y});
-  return py::make_tuple("occupancy", blocked, 1.0, map->name());
+    for (int x = 0; x < w; ++x) out(y, x) = !map.passable({x, y});
+  return py::make_tuple("occupancy", blocked, 1.0, map.name());
+}
+
+// A map file as arrays, for aco.Map.load().
+py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain_keys) {
+  aco::Keys keys = terrain_keys;
+  keys["map"] = file.string();
+  return arrays_of(*aco::load_problem_map(aco::resolve_problem(keys, registry(), "--"), &registry()));
 }
 
 // How often a run looks for Ctrl-C: taking the GIL may wait for another Python thread.
@@ -152,11 +159,6 @@ std::string cell_text(const CellArg& cell) {
   return text;
 }
 
-aco::Cell to_cell(const CellArg& cell) {
-  if (cell.size() < 2 || cell.size() > 3) throw aco::Error("a cell is (x, y), or (x, y, z) in a voxel world");
-  return {cell[0], cell[1], cell.size() == 3 ? cell[2] : 0};
-}
-
 // A voxel world's cells are (x, y, z), a grid's or a terrain's (x, y): the other count is refused
 // before anything else is said of the cell (acoplan reads "X,Y" in a voxel world as layer 0).
 void check_arity(const aco::Map& map, const CellArg& cell, const std::string& what) {
@@ -170,11 +172,48 @@ void check_arity(const aco::Map& map, const CellArg& cell, const std::string& wh
                      " 2D map: give its cells as (x, y) (a voxel world's cells have a z)");
 }
 
-// One run, as acoplan's: the keys over the pipeline file (a preset, a config file, or the
-// default preset for the map's kind), resolved once, then plan_runs() and its JSON. Returns the
-// JSON, the pipeline's source, the map's cell size (the world units of the path per cell), and
-// what the run's picture needs and the JSON leaves out: each iteration's best length and, with
-// keep_pheromone, the final pheromone per edge.
+// A JSON value as Python's json.loads() would give it, without the text between.
+py::object to_python(const nlohmann::json& value) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::null:
+      return py::none();
+    case nlohmann::json::value_t::boolean:
+      return py::bool_(value.get<bool>());
+    case nlohmann::json::value_t::number_integer:
+      return py::int_(value.get<std::int64_t>());
+    case nlohmann::json::value_t::number_unsigned:
+      return py::int_(value.get<std::uint64_t>());
+    case nlohmann::json::value_t::number_float:
+      return py::float_(value.get<double>());
+    case nlohmann::json::value_t::string:
+      return py::str(value.get_ref<const std::string&>());
+    case nlohmann::json::value_t::array: {
+      py::list list;
+      for (const auto& item : value) list.append(to_python(item));
+      return list;
+    }
+    case nlohmann::json::value_t::object: {
+      py::dict dict;
+      for (const auto& [key, item] : value.items()) dict[py::str(key)] = to_python(item);
+      return dict;
+    }
+    default:
+      throw aco::Error("a run's record holds a value JSON has no Python type for");
+  }
+}
+
+// A run of aco.plan(), kept for its pictures and its map: the map it planned on (no file is read
+// again to draw it), its graph's options, and the run (the final pheromone only when asked for).
+struct PlannedRun {
+  std::shared_ptr<const aco::Map> map;
+  aco::GraphOptions graph_options;
+  aco::PlanRun run;
+  std::optional<aco::VoxelWorldView> voxel_view;  // a voxel world's run, on *map: its graph is not kept
+};
+
+// One run, as acoplan's: the keys over the pipeline PipelineSource chooses, resolved once, then
+// aco::plan(PlanRequest). Returns the run's record (acoplan's --json, as a dict), the pipeline's
+// name, the map's cell size (the world units of the path per cell) and the run itself.
 py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, const CellArg& start, const CellArg& goal,
                const aco::Keys& keys, const std::string& preset, const std::string& config, std::int64_t threads,
                const std::optional<std::string>& max_memory, bool keep_pheromone) {
@@ -184,47 +223,37 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, const C
   changes.keys["goal"] = cell_text(goal);
   const auto* file = std::get_if<std::filesystem::path>(&map);
   if (file) changes.keys["map"] = file->string();
-  std::string source = preset;
-  if (!config.empty())
-    source = "none (config " + config + ")";
-  else if (source.empty() && file)
-    source = aco::default_preset(*file);
-  else if (source.empty())
-    source = std::get<ArrayMap>(map).heights.size()        ? "terrain"
-             : std::get<ArrayMap>(map).blocked.ndim() == 3 ? "voxel"
-                                                           : "robust";
-  const aco::KeyedValues pipeline = config.empty() ? aco::preset_keys(source) : aco::config_file_keys(config);
-  aco::RunSpec run = aco::resolve_run(aco::over_pipeline_file(pipeline, changes).keys, registry(), "--");
-  run.colony.between_iterations = SignalCheck();  // Ctrl-C stops the colony after its iteration
-
-  std::string json;
-  double cell_size = 1.0;
-  std::vector<double> iteration_best, pheromone;
+  const auto* array = std::get_if<ArrayMap>(&map);
+  const aco::MapKind kind = file                         ? aco::map_kind(*file)
+                            : array->heights.size()      ? aco::MapKind::terrain
+                            : array->blocked.ndim() == 3 ? aco::MapKind::voxel
+                                                         : aco::MapKind::grid;
+  const aco::PipelineSource source = aco::PipelineSource::choose(preset, config, kind);
+  aco::PlanRequest request;
+  request.run = aco::resolve_run(aco::over_pipeline_file(source.keys(), changes).keys, registry(), "--");
+  request.run.colony.between_iterations = SignalCheck();  // Ctrl-C stops the colony after its iteration
+  request.threads = static_cast<int>(threads);
+  if (max_memory) request.max_memory = aco::parse_memory_size(*max_memory, "max_memory");
+  if (array) request.map = make_map(*array, request.run.problem.terrain);
+  request.check_map = [&](const aco::Map& loaded) {
+    check_arity(loaded, start, "start");
+    check_arity(loaded, goal, "goal");
+    if (keep_pheromone && loaded.volumetric())
+      throw aco::Error("svg_pheromone: the picture of a voxel world (" + loaded.name() +
+                       ") draws no pheromone field; plan without it");
+  };
+  std::optional<aco::PlannedRuns> planned;
   {
     py::gil_scoped_release unlocked;  // plugins written in Python take it back (python bridge plugins)
-    const aco::MemoryLimit memory(max_memory ? std::optional(aco::parse_memory_size(*max_memory, "max_memory"))
-                                             : std::nullopt);
-    // load_problem()'s steps, with the cells' count of coordinates checked first.
-    const std::unique_ptr<aco::Map> owned =
-        file ? aco::load_problem_map(run.problem, &registry()) : make_map(std::get<ArrayMap>(map), run.problem.terrain);
-    check_arity(*owned, start, "start");
-    check_arity(*owned, goal, "goal");
-    const aco::Cell from = to_cell(start), to = to_cell(goal);
-    aco::check_cell(*owned, from, "start");
-    aco::check_cell(*owned, to, "goal");
-    if (keep_pheromone && owned->volumetric())
-      throw aco::Error("svg_pheromone: the picture of a voxel world (" + owned->name() +
-                       ") draws no pheromone field; plan without it");
-    if (const auto* terrain = dynamic_cast<const aco::TerrainMap*>(owned.get())) cell_size = terrain->cell_size();
-    const aco::Graph graph = aco::build_graph(*owned, run.graph);
-    const aco::ThreadLimit limit(threads);
-    const auto runs = aco::plan_runs(registry(), graph, graph.node(from), graph.node(to), run, 1);
-    const aco::PlanReport report{run, registry(), graph, source};
-    json = aco::to_json(report, runs.front());
-    iteration_best = runs.front().iteration_best;
-    if (keep_pheromone) pheromone = runs.front().pheromone;
+    planned = aco::plan(request, registry());
   }
-  return py::make_tuple(json, source, cell_size, iteration_best, pheromone);
+  const aco::PlanReport report{planned->run, registry(), planned->graph, source.name()};
+  py::object record = to_python(aco::run_record(report, planned->runs.front()));
+  const auto* terrain = dynamic_cast<const aco::TerrainMap*>(planned->map.get());
+  auto kept = std::make_shared<PlannedRun>(PlannedRun{planned->map, planned->run.graph, planned->runs.front(), {}});
+  if (!keep_pheromone) kept->run.pheromone = {};
+  if (planned->graph.volumetric) kept->voxel_view.emplace(aco::run_view(planned->graph, kept->run, false));
+  return py::make_tuple(record, source.name(), terrain ? terrain->cell_size() : 1.0, kept);
 }
 
 // A parameter's default as its type's Python value (int, float, bool, str), as a run reads it.
@@ -442,8 +471,8 @@ py::dict read_trials(const std::filesystem::path& database) {
 
 using MapSource = std::variant<std::filesystem::path, ArrayMap>;
 
-// The map and graph a run planned on, made again from the map and the run's problem and graph keys
-// (its resolved config), as the run made them. A voxel world's pictures need no graph: none.
+// An aco.Map's map and graph, made from its file or array with its terrain keys, as a run on it
+// makes them. A voxel world's pictures need no graph: none.
 struct PlannedOn {
   std::unique_ptr<aco::Map> map;
   aco::Graph graph;
@@ -472,17 +501,6 @@ PlannedOn planned_on(const MapSource& source, const aco::Keys& run_keys) {
   return on;
 }
 
-aco::Cell cell_of(const aco::Map& map, const CellArg& cell, const std::string& what) {
-  check_arity(map, cell, what);
-  const aco::Cell c = to_cell(cell);
-  if (!map.contains(c)) throw aco::Error(what + " " + cell_text(cell) + " is outside the map");
-  return c;
-}
-
-aco::NodeId node_of(const aco::Graph& graph, const CellArg& cell, const std::string& what) {
-  return graph.node(cell_of(*graph.map, cell, what));
-}
-
 // The layers a run's voxel picture slices: the start's, the goal's and the path's highest.
 std::vector<int> run_layers(const aco::VoxelWorldView& view) {
   std::vector<int> layers;
@@ -496,53 +514,16 @@ std::vector<int> run_layers(const aco::VoxelWorldView& view) {
   return layers;
 }
 
-// A voxel world's picture of a run (aco::render_voxel_svg): the isometric view with the paths,
-// start and goal, and a slice per layer of run_layers().
-std::string voxel_run_svg(const aco::Map& world, const std::string& title, const CellArg& start, const CellArg& goal,
-                          const std::vector<CellArg>& grid_path, const std::vector<std::vector<double>>& path) {
-  aco::VoxelWorldView view{world};
-  view.title = title;
-  view.start = cell_of(world, start, "start");
-  view.goal = cell_of(world, goal, "goal");
-  for (const auto& cell : grid_path) view.grid_path.push_back(cell_of(world, cell, "a grid path's cell"));
-  for (const auto& point : path) {
-    if (point.size() != 3) throw aco::Error("a path's point in a voxel world needs x, y and z");
-    view.path.emplace_back(point[0], point[1], point[2]);
+// acoplan's picture of a run (aco::render_svg; a voxel world's isometric, with a slice per layer of
+// run_layers()), from the map it planned on: a 2D map's graph is built again, not its file read.
+std::string run_svg(const PlannedRun& planned) {
+  if (planned.voxel_view) {
+    aco::VoxelSvgStyle style;
+    style.slices = run_layers(*planned.voxel_view);
+    return aco::render_voxel_svg(*planned.voxel_view, style);
   }
-  aco::VoxelSvgStyle style;
-  style.slices = run_layers(view);
-  return aco::render_voxel_svg(view, style);
-}
-
-// acoplan's picture of a run (aco::render_svg), from the run's fields as aco.Result holds them.
-std::string run_svg(const MapSource& source, const aco::Keys& run_keys, const CellArg& start, const CellArg& goal,
-                    const std::vector<CellArg>& grid_path, const std::vector<std::vector<double>>& path, bool solved,
-                    double length, std::uint64_t seed, const std::vector<double>& best_so_far,
-                    const std::vector<double>& iteration_best, const std::vector<double>& pheromone,
-                    double optimal_length) {
-  const PlannedOn on = planned_on(source, run_keys);
-  const std::string title = aco::run_title(on.map->name(), solved, length, seed);
-  if (on.map->volumetric()) {
-    if (!pheromone.empty()) throw aco::Error("the picture of a voxel world draws no pheromone field");
-    return voxel_run_svg(*on.map, title, start, goal, grid_path, path);
-  }
-  aco::RunPicture picture;
-  picture.title = title;
-  picture.start = node_of(on.graph, start, "start");
-  picture.goal = node_of(on.graph, goal, "goal");
-  for (const auto& cell : grid_path) picture.grid_path.push_back(node_of(on.graph, cell, "a grid path's cell"));
-  for (const auto& point : path) {
-    if (point.size() < 2) throw aco::Error("a path's point needs x and y");
-    picture.path.emplace_back(point[0], point[1], point.size() > 2 ? point[2] : 0.0);
-  }
-  if (!pheromone.empty() && pheromone.size() != static_cast<std::size_t>(on.graph.num_edges()))
-    throw aco::Error("the pheromone has " + std::to_string(pheromone.size()) + " values, not one per edge (" +
-                     std::to_string(on.graph.num_edges()) + ")");
-  picture.pheromone = pheromone;
-  picture.best_so_far = best_so_far;
-  picture.iteration_best = iteration_best;
-  picture.optimal_length = optimal_length;
-  return aco::render_svg(on.graph, picture);
+  const aco::Graph graph = aco::build_graph(*planned.map, planned.graph_options);
+  return aco::render_svg(graph, aco::run_picture(graph, planned.run, !planned.run.pheromone.empty()));
 }
 
 // The map alone; a voxel world isometric, with slices at its lowest, middle and highest layers.
@@ -566,12 +547,9 @@ struct Simulation {
 Simulation simulate(const std::filesystem::path& file, const aco::Keys& keys, const std::string& preset,
                     const std::string& config) {
   Simulation run{aco::simulation::load_scenario(file, registry()), {}};
-  aco::KeyedValues changes;
-  if (!preset.empty()) changes = aco::preset_keys(preset);
-  if (!config.empty()) changes = aco::config_file_keys(config);
   aco::KeyedValues given;
   given.keys = keys;
-  changes = aco::overlay(changes, given);
+  const aco::KeyedValues changes = aco::overlay(aco::PipelineSource::named(preset, config).keys(), given);
   if (!changes.keys.empty()) run.scenario = aco::simulation::with_run_keys(run.scenario, changes, registry());
   py::gil_scoped_release unlocked;  // local planners written in Python take it back
   const aco::MemoryLimit memory(std::nullopt);
@@ -647,6 +625,7 @@ PYBIND11_MODULE(_aco, m) {
         return text.str();
       },
       py::arg("map"));
+  m.def("gap_percent", &aco::gap_percent, py::arg("length"), py::arg("optimal"));
   m.def("plan", &plan, py::arg("map"), py::arg("start"), py::arg("goal"), py::arg("keys"), py::arg("preset"),
         py::arg("config"), py::arg("threads"), py::arg("max_memory"), py::arg("keep_pheromone"));
   // A Moving AI .scen file's problems, with the map file acoplan --scen reads them on.
@@ -715,9 +694,9 @@ PYBIND11_MODULE(_aco, m) {
   });
 
   // Pictures and simulation.
-  m.def("run_svg", &run_svg, py::arg("map"), py::arg("keys"), py::arg("start"), py::arg("goal"), py::arg("grid_path"),
-        py::arg("path"), py::arg("solved"), py::arg("length"), py::arg("seed"), py::arg("best_so_far"),
-        py::arg("iteration_best"), py::arg("pheromone"), py::arg("optimal_length"));
+  py::class_<PlannedRun, std::shared_ptr<PlannedRun>>(m, "PlannedRun")
+      .def("svg", &run_svg)
+      .def("map_arrays", [](const PlannedRun& planned) { return arrays_of(*planned.map); });
   m.def("map_svg", &map_svg, py::arg("map"), py::arg("terrain_keys"));
   py::class_<Simulation>(m, "Simulation")
       .def("summary_json",

@@ -1,6 +1,7 @@
 """Pictures: plan(svg=...) and Result._repr_svg_ are acoplan's SVG, Map._repr_svg_ the map alone,
 aco.plot() draws in one frame of world units."""
 import re
+import shutil
 import subprocess
 
 import matplotlib
@@ -83,7 +84,7 @@ def test_plot_draws_terrain_and_paths_in_the_same_world_units():
     assert (5, 7) in set(zip(columns.tolist(), rows.tolist()))
 
 
-def test_plot_reads_a_map_file_again_and_draws_a_map_alone():
+def test_plot_draws_the_map_a_run_planned_on_and_a_map_alone():
     result = aco.plan(MAP1, (0, 0), (19, 19), iterations=3, seed=1)
     ax = aco.plot(result)
     assert np.array_equal(ax.get_images()[0].get_array(), aco.Map.load(MAP1).array)
@@ -99,12 +100,13 @@ def test_a_result_not_planned_here_has_no_picture():
         aco.plot(copy)
 
 
-def test_the_native_picture_refuses_fields_that_do_not_fit_the_map():
-    source = aco.Map(np.zeros((4, 4), dtype=bool))._native()
-    fields = dict(start=(0, 0), goal=(3, 3), grid_path=[(0, 0), (3, 3)], path=[[0, 0], [3, 3]], solved=True, length=4.2,
-                  seed=1, best_so_far=[4.2], iteration_best=[4.2], pheromone=[], optimal_length=4.2)
-    assert aco._aco.run_svg(source, {}, **fields).startswith("<svg")
-    with pytest.raises(aco.Error, match="not one per edge"):
-        aco._aco.run_svg(source, {}, **{**fields, "pheromone": [1.0, 2.0]})
-    with pytest.raises(aco.Error, match=r"a grid path's cell 9,0 is outside the map"):
-        aco._aco.run_svg(source, {}, **{**fields, "grid_path": [(0, 0), (9, 0)]})
+def test_pictures_and_the_map_come_from_the_run_not_from_the_file_again(tmp_path):
+    copy = tmp_path / "map1.txt"
+    shutil.copy(MAP1, copy)
+    result = aco.plan(copy, (0, 0), (19, 19), iterations=3, seed=1, svg=tmp_path / "plan.svg", svg_pheromone=True)
+    copy.unlink()  # what the run read is all its pictures need
+    assert result._repr_svg_() == (tmp_path / "plan.svg").read_text()
+    assert "pheromone" in result._repr_svg_()
+    planned_on = aco.plot(result).get_images()[0].get_array()
+    assert np.array_equal(planned_on, aco.Map.load(MAP1).array)
+    assert aco._pictures.run_map(result).file == str(copy)

@@ -152,9 +152,9 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
   // Without its smoother: robust's taut path grazes obstacle corners, which a robot with a body cannot
   // follow; the local planner tracks the grid path (a scenario may name a smoother).
   if (!aco::yaml::names_pipeline(run)) {
-    aco::KeyedValues robust = aco::preset_keys("robust");
-    aco::drop_slot(robust.keys, "smoother");
-    keys = aco::overlay(robust, keys);
+    aco::KeyedValues recommended = aco::PipelineSource::choose("", "", aco::MapKind::grid).keys();  // a robot's floor
+    aco::drop_slot(recommended.keys, "smoother");
+    keys = aco::overlay(recommended, keys);
   }
   for (const char* end : {"start", "goal"}) {
     if (!run[end]) fail(file, run, "'run' needs '" + std::string(end) + "' [x, y]");

@@ -56,7 +56,8 @@ Configuration default_pipeline(const std::filesystem::path& file, const YAML::No
          "the problems mix 2D maps and height maps, whose recommended pipelines differ: name one "
          "(settings: {preset: robust}, or terrain, or config: FILE)");
   Configuration c;
-  static_cast<aco::KeyedValues&>(c) = aco::preset_keys(kinds.empty() ? "robust" : *kinds.begin());
+  static_cast<aco::KeyedValues&>(c) =
+      aco::preset_keys(kinds.empty() ? aco::recommended_preset(aco::MapKind::grid) : *kinds.begin());
   return c;
 }
 

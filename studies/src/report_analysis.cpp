@@ -11,7 +11,6 @@
 
 namespace aco::studies {
 
-double gap_percent(double grid_length, double optimal) { return 100.0 * (grid_length / optimal - 1.0); }
 double gap_percent(const TrialRecord& t, double optimal) { return gap_percent(t.grid_length, optimal); }
 
 bool unmeasured(const TrialRecord& t) { return !t.simulation && t.iterations > 0 && t.elapsed_s.empty(); }
@@ -74,7 +73,7 @@ Analysis analyse(const ResultsDb& db) {
         // A continuous planner's trial (ompl) has no grid path: its grid_length is NULL in the
         // database, read back as 0, and it has no gap.
         if (optimal > 0 && t->grid_length > 0) r.gaps.push_back(gap_percent(*t, optimal));
-        if (any_angle > 0) over_any_angle.push_back(100.0 * (t->length / any_angle - 1.0));
+        if (any_angle > 0) over_any_angle.push_back(gap_percent(t->length, any_angle));
         if (t->optimal_corridor) in_corridor.push_back(*t->optimal_corridor ? 1.0 : 0.0);
         const auto walked = t->properties.find("optimal_corridor_walked");
         if (walked != t->properties.end()) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "aco/plugin_registry.hpp"
+#include "aco/yardsticks.hpp"
 #include "aco/studies/results_db.hpp"
 #include "aco/studies/statistics.hpp"
 
@@ -61,7 +62,7 @@ struct Analysis {
 // smoothed (any-angle) path may be shorter than the grid optimum, and its "gap" would be
 // negative without being better than optimal. (A simulation trial's grid length is the distance
 // driven.)
-double gap_percent(double grid_length, double optimal);
+using aco::gap_percent;  // of a length (aco/yardsticks.hpp)
 double gap_percent(const TrialRecord& t, double optimal);
 
 // A planning run whose rows lack the anytime curves: stored by an acobench of format 3 or earlier.

@@ -9,13 +9,12 @@
 #include <thread>
 #include <nlohmann/json.hpp>
 
-#include "aco/any_angle.hpp"
-#include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/parallel.hpp"
 #include "aco/plugin_record.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/version.hpp"
+#include "aco/yardsticks.hpp"
 #include "aco/studies/results_db.hpp"
 
 namespace aco::studies {
@@ -52,10 +51,12 @@ class Runner {
     std::vector<ProblemRecord> records;
     for (std::size_t i = 0; i < e.problems.size(); ++i) {
       const Problem& p = e.problems[i];
-      // The optimal length, once per problem, on the baseline's graph (a 16-neighbourhood
-      // configuration may beat it: its gap is then negative).
+      // The yardsticks, once per problem, on the baseline's graph (a 16-neighbourhood
+      // configuration may beat its optimum: its gap is then negative). A simulation is judged by
+      // its drive, not by the planned path's any-angle optimum.
       const aco::Graph& graph = trials_.graph(static_cast<int>(i), base);
-      const auto optimal = aco::astar(graph, graph.node(p.start), graph.node(p.goal));
+      const aco::Yardsticks y = aco::yardsticks(graph, graph.node(p.start), graph.node(p.goal),
+                                                p.simulation ? nullptr : &trials_.corridor(static_cast<int>(i), base));
       nlohmann::json setup = {{"map", e.relative_to_file(p.map)},
                               {"start", cell_json(p.start)},
                               {"goal", cell_json(p.goal)},
@@ -68,10 +69,7 @@ class Runner {
         setup["simulation"] = e.relative_to_file(p.simulation->file);
         setup["variations"] = p.variations;
       }
-      // The any-angle yardstick on flat grids of unit cells (a terrain's slopes and cell size it does not know).
-      const auto* grid = dynamic_cast<const aco::OccupancyGrid*>(graph.map);
-      const auto any_angle = grid && !p.simulation ? aco::any_angle_optimum(*grid, p.start, p.goal) : std::nullopt;
-      records.push_back({p.name, setup.dump(), optimal ? optimal->length : -1.0, any_angle ? any_angle->length : -1.0});
+      records.push_back({p.name, setup.dump(), y.optimal_length.value_or(-1.0), y.any_angle_length.value_or(-1.0)});
     }
     db_ = std::make_unique<ResultsDb>(options.database, e.name, e.fingerprint(registry), records);
     finished_ = db_->finished();

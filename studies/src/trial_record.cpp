@@ -9,6 +9,7 @@
 #include "aco/colony.hpp"
 #include "aco/error.hpp"
 #include "aco/simulation/simulation.hpp"
+#include "aco/yardsticks.hpp"
 
 namespace aco::studies {
 namespace {
@@ -172,7 +173,7 @@ TrialField gap(const char* name, unsigned use, double scale, int csv_digits) {
           use,
           csv_digits,
           [scale](const TrialRecord& t, double optimal) {
-            return t.solved && optimal > 0 ? TrialCell(scale * (t.grid_length / optimal - 1.0)) : TrialCell();
+            return t.solved && optimal > 0 ? TrialCell(scale * aco::relative_gap(t.grid_length, optimal)) : TrialCell();
           },
           {},
           {}};

@@ -12,7 +12,7 @@
 #include "aco/error.hpp"
 #include "aco/plugin_error.hpp"
 #include "aco/map_io.hpp"
-#include "aco/plan_report.hpp"
+#include "aco/yardsticks.hpp"
 #include "aco/plugin_call.hpp"
 #include "aco/simulation/batch.hpp"
 
@@ -143,6 +143,12 @@ const aco::Graph& TrialRunner::graph(int problem, const aco::RunSpec& run) {
   return problems_->list.at(static_cast<std::size_t>(problem)).graph(run);
 }
 
+const aco::OptimalCorridor& TrialRunner::corridor(int problem, const aco::RunSpec& run) {
+  const std::unique_lock lock(problems_->mutex);
+  const Problem& p = experiment_.problems[static_cast<std::size_t>(problem)];
+  return problems_->list.at(static_cast<std::size_t>(problem)).corridor(run.problem.terrain, p.start, p.goal);
+}
+
 TrialRecord TrialRunner::run(const TrialOrder& t) {
   TrialRecord r = [&] {
     try {
@@ -200,13 +206,8 @@ TrialRecord TrialRunner::plan(const TrialOrder& t) {
   r.solved = o.solved();
   r.length = o.length;
   r.grid_length = o.search.length;
-  if (r.solved || o.properties.count("corridors")) {
-    const std::unique_lock lock(problems_->mutex);
-    const aco::OptimalCorridor& corridor =
-        problems_->list[t.problem].corridor(run.problem.terrain, problem.start, problem.goal);
-    if (o.solved()) r.optimal_corridor = corridor.contains(o.path);
-    aco::note_optimal_corridor_walked(corridor, o);
-  }
+  if (r.solved || o.properties.count("corridors"))
+    r.optimal_corridor = aco::judge_corridor(corridor(t.problem, run), o);
   r.turns = o.turns;
   r.iterations = o.search.iterations;
   r.best_iteration = o.search.best_iteration;

@@ -8,6 +8,7 @@
 // --print-config, --json, acobench's experiment files and database): "map", "start",
 // "max-slope", "neighbourhood", "planner", "ants", "update", "update.rho", "ifwa.radius".
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -141,8 +142,9 @@ std::unique_ptr<Map> load_problem_map(const ProblemSpec& problem, PluginRegistry
 // Loads the map with the terrain options and its reader (map plugins from `registry`; without
 // one, built-in formats only), takes start and goal from the scenario (whose map it is unless
 // `map` is set) or the cells, and checks both cells: an Error says which cell is outside or
-// blocked, and why.
-LoadedProblem load_problem(const ProblemSpec& problem, PluginRegistry* registry = nullptr);
+// blocked, and why. `check_map`, if given, sees the map first (aco::PlanRequest::check_map).
+LoadedProblem load_problem(const ProblemSpec& problem, PluginRegistry* registry = nullptr,
+                           const std::function<void(const Map&)>& check_map = {});
 // Throws an Error if `cell` ("start", "goal") is outside the map or blocked, naming the reason.
 void check_cell(const Map& map, Cell cell, const std::string& what);
 

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <vector>
 
+#include "aco/corridor.hpp"
 #include "aco/graph.hpp"
 #include "aco/planning.hpp"
 #include "aco/plugin_registry.hpp"
@@ -41,6 +42,9 @@ class TrialRunner {
 
   // The graph of a problem with a run's terrain and graph options (built on first use).
   const aco::Graph& graph(int problem, const aco::RunSpec& run);
+  // The problem's exact any-angle optimum and its corridor on the map of a run's terrain options
+  // (made on first use; empty on maps other than flat grids).
+  const aco::OptimalCorridor& corridor(int problem, const aco::RunSpec& run);
 
   // Runs one trial of a prepared configuration. Whatever the trial throws (a plugin's failure,
   // or the host's) comes back as a failed record with the message naming the trial. Its

@@ -1,4 +1,4 @@
-#include "aco/plan_report.hpp"
+#include "aco/run_report.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -8,9 +8,6 @@
 #include <map>
 #include <set>
 #include <sstream>
-
-#include "aco/astar.hpp"
-#include "aco/corridor.hpp"
 
 namespace aco {
 namespace {
@@ -191,7 +188,7 @@ std::vector<std::pair<std::string, Stats>> measures(const std::vector<PlanRun>& 
       v["cells"].push_back(double(o.search.path.size()));
     }
     if (o.any_angle_length && *o.any_angle_length > 0)
-      v["over_any_angle_pct"].push_back(100.0 * (o.length / *o.any_angle_length - 1.0));
+      v["over_any_angle_pct"].push_back(gap_percent(o.length, *o.any_angle_length));
     if (o.optimal_corridor) v["optimal_corridor"].push_back(*o.optimal_corridor ? 1.0 : 0.0);
     v["turns"].push_back(o.turns);
     v["best_iteration"].push_back(o.search.best_iteration);
@@ -207,39 +204,13 @@ std::vector<std::pair<std::string, Stats>> measures(const std::vector<PlanRun>& 
 
 }  // namespace
 
-void note_optimal_corridor_walked(const OptimalCorridor& corridor, PlanOutcome& run) {
-  if (!run.properties.count("corridors")) return;
-  if (const auto walked = corridor.among(run.corridors))
-    run.properties["optimal_corridor_walked"] = std::int64_t{*walked ? 1 : 0};
-}
-
-std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal,
-                               const RunSpec& run, std::int64_t count) {
-  RunSpec seeded = run;
-  std::vector<PlanRun> runs;
-  for (std::int64_t i = 0; i < count; ++i, ++seeded.colony.seed) {
-    PlanRun o;
-    static_cast<PlanOutcome&>(o) = plan(registry, graph, start, goal, seeded);
-    runs.push_back(std::move(o));
-  }
-  const auto optimal = astar(graph, start, goal);
-  // The exact any-angle optimum and its corridor exist on occupancy grids only (none on terrains
-  // and voxel worlds: OptimalCorridor leaves them empty).
-  const OptimalCorridor corridor(*graph.map, graph.cell(start), graph.cell(goal));
-  for (auto& o : runs) {
-    if (optimal) o.optimal_length = optimal->length;
-    if (corridor.optimum()) o.any_angle_length = corridor.optimum()->length;
-    if (o.solved()) o.optimal_corridor = corridor.contains(o.path);
-    note_optimal_corridor_walked(corridor, o);
-  }
-  return runs;
-}
-
-std::string to_json(const PlanReport& report, const PlanRun& o) {
+nlohmann::json run_record(const PlanReport& report, const PlanRun& o) {
   nlohmann::json j = run_json(report.graph, o);
   j.update(config_json(report, o));
-  return j.dump();
+  return j;
 }
+
+std::string to_json(const PlanReport& report, const PlanRun& o) { return run_record(report, o).dump(); }
 
 std::string to_json(const PlanReport& report, const std::vector<PlanRun>& runs) {
   const aco::Graph& graph = report.graph;
@@ -316,14 +287,14 @@ std::string summary(const PlanReport& report, const PlanRun& o) {
     // A continuous path may cut across the graph's moves: shorter than the graph's optimum.
     const double length = grid_path ? o.search.length : o.length;
     out << "optimum:  " << *o.optimal_length << " (A* on the same graph), gap " << std::setprecision(2)
-        << 100.0 * (length - *o.optimal_length) / *o.optimal_length
+        << gap_percent(length, *o.optimal_length)
         << (grid_path ? " % for the grid path\n"
                       : " % for the continuous path (it need not follow the graph's moves)\n")
         << std::setprecision(4);
   }
   if (o.any_angle_length) {
     out << "any-angle: " << *o.any_angle_length << " (the exact optimum at any angle), final path "
-        << std::setprecision(2) << 100.0 * (o.length / *o.any_angle_length - 1.0) << " % longer";
+        << std::setprecision(2) << gap_percent(o.length, *o.any_angle_length) << " % longer";
     if (o.optimal_corridor)
       out << ", " << (*o.optimal_corridor ? "in its corridor" : "in ANOTHER corridor than the optimum's");
     const auto walked = o.properties.find("optimal_corridor_walked");

@@ -1,8 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages the build needs; only the missing ones, so it is quick to rerun.
 #   tools/setup.sh [PACKAGE...]   also these (a tool's own needs, e.g. tools/slurm-check.sh's Slurm)
+#   tools/setup.sh --demo         only what the demo's build needs (the preset demo: acoplan and the
+#                                 plugins), a few minutes on a fresh machine; tools/test.sh adds the rest
 set -euo pipefail
-# libssl-dev: SHA-256 of plugin files (provenance). clang: the test that loads a clang-built
+# The demo's: the compiler, CMake, the libraries acoplan and the plugins link (libssl-dev: SHA-256
+# of plugin files, provenance; libsqlite3-dev: the studies' library, which the configuration finds)
+# and ccache, which gives the later builds back what the demo compiled.
+demo_packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
+               nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev ccache)
+# The rest. catch2: the tests. clang: the test that loads a clang-built
 # plugin, and with libclang-rt-14-dev tools/fuzz.sh (libFuzzer, sanitizers). chromium: the tests
 # that open the HTML report and player. python3: the player test's arithmetic. openmpi-bin and
 # libopenmpi-dev: acobench under mpirun (the release and debug presets build it with MPI).
@@ -18,15 +25,20 @@ set -euo pipefail
 # (ompl_benchmark_statistics) and sqlite3.
 # liboctomap-dev: the map plugin map/octomap (.bt and .ot voxel worlds) and tools/octomapgen,
 # which made data/maps/octomap (without it the build leaves both out).
-packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen3-dev libtbb-dev
-          nlohmann-json3-dev libyaml-cpp-dev libsqlite3-dev libssl-dev catch2 clang libclang-rt-14-dev
+extra=("$@")
+[ "${1:-}" != --demo ] || extra=()
+packages=("${demo_packages[@]}" catch2 clang libclang-rt-14-dev
           chromium python3 openmpi-bin libopenmpi-dev python3-dev pybind11-dev python3-numpy python3-pandas
-          python3-pytest python3-matplotlib python3-venv python3-pip python3-setuptools python3-wheel ccache mypy
+          python3-pytest python3-matplotlib python3-venv python3-pip python3-setuptools python3-wheel mypy
           python3-nbclient python3-nbformat python3-ipykernel clang-format-14 libompl-dev ompl-demos sqlite3
-          liboctomap-dev "$@")
+          liboctomap-dev "${extra[@]}")
 # r-cran-irace: tools/irace/run.sh and the irace_tuning_run test. Installed without its
 # recommended packages: they pull in hundreds of R packages (GDAL, spatial statistics) irace never loads.
 packages_without_recommends=(r-cran-irace)
+if [ "${1:-}" = --demo ]; then
+  packages=("${demo_packages[@]}")
+  packages_without_recommends=()
+fi
 
 missing() {
   for package in "$@"; do

@@ -52,6 +52,9 @@ struct RunSpec {
 
 using Keys = std::map<std::string, std::string>;
 
+// The owner of a map plugin's parameter keys (map.resolution): the plugins' slot "map".
+inline constexpr const char* kMapSlot = "map";
+
 // Keys with where each was written ("file:line", or a config file's path), for messages.
 struct KeyedValues {
   Keys keys;

@@ -1,3 +1,4 @@
+// Keys -> RunSpec and back: every key checked once (resolve_run()), and the run as keys and JSON.
 #include "aco/run_spec.hpp"
 
 #include <algorithm>
@@ -17,8 +18,6 @@ namespace {
 
 // Problem keys whose values are text, not a table's parameter: files and cells.
 const std::vector<std::string> kProblemTexts = {"map", "map-format", "scen", "start", "goal"};
-// The owner of a map plugin's parameter keys (map.resolution): the slot's own name.
-constexpr const char* kMapSlot = "map";
 
 constexpr ParamSpec kScenIndex = {"scen-index", ParamType::integer, "0", "0:1000000000",
                                   "which problem of --scen to plan (0-based)"};
@@ -132,101 +131,6 @@ const ParamSpec& planner_parameter() {
   static const ParamSpec spec = {"planner", ParamType::categorical, "aco", names_and_help.first.c_str(),
                                  names_and_help.second.c_str()};
   return spec;
-}
-
-Cell parse_cell(const std::string& text, const std::string& key) {
-  // "X,Y", or "X,Y,Z" in a voxel world.
-  std::vector<int> values;
-  std::string_view rest(text);
-  bool valid = true;
-  for (;;) {
-    const auto comma = rest.find(',');
-    const std::string_view part = rest.substr(0, comma);
-    int v = 0;
-    auto [p, ec] = std::from_chars(part.data(), part.data() + part.size(), v);
-    valid = valid && !part.empty() && ec == std::errc() && p == part.data() + part.size();
-    values.push_back(v);
-    if (comma == std::string_view::npos) break;
-    rest.remove_prefix(comma + 1);
-  }
-  if (!valid || values.size() < 2 || values.size() > 3)
-    throw KeyError(key, key + ": '" + text + "' is not a cell; expected X,Y such as 3,7 (X,Y,Z in a voxel world)");
-  return {values[0], values[1], values.size() == 3 ? values[2] : 0};
-}
-
-void check_cell(const Map& map, Cell c, const std::string& what) {
-  if (!map.contains(c)) {
-    const std::string size = std::to_string(map.width()) + "x" + std::to_string(map.height()) +
-                             (map.volumetric() ? "x" + std::to_string(map.depth()) + " voxel world " : " map ");
-    throw Error(what + " " + map.describe(c) + " is outside the " + size + map.name());
-  }
-  if (!map.passable(c))
-    throw Error(what + " " + map.describe(c) + " is blocked: " + map.blocked_reason(c) + " (" + map.name() + ")");
-}
-
-std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem::path& file, const std::string& format,
-                                                           const Keys& keys, PluginRegistry& registry,
-                                                           const std::string& key_prefix) {
-  const std::string option = key_prefix + "map-format";
-  std::string chosen;
-  try {
-    chosen = map_format_of(file, format, registry);
-  } catch (const Error& e) {
-    throw KeyError(format.empty() ? key_prefix + "map" : option, format.empty() ? e.what() : option + ": " + e.what());
-  }
-  if (chosen.empty() || find_builtin_map_format(chosen)) {
-    if (!keys.empty())
-      throw KeyError(key_prefix + kMapSlot + "." + keys.begin()->first,
-                     key_prefix + kMapSlot + "." + keys.begin()->first + ": the built-in map format '" +
-                         (chosen.empty() ? "matrix" : chosen) + "' of " + file.string() +
-                         " takes no parameters (map.NAME keys are a map plugin's)");
-    return {format, {}};
-  }
-  const auto table = registry.load(kMapSlot, chosen).parameters();
-  return {chosen, resolve(table, keys, key_prefix + kMapSlot + ".")};
-}
-
-std::unique_ptr<Map> load_problem_map(const ProblemSpec& spec, PluginRegistry* registry) {
-  const std::filesystem::path file = spec.map.empty() && !spec.scen.empty() ? scenario_map_file(spec.scen) : spec.map;
-  if (file.empty()) throw Error("a problem needs a map with start and goal, or a scenario");
-  if (registry) return load_map(file, spec.terrain, *registry, spec.map_format, spec.map_parameters);
-  if (!spec.map_format.empty() && !find_builtin_map_format(spec.map_format))
-    throw Error(file.string() + ": map format '" + spec.map_format +
-                "' is a map plugin, and no plugin registry was given");
-  if (const auto* builtin = find_builtin_map_format(spec.map_format)) return builtin->read(file, spec.terrain);
-  return load_map(file, spec.terrain);
-}
-
-LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry,
-                           const std::function<void(const Map&)>& check_map) {
-  LoadedProblem p;
-  if (!spec.scen.empty()) {
-    const auto scenarios = load_scenarios(spec.scen);
-    if (spec.scen_index >= static_cast<int>(scenarios.size()))
-      throw Error("scen-index " + std::to_string(spec.scen_index) + " is out of range: " + spec.scen.string() +
-                  " has " + std::to_string(scenarios.size()) + " scenarios");
-    const Scenario& s = scenarios[spec.scen_index];
-    p.map = load_problem_map(spec, registry);
-    if (s.volumetric != p.map->volumetric())
-      throw Error(spec.scen.string() + ": its scenarios are for " + (s.volumetric ? "a voxel world" : "a 2D map") +
-                  ", but " + p.map->name() + " is " + (p.map->volumetric() ? "a voxel world" : "a 2D map"));
-    if (!s.volumetric && (p.map->width() != s.width || p.map->height() != s.height))
-      throw Error(spec.scen.string() + ": scenario " + std::to_string(spec.scen_index) + " is for a " +
-                  std::to_string(s.width) + "x" + std::to_string(s.height) + " map, but " + p.map->name() + " is " +
-                  std::to_string(p.map->width()) + "x" + std::to_string(p.map->height()));
-    p.start = s.start;
-    p.goal = s.goal;
-  } else {
-    if (spec.map.empty() || !spec.start || !spec.goal)
-      throw Error("a problem needs a map with start and goal, or a scenario");
-    p.map = load_problem_map(spec, registry);
-    p.start = *spec.start;
-    p.goal = *spec.goal;
-  }
-  if (check_map) check_map(*p.map);
-  check_cell(*p.map, p.start, "start");
-  check_cell(*p.map, p.goal, "goal");
-  return p;
 }
 
 namespace {
@@ -403,85 +307,6 @@ std::string plugins_json(const RunSpec& spec, const PluginRegistry& registry) {
     j[slot] = {{"name", p.name}, {"version", p.version}, {"file", p.file}, {"sha256", p.sha256}, {"build", p.build}};
   }
   return j.dump();
-}
-
-std::string KeyedValues::origin(const std::string& key) const {
-  const auto it = origins.find(key);
-  return it != origins.end() && !it->second.empty() ? it->second + ": " : "";
-}
-
-KeyedValues overlay(const KeyedValues& base, const KeyedValues& changes) {
-  KeyedValues c = base;
-  for (const auto& [key, value] : changes.keys)
-    if (std::find(kSlots.begin(), kSlots.end(), key) != kSlots.end() && c.keys.count(key) && c.keys.at(key) != value)
-      drop_slot(c.keys, key);  // its choice is set again below
-  for (const auto& [key, value] : changes.keys) {
-    c.keys[key] = value;
-    c.origins[key] = changes.origins.count(key) ? changes.origins.at(key) : "";
-  }
-  // A pipeline's smoother (robust's taut) is for grid paths: a continuous planner the changes
-  // choose takes the rest of the pipeline without it. Naming a smoother with it stays an error.
-  const auto planner = changes.keys.find("planner");
-  const auto known = aco::planners();
-  const auto continuous = [&](const std::string& name) {
-    return std::any_of(known.begin(), known.end(), [&](const Planner& p) { return p.name == name && p.continuous; });
-  };
-  if (planner != changes.keys.end() && !changes.keys.count("smoother") && continuous(planner->second))
-    drop_slot(c.keys, "smoother");
-  return c;
-}
-
-void drop_slot(Keys& keys, const std::string& slot) {
-  const std::string prefix = slot + ".";
-  std::erase_if(keys, [&](const auto& kv) { return kv.first == slot || kv.first.rfind(prefix, 0) == 0; });
-}
-
-// Our own reader, not Boost.ProgramOptions' parse_config_file: its error for a bad line gives
-// no line number, and its what() loops forever on a line that contains "%invalid_line%".
-std::vector<ConfigSetting> read_config_settings(const std::string& path) {
-  check_input_file(path, "config");
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot open the config file");
-  const auto trim = [](std::string_view s) {
-    const auto first = s.find_first_not_of(" \t\r");
-    if (first == std::string_view::npos) return std::string();
-    return std::string(s.substr(first, s.find_last_not_of(" \t\r") - first + 1));
-  };
-  std::vector<ConfigSetting> settings;
-  std::string section;  // "update." under [update]
-  int number = 0;
-  for (std::string text; std::getline(in, text);) {
-    ++number;
-    const std::string line = trim(std::string_view(text).substr(0, text.find('#')));
-    if (line.empty() || line.front() == ';') continue;
-    const auto fail = [&](const std::string& what) {
-      throw Error(path + ":" + std::to_string(number) + ": '" + line + "' " + what);
-    };
-    if (line.front() == '[' && line.back() == ']') {
-      section = trim(std::string_view(line).substr(1, line.size() - 2));
-      if (section.empty()) fail("names no section");
-      if (section.back() != '.') section += '.';
-      continue;
-    }
-    const auto equals = line.find('=');
-    if (equals == std::string::npos) fail("is not a 'key = value' line");
-    const std::string key = trim(std::string_view(line).substr(0, equals));
-    if (key.empty()) fail("has no key before the '='");
-    settings.push_back({section + key, trim(std::string_view(line).substr(equals + 1)), number});
-  }
-  return settings;
-}
-
-Keys read_config_file(const std::string& path) {
-  Keys keys;
-  std::map<std::string, int> first_line;
-  for (const auto& setting : read_config_settings(path)) {
-    if (const auto [first, fresh] = first_line.emplace(setting.key, setting.line); !fresh)
-      throw Error(path + ":" + std::to_string(setting.line) + ": '" + setting.key + "' is set twice (first on line " +
-                  std::to_string(first->second) + ")");
-    keys.emplace(setting.key, setting.value);
-  }
-  return keys;
 }
 
 RunSpec run_spec_from_json(const std::string& text, PluginRegistry& registry) {

@@ -1,21 +1,19 @@
 #include "aco/studies/results_db.hpp"
 
 #include <sqlite3.h>
-#include <unistd.h>
 
 #include <bit>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
-#include <thread>
 #include <utility>
 
 #include "aco/error.hpp"
+#include "aco/machine.hpp"
 #include "aco/studies/growth.hpp"
 
 namespace aco::studies {
@@ -349,19 +347,6 @@ const TrialField& failure_field() {
   throw Error("no trial field 'failure'");
 }
 
-// The CPU model and thread count, as OMPL records its cpuinfo: for reading results, not using them.
-std::string cpuinfo() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string model;
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("model name", 0) != 0) continue;
-    const auto colon = line.find(':');
-    if (colon != std::string::npos) model = line.substr(line.find_first_not_of(' ', colon + 1));
-    break;
-  }
-  return model + " (" + std::to_string(std::thread::hardware_concurrency()) + " threads)";
-}
-
 // Opening would create a missing file: a report of a mistyped name must not.
 const std::filesystem::path& existing(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file)) throw Error(file.string() + ": no such results database");
@@ -648,7 +633,7 @@ struct ResultsDb::Impl {
                   "INSERT INTO experiments (name, totaltime, timelimit, memorylimit, runcount, version, hostname, "
                   "cpuinfo, date, seed, setup, optimal_length, anyangle_length) "
                   "VALUES (?1, 0, 0, 0, 0, ?2, ?3, ?4, datetime('now'), '', ?5, ?6, ?7)");
-    add.run(p.name, std::string("aco ") + ACOBENCH_VERSION, hostname(), cpuinfo(), p.setup_json,
+    add.run(p.name, std::string("aco ") + ACOBENCH_VERSION, aco::hostname(), aco::cpu_description(), p.setup_json,
             p.optimal_length >= 0 ? p.optimal_length : kNull, p.anyangle_length >= 0 ? p.anyangle_length : kNull)
         .finish();
   }

@@ -1,9 +1,6 @@
 // The trial record's field table: every field reaches the messages, the runs table, runs.csv
 // (and Python, python/tests/test_studies.py) from the table alone.
-#include <sys/mman.h>
-
 #include <catch2/catch.hpp>
-#include <cstring>
 
 #include <sqlite3.h>
 
@@ -182,23 +179,6 @@ TEST_CASE("a database made before a field was added gains its column, NULL for i
   const auto trials = resumed.trials();
   REQUIRE(trials.size() == 2);
   CHECK(newest.get(trials[1], -1) == newest.get(next, -1));
-}
-
-TEST_CASE("a process's peak memory rises with what it touches and starts over when reset", "[trialrecord]") {
-  constexpr double kBlockMib = 64;
-  REQUIRE(aco::studies::reset_peak_memory());
-  const double before = aco::studies::peak_memory_mib();
-  REQUIRE(before > 0);
-  // Mapped and unmapped directly: a block from the allocator may stay resident once freed
-  // (AddressSanitizer keeps freed memory in quarantine).
-  const std::size_t size = static_cast<std::size_t>(kBlockMib * 1024 * 1024);
-  void* block = mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-  REQUIRE(block != MAP_FAILED);
-  std::memset(block, 1, size);  // touched: resident
-  CHECK(aco::studies::peak_memory_mib() >= before + kBlockMib - 1);
-  REQUIRE(munmap(block, size) == 0);
-  REQUIRE(aco::studies::reset_peak_memory());  // the block is given back: the peak is what is resident now
-  CHECK(aco::studies::peak_memory_mib() < before + kBlockMib / 2);
 }
 
 TEST_CASE("a failure's kind is an enum in C++ and its text at the edges", "[trialrecord]") {

@@ -1,17 +1,15 @@
 #include "aco/memory_limit.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
 #include <cctype>
 #include <charconv>
 #include <cstdio>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
 #include "aco/error.hpp"
+#include "aco/machine.hpp"
 
 namespace aco {
 namespace {
@@ -34,23 +32,6 @@ constexpr std::uint64_t kBytesPerVoxelEdge = 20;
 constexpr std::uint64_t kFallbackLimit = std::uint64_t(4) << 30;
 
 std::atomic<std::uint64_t> g_limit{0};  // 0: the default
-
-// MemAvailable of /proc/meminfo in bytes, 0 if it cannot be read.
-std::uint64_t available_memory() {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key, unit;
-  std::uint64_t kib = 0;
-  while (meminfo >> key >> kib) {
-    if (key == "MemAvailable:") return kib * 1024;
-    std::getline(meminfo, unit);
-  }
-  return 0;
-}
-
-std::uint64_t physical_memory() {
-  const long pages = sysconf(_SC_PHYS_PAGES), page_size = sysconf(_SC_PAGESIZE);
-  return pages > 0 && page_size > 0 ? std::uint64_t(pages) * std::uint64_t(page_size) : 0;
-}
 
 std::string limit_origin() {
   return g_limit.load() ? "set by --max-memory"

@@ -7,6 +7,7 @@
 #include "aco/version.hpp"
 #include "aco/error.hpp"
 #include "aco/host_options.hpp"
+#include "aco/machine.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/output_file.hpp"
 #include "aco/thread_limit.hpp"

@@ -2,7 +2,6 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <sched.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/socket.h>
@@ -19,13 +18,12 @@
 #include <cstring>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <thread>
 
 #include "aco/crash_report.hpp"
 #include "aco/error.hpp"
+#include "aco/machine.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/plugin_call.hpp"
 
@@ -69,14 +67,6 @@ bool write_all(int fd, const char* bytes, std::size_t size) noexcept {
     size -= static_cast<std::size_t>(n);
   }
   return true;
-}
-
-// Resident memory of a process in bytes (0 if it cannot be read).
-std::uint64_t resident_bytes(pid_t pid) {
-  std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
-  std::uint64_t size = 0, resident = 0;
-  if (!(statm >> size >> resident)) return 0;
-  return resident * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
 }
 
 std::string seconds_text(double seconds) {
@@ -147,14 +137,7 @@ double parse_seconds(const std::string& text, const std::string& option) {
   return seconds;
 }
 
-int lane_count(int threads) {
-  if (threads > 0) return threads;
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  if (sched_getaffinity(0, sizeof set, &set) != 0)
-    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  return std::max(1, CPU_COUNT(&set));
-}
+int lane_count(int threads) { return threads > 0 ? threads : usable_cpus(); }
 
 void run_on_lanes(int lanes, std::size_t count, const std::function<void(int lane, std::size_t item)>& work) {
   std::atomic<std::size_t> next{0};
@@ -174,13 +157,6 @@ void run_on_lanes(int lanes, std::size_t count, const std::function<void(int lan
   for (int i = 0; i < used; ++i) threads.emplace_back(lane, i);
   for (auto& thread : threads) thread.join();
   if (error) std::rethrow_exception(error);
-}
-
-std::string this_program() {
-  std::error_code error;
-  const auto target = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (error) throw Error("cannot find this program's file (/proc/self/exe): " + error.message());
-  return target.string();
 }
 
 bool is_worker_process() { return std::getenv(kWorkerVariable) != nullptr; }
@@ -283,7 +259,7 @@ WorkerReply WorkerProcess::request(const std::string& bytes, const WorkerLimits&
     if (started.status != WorkerReply::Status::replied) return started;
     ready_ = true;
   }
-  const std::uint64_t baseline = limits.memory_bytes ? resident_bytes(pid_) : 0;
+  const std::uint64_t baseline = limits.memory_bytes ? resident_memory(pid_) : 0;
   const std::string frame = length_prefix(bytes.size()) + bytes;
   // A worker that died before reading is seen below as the end of its socket.
   write_all(socket_, frame.data(), frame.size());
@@ -307,7 +283,7 @@ WorkerReply WorkerProcess::await(char wanted, const WorkerLimits& limits, std::u
     // A plugin filling memory gains at most a few hundred MiB between two looks.
     int wait_ms = -1;
     if (limits.memory_bytes) {
-      if (resident_bytes(pid_) > baseline + limits.memory_bytes)
+      if (resident_memory(pid_) > baseline + limits.memory_bytes)
         return end_worker(WorkerReply::Status::out_of_memory,
                           "out of memory (over " + format_bytes(limits.memory_bytes) + ")");
       wait_ms = 20;

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "aco/error.hpp"
+#include "aco/machine.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/studies/provenance.hpp"
 #include "trial_messages.hpp"
@@ -122,7 +123,7 @@ struct Coordinator::State {
     greeted.insert(rank);
     if (hello.at("fingerprint") == fingerprint) return;
     std::cerr << "acobench: error: rank " << rank << " on host " << hello.at("host").get<std::string>()
-              << " loaded another experiment than rank 0 on " << hostname() << ": "
+              << " loaded another experiment than rank 0 on " << aco::hostname() << ": "
               << fingerprint_change(fingerprint, hello.at("fingerprint"))
               << " (every rank must see the same experiment file, maps and plugin binaries)\n";
     session.abort(1);
@@ -193,9 +194,9 @@ double Coordinator::busy_seconds() const { return std::chrono::duration<double>(
 double Coordinator::storing_seconds() const { return std::chrono::duration<double>(state_->stored).count(); }
 
 void warn_if_bound(const Session& session, int threads) {
-  const int usable = aco::lane_count(0), all = static_cast<int>(std::thread::hardware_concurrency());
+  const int usable = aco::usable_cpus(), all = static_cast<int>(std::thread::hardware_concurrency());
   if (usable >= all || (threads > 0 && threads <= usable)) return;
-  std::cerr << "acobench: warning: rank " << session.rank() << " on " << hostname() << " may use " << usable
+  std::cerr << "acobench: warning: rank " << session.rank() << " on " << aco::hostname() << " may use " << usable
             << " of its " << all
             << " CPUs: the launcher bound it (mpirun binds each rank to one core when -n is 2 or less); "
             << "start mpirun with --bind-to none, or give each rank its cores (Slurm: --cpus-per-task)\n";
@@ -261,7 +262,7 @@ void serve_trials(const Session& session, const Experiment& experiment, aco::Plu
       if (want > 0 || !records.empty()) {
         json message = {{"want", want}, {"records", json::array()}};
         for (const auto& r : records) message["records"].push_back(record_json(r));
-        if (!greeted) message["hello"] = {{"fingerprint", experiment.fingerprint(registry)}, {"host", hostname()}};
+        if (!greeted) message["hello"] = {{"fingerprint", experiment.fingerprint(registry)}, {"host", aco::hostname()}};
         send(message, 0, kToCoordinator);
         greeted = true;
         in_hand -= records.size();

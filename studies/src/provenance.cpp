@@ -1,7 +1,5 @@
 #include "aco/studies/provenance.hpp"
 
-#include <unistd.h>
-
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -27,11 +25,6 @@ std::string first_difference(const std::string& stored, const std::string& now) 
 std::string shortened(const std::string& text) { return text.size() > 300 ? text.substr(0, 300) + "..." : text; }
 
 }  // namespace
-
-std::string hostname() {
-  char name[256] = {};
-  return gethostname(name, sizeof name - 1) == 0 ? std::string(name) : std::string();
-}
 
 // acobench's fingerprints are JSON objects (Experiment::fingerprint); of any other text, the first
 // differing line is told.

@@ -10,6 +10,12 @@
 #include "aco/error.hpp"
 
 namespace aco::studies {
+namespace {
+
+// Problems from one scenario file share a set name: "arena#40" belongs to "arena".
+std::string problem_set(const std::string& problem) { return problem.substr(0, problem.find('#')); }
+
+}  // namespace
 
 double gap_percent(const TrialRecord& t, double optimal) { return gap_percent(t.grid_length, optimal); }
 
@@ -119,6 +125,16 @@ Analysis analyse(const ResultsDb& db) {
     // No ablation in this experiment.
   }
   return a;
+}
+
+std::vector<std::pair<std::string, std::vector<std::size_t>>> problem_sets(const Analysis& a) {
+  std::vector<std::pair<std::string, std::vector<std::size_t>>> sets;
+  for (std::size_t p = 0; p < a.problems.size(); ++p) {
+    const std::string set = problem_set(a.problems[p].name);
+    const auto it = std::find_if(sets.begin(), sets.end(), [&](const auto& s) { return s.first == set; });
+    (it == sets.end() ? sets.emplace_back(set, std::vector<std::size_t>{}) : *it).second.push_back(p);
+  }
+  return sets;
 }
 
 std::vector<double> gap_curve(const TrialRecord& t, double optimal) {

@@ -76,6 +76,10 @@ double largest(const std::vector<double>& v);  // NaN if empty
 // Everything the report shows, from the database (Analysis::registry is the caller's to set).
 Analysis analyse(const ResultsDb& db);
 
+// The problem sets (of the problems from one scenario file) in the order of their first problem,
+// each with its problems' indices.
+std::vector<std::pair<std::string, std::vector<std::size_t>>> problem_sets(const Analysis& a);
+
 // The fixed targets of the anytime view, gap to the optimum in %.
 inline constexpr std::array kTargets{1.0, 5.0};
 

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <shared_mutex>
 
 #include "aco/corridor.hpp"
 #include "aco/error.hpp"
+#include "aco/machine.hpp"
 #include "aco/plugin_error.hpp"
 #include "aco/map_io.hpp"
 #include "aco/yardsticks.hpp"
@@ -265,19 +265,6 @@ TrialRecord TrialRunner::simulate(const TrialOrder& t) {
                                   std::isfinite(sim.min_clearance) ? sim.min_clearance : std::nan(""),
                                   sim.steps};
   return r;
-}
-
-double peak_memory_mib() {
-  std::ifstream status("/proc/self/status");
-  for (std::string line; std::getline(status, line);)
-    if (line.starts_with("VmHWM:")) return std::stod(line.substr(6)) / 1024.0;  // kB
-  return std::nan("");
-}
-
-bool reset_peak_memory() {
-  std::ofstream clear("/proc/self/clear_refs");
-  clear << "5" << std::flush;  // 5: reset the peak resident set size
-  return bool(clear);
 }
 
 std::string settings_json(const Configuration& config, const aco::RunSpec& run, const aco::PluginRegistry& registry) {

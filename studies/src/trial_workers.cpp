@@ -6,6 +6,7 @@
 #include <set>
 
 #include "aco/error.hpp"
+#include "aco/machine.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/studies/provenance.hpp"
 #include "trial_messages.hpp"

@@ -45,8 +45,8 @@ double parse_seconds(const std::string& text, const std::string& option);
 
 class WorkerProcess {
  public:
-  // `argv[0]` is the program to start (e.g. /proc/self/exe's target); `argv` must make it call
-  // serve_worker_requests().
+  // `argv[0]` is the program to start (e.g. this_program(), aco/machine.hpp); `argv` must make it
+  // call serve_worker_requests().
   explicit WorkerProcess(std::vector<std::string> argv);
   ~WorkerProcess();  // closes the socket (the worker ends), waits for it
   WorkerProcess(const WorkerProcess&) = delete;
@@ -77,7 +77,7 @@ class WorkerProcess {
 };
 
 // How many lanes (threads, worker processes) --threads N means: N, or for 0 every CPU this
-// process may use (its affinity mask, which a launcher such as mpirun or srun may have narrowed).
+// process may use (usable_cpus(), aco/machine.hpp).
 int lane_count(int threads);
 
 // Calls `work(lane, item)` for every item in [0, count), in order, on `lanes` threads (at most
@@ -85,9 +85,6 @@ int lane_count(int threads);
 // request at a time. The first exception stops handing out items and is rethrown once every
 // lane has ended.
 void run_on_lanes(int lanes, std::size_t count, const std::function<void(int lane, std::size_t item)>& work);
-
-// The program this process runs (for WorkerProcess's argv[0]).
-std::string this_program();
 
 // In the worker (started by WorkerProcess): answers each request with `handle`'s reply until the
 // parent closes the socket, then returns. A fatal signal or SIGUSR1 (the parent's "time is up")

@@ -1,12 +1,10 @@
 #pragma once
 // Where results came from, for the results database and the processes that make them (worker
-// processes, MPI ranks): this machine's name, and what changed between two fingerprints.
+// processes, MPI ranks): what changed between two fingerprints. (The machine's name is
+// aco::hostname(), aco/machine.hpp.)
 #include <string>
 
 namespace aco::studies {
-
-// This machine's name, as the experiments table records it ("" if unknown).
-std::string hostname();
 
 // Why the fingerprint `now` is not the `stored` one, for messages: for acobench's fingerprints,
 // the plugin binary or the part of the experiment that changed.

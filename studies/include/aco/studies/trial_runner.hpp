@@ -48,7 +48,7 @@ class TrialRunner {
 
   // Runs one trial of a prepared configuration. Whatever the trial throws (a plugin's failure,
   // or the host's) comes back as a failed record with the message naming the trial. Its
-  // peak_memory_mib is this process's peak_memory_mib() at its end.
+  // peak_memory_mib is this process's aco::peak_memory_mib() (aco/machine.hpp) at its end.
   TrialRecord run(const TrialOrder& trial);
   // The record of a trial that failed: `kind` is its failure (one of kFailureKinds), `reason` its
   // error after the trial's name.
@@ -65,13 +65,6 @@ class TrialRunner {
   std::unique_ptr<Problems> problems_;
   std::map<int, std::unique_ptr<Prepared>> configs_;
 };
-
-// The peak resident memory of this process since it started or reset_peak_memory(), MiB; NaN
-// where the system does not tell it (no /proc/self/status).
-double peak_memory_mib();
-// Starts the peak over from the memory resident now (Linux's /proc/self/clear_refs); false where
-// the system cannot.
-bool reset_peak_memory();
 
 // The configuration as the database stores it: the keys as written, the resolved run (every
 // key, the same names as acoplan's --json) and each slot's plugin binary.

@@ -36,6 +36,7 @@
 #include "aco/svg.hpp"
 #include "aco/terrain.hpp"
 #include "aco/thread_limit.hpp"
+#include "aco/value_parsers.hpp"
 #include "aco/version.hpp"
 #include "aco/voxel.hpp"
 #include "aco/voxel_svg.hpp"

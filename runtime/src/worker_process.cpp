@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -136,15 +135,6 @@ const char* to_string(WorkerReply::Status status) {
       return "out of memory";
   }
   return "unknown";
-}
-
-double parse_seconds(const std::string& text, const std::string& option) {
-  double seconds = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, seconds);
-  if (error != std::errc() || stop != end || !(seconds > 0) || !std::isfinite(seconds))
-    throw Error(option + ": '" + text + "' is not a time in seconds (a positive number, such as 30 or 0.5)");
-  return seconds;
 }
 
 int lane_count(int threads) {

@@ -39,10 +39,6 @@ struct WorkerReply {
 // ("replied" for a reply).
 const char* to_string(WorkerReply::Status status);
 
-// A time limit as the hosts' options (--trial-timeout, --variation-timeout) take it: seconds, a
-// positive number. Anything else is an Error naming `option`.
-double parse_seconds(const std::string& text, const std::string& option);
-
 class WorkerProcess {
  public:
   // `argv[0]` is the program to start (e.g. /proc/self/exe's target); `argv` must make it call

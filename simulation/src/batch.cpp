@@ -171,7 +171,11 @@ BatchSummary run_batch_in_workers(int count, const std::vector<std::string>& com
       results[k] = result_from(json::from_cbor(reply.bytes));
       return;
     }
-    results[k].outcome = aco::to_string(reply.failure_kind);
+    // A variation over the time limit ran out of time, as one over its scenario's own limit does:
+    // the outcome is the outcome table's. A crash or a memory overrun is no outcome a simulation
+    // has: its failure's text.
+    results[k].outcome = reply.failure_kind == aco::FailureKind::timed_out ? to_string(Outcome::timeout)
+                                                                           : aco::to_string(reply.failure_kind);
     results[k].reason = reply.failure;
     const std::lock_guard lock(mutex);
     failed(static_cast<int>(k), results[k]);

@@ -98,7 +98,9 @@ constexpr const char* to_string(Outcome outcome) { return kOutcomes[static_cast<
 
 struct SimulationResult {
   bool reached = false;
-  std::string outcome;  // one of kOutcomes
+  // One of kOutcomes. In a batch of worker processes (batch.hpp), a variation whose worker
+  // crashed or ran out of memory has that failure's text (aco/failure_kind.hpp) instead.
+  std::string outcome;
   std::string reason;
   double time = 0.0;
   double distance = 0.0;

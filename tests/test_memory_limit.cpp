@@ -61,24 +61,6 @@ test::CommandResult run_host(const std::string& host, const std::string& size) {
 
 }  // namespace
 
-TEST_CASE("memory sizes: bytes or K, M, G, T (binary), anything else refused", "[memory][bad-input]") {
-  CHECK(aco::parse_memory_size("1048576") == 1048576);
-  CHECK(aco::parse_memory_size("512M") == 512ull << 20);
-  CHECK(aco::parse_memory_size("4G") == 4ull << 30);
-  CHECK(aco::parse_memory_size("4g") == 4ull << 30);
-  CHECK(aco::parse_memory_size("2GiB") == 2ull << 30);
-  CHECK(aco::parse_memory_size("3kb") == 3ull << 10);
-  CHECK(aco::parse_memory_size("1T") == 1ull << 40);
-  for (const char* bad :
-       {"", "0", "0G", "-1", "-4G", "1.5G", "4X", "G", "4 G", " 4G", "4GB2", "17179869184T", "99999999999999999999"})
-    CHECK_THROWS_WITH(aco::parse_memory_size(bad), Contains("--max-memory: '" + std::string(bad) + "'"));
-  CHECK_THROWS_WITH(aco::parse_memory_size("17179869184T"), Contains("too large"));
-  CHECK_THROWS_WITH(aco::parse_memory_size("4X"), Contains("unknown unit"));
-  CHECK(aco::format_bytes(100) == "100 bytes");
-  CHECK(aco::format_bytes(3ull << 29) == "1.5 GiB");
-  CHECK(aco::format_bytes(512ull << 20) == "512 MiB");
-}
-
 TEST_CASE("the planning estimate grows with the cells and the neighbourhood, and saturates", "[memory]") {
   using aco::Neighbourhood;
   const auto e = [](std::int64_t w, std::int64_t h, Neighbourhood n) { return aco::planning_memory_estimate(w, h, n); };

@@ -14,4 +14,5 @@ case "${1:-}" in
   *) if [ -d build/release ]; then nice -n 10 cmake --build build/release -j"$(nproc)" >/dev/null
      else tools/build.sh release >/dev/null; fi ;;
 esac
-exec /usr/bin/python3 tools/figures.py "$@"
+# The sections are the package tools/figures/.
+exec env PYTHONPATH=tools /usr/bin/python3 -m figures "$@"

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cctype>
-#include <charconv>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -98,31 +96,6 @@ void check_voxel_graph_memory(std::int64_t voxels, std::int64_t edges, const std
   throw Error(name + ": " + std::to_string(voxels) + " voxels with " + std::to_string(edges) + " edges need about " +
               format_bytes(estimate) + " to plan on, more than the memory limit of " + format_bytes(limit) + " (" +
               limit_origin() + "): refused");
-}
-
-std::uint64_t parse_memory_size(const std::string& text, const std::string& option) {
-  const auto fail = [&](const std::string& why) -> std::uint64_t {
-    throw Error(option + ": '" + text + "' " + why +
-                " (expected bytes or a whole number with K, M, G or T, e.g. 512M, 4G)");
-  };
-  std::uint64_t number = 0;
-  const char* end = text.data() + text.size();
-  const auto [rest, error] = std::from_chars(text.data(), end, number);
-  if (rest == text.data()) return fail("is not a size");
-  if (error == std::errc::result_out_of_range) return fail("is too large");
-  std::string unit(rest, end);
-  for (char& c : unit) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  int shift = 0;
-  if (!unit.empty()) {
-    const std::string units = "KMGT";
-    const auto k = units.find(unit[0]);
-    if (k == std::string::npos || !(unit.size() == 1 || unit.substr(1) == "B" || unit.substr(1) == "IB"))
-      return fail("has an unknown unit");
-    shift = 10 * static_cast<int>(k + 1);
-  }
-  if (number == 0) return fail("is not a positive size");
-  if (number > (std::numeric_limits<std::uint64_t>::max() >> shift)) return fail("is too large");
-  return number << shift;
 }
 
 std::string format_bytes(std::uint64_t bytes) {

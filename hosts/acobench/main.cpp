@@ -26,6 +26,7 @@
 #include "aco/studies/runner.hpp"
 #include "aco/studies/shards.hpp"
 #include "aco/studies/trial_workers.hpp"
+#include "aco/value_parsers.hpp"
 #include "aco/version.hpp"
 
 namespace po = boost::program_options;

@@ -11,6 +11,7 @@
 #include "aco/memory_limit.hpp"
 #include "aco/output_file.hpp"
 #include "aco/thread_limit.hpp"
+#include "aco/value_parsers.hpp"
 #include "aco/worker_process.hpp"
 #include "aco/simulation/batch.hpp"
 #include "aco/simulation/simulation.hpp"

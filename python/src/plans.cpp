@@ -24,6 +24,7 @@
 #include "aco/run_pictures.hpp"
 #include "aco/run_report.hpp"
 #include "aco/run_spec.hpp"
+#include "aco/value_parsers.hpp"
 #include "aco/voxel.hpp"
 
 namespace aco_python {

@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -113,29 +112,6 @@ void send_frame(char kind, const std::string& payload) {
 }
 
 }  // namespace
-
-const char* to_string(WorkerReply::Status status) {
-  switch (status) {
-    case WorkerReply::Status::replied:
-      return "replied";
-    case WorkerReply::Status::crashed:
-      return "crashed";
-    case WorkerReply::Status::timed_out:
-      return "timed out";
-    case WorkerReply::Status::out_of_memory:
-      return "out of memory";
-  }
-  return "unknown";
-}
-
-double parse_seconds(const std::string& text, const std::string& option) {
-  double seconds = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, seconds);
-  if (error != std::errc() || stop != end || !(seconds > 0) || !std::isfinite(seconds))
-    throw Error(option + ": '" + text + "' is not a time in seconds (a positive number, such as 30 or 0.5)");
-  return seconds;
-}
 
 int lane_count(int threads) { return threads > 0 ? threads : usable_cpus(); }
 
@@ -256,7 +232,7 @@ WorkerReply WorkerProcess::request(const std::string& bytes, const WorkerLimits&
   // A fresh worker first loads what it serves (maps, plugins): that is not the request's time.
   if (!ready_) {
     WorkerReply started = await(kReady, {}, 0);
-    if (started.status != WorkerReply::Status::replied) return started;
+    if (started.failure_kind != FailureKind::none) return started;
     ready_ = true;
   }
   const std::uint64_t baseline = limits.memory_bytes ? resident_memory(pid_) : 0;
@@ -273,9 +249,9 @@ WorkerReply WorkerProcess::await(char wanted, const WorkerLimits& limits, std::u
     // Whole frames first: the one awaited, a note of where the worker is, or its error.
     for (auto frame = take_frame(); frame; frame = take_frame()) {
       auto& [kind, payload] = *frame;
-      if (kind == wanted) return {WorkerReply::Status::replied, std::move(payload), ""};
+      if (kind == wanted) return {FailureKind::none, std::move(payload), ""};
       if (kind == kError) {
-        end_worker(WorkerReply::Status::crashed, "");
+        end_worker(FailureKind::crashed, "");
         throw Error(payload);
       }
     }
@@ -284,18 +260,17 @@ WorkerReply WorkerProcess::await(char wanted, const WorkerLimits& limits, std::u
     int wait_ms = -1;
     if (limits.memory_bytes) {
       if (resident_memory(pid_) > baseline + limits.memory_bytes)
-        return end_worker(WorkerReply::Status::out_of_memory,
-                          "out of memory (over " + format_bytes(limits.memory_bytes) + ")");
+        return end_worker(FailureKind::out_of_memory, " (over " + format_bytes(limits.memory_bytes) + ")");
       wait_ms = 20;
     }
     const double elapsed = std::chrono::duration<double>(clock::now() - began).count();
     if (limits.timeout_s > 0) {
       if (elapsed >= limits.timeout_s)
-        return end_worker(WorkerReply::Status::timed_out, "timed out after " + seconds_text(limits.timeout_s) + " s");
+        return end_worker(FailureKind::timed_out, " after " + seconds_text(limits.timeout_s) + " s");
       const int left_ms = static_cast<int>(std::ceil((limits.timeout_s - elapsed) * 1000));
       wait_ms = wait_ms < 0 ? left_ms : std::min(wait_ms, left_ms);
     }
-    if (receive(wait_ms) == Received::closed) return end_worker(WorkerReply::Status::crashed, "");  // it crashed
+    if (receive(wait_ms) == Received::closed) return end_worker(FailureKind::crashed, "");  // it crashed
   }
 }
 
@@ -321,10 +296,10 @@ std::optional<std::pair<char, std::string>> WorkerProcess::take_frame() {
   return frame;
 }
 
-WorkerReply WorkerProcess::end_worker(WorkerReply::Status status, const std::string& reason) {
+WorkerReply WorkerProcess::end_worker(FailureKind kind, const std::string& detail) {
   // A worker that is still running is asked where it is (SIGUSR1 to its main thread, the one
   // serving requests), then given a moment to say it before it is killed.
-  if (status != WorkerReply::Status::crashed) ::syscall(SYS_tgkill, pid_, pid_, SIGUSR1);
+  if (kind != FailureKind::crashed) ::syscall(SYS_tgkill, pid_, pid_, SIGUSR1);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
   for (;;) {
     const auto left =
@@ -339,13 +314,13 @@ WorkerReply WorkerProcess::end_worker(WorkerReply::Status status, const std::str
   pid_ = -1;
   socket_ = -1;
   WorkerReply reply;
-  reply.status = status;
-  reply.failure = reason;
-  if (status == WorkerReply::Status::crashed) {
+  reply.failure_kind = kind;
+  reply.failure = to_string(kind) + detail;
+  if (kind == FailureKind::crashed) {
     if (WIFSIGNALED(wait_status))
-      reply.failure = std::string("crashed: ") + signal_name(WTERMSIG(wait_status));
+      reply.failure += std::string(": ") + signal_name(WTERMSIG(wait_status));
     else
-      reply.failure = "crashed: the worker process exited with status " + std::to_string(WEXITSTATUS(wait_status));
+      reply.failure += ": the worker process exited with status " + std::to_string(WEXITSTATUS(wait_status));
   }
   if (!note_.empty()) reply.failure += " in " + note_;
   return reply;

@@ -167,11 +167,15 @@ BatchSummary run_batch_in_workers(int count, const std::vector<std::string>& com
   std::mutex mutex;
   aco::run_on_lanes(lanes, results.size(), [&](int lane, std::size_t k) {
     const aco::WorkerReply reply = workers[static_cast<std::size_t>(lane)]->request(std::to_string(k), limits);
-    if (reply.status == aco::WorkerReply::Status::replied) {
+    if (reply.failure_kind == aco::FailureKind::none) {
       results[k] = result_from(json::from_cbor(reply.bytes));
       return;
     }
-    results[k].outcome = aco::to_string(reply.status);
+    // A variation over the time limit ran out of time, as one over its scenario's own limit does:
+    // the outcome is the outcome table's. A crash or a memory overrun is no outcome a simulation
+    // has: its failure's text.
+    results[k].outcome = reply.failure_kind == aco::FailureKind::timed_out ? to_string(Outcome::timeout)
+                                                                           : aco::to_string(reply.failure_kind);
     results[k].reason = reply.failure;
     const std::lock_guard lock(mutex);
     failed(static_cast<int>(k), results[k]);

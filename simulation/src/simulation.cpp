@@ -143,7 +143,7 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
     const aco::Graph graph = aco::build_graph(world.known(), run.graph);
     const aco::PlanOutcome outcome = aco::plan(registry, graph, graph.node(from), graph.node(scenario.goal), run);
     if (!outcome.solved()) {
-      result.outcome = "no path";
+      result.outcome = to_string(Outcome::no_path);
       result.reason = outcome.reason.empty() ? "the planner found no path" : outcome.reason;
       return false;
     }
@@ -171,11 +171,11 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
   while (true) {
     if ((robot.position() - goal).norm() <= sim.goal_tolerance) {
       result.reached = true;
-      result.outcome = "reached";
+      result.outcome = to_string(Outcome::reached);
       break;
     }
     if (t >= sim.time_limit - 1e-9) {
-      result.outcome = "timeout";
+      result.outcome = to_string(Outcome::timeout);
       result.reason = "the goal was not reached within " + aco::to_string(aco::ParamValue(sim.time_limit)) + " s";
       break;
     }
@@ -189,7 +189,7 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
       best_to_goal = to_goal, last_progress = t;
     if (t - last_progress >= sim.stall_time) {
       if (result.replans >= sim.max_replans) {
-        result.outcome = "stuck";
+        result.outcome = to_string(Outcome::stuck);
         result.reason = "no progress after " + std::to_string(result.replans) + " replans";
         break;
       }
@@ -234,7 +234,7 @@ SimulationResult simulate(const Scenario& scenario, aco::PluginRegistry& registr
     result.min_clearance = std::min(result.min_clearance, clearance);
     if (clearance < 0.0) {
       result.collisions = 1;
-      result.outcome = "collision";
+      result.outcome = to_string(Outcome::collision);
       result.reason = "the robot touched " + hit + " at t = " + aco::to_string(aco::ParamValue(t)) + " s";
       break;
     }

@@ -12,12 +12,11 @@
 #include "aco/error.hpp"
 #include "aco/map_io.hpp"
 #include "aco/run_spec.hpp"
-#include "aco/memory_limit.hpp"
 #include "aco/pipeline.hpp"
 #include "aco/presets.hpp"
 #include "aco/rng.hpp"
 #include "aco/planning.hpp"
-#include "aco/worker_process.hpp"
+#include "aco/value_parsers.hpp"
 #include "aco/yaml_keys.hpp"
 
 namespace aco::studies {

@@ -7,34 +7,17 @@
 #include <utility>
 
 #include "aco/colony.hpp"
-#include "aco/error.hpp"
 #include "aco/simulation/simulation.hpp"
 #include "aco/yardsticks.hpp"
 
 namespace aco::studies {
 namespace {
 
-// Each FailureKind, in the enum's order: its text (runs.failure, JSON, Python) and what it means
-// in the summary at the end of a run.
-struct FailureName {
-  const char* text;
-  const char* description;
-};
-constexpr FailureName kFailureNames[] = {
-    {"", "other error"},
-    {"crashed", "crashed (a signal)"},
-    {"timed out", "over the trial time limit"},
-    {"out of memory", "out of memory"},
-    {"plugin error", "a plugin threw"},
-    {"invalid value", "a plugin wrote an invalid value"},
-    {"error", "other error"},
-};
-
 // The texts of the kinds of failure (FailureKind::none's "" left out).
 std::vector<std::string> failure_texts() {
   std::vector<std::string> texts;
-  for (const FailureName& name : kFailureNames)
-    if (*name.text) texts.push_back(name.text);
+  for (const char* text : aco::kFailureTexts)
+    if (*text) texts.push_back(text);
   return texts;
 }
 
@@ -45,7 +28,7 @@ std::vector<std::string> stop_texts() {
   for (auto reason :
        {aco::StopReason::iterations, aco::StopReason::stagnation, aco::StopReason::same_path, aco::StopReason::time})
     texts.push_back(aco::to_string(reason));
-  texts.push_back("error");  // a trial that threw (TrialRunner::failed())
+  texts.push_back(to_string(FailureKind::error));  // a trial that threw (TrialRunner::failed())
   for (FailureKind kind : {FailureKind::crashed, FailureKind::timed_out, FailureKind::out_of_memory})
     texts.push_back(to_string(kind));
   for (const char* outcome : aco::simulation::kOutcomes) texts.push_back(outcome);
@@ -323,16 +306,23 @@ std::string runs_csv(const std::vector<TrialRecord>& trials, const std::vector<P
   return out.str();
 }
 
-const char* to_string(FailureKind kind) { return kFailureNames[static_cast<int>(kind)].text; }
-
-std::string describe_failure(FailureKind kind) { return kFailureNames[static_cast<int>(kind)].description; }
-
-FailureKind failure_kind(std::string_view text) {
-  std::string known;
-  for (int i = 0; i < static_cast<int>(std::size(kFailureNames)); ++i)
-    if (text == kFailureNames[i].text) return static_cast<FailureKind>(i);
-  for (const std::string& name : failure_texts()) known += (known.empty() ? "'" : ", '") + name + "'";
-  throw aco::Error("unknown failure '" + std::string(text) + "' (known: " + known + ")");
+std::string describe_failure(FailureKind kind) {
+  switch (kind) {
+    case FailureKind::crashed:
+      return "crashed (a signal)";
+    case FailureKind::timed_out:
+      return "over the trial time limit";
+    case FailureKind::out_of_memory:
+      return "out of memory";
+    case FailureKind::plugin_error:
+      return "a plugin threw";
+    case FailureKind::invalid_value:
+      return "a plugin wrote an invalid value";
+    case FailureKind::none:
+    case FailureKind::error:
+      break;
+  }
+  return "other error";
 }
 
 }  // namespace aco::studies

@@ -178,7 +178,7 @@ TrialRecord TrialRunner::failed(const TrialOrder& t, FailureKind kind, const std
   // stopped_by keeps the four values the report's table of failures counts.
   const bool threw =
       kind == FailureKind::plugin_error || kind == FailureKind::invalid_value || kind == FailureKind::error;
-  r.stopped_by = threw ? "error" : to_string(kind);
+  r.stopped_by = to_string(threw ? FailureKind::error : kind);
   r.failure = kind;
   r.path_json = "[]";
   r.error = "configuration '" + config(t.config).name + "', problem '" + experiment_.problems[t.problem].name +

@@ -55,11 +55,8 @@ TrialRecord TrialWorkers::run(int lane_index, const TrialRunner& runner, const T
   const std::vector<std::uint8_t> cbor = json::to_cbor(request);
   const aco::WorkerReply reply =
       lane.process.request(std::string(cbor.begin(), cbor.end()), {limits_.timeout_s, limits_.memory_bytes});
-  if (reply.status == aco::WorkerReply::Status::replied) return record_from(json::from_cbor(reply.bytes));
-  const FailureKind kind = reply.status == aco::WorkerReply::Status::crashed     ? FailureKind::crashed
-                           : reply.status == aco::WorkerReply::Status::timed_out ? FailureKind::timed_out
-                                                                                 : FailureKind::out_of_memory;
-  return runner.failed(t, kind, reply.failure);
+  if (reply.failure_kind == FailureKind::none) return record_from(json::from_cbor(reply.bytes));
+  return runner.failed(t, reply.failure_kind, reply.failure);
 }
 
 void WorkerExecutor::run(TrialRunner& runner, const std::vector<TrialOrder>& trials,

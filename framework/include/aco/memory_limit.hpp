@@ -41,12 +41,8 @@ BOOST_SYMBOL_VISIBLE void check_planning_memory(std::int64_t width, std::int64_t
 // counts every possible edge, so it is the check of a file's header; this one is the run's.
 BOOST_SYMBOL_VISIBLE void check_voxel_graph_memory(std::int64_t voxels, std::int64_t edges, const std::string& name);
 
-// A size as --max-memory takes it: bytes ("1048576") or a whole number with a binary unit K, M,
-// G or T, optionally followed by B or iB, any case ("512M", "4G", "2GiB"). Zero, negative,
-// fractional, overflowing or unknown-unit sizes are an Error naming `option`.
-BOOST_SYMBOL_VISIBLE std::uint64_t parse_memory_size(const std::string& text,
-                                                     const std::string& option = "--max-memory");
-// The --max-memory option's help, the same in every host.
+// The --max-memory option's help, the same in every host (parse_memory_size in
+// aco/value_parsers.hpp reads its SIZE).
 inline constexpr const char* kMaxMemoryHelp =
     "refuse maps whose planning would need more memory than SIZE (bytes, or with K, M, G, T: 512M, 4G); "
     "default: 3/4 of the memory available at start";

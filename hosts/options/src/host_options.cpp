@@ -10,6 +10,7 @@
 #include "aco/plugin_call.hpp"
 #include "aco/plugin_registry.hpp"
 #include "aco/program_options_error.hpp"
+#include "aco/value_parsers.hpp"
 #include "aco/worker_process.hpp"
 
 namespace aco {

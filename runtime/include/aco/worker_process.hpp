@@ -19,6 +19,8 @@
 #include <utility>
 #include <vector>
 
+#include "aco/failure_kind.hpp"
+
 namespace aco {
 
 struct WorkerLimits {
@@ -27,21 +29,14 @@ struct WorkerLimits {
 };
 
 struct WorkerReply {
-  enum class Status { replied, crashed, timed_out, out_of_memory };
-  Status status = Status::replied;
-  std::string bytes;  // the worker's reply (replied)
-  // Otherwise why it failed: "crashed: SIGSEGV in plugin update/x (FILE) in update() in iteration
-  // 3", "timed out after 5 s in plugin ...", "out of memory (over 512 MiB) in plugin ...".
+  // Why the request got no reply: crashed, timed_out or out_of_memory; none when it got one.
+  FailureKind failure_kind = FailureKind::none;
+  std::string bytes;  // the worker's reply
+  // Otherwise the failure, starting with its kind's text: "crashed: SIGSEGV in plugin update/x
+  // (FILE) in update() in iteration 3", "timed out after 5 s in plugin ...", "out of memory (over
+  // 512 MiB) in plugin ...".
   std::string failure;
 };
-
-// How a request that did not get a reply is counted: "crashed", "timed out", "out of memory"
-// ("replied" for a reply).
-const char* to_string(WorkerReply::Status status);
-
-// A time limit as the hosts' options (--trial-timeout, --variation-timeout) take it: seconds, a
-// positive number. Anything else is an Error naming `option`.
-double parse_seconds(const std::string& text, const std::string& option);
 
 class WorkerProcess {
  public:
@@ -62,7 +57,8 @@ class WorkerProcess {
  private:
   // Waits for the worker's frame of kind `wanted` within the limits (replied: its payload).
   WorkerReply await(char wanted, const WorkerLimits& limits, std::uint64_t baseline);
-  WorkerReply end_worker(WorkerReply::Status status, const std::string& reason);
+  // The reply of a request that failed as `kind`: its failure is the kind's text and `detail`.
+  WorkerReply end_worker(FailureKind kind, const std::string& detail);
   // Waits up to timeout_ms (-1: no limit) for the worker's bytes and keeps them in received_.
   enum class Received { bytes, nothing, closed };
   Received receive(int timeout_ms);

@@ -5,7 +5,7 @@
 // iterations below, and these checks are made for every parameter set:
 //   values         every value it produces is finite and in range (pheromone > 0 after init,
 //                  >= 0 after update; eta, factors, path lengths, waypoints, commands), and it
-//                  keeps its interface's contract (see check_slot in conformance.cpp)
+//                  keeps its interface's contract (see run_slot in sdk/src/slot_runs.cpp)
 //   deterministic  two runs of fresh objects with the same seed give identical output, bit for bit
 //   threads        a run on 4 threads gives what the run on 1 thread gave
 //   reused         the lifecycle (aco/strategies.hpp): one object serving a second run, after runs

@@ -37,10 +37,11 @@ BatchSummary run_batch(const std::vector<Scenario>& scenarios, aco::PluginRegist
 // The same batch of `count` variations, each in a worker process (aco/worker_process.hpp), one
 // per lane: `command` starts acosim serving them (serve_variations). A variation whose plugin
 // crashes, runs over `limits.timeout_s` or grows its worker's memory by more than
-// `limits.memory_bytes` costs only itself: its outcome is "crashed", "timed out" or "out of
-// memory", its reason the failure naming the plugin hook, and `failed` hears of it when it
-// happens (from one lane at a time). The other variations' results are run_batch's. An error
-// (a worker that cannot start, a plugin that throws) ends the batch as an aco::Error.
+// `limits.memory_bytes` costs only itself: its outcome is "crashed", "timeout" (as a simulation
+// over its own time limit) or "out of memory", its reason the failure naming the plugin hook,
+// and `failed` hears of it when it happens (from one lane at a time). The other variations'
+// results are run_batch's. An error (a worker that cannot start, a plugin that throws) ends the
+// batch as an aco::Error.
 BatchSummary run_batch_in_workers(int count, const std::vector<std::string>& command, int lanes,
                                   const aco::WorkerLimits& limits,
                                   const std::function<void(int variation, const SimulationResult&)>& failed);

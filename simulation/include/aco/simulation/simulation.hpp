@@ -6,7 +6,9 @@
 // When the robot stops making progress, it adds the unknown cells it has sensed to its map and
 // replans from where it stands.
 #include <Eigen/Core>
+#include <cstddef>
 #include <filesystem>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <string>
@@ -86,12 +88,19 @@ struct Frame {
   std::vector<Eigen::Vector2d> moving;
 };
 
-// Every outcome a simulation can have (the results database keeps it as an index into these).
+// Every outcome a simulation can have, and its text, in the enum's order (the results database
+// keeps it as an index into kOutcomes).
+enum class Outcome { reached, collision, timeout, stuck, no_path };
 inline constexpr const char* kOutcomes[] = {"reached", "collision", "timeout", "stuck", "no path"};
+static_assert(std::size(kOutcomes) == static_cast<std::size_t>(Outcome::no_path) + 1);
+
+constexpr const char* to_string(Outcome outcome) { return kOutcomes[static_cast<int>(outcome)]; }
 
 struct SimulationResult {
   bool reached = false;
-  std::string outcome;  // one of kOutcomes
+  // One of kOutcomes. In a batch of worker processes (batch.hpp), a variation whose worker
+  // crashed or ran out of memory has that failure's text (aco/failure_kind.hpp) instead.
+  std::string outcome;
   std::string reason;
   double time = 0.0;
   double distance = 0.0;

@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "aco/failure_kind.hpp"
 #include "aco/parameters.hpp"
 
 namespace aco::studies {
@@ -41,7 +42,7 @@ struct ConfigRecord {
 
 // What a simulation trial (an acosim scenario as a problem) measured beyond solved and length.
 struct SimulationRecord {
-  std::string outcome;  // reached, collision, timeout, stuck, no path
+  std::string outcome;  // one of aco::simulation::kOutcomes
   double time_to_goal = std::nan("");  // simulated seconds; NaN unless reached (stored as NULL)
   int collisions = 0;
   int replans = 0;
@@ -49,17 +50,12 @@ struct SimulationRecord {
   int control_steps = 0;
 };
 
-// Why a trial failed: a crash (a signal), the trial time limit, the trial memory limit, a plugin
-// that threw, a value a plugin wrote that the engine refused (aco::InvalidValueError), anything
-// else (the host's own errors, and every failure stored by an acobench of format 4 or earlier that
-// threw).
-enum class FailureKind { none, crashed, timed_out, out_of_memory, plugin_error, invalid_value, error };
-
-// As runs.failure, the JSON messages and Python write it: "crashed", "timed out", "out of memory",
-// "plugin error", "invalid value", "error"; "" for none.
-const char* to_string(FailureKind kind);
-// The kind that text names ("" none); an Error naming the text and the kinds for any other.
-FailureKind failure_kind(std::string_view text);
+// Why a trial failed: the kinds the worker processes say too (aco/failure_kind.hpp), timed_out
+// and out_of_memory being the trial time and memory limits; their texts are runs.failure's, the
+// JSON messages' and Python's.
+using aco::failure_kind;
+using aco::FailureKind;
+using aco::to_string;
 
 struct TrialRecord {
   int problem = 0;  // index into the problems given to the constructor

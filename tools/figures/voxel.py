@@ -1,0 +1,106 @@
+"""The voxel preset, its null models and A* on voxel worlds, and a large city's memory."""
+from __future__ import annotations
+
+import json
+import re
+import shlex
+import statistics
+import subprocess
+from pathlib import Path
+
+from .formatting import table
+from .project import ACOPLAN, BUILD, ROOT, VOXEL, FiguresError
+from .run import Run
+from .sections import section
+
+
+# Voxel worlds: the voxel preset against its null-model twins and exact A*, per world.
+VOXEL_WORLDS = [  # (label, scenario file, scenario indices)
+    ("Warframe Simple", "data/maps/voxel/warframe/Simple.3dmap.3dscen", [500, 2500, 4500, 6500, 8500]),
+    ("city 64x64x32", "data/maps/voxel/generated/city64x64x32-s1.3dmap.3dscen", [0, 1, 2, 3, 4]),
+    ("forest 64x64x32", "data/maps/voxel/generated/forest64x64x32-s1.3dmap.3dscen", [0, 1, 2, 3, 4]),
+    ("caves 64x64x32", "data/maps/voxel/generated/caves64x64x32-s1.3dmap.3dscen", [0, 1, 2, 3, 4]),
+]
+VOXEL_SEEDS = 3
+
+
+@section("voxel", "15-30 min", "the voxel preset, its null models and A* on voxel worlds; a 256x256x128 city's memory",
+         [(VOXEL, "voxel-quality"), (VOXEL, "voxel-memory")])
+def voxel(run: Run):
+    twins = {"preset": [], "no-learning": ["--null-model", "no-learning"], "restarts": ["--null-model", "restarts"]}
+    rows = []
+    for label, scen, indices in VOXEL_WORLDS:
+        per = {name: {"solved": 0, "runs": 0, "gaps": [], "final": [], "ms": [], "steps": 0, "steps_ms": 0.0}
+               for name in twins}
+        astar_ms, scen_match = [], True
+        for index in indices:
+            problem = ["--scen", scen, "--scen-index", str(index)]
+            exact = json.loads(run.tool(ACOPLAN, *problem, "--planner", "astar", "--json"))
+            astar_ms.append(exact["time_ms"])
+            optimum = exact["grid_length"]
+            scen_match &= abs(optimum - stored_voxel_optimum(scen, index)) < 1e-6 * optimum
+            for name, extra in twins.items():
+                out = json.loads(run.tool(ACOPLAN, *problem, "--repeat", str(VOXEL_SEEDS), *extra, "--json"))
+                for r in out["runs"]:
+                    m = per[name]
+                    m["runs"] += 1
+                    m["ms"].append(r["time_ms"])
+                    m["steps"] += r["ant_steps"]
+                    m["steps_ms"] += r["time_ms"]
+                    if r["solved"]:
+                        m["solved"] += 1
+                        m["gaps"].append(100 * (r["grid_length"] / optimum - 1))
+                        m["final"].append(r["length"] / optimum)
+        for name in twins:
+            m = per[name]
+            rows.append([label if name == "preset" else "", f"{len(indices)}", name, f"{m['solved']}/{m['runs']}",
+                         f"{statistics.mean(m['gaps']):.2f}" if m["gaps"] else "-",
+                         f"{max(m['gaps']):.2f}" if m["gaps"] else "-",
+                         f"{statistics.mean(m['final']):.3f}" if m["final"] else "-",
+                         f"{statistics.median(m['ms']):.0f} ms",
+                         f"{1e6 * m['steps_ms'] / m['steps']:.0f}" if m["steps"] else "-"])
+        rows.append(["", "", "exact A\*", f"{len(indices)}/{len(indices)}", "0", "0", "1",
+                     f"{statistics.median(astar_ms):.0f} ms", "" if scen_match else "(differs from the .3dscen!)"])
+    quality = (run.stamp() + f"\n\n`acoplan --scen FILE --scen-index I` with the voxel preset (chosen by default), seeds 1-"
+               f"{VOXEL_SEEDS} (`--repeat {VOXEL_SEEDS}`), and its twins (`--null-model no-learning`: the pheromone ignored; "
+               "`--null-model restarts`: as many walks as independent one-iteration runs); grid gap = the ants' grid path "
+               "over A\*'s exact 3D optimum, in %; final / optimum = the pruned path's length over that optimum (under 1: "
+               "line of sight cuts the grid's corners); time = median per run, the graph's building included; ns per ant "
+               "step = run time / ant moves. A\*'s optimum equals the Moving AI `.3dscen` optimal lengths on every "
+               "scenario unless the table says otherwise.\n\n"
+               + table(["world", "scenarios", "pipeline", "solved", "grid gap % (mean)", "grid gap % (worst)",
+                        "final / optimum (mean)", "time per run", "ns per ant step"], rows))
+    run.commands.clear()  # the memory region's stamp lists its own commands only
+    memory = voxel_city_memory(run)
+    return {(VOXEL, "voxel-quality"): quality, (VOXEL, "voxel-memory"): memory}
+
+
+def stored_voxel_optimum(scen: str, index: int) -> float:
+    lines = (ROOT / scen).read_text().splitlines()[2:]
+    return float(lines[index].split()[6])
+
+
+def voxel_city_memory(run: Run) -> str:
+    """A 256x256x128 city planned under a 4 GiB limit: peak memory and time, from GNU time."""
+    folder = Path("build/results/voxel")  # from the project's root, as the tools run
+    (ROOT / folder).mkdir(parents=True, exist_ok=True)
+    run.tool(BUILD / "tools/aco_mapgen", "--voxel", "city", "256x256x128", "7", folder, "3")
+    scen = folder / "city256x256x128-s7.3dmap.3dscen"
+    rows = []
+    for label, extra in [("A\*", ["--planner", "astar"]), ("voxel preset, 20 ants x 20 iterations", ["--ants", "20", "--iterations", "20"]),
+                         ("voxel preset, 50 ants x 100 iterations", [])]:
+        words = ["/usr/bin/time", "-v", str(ACOPLAN), "--scen", str(scen), "--scen-index", "2", "--max-memory", "4G",
+                 *extra, "--json"]
+        run.commands.append(shlex.join(words))
+        done = subprocess.run(words, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+        if done.returncode != 0:
+            raise FiguresError(f"section '{run.section}': {shlex.join(words)} exited {done.returncode}: {done.stderr[-500:]}")
+        peak_kb = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", done.stderr).group(1))
+        wall = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\): ([\d:.]+)", done.stderr).group(1)
+        r = json.loads(done.stdout)
+        rows.append([label, "yes" if r["solved"] else "no", f"{r['grid_length']:.2f}" if r["solved"] else "-",
+                     f"{r['optimal_length']:.2f}", f"{peak_kb / 1024 / 1024:.2f} GiB", wall, f"{r['time_ms'] / 1000:.1f} s"])
+    return (run.stamp() + "\n\nA generated city of 256x256x128 voxels (`aco_mapgen --voxel city 256x256x128 7`), its "
+            "third (longest) scenario, 26-neighbourhood, under `--max-memory 4G`, 2 threads; peak = maximum resident set size "
+            "(GNU time), wall = the whole process (loading the map and building the graph included), run = the planner's "
+            "own time:\n\n" + table(["planner", "solved", "grid length", "optimum", "peak memory", "wall", "run"], rows))

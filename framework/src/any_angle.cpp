@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numeric>
 #include <queue>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "aco/best_first.hpp"
 #include "aco/error.hpp"
 
 namespace aco {
@@ -411,53 +411,32 @@ std::optional<AnyAnglePath> any_angle_optimum(const Map& map, Cell start, Cell g
 }
 
 std::optional<AnyAnglePath> theta_star(const Graph& graph, NodeId start, NodeId goal) {
-  constexpr double unreached = std::numeric_limits<double>::infinity();
   const Map& map = *graph.map;
-  std::vector<double> cost(graph.num_nodes(), unreached);
-  std::vector<NodeId> parent(graph.num_nodes(), -1);
-  std::vector<std::uint8_t> closed(graph.num_nodes(), 0);
   const auto planar = [&](NodeId a, NodeId b) {
     const Cell ca = graph.cell(a), cb = graph.cell(b);
     return std::hypot(double(ca.x - cb.x), double(ca.y - cb.y));
   };
-  using Entry = std::pair<double, NodeId>;  // (f = g + h, node)
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  cost[start] = 0.0;
-  parent[start] = start;
-  open.push({planar(start, goal), start});
-  while (!open.empty()) {
-    const NodeId n = open.top().second;
-    open.pop();
-    if (closed[n]) continue;
-    closed[n] = 1;
-    if (n == goal) break;
-    const NodeId up = parent[n];
+  BestFirstSearch search(graph.num_nodes(), [&](NodeId n) { return planar(n, goal); });
+  search.relax(start, 0.0, -1);
+  search.run(goal, [&](NodeId n) {
+    const NodeId up = search.parent(n);
     for (EdgeId e = graph.edges_begin(n); e < graph.edges_end(n); ++e) {
       const NodeId m = graph.targets[e];
-      if (closed[m]) continue;
+      if (search.closed(m)) continue;
       // Path 2 (the parent's line of sight), else path 1 (the move itself).
-      NodeId from = n;
-      double g = cost[n] + planar(n, m);
-      if (up != n && line_of_sight(map, graph.cell(up), graph.cell(m), graph.options.corner_cutting)) {
-        from = up;
-        g = cost[up] + planar(up, m);
-      }
-      if (g < cost[m]) {
-        cost[m] = g;
-        parent[m] = from;
-        open.push({g + planar(m, goal), m});
-      }
+      if (up >= 0 && line_of_sight(map, graph.cell(up), graph.cell(m), graph.options.corner_cutting))
+        search.relax(m, search.cost(up) + planar(up, m), up);
+      else
+        search.relax(m, search.cost(n) + planar(n, m), n);
     }
-  }
-  if (cost[goal] == unreached) return std::nullopt;
+  });
+  if (search.cost(goal) == search.unreached) return std::nullopt;
   AnyAnglePath path;
-  path.length = cost[goal];
-  for (NodeId n = goal;; n = parent[n]) {
+  path.length = search.cost(goal);
+  for (const NodeId n : search.path_to(goal)) {
     const Cell c = graph.cell(n);
     path.waypoints.push_back({double(c.x), double(c.y), 0.0});
-    if (n == start) break;
   }
-  std::reverse(path.waypoints.begin(), path.waypoints.end());
   return path;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "aco/astar.hpp"
+#include "aco/best_first.hpp"
 #include "aco/graph.hpp"
 #include "aco/map_io.hpp"
 #include "support.hpp"
@@ -231,4 +232,18 @@ TEST_CASE("A* agrees with Dijkstra on random maps", "[astar]") {
   }
   CHECK(compared > 100);
   CHECK(unreachable > 0);
+}
+
+TEST_CASE("Best-first search takes equal keys smaller node first, each node once", "[astar]") {
+  // The order every exact search's result hangs on (aco/best_first.hpp).
+  aco::BestFirstSearch search(8, [](aco::NodeId n) { return n == 6 ? 1.0 : 0.0; });
+  for (const aco::NodeId n : {5, 3, 7, 4}) search.relax(n, 2.0, -1);
+  search.relax(6, 1.0, -1);  // key 2 too: heuristic 1
+  search.relax(5, 1.5, 3);  // improved: opened again at 1.5, its old entry skipped
+  std::vector<aco::NodeId> expanded;
+  search.run(7, [&](aco::NodeId n) { expanded.push_back(n); });
+  CHECK(expanded == std::vector<aco::NodeId>{5, 3, 4, 6});
+  CHECK(search.closed(7));
+  CHECK(search.path_to(5) == std::vector<aco::NodeId>{3, 5});
+  CHECK(search.cost(0) == search.unreached);
 }

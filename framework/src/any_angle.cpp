@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <limits>
 #include <numeric>
 #include <queue>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "aco/best_first.hpp"
 #include "aco/error.hpp"
 
 namespace aco {
@@ -30,12 +29,23 @@ struct Point {
 
 double distance(Point a, Point b) { return std::hypot(double(a.x - b.x), double(a.y - b.y)); }
 
+// The map point a point in half units is.
+Eigen::Vector2d map_point(Point p) { return {(double(p.x) - 1) / 2, (double(p.y) - 1) / 2}; }
+
+// Half cell (i, j) of a map is free when its map cell is passable.
+struct MapFree {
+  const Map& map;
+  bool operator()(std::int64_t i, std::int64_t j) const {
+    if (i < 0 || j < 0 || i >= 2 * std::int64_t{map.width()} || j >= 2 * std::int64_t{map.height()}) return false;
+    return map.passable({static_cast<int>(i >> 1), static_cast<int>(j >> 1)});
+  }
+};
+
 // Whether the free half cells around vertex v connect the side a path comes from (direction
 // `in`, pointing into v) to the side it leaves by (direction `out`). A side is the cell the path
 // is inside next to v, or the edge it runs along (its two cells). The free cells around v
 // connect through shared edges: three or four free connect all, two only when not diagonal.
-template <class Free>
-bool passage_ok(const Free& free, Point v, Point in, Point out) {
+bool passage_ok(const MapFree& free, Point v, Point in, Point out) {
   // The four cells as quadrants (qx, qy): cell (v.x - 1 + qx, v.y - 1 + qy).
   bool open[2][2];
   int count = 0;
@@ -65,54 +75,6 @@ bool passage_ok(const Free& free, Point v, Point in, Point out) {
   return false;
 }
 
-// The rule for one segment between grid vertices of the half-cell grid, in exact integers.
-template <class Free>
-bool segment_free(const Free& free, Point p, Point q) {
-  if (p == q) return free(p.x - 1, p.y - 1) || free(p.x, p.y - 1) || free(p.x - 1, p.y) || free(p.x, p.y);
-  const std::int64_t dx = q.x - p.x, dy = q.y - p.y;
-  const int sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
-  const Point dir{dx == 0 ? 0 : sx, dy == 0 ? 0 : sy};
-  if (dx == 0 || dy == 0) {
-    // Along a grid line: each unit edge needs a free cell beside it, each vertex a passage.
-    const std::int64_t n = std::max(std::llabs(dx), std::llabs(dy));
-    Point v = p;
-    for (std::int64_t k = 0; k < n; ++k) {
-      if (k > 0 && !passage_ok(free, v, dir, dir)) return false;
-      const bool edge_free = dy == 0 ? free(std::min(v.x, v.x + sx), v.y - 1) || free(std::min(v.x, v.x + sx), v.y)
-                                     : free(v.x - 1, std::min(v.y, v.y + sy)) || free(v.x, std::min(v.y, v.y + sy));
-      if (!edge_free) return false;
-      v.x += dir.x;
-      v.y += dir.y;
-    }
-    return true;
-  }
-  // Through cell interiors: crossings of column lines at t = (ix + 1) / |dx|, of row lines at
-  // t = (iy + 1) / |dy|, compared cross-multiplied; both at once is a vertex.
-  const std::int64_t adx = std::llabs(dx), ady = std::llabs(dy);
-  std::int64_t cx = p.x + (sx > 0 ? 0 : -1), cy = p.y + (sy > 0 ? 0 : -1);
-  if (!free(cx, cy)) return false;
-  std::int64_t ix = 0, iy = 0;
-  while (true) {
-    const std::int64_t order = (ix + 1) * ady - (iy + 1) * adx;
-    if (order == 0) {
-      if (ix + 1 == adx) return true;  // q itself
-      const Point v{p.x + sx * (ix + 1), p.y + sy * (iy + 1)};
-      if (!passage_ok(free, v, dir, dir)) return false;
-      cx += sx;
-      cy += sy;
-      ++ix;
-      ++iy;
-    } else if (order < 0) {
-      cx += sx;
-      ++ix;
-    } else {
-      cy += sy;
-      ++iy;
-    }
-    if (!free(cx, cy)) return false;
-  }
-}
-
 // A map point (2x + 1 and 2y + 1 integers) in half units, or an Error.
 Point half_units(const Eigen::Vector3d& point) {
   const auto one = [&](double v) {
@@ -124,15 +86,6 @@ Point half_units(const Eigen::Vector3d& point) {
   };
   return {one(point.x()), one(point.y())};
 }
-
-// Half cell (i, j) of a map is free when its map cell is passable.
-struct MapFree {
-  const Map& map;
-  bool operator()(std::int64_t i, std::int64_t j) const {
-    if (i < 0 || j < 0 || i >= 2 * std::int64_t{map.width()} || j >= 2 * std::int64_t{map.height()}) return false;
-    return map.passable({static_cast<int>(i >> 1), static_cast<int>(j >> 1)});
-  }
-};
 
 // An exact rational n / d, d > 0, reduced. Interval ends on a row are projections along lines
 // through two grid points, so d stays below the grid's height and products fit in 64 bits.
@@ -411,7 +364,7 @@ struct AnyAngleSearch::State {
     if (!map.passable(start_cell) || !map.passable(goal_cell)) return std::nullopt;
     const Point s{2 * std::int64_t{start_cell.x} + 1, 2 * std::int64_t{start_cell.y} + 1};
     goal = {2 * std::int64_t{goal_cell.x} + 1, 2 * std::int64_t{goal_cell.y} + 1};
-    const auto waypoint = [](Point p) { return Eigen::Vector3d((double(p.x) - 1) / 2, (double(p.y) - 1) / 2, 0.0); };
+    const auto waypoint = [](Point p) { return Eigen::Vector3d(map_point(p).x(), map_point(p).y(), 0.0); };
     if (s == goal) return AnyAnglePath{0.0, {waypoint(s)}};
     if (++current == 0) {
       std::fill(stamp.begin(), stamp.end(), 0);
@@ -458,69 +411,53 @@ std::optional<AnyAnglePath> any_angle_optimum(const Map& map, Cell start, Cell g
 }
 
 std::optional<AnyAnglePath> theta_star(const Graph& graph, NodeId start, NodeId goal) {
-  constexpr double unreached = std::numeric_limits<double>::infinity();
   const Map& map = *graph.map;
-  std::vector<double> cost(graph.num_nodes(), unreached);
-  std::vector<NodeId> parent(graph.num_nodes(), -1);
-  std::vector<std::uint8_t> closed(graph.num_nodes(), 0);
   const auto planar = [&](NodeId a, NodeId b) {
     const Cell ca = graph.cell(a), cb = graph.cell(b);
     return std::hypot(double(ca.x - cb.x), double(ca.y - cb.y));
   };
-  using Entry = std::pair<double, NodeId>;  // (f = g + h, node)
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  cost[start] = 0.0;
-  parent[start] = start;
-  open.push({planar(start, goal), start});
-  while (!open.empty()) {
-    const NodeId n = open.top().second;
-    open.pop();
-    if (closed[n]) continue;
-    closed[n] = 1;
-    if (n == goal) break;
-    const NodeId up = parent[n];
+  BestFirstSearch search(graph.num_nodes(), [&](NodeId n) { return planar(n, goal); });
+  search.relax(start, 0.0, -1);
+  search.run(goal, [&](NodeId n) {
+    const NodeId up = search.parent(n);
     for (EdgeId e = graph.edges_begin(n); e < graph.edges_end(n); ++e) {
       const NodeId m = graph.targets[e];
-      if (closed[m]) continue;
+      if (search.closed(m)) continue;
       // Path 2 (the parent's line of sight), else path 1 (the move itself).
-      NodeId from = n;
-      double g = cost[n] + planar(n, m);
-      if (up != n && line_of_sight(map, graph.cell(up), graph.cell(m), graph.options.corner_cutting)) {
-        from = up;
-        g = cost[up] + planar(up, m);
-      }
-      if (g < cost[m]) {
-        cost[m] = g;
-        parent[m] = from;
-        open.push({g + planar(m, goal), m});
-      }
+      if (up >= 0 && line_of_sight(map, graph.cell(up), graph.cell(m), graph.options.corner_cutting))
+        search.relax(m, search.cost(up) + planar(up, m), up);
+      else
+        search.relax(m, search.cost(n) + planar(n, m), n);
     }
-  }
-  if (cost[goal] == unreached) return std::nullopt;
+  });
+  if (search.cost(goal) == search.unreached) return std::nullopt;
   AnyAnglePath path;
-  path.length = cost[goal];
-  for (NodeId n = goal;; n = parent[n]) {
+  path.length = search.cost(goal);
+  for (const NodeId n : search.path_to(goal)) {
     const Cell c = graph.cell(n);
     path.waypoints.push_back({double(c.x), double(c.y), 0.0});
-    if (n == start) break;
   }
-  std::reverse(path.waypoints.begin(), path.waypoints.end());
   return path;
 }
 
+// The rule is segment_free's with corner cutting (tests/test_segment_rule.cpp holds them equal);
+// half_units() refuses points off the lattice.
 bool any_angle_segment_free(const Map& map, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  return segment_free(MapFree{map}, half_units(a), half_units(b));
+  half_units(a);
+  half_units(b);
+  return segment_free(map, a.head<2>(), b.head<2>(), true);
 }
 
 bool any_angle_path_valid(const Map& map, std::span<const Eigen::Vector3d> points) {
   if (points.empty()) return false;
-  const MapFree free{map};
   std::vector<Point> path;
   for (const auto& p : points)
     if (const Point q = half_units(p); path.empty() || !(q == path.back())) path.push_back(q);
-  if (path.size() == 1) return segment_free(free, path[0], path[0]);
+  const auto free_between = [&](Point p, Point q) { return segment_free(map, map_point(p), map_point(q), true); };
+  if (path.size() == 1) return free_between(path[0], path[0]);
   for (std::size_t i = 0; i + 1 < path.size(); ++i)
-    if (!segment_free(free, path[i], path[i + 1])) return false;
+    if (!free_between(path[i], path[i + 1])) return false;
+  const MapFree free{map};
   const auto sign = [](std::int64_t v) -> std::int64_t { return (v > 0) - (v < 0); };
   for (std::size_t i = 1; i + 1 < path.size(); ++i) {
     const Point in{sign(path[i].x - path[i - 1].x), sign(path[i].y - path[i - 1].y)};

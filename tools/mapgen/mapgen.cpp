@@ -29,12 +29,9 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <iostream>
-#include <limits>
 #include <numeric>
 #include <optional>
-#include <queue>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -42,6 +39,7 @@
 #include <Eigen/Core>
 
 #include "aco/astar.hpp"
+#include "aco/best_first.hpp"
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/map.hpp"
@@ -283,24 +281,7 @@ void write_map(const PaperMap& m, const std::filesystem::path& dir) {
 // Exact distances from `from` over the graph (Dijkstra); infinity where unreachable. Used only to
 // choose goals at given distances, never by a planner.
 std::vector<double> distances_from(const aco::Graph& graph, aco::NodeId from) {
-  std::vector<double> d(graph.num_nodes(), std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, aco::NodeId>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> open;
-  d[from] = 0.0;
-  open.push({0.0, from});
-  while (!open.empty()) {
-    const auto [dist, n] = open.top();
-    open.pop();
-    if (dist > d[n]) continue;
-    for (aco::EdgeId e = graph.edges_begin(n); e != graph.edges_end(n); ++e) {
-      const aco::NodeId m = graph.targets[e];
-      if (dist + graph.cost(e) < d[m]) {
-        d[m] = dist + graph.cost(e);
-        open.push({d[m], m});
-      }
-    }
-  }
-  return d;
+  return aco::search_edges(graph, from, -1, [](aco::NodeId) { return 0.0; }).take_costs();
 }
 
 // The nodes of the largest connected part of the map (8-neighbourhood, no corner cutting).

@@ -70,9 +70,9 @@ class BOOST_SYMBOL_VISIBLE AnyAngleSearch {
 // joins them. Empty when the goal is unreachable. Never longer than A* on the same graph.
 std::optional<AnyAnglePath> theta_star(const Graph& graph, NodeId start, NodeId goal);
 
-// Whether the straight segment from a to b is free under the rule above. Exact: a and b must lie
-// on the half-cell lattice (cell centres, cell corners, edge midpoints: 2x and 2y integers),
-// otherwise an Error. z is ignored.
+// Whether the straight segment from a to b is free under the rule above: segment_free
+// (aco/graph.hpp) with corner cutting, for a and b on the half-cell lattice (cell centres, cell
+// corners, edge midpoints: 2x and 2y integers); other points are an Error. z is ignored.
 bool any_angle_segment_free(const Map& map, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 // Whether a polyline is valid under the rule above (every segment free, every turn passable);
 // points as for any_angle_segment_free. An empty polyline is not; a single point is when it lies

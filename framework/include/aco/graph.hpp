@@ -153,6 +153,7 @@ bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting);
 // cell edge, the two cells beside that edge must not both be blocked; where it passes through a
 // grid vertex (not at its ends), neither diagonal pair of the four cells around it may be blocked
 // (no squeezing between two blocked cells); a = b is free iff a passable cell touches the point.
+// With corner cutting this is the any-angle yardstick's rule (aco/any_angle.hpp).
 // Map::step_allowed is not consulted (the plane: a terrain's slope rule has no steps here); a
 // non-finite coordinate is not free.
 bool segment_free(const Map& map, const Eigen::Vector2d& a, const Eigen::Vector2d& b, bool corner_cutting);

@@ -19,12 +19,12 @@
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "ifwa/fireworks.hpp"
-#include "aco/map_io.hpp"
-#include "aco/pipeline.hpp"
-#include "aco/program_options_error.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/hosts/program_options_error.hpp"
+#include "aco/planning/run_spec.hpp"
 #include "aco/strategies.hpp"
-#include "aco/yardsticks.hpp"
+#include "aco/planning/yardsticks.hpp"
 
 namespace po = boost::program_options;
 

@@ -14,7 +14,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 
 namespace ob = ompl::base;
 namespace og = ompl::geometric;

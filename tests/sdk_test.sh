@@ -225,7 +225,7 @@ CMAKE
 cat > "$work/library_user/main.cpp" <<'CPP'
 #include <iostream>
 
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "aco/simulation/simulation.hpp"
 
 int main(int, char** argv) {

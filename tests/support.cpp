@@ -22,8 +22,8 @@
 #include <limits>
 
 #include "aco/error.hpp"
-#include "aco/map_io.hpp"
-#include "aco/svg.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/drawing/svg.hpp"
 
 extern char** environ;
 

@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/graph.hpp"
 #include "aco/map.hpp"
-#include "aco/pipeline.hpp"
-#include "aco/plugin_registry.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/engine/plugin_registry.hpp"
+#include "aco/planning/run_spec.hpp"
 
 namespace test {
 

@@ -309,7 +309,7 @@ TEST_CASE("a configuration starts from an acoplan config file with 'config', its
   }
 }
 
-// Boost.ProgramOptions' message for these never came back (aco/program_options_error.hpp).
+// Boost.ProgramOptions' message for these never came back (aco/hosts/program_options_error.hpp).
 TEST_CASE("acobench shows '%' placeholders in its options as typed", "[acobench][bad-input]") {
   const auto error = [](const std::vector<std::string>& args) {
     const auto r = run_acobench(args);

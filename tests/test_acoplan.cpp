@@ -5,10 +5,10 @@
 #include <sstream>
 #include <nlohmann/json.hpp>
 
-#include "aco/host_options.hpp"
-#include "aco/output_file.hpp"
+#include "aco/hosts/host_options.hpp"
+#include "aco/process/output_file.hpp"
 #include "aco/plugin.hpp"
-#include "aco/svg.hpp"
+#include "aco/drawing/svg.hpp"
 #include "acoplan/acoplan.hpp"
 #include "support.hpp"
 
@@ -391,7 +391,7 @@ TEST_CASE("acoplan refuses a config file that is a folder or a device", "[acopla
 }
 
 // Found by the ini_config fuzz harness: acoplan --config with this file never ended, inside
-// Boost.ProgramOptions' message for the bad line (aco/program_options_error.hpp).
+// Boost.ProgramOptions' message for the bad line (aco/hosts/program_options_error.hpp).
 TEST_CASE("acoplan names a bad config line, and shows '%' placeholders in any input as typed", "[acoplan][bad-input]") {
   const auto hang = test::temp_file("hang.ini", "beta = 0.3\n%invalid_line%x\n").string();
   expect_error({"--config", hang}, hang + ":2: '%invalid_line%x' is not a 'key = value' line");

@@ -9,7 +9,7 @@
 #include "aco/simulation/simulation.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/error.hpp"
-#include "aco/svg.hpp"
+#include "aco/drawing/svg.hpp"
 #include "support.hpp"
 
 using Catch::Contains;
@@ -201,7 +201,7 @@ TEST_CASE("acosim: bad scenarios are errors naming the file, the line and the ke
                     Contains("/dev/zero: not a regular file"));
 }
 
-// Boost.ProgramOptions' message for these never came back (aco/program_options_error.hpp).
+// Boost.ProgramOptions' message for these never came back (aco/hosts/program_options_error.hpp).
 TEST_CASE("acosim: '%' placeholders in its options are shown as typed", "[acosim][bad-input]") {
   const auto error = [](const std::vector<std::string>& args) {
     std::vector<std::string> argv{ACO_TEST_ACOSIM};

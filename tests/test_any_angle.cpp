@@ -14,7 +14,7 @@
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "aco/path.hpp"
 #include "support.hpp"
 

@@ -7,9 +7,9 @@
 #include <cmath>
 
 #include "aco/any_angle.hpp"
-#include "aco/colony.hpp"
-#include "aco/map_io.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/engine/colony.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/engine/pipeline.hpp"
 #include "support.hpp"
 
 namespace {

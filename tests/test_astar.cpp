@@ -14,7 +14,7 @@
 #include "aco/astar.hpp"
 #include "aco/best_first.hpp"
 #include "aco/graph.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

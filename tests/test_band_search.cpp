@@ -4,7 +4,7 @@
 #include <random>
 
 #include "aco/astar.hpp"
-#include "aco/local_search.hpp"
+#include "aco/engine/local_search.hpp"
 #include "support.hpp"
 
 TEST_CASE("band search: a walk takes the nearer door once the band reaches it", "[band_search]") {

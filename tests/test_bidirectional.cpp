@@ -4,9 +4,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/error.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "support.hpp"
 
 using Catch::Contains;

@@ -6,9 +6,9 @@
 #include <map>
 #include <set>
 
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/error.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "aco/rng.hpp"
 #include "support.hpp"
 

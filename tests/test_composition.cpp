@@ -2,9 +2,9 @@
 #include <catch2/catch.hpp>
 #include <fstream>
 
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "aco/path.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/engine/pipeline.hpp"
 #include "support.hpp"
 
 using Catch::Contains;

@@ -1,4 +1,4 @@
-// The colony and corridors (aco/colony.hpp, issue 52): the corridors its walks took, restarts that
+// The colony and corridors (aco/engine/colony.hpp, issue 52): the corridors its walks took, restarts that
 // settle a corridor, islands that keep distinct corridors, and per-node memory of the way to the goal.
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
@@ -7,11 +7,11 @@
 #include <catch2/catch.hpp>
 
 #include "aco/astar.hpp"
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/corridor.hpp"
-#include "aco/map_io.hpp"
-#include "aco/pipeline.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/planning/run_spec.hpp"
 #include "support.hpp"
 
 using Catch::Contains;

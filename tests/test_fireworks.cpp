@@ -9,7 +9,7 @@
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "ifwa/fireworks.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "support.hpp"
 
 namespace {

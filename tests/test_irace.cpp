@@ -15,9 +15,9 @@
 #include <sstream>
 #include <thread>
 
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/parameters.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/engine/pipeline.hpp"
 #include "support.hpp"
 
 using Catch::Contains;

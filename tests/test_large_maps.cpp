@@ -1,5 +1,5 @@
 // The engine options for large maps: dead-end filling, local search on the ants' walks and the
-// walk limit (aco/dead_ends.hpp, aco/local_search.hpp, ColonySettings).
+// walk limit (aco/engine/dead_ends.hpp, aco/engine/local_search.hpp, ColonySettings).
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
@@ -8,9 +8,9 @@
 #include <map>
 #include <random>
 
-#include "aco/dead_ends.hpp"
-#include "aco/local_search.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/dead_ends.hpp"
+#include "aco/engine/local_search.hpp"
+#include "aco/engine/map_io.hpp"
 #include "support.hpp"
 
 namespace {

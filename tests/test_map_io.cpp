@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "aco/error.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

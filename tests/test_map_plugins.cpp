@@ -2,10 +2,10 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "aco/conformance.hpp"
-#include "aco/map_formats.hpp"
-#include "aco/plugin_catalog.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/sdk/conformance.hpp"
+#include "aco/engine/map_formats.hpp"
+#include "aco/planning/plugin_catalog.hpp"
+#include "aco/planning/run_spec.hpp"
 #include "support.hpp"
 
 using Catch::Contains;

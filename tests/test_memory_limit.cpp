@@ -7,7 +7,7 @@
 #include <string>
 
 #include "aco/error.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "aco/memory_limit.hpp"
 #include "support.hpp"
 

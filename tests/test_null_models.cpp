@@ -5,8 +5,8 @@
 #include <catch2/catch.hpp>
 #include <sqlite3.h>
 
-#include "aco/colony.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/colony.hpp"
+#include "aco/engine/map_io.hpp"
 #include "acobench_support.hpp"
 #include "support.hpp"
 

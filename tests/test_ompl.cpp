@@ -1,4 +1,4 @@
-// The 'ompl' planner (planners/ompl): OMPL's sampling planners in the plane over the map. Built
+// The 'ompl' planner (baselines/ompl): OMPL's sampling planners in the plane over the map. Built
 // and registered only where OMPL is installed. Their runs are bounded by wall-clock time, so the
 // tests assert only what holds on any machine under any load: a path, when found, is valid and no
 // shorter than the straight line; every planner finds one within generous budgets (tried again
@@ -15,7 +15,7 @@
 
 #include "acobench_support.hpp"
 #include "aco/error.hpp"
-#include "aco/planning.hpp"
+#include "aco/planning/planning.hpp"
 #include "aco/studies/results_db.hpp"
 #include "aco/terrain.hpp"
 #include "ompl/ompl_planner.hpp"

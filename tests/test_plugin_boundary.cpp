@@ -9,7 +9,7 @@
 
 #include "aco/studies/results_db.hpp"
 #include "aco/error.hpp"
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "support.hpp"
 
 using Catch::Contains;

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "aco/error.hpp"
-#include "aco/presets.hpp"
+#include "aco/planning/presets.hpp"
 #include "acobench_support.hpp"
 #include "support.hpp"
 

@@ -4,8 +4,8 @@
 #include <fstream>
 
 #include "aco/astar.hpp"
-#include "aco/map_io.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/engine/pipeline.hpp"
 #include "support.hpp"
 
 namespace {

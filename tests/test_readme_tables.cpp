@@ -122,7 +122,7 @@ TEST_CASE("README's Layout describes every top-level folder and no other", "[rea
   for (const auto& entry : std::filesystem::directory_iterator(kProjectDir))
     if (entry.is_directory() && !ignored.count(entry.path().filename().string()))
       folders.insert(entry.path().filename().string());
-  REQUIRE(folders.count("framework") == 1);
+  REQUIRE(folders.count("core") == 1);
   for (const auto& folder : folders) {
     INFO(folder << "/ is in the tree but README.md's Layout does not describe it");
     CHECK(described.count(folder) == 1);

@@ -3,7 +3,7 @@
 #include <fstream>
 
 #include "aco/error.hpp"
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "support.hpp"
 
 using Catch::Contains;

@@ -3,8 +3,8 @@
 #include <boost/program_options.hpp>
 #include <catch2/catch.hpp>
 
-#include "aco/program_options_error.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/hosts/program_options_error.hpp"
+#include "aco/planning/run_spec.hpp"
 #include "aco/settings_table.hpp"
 #include "support.hpp"
 
@@ -177,7 +177,7 @@ TEST_CASE("a bad config line is an error naming the file, the line number and th
   CHECK(config_error("beta = 1\n[x]\n\nbeta = 2\nbeta = 3\n") == ":5: 'x.beta' is set twice (first on line 4)");
 }
 
-// Boost.ProgramOptions' what() never came back on these (aco/program_options_error.hpp).
+// Boost.ProgramOptions' what() never came back on these (aco/hosts/program_options_error.hpp).
 TEST_CASE("Boost.ProgramOptions errors are reported with the user's text as typed", "[run_spec][errors]") {
   namespace po = boost::program_options;
   const auto message = [](const std::vector<std::string>& args) {

@@ -1,6 +1,6 @@
 // The slot table (aco/slots.hpp) is the one list of slots: the pipeline, the scaffolding tool and
 // the docs' slot table must say what it says, the interfaces must have the hooks it lists, and
-// the error boundary (aco/plugin_guard.hpp) must forward every one of them.
+// the error boundary (aco/engine/plugin_guard.hpp) must forward every one of them.
 #include <catch2/catch.hpp>
 
 #include <fstream>
@@ -8,8 +8,8 @@
 #include <set>
 #include <sstream>
 
-#include "aco/pipeline.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/engine/plugin_guard.hpp"
 #include "aco/slots.hpp"
 
 namespace {
@@ -40,7 +40,7 @@ std::set<std::string> table_hooks(const aco::SlotInfo& slot) {
 // The virtual functions a class of the framework's headers declares, destructors aside, read from
 // its body: "virtual void compute(" gives "compute".
 std::set<std::string> declared_virtuals(const std::string& interface) {
-  const auto include = std::filesystem::path(ACO_TEST_SOURCE_DIR) / "framework/include/aco";
+  const auto include = std::filesystem::path(ACO_TEST_SOURCE_DIR) / "core/include/aco";
   const std::string headers = read_text(include / "strategies.hpp") + read_text(include / "map_reader.hpp");
   const std::size_t begin = headers.find("class BOOST_SYMBOL_VISIBLE " + interface + " ");
   REQUIRE(begin != std::string::npos);

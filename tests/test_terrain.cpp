@@ -14,8 +14,8 @@
 
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
-#include "aco/map_io.hpp"
-#include "aco/svg.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/drawing/svg.hpp"
 #include "aco/terrain.hpp"
 #include "support.hpp"
 

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "aco/conformance.hpp"
+#include "aco/sdk/conformance.hpp"
 #include "support.hpp"
 
 namespace fs = std::filesystem;

@@ -1,6 +1,6 @@
 // The pictures of a voxel world (issue 42): the surface voxels they draw, the 3D HTML page
-// (aco/voxel_html.hpp; tests/voxel_page_in_chromium.sh opens it) and the isometric and sliced SVG
-// (aco/voxel_svg.hpp).
+// (aco/drawing/voxel_html.hpp; tests/voxel_page_in_chromium.sh opens it) and the isometric and sliced SVG
+// (aco/drawing/voxel_svg.hpp).
 #include <catch2/catch.hpp>
 
 #include <regex>
@@ -9,8 +9,8 @@
 
 #include "aco/error.hpp"
 #include "aco/voxel.hpp"
-#include "aco/voxel_html.hpp"
-#include "aco/voxel_svg.hpp"
+#include "aco/drawing/voxel_html.hpp"
+#include "aco/drawing/voxel_svg.hpp"
 
 using Catch::Contains;
 

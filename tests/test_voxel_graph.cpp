@@ -14,13 +14,13 @@
 #include <sstream>
 
 #include "aco/astar.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/path.hpp"
-#include "aco/pipeline.hpp"
-#include "aco/planning.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/planning/planning.hpp"
+#include "aco/planning/run_spec.hpp"
 #include "aco/voxel.hpp"
 #include "support.hpp"
 

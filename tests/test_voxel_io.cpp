@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "aco/error.hpp"
-#include "aco/map_formats.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_formats.hpp"
+#include "aco/engine/map_io.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/voxel.hpp"
 #include "support.hpp"

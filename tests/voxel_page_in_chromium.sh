@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Opens a voxel world's 3D page (aco/voxel_html.hpp) in headless Chromium with WebGL drawn by
+# Opens a voxel world's 3D page (aco/drawing/voxel_html.hpp) in headless Chromium with WebGL drawn by
 # SwiftShader (software: no GPU needed, the same pixels everywhere): the page must load from disk
 # with no network, its script must draw (data-rendered on <body>), and the screenshot must show the
 # voxels, the path, the start and the goal in their colours (tests/voxel_page_check.py). The SVG

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "aco/voxel.hpp"
-#include "aco/voxel_html.hpp"
-#include "aco/voxel_svg.hpp"
+#include "aco/drawing/voxel_html.hpp"
+#include "aco/drawing/voxel_svg.hpp"
 
 namespace {
 

@@ -3,7 +3,7 @@
 # <prefix>/bin/aco-new-plugin:
 #   aco-new-plugin SLOT NAME DIR      (SLOT: init, heuristic, update, deadlock, smoother, local, map)
 # then: cmake -S DIR -B DIR/build -DCMAKE_PREFIX_PATH=<aco prefix> && cmake --build DIR/build
-#       ctest --test-dir DIR/build                  (the generated unit test: Catch2, aco/testing.hpp)
+#       ctest --test-dir DIR/build                  (the generated unit test: Catch2, aco/sdk/testing.hpp)
 #       acoplan --plugin-dir DIR/build/plugins --SLOT NAME     (a map plugin: --map FILE.NAME)
 # The generated class and its test compile and pass as they are; replace its one method with
 # your idea and the test's example with what your idea must do.
@@ -207,7 +207,7 @@ cat > "$dir/test_${name}.cpp" <<CPP
 #include <fstream>
 
 #include "aco/path.hpp"
-#include "aco/testing.hpp"
+#include "aco/sdk/testing.hpp"
 
 TEST_CASE("${slot}/${name} passes the conformance checks", "[${slot}][${name}][conformance]") {
   // Defaults and parameter range ends, on tiny maps and edge-case iterations: finite values,

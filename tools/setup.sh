@@ -20,7 +20,7 @@ demo_packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen
 # mypy: the test python_mypy (the package's types and the examples).
 # python3-nbclient, python3-nbformat, python3-ipykernel: the test that runs the example notebook.
 # clang-format-14: the test that the sources are formatted as .clang-format says (tools/format.sh).
-# libompl-dev: the 'ompl' planner (planners/ompl; without it the build leaves the planner out) and
+# libompl-dev: the 'ompl' planner (baselines/ompl; without it the build leaves the planner out) and
 # an OMPL benchmark log for the test that OMPL's own tools read our databases, with ompl-demos
 # (ompl_benchmark_statistics) and sqlite3.
 # liboctomap-dev: the map plugin map/octomap (.bt and .ot voxel worlds) and tools/octomapgen,

@@ -1,4 +1,4 @@
-#include "aco/svg.hpp"
+#include "aco/drawing/svg.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "aco/error.hpp"
-#include "aco/output_file.hpp"
+#include "aco/process/output_file.hpp"
 #include "aco/terrain.hpp"
 
 namespace aco {

@@ -1,4 +1,4 @@
-#include "aco/voxel_html.hpp"
+#include "aco/drawing/voxel_html.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -7,8 +7,8 @@
 #include <tuple>
 
 #include "aco/error.hpp"
-#include "aco/output_file.hpp"
-#include "aco/svg.hpp"
+#include "aco/process/output_file.hpp"
+#include "aco/drawing/svg.hpp"
 #include "embedded_text.hpp"
 #include "voxel_colours.hpp"
 

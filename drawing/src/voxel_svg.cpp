@@ -1,4 +1,4 @@
-#include "aco/voxel_svg.hpp"
+#include "aco/drawing/voxel_svg.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,8 +11,8 @@
 #include <tuple>
 
 #include "aco/error.hpp"
-#include "aco/output_file.hpp"
-#include "aco/svg.hpp"
+#include "aco/process/output_file.hpp"
+#include "aco/drawing/svg.hpp"
 #include "voxel_colours.hpp"
 
 namespace aco {

@@ -1,4 +1,4 @@
-#include "aco/voxel_view.hpp"
+#include "aco/drawing/voxel_view.hpp"
 
 #include <algorithm>
 #include <cmath>

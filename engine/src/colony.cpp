@@ -1,4 +1,4 @@
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 
 #include <tbb/blocked_range.h>
 

@@ -1,5 +1,5 @@
 // The colony's settings table: its keys, ranges and help texts next to the ColonySettings members.
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/settings_table.hpp"
 
 namespace aco {

@@ -23,14 +23,14 @@
 #include <sys/mman.h>
 #endif
 
-#include "aco/colony.hpp"
-#include "aco/dead_ends.hpp"
+#include "aco/engine/colony.hpp"
+#include "aco/engine/dead_ends.hpp"
 #include "aco/error.hpp"
 #include "aco/figures.hpp"
-#include "aco/local_search.hpp"
+#include "aco/engine/local_search.hpp"
 #include "aco/parallel.hpp"
 #include "aco/plugin_error.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/engine/plugin_guard.hpp"
 #include "aco/rng.hpp"
 
 namespace aco::colony_detail {

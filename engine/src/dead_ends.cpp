@@ -1,4 +1,4 @@
-#include "aco/dead_ends.hpp"
+#include "aco/engine/dead_ends.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "aco/input_file.hpp"
+#include "aco/engine/input_file.hpp"
 
 #include "aco/error.hpp"
 

@@ -1,4 +1,4 @@
-#include "aco/install_layout.hpp"
+#include "aco/engine/install_layout.hpp"
 
 #include <boost/dll/runtime_symbol_info.hpp>
 

@@ -1,4 +1,4 @@
-#include "aco/local_search.hpp"
+#include "aco/engine/local_search.hpp"
 
 #include <algorithm>
 #include <cmath>

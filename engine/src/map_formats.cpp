@@ -1,9 +1,9 @@
-#include "aco/map_formats.hpp"
+#include "aco/engine/map_formats.hpp"
 
 #include <algorithm>
 
 #include "aco/error.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "aco/map_reader.hpp"
 
 namespace aco {

@@ -1,4 +1,4 @@
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 
 #include <yaml-cpp/yaml.h>
 
@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "aco/error.hpp"
-#include "aco/input_file.hpp"
+#include "aco/engine/input_file.hpp"
 #include "aco/memory_limit.hpp"
 
 namespace aco {

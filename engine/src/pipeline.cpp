@@ -1,4 +1,4 @@
-#include "aco/pipeline.hpp"
+#include "aco/engine/pipeline.hpp"
 
 #include <algorithm>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "aco/plugin_compatibility.hpp"
+#include "aco/engine/plugin_compatibility.hpp"
 
 #include <elf.h>
 #include <link.h>  // ElfW: the ELF types of this machine's word size

@@ -1,4 +1,4 @@
-#include "aco/plugin_guard.hpp"
+#include "aco/engine/plugin_guard.hpp"
 
 #include "aco/plugin_error.hpp"
 

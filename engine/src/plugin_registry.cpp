@@ -1,6 +1,6 @@
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 
-#include "aco/install_layout.hpp"
+#include "aco/engine/install_layout.hpp"
 
 #include <boost/dll/library_info.hpp>
 #include <boost/dll/shared_library.hpp>

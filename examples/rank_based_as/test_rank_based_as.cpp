@@ -1,6 +1,6 @@
 // The unit test of update/rank_based_as: it loads the plugin from the library the build made.
 #define CATCH_CONFIG_MAIN
-#include "aco/testing.hpp"
+#include "aco/sdk/testing.hpp"
 
 TEST_CASE("update/rank_based_as passes the conformance checks", "[rank_based_as]") {
   aco::testing::check_conformance(PLUGIN_FILE);

@@ -1,6 +1,6 @@
 // The unit test of map/shapes: it loads the plugin from the library the build made.
 #define CATCH_CONFIG_MAIN
-#include "aco/testing.hpp"
+#include "aco/sdk/testing.hpp"
 
 TEST_CASE("map/shapes passes the conformance checks", "[shapes]") { aco::testing::check_conformance(PLUGIN_FILE); }
 

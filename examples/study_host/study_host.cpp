@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "aco/plugin_call.hpp"
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "aco/studies/report.hpp"
 #include "aco/studies/runner.hpp"
 

@@ -16,7 +16,7 @@
 #include <iostream>
 
 #include "aco/error.hpp"
-#include "aco/host_options.hpp"
+#include "aco/hosts/host_options.hpp"
 #include "aco/plugin_call.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/studies/experiment.hpp"
@@ -27,7 +27,7 @@
 #include "aco/studies/shards.hpp"
 #include "aco/studies/trial_workers.hpp"
 #include "aco/value_parsers.hpp"
-#include "aco/version.hpp"
+#include "aco/process/version.hpp"
 
 namespace po = boost::program_options;
 

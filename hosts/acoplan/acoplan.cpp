@@ -5,16 +5,16 @@
 #include <numeric>
 
 #include "aco/error.hpp"
-#include "aco/host_options.hpp"
-#include "aco/irace_parameters.hpp"
-#include "aco/output_file.hpp"
-#include "aco/plan_request.hpp"
-#include "aco/run_pictures.hpp"
-#include "aco/plugin_catalog.hpp"
-#include "aco/svg.hpp"
-#include "aco/version.hpp"
-#include "aco/voxel_html.hpp"
-#include "aco/voxel_svg.hpp"
+#include "aco/hosts/host_options.hpp"
+#include "aco/planning/irace_parameters.hpp"
+#include "aco/process/output_file.hpp"
+#include "aco/planning/plan_request.hpp"
+#include "aco/planning/run_pictures.hpp"
+#include "aco/planning/plugin_catalog.hpp"
+#include "aco/drawing/svg.hpp"
+#include "aco/process/version.hpp"
+#include "aco/drawing/voxel_html.hpp"
+#include "aco/drawing/voxel_svg.hpp"
 
 namespace acoplan {
 namespace {

@@ -1,8 +1,8 @@
 #pragma once
 // acoplan's logic without main(): what a parsed command line does, writing to a stream. The
 // acoplan_core library holds it with the option parsing, so tests run it in-process; the runs,
-// reports, plugin listings and irace's table are the planning library's (aco/plan_request.hpp,
-// aco/plugin_catalog.hpp, aco/irace_parameters.hpp).
+// reports, plugin listings and irace's table are the planning library's (aco/planning/plan_request.hpp,
+// aco/planning/plugin_catalog.hpp, aco/planning/irace_parameters.hpp).
 #include <ostream>
 
 #include "command_line.hpp"

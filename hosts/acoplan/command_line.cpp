@@ -7,20 +7,20 @@
 #include <sstream>
 
 #include "aco/error.hpp"
-#include "aco/host_options.hpp"
-#include "aco/install_layout.hpp"
-#include "aco/map_formats.hpp"
+#include "aco/hosts/host_options.hpp"
+#include "aco/engine/install_layout.hpp"
+#include "aco/engine/map_formats.hpp"
 #include "aco/memory_limit.hpp"
-#include "aco/planning.hpp"
-#include "aco/presets.hpp"
-#include "aco/program_options_error.hpp"
+#include "aco/planning/planning.hpp"
+#include "aco/planning/presets.hpp"
+#include "aco/hosts/program_options_error.hpp"
 #include "aco/settings_table.hpp"
 
 namespace acoplan {
 namespace po = boost::program_options;
 namespace {
 
-// acoplan's own settings and its output's form; everything else is a run key (aco/run_spec.hpp).
+// acoplan's own settings and its output's form; everything else is a run key (aco/planning/run_spec.hpp).
 // Options that name a file or an action (--map, --config, --svg FILE, --help, --print-config,
 // --describe ...) stay plain options: they are not settings with a range and a default.
 const aco::SettingsTable<HostSettings>& host_settings_table() {

@@ -1,5 +1,5 @@
 #pragma once
-// acoplan's options: its own settings, then the run's keys (aco/run_spec.hpp) as options: the
+// acoplan's options: its own settings, then the run's keys (aco/planning/run_spec.hpp) as options: the
 // problem, the graph, the planner, the colony, one flag per slot, and one option group per loaded
 // plugin and per baseline planner built from its parameter table (--update.rho ...).
 #include <cstdint>
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "aco/run_spec.hpp"
-#include "aco/plugin_registry.hpp"
+#include "aco/planning/run_spec.hpp"
+#include "aco/engine/plugin_registry.hpp"
 
 namespace acoplan {
 

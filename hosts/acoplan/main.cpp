@@ -1,7 +1,7 @@
 // acoplan: one planning run, composed from runtime plugins on the command line.
 #include <iostream>
 
-#include "aco/host_options.hpp"
+#include "aco/hosts/host_options.hpp"
 #include "acoplan.hpp"
 
 int main(int argc, char** argv) {

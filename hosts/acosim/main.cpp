@@ -3,16 +3,16 @@
 #include <boost/program_options.hpp>
 #include <iostream>
 
-#include "aco/presets.hpp"
-#include "aco/version.hpp"
+#include "aco/planning/presets.hpp"
+#include "aco/process/version.hpp"
 #include "aco/error.hpp"
-#include "aco/host_options.hpp"
+#include "aco/hosts/host_options.hpp"
 #include "aco/machine.hpp"
 #include "aco/memory_limit.hpp"
-#include "aco/output_file.hpp"
+#include "aco/process/output_file.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/value_parsers.hpp"
-#include "aco/worker_process.hpp"
+#include "aco/process/worker_process.hpp"
 #include "aco/simulation/batch.hpp"
 #include "aco/simulation/simulation.hpp"
 

@@ -15,9 +15,9 @@
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
-#include "aco/host_options.hpp"
-#include "aco/map_io.hpp"
-#include "aco/version.hpp"
+#include "aco/hosts/host_options.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/process/version.hpp"
 
 namespace po = boost::program_options;
 

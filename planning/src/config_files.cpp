@@ -2,10 +2,10 @@
 #include <algorithm>
 #include <fstream>
 
-#include "aco/input_file.hpp"
-#include "aco/pipeline.hpp"
-#include "aco/planning.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/engine/input_file.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/planning/planning.hpp"
+#include "aco/planning/run_spec.hpp"
 
 namespace aco {
 

@@ -1,4 +1,4 @@
-#include "aco/irace_parameters.hpp"
+#include "aco/planning/irace_parameters.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -9,10 +9,10 @@
 #include <sstream>
 #include <string_view>
 
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/error.hpp"
 #include "aco/parameters.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/engine/pipeline.hpp"
 
 namespace aco {
 namespace {

@@ -1,10 +1,10 @@
-#include "aco/plan_request.hpp"
+#include "aco/planning/plan_request.hpp"
 
 #include <algorithm>
 
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
-#include "aco/run_report.hpp"
+#include "aco/planning/run_report.hpp"
 #include "aco/thread_limit.hpp"
 
 namespace aco {

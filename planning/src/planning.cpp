@@ -1,15 +1,15 @@
-#include "aco/planning.hpp"
+#include "aco/planning/planning.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <limits>
 
 #include "aco/astar.hpp"
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/plugin_error.hpp"
 #include "aco/error.hpp"
 #include "aco/path.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/engine/plugin_guard.hpp"
 #include "ifwa/fireworks.hpp"
 #include "pso/pso.hpp"
 #ifdef ACO_WITH_OMPL

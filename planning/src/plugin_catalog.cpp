@@ -1,13 +1,13 @@
-#include "aco/plugin_catalog.hpp"
+#include "aco/planning/plugin_catalog.hpp"
 
 #include <algorithm>
 #include <sstream>
 
 #include "aco/error.hpp"
-#include "aco/map_formats.hpp"
+#include "aco/engine/map_formats.hpp"
 #include "aco/map_reader.hpp"
 #include "aco/parameters.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/engine/pipeline.hpp"
 
 namespace aco {
 namespace {

@@ -1,13 +1,13 @@
-#include "aco/presets.hpp"
+#include "aco/planning/presets.hpp"
 
 #include <algorithm>
 #include <fstream>
 
 #include "aco/error.hpp"
-#include "aco/install_layout.hpp"
+#include "aco/engine/install_layout.hpp"
 #include "aco/parameters.hpp"
-#include "aco/pipeline.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/planning/run_spec.hpp"
 
 namespace aco {
 

@@ -1,9 +1,9 @@
 // A problem's map, start and goal: cells read and checked, the map read by its reader.
 #include <charconv>
 
-#include "aco/map_formats.hpp"
-#include "aco/map_io.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/engine/map_formats.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/planning/run_spec.hpp"
 
 namespace aco {
 

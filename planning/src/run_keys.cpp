@@ -1,16 +1,16 @@
 // Keys -> RunSpec and back: every key checked once (resolve_run()), and the run as keys and JSON.
-#include "aco/run_spec.hpp"
+#include "aco/planning/run_spec.hpp"
 
 #include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "aco/input_file.hpp"
-#include "aco/map_formats.hpp"
-#include "aco/map_io.hpp"
-#include "aco/pipeline.hpp"
-#include "aco/planning.hpp"
+#include "aco/engine/input_file.hpp"
+#include "aco/engine/map_formats.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/planning/planning.hpp"
 #include "aco/settings_table.hpp"
 
 namespace aco {

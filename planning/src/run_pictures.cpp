@@ -1,4 +1,4 @@
-#include "aco/run_pictures.hpp"
+#include "aco/planning/run_pictures.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "aco/run_report.hpp"
+#include "aco/planning/run_report.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,14 +1,14 @@
-#include "aco/yaml_keys.hpp"
+#include "aco/planning/yaml_keys.hpp"
 
 #include <algorithm>
 #include <charconv>
 
 #include "aco/error.hpp"
-#include "aco/input_file.hpp"
+#include "aco/engine/input_file.hpp"
 #include "aco/parameters.hpp"
-#include "aco/pipeline.hpp"
-#include "aco/presets.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/planning/presets.hpp"
+#include "aco/planning/run_spec.hpp"
 
 namespace aco::yaml {
 

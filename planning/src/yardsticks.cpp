@@ -1,4 +1,4 @@
-#include "aco/yardsticks.hpp"
+#include "aco/planning/yardsticks.hpp"
 
 #include "aco/astar.hpp"
 

@@ -16,7 +16,7 @@
 
 #include "aco/error.hpp"
 #include "aco/plugin_error.hpp"
-#include "aco/version.hpp"
+#include "aco/process/version.hpp"
 
 namespace aco_python {
 namespace {

@@ -10,11 +10,11 @@
 #include <string>
 
 #include "aco/map.hpp"
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "aco/graph.hpp"
 #include "aco/terrain.hpp"
-#include "aco/voxel_view.hpp"
-#include "aco/yardsticks.hpp"
+#include "aco/drawing/voxel_view.hpp"
+#include "aco/planning/yardsticks.hpp"
 
 namespace aco_python {
 

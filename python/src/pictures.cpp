@@ -13,12 +13,12 @@
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/memory_limit.hpp"
-#include "aco/run_pictures.hpp"
-#include "aco/run_spec.hpp"
-#include "aco/presets.hpp"
+#include "aco/planning/run_pictures.hpp"
+#include "aco/planning/run_spec.hpp"
+#include "aco/planning/presets.hpp"
 #include "aco/simulation/simulation.hpp"
-#include "aco/svg.hpp"
-#include "aco/voxel_svg.hpp"
+#include "aco/drawing/svg.hpp"
+#include "aco/drawing/voxel_svg.hpp"
 
 namespace aco_python {
 namespace {

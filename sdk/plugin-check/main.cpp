@@ -1,4 +1,4 @@
-// aco-plugin-check FILE.so|FOLDER...: the conformance checks (aco/conformance.hpp) on every plugin
+// aco-plugin-check FILE.so|FOLDER...: the conformance checks (aco/sdk/conformance.hpp) on every plugin
 // in each file (a folder: each aco_*.so in it), on 2D maps and, for a plugin that claims them, on
 // voxel worlds ("3D ..." lines), one line per check, then the failures again;
 // exits 1 (aco::kExitError) if any check failed, 2 (aco::kExitUsage) on a usage error.
@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "aco/conformance.hpp"
-#include "aco/host_options.hpp"
-#include "aco/version.hpp"
+#include "aco/sdk/conformance.hpp"
+#include "aco/hosts/host_options.hpp"
+#include "aco/process/version.hpp"
 
 int main(int argc, char** argv) {
   return aco::run_command("aco-plugin-check", [&] {

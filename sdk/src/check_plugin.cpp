@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cctype>
 
-#include "aco/conformance.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/sdk/conformance.hpp"
+#include "aco/engine/plugin_guard.hpp"
 #include "plugin_files.hpp"
 #include "slot_runs.hpp"
 #include "trace.hpp"

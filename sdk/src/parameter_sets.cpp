@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "aco/conformance.hpp"
+#include "aco/sdk/conformance.hpp"
 #include "trace.hpp"
 
 namespace aco::conformance {

@@ -3,7 +3,7 @@
 #include <map>
 #include <mutex>
 
-#include "aco/conformance.hpp"
+#include "aco/sdk/conformance.hpp"
 
 namespace aco::conformance {
 namespace {

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "aco/pipeline.hpp"
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/engine/plugin_registry.hpp"
 
 namespace aco::conformance {
 

@@ -2,7 +2,7 @@
 #include <algorithm>
 
 #include "aco/astar.hpp"
-#include "aco/conformance.hpp"
+#include "aco/sdk/conformance.hpp"
 #include "aco/path.hpp"
 
 namespace aco::conformance {

@@ -3,8 +3,8 @@
 // produces goes into the trace, with what breaks its interface's contract. Internal to the checks.
 #include <type_traits>
 
-#include "aco/colony.hpp"
-#include "aco/conformance.hpp"
+#include "aco/engine/colony.hpp"
+#include "aco/sdk/conformance.hpp"
 #include "trace.hpp"
 
 namespace aco::conformance {

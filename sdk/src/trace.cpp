@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "aco/conformance.hpp"
+#include "aco/sdk/conformance.hpp"
 
 namespace aco::conformance {
 

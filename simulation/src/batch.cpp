@@ -9,7 +9,7 @@
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/parallel.hpp"
-#include "aco/planning.hpp"
+#include "aco/planning/planning.hpp"
 #include "aco/rng.hpp"
 #include "aco/thread_limit.hpp"
 #include "aco/simulation/batch.hpp"

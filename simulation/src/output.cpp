@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <sstream>
 
-#include "aco/map_io.hpp"
-#include "aco/svg.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/drawing/svg.hpp"
 #include "aco/simulation/simulation.hpp"
 
 namespace aco::simulation {

@@ -2,10 +2,10 @@
 // map does not show.
 #include <yaml-cpp/yaml.h>
 
-#include "aco/presets.hpp"
+#include "aco/planning/presets.hpp"
 #include "aco/error.hpp"
 #include "aco/settings_table.hpp"
-#include "aco/yaml_keys.hpp"
+#include "aco/planning/yaml_keys.hpp"
 #include "aco/simulation/simulation.hpp"
 
 namespace aco::simulation {

@@ -8,8 +8,8 @@
 #include "aco/error.hpp"
 #include "aco/plugin_error.hpp"
 #include "aco/graph.hpp"
-#include "aco/planning.hpp"
-#include "aco/plugin_guard.hpp"
+#include "aco/planning/planning.hpp"
+#include "aco/engine/plugin_guard.hpp"
 
 namespace aco::simulation {
 

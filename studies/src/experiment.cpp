@@ -8,16 +8,16 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/error.hpp"
-#include "aco/map_io.hpp"
-#include "aco/run_spec.hpp"
-#include "aco/pipeline.hpp"
-#include "aco/presets.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/planning/run_spec.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "aco/planning/presets.hpp"
 #include "aco/rng.hpp"
-#include "aco/planning.hpp"
+#include "aco/planning/planning.hpp"
 #include "aco/value_parsers.hpp"
-#include "aco/yaml_keys.hpp"
+#include "aco/planning/yaml_keys.hpp"
 
 namespace aco::studies {
 namespace {

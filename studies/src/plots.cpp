@@ -1,5 +1,5 @@
 #include "aco/studies/plots.hpp"
-#include "aco/voxel_svg.hpp"
+#include "aco/drawing/voxel_svg.hpp"
 
 #include <algorithm>
 #include <array>
@@ -12,7 +12,7 @@
 #include "aco/error.hpp"
 #include "aco/map.hpp"
 #include "aco/path.hpp"
-#include "aco/svg.hpp"
+#include "aco/drawing/svg.hpp"
 #include "aco/studies/statistics.hpp"
 
 namespace aco::studies {

@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "aco/plugin_registry.hpp"
-#include "aco/yardsticks.hpp"
+#include "aco/engine/plugin_registry.hpp"
+#include "aco/planning/yardsticks.hpp"
 #include "aco/studies/results_db.hpp"
 #include "aco/studies/statistics.hpp"
 
@@ -62,7 +62,7 @@ struct Analysis {
 // smoothed (any-angle) path may be shorter than the grid optimum, and its "gap" would be
 // negative without being better than optimal. (A simulation trial's grid length is the distance
 // driven.)
-using aco::gap_percent;  // of a length (aco/yardsticks.hpp)
+using aco::gap_percent;  // of a length (aco/planning/yardsticks.hpp)
 double gap_percent(const TrialRecord& t, double optimal);
 
 // A planning run whose rows lack the anytime curves: stored by an acobench of format 3 or earlier.

@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "aco/svg.hpp"
+#include "aco/drawing/svg.hpp"
 
 namespace aco::studies {
 namespace {

@@ -9,7 +9,7 @@
 #include <optional>
 #include <utility>
 
-#include "aco/run_spec.hpp"
+#include "aco/planning/run_spec.hpp"
 #include "aco/studies/plots.hpp"
 #include "report_numbers.hpp"
 

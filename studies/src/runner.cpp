@@ -13,8 +13,8 @@
 #include "aco/parallel.hpp"
 #include "aco/plugin_record.hpp"
 #include "aco/thread_limit.hpp"
-#include "aco/version.hpp"
-#include "aco/yardsticks.hpp"
+#include "aco/process/version.hpp"
+#include "aco/planning/yardsticks.hpp"
 #include "aco/studies/results_db.hpp"
 
 namespace aco::studies {

@@ -6,9 +6,9 @@
 #include <type_traits>
 #include <utility>
 
-#include "aco/colony.hpp"
+#include "aco/engine/colony.hpp"
 #include "aco/simulation/simulation.hpp"
-#include "aco/yardsticks.hpp"
+#include "aco/planning/yardsticks.hpp"
 
 namespace aco::studies {
 namespace {

@@ -11,8 +11,8 @@
 #include "aco/error.hpp"
 #include "aco/machine.hpp"
 #include "aco/plugin_error.hpp"
-#include "aco/map_io.hpp"
-#include "aco/yardsticks.hpp"
+#include "aco/engine/map_io.hpp"
+#include "aco/planning/yardsticks.hpp"
 #include "aco/plugin_call.hpp"
 #include "aco/simulation/batch.hpp"
 

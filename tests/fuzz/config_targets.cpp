@@ -1,6 +1,6 @@
 #include "aco/studies/experiment.hpp"
-#include "aco/plugin_registry.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/engine/plugin_registry.hpp"
+#include "aco/planning/run_spec.hpp"
 #include "targets.hpp"
 
 namespace fuzz {

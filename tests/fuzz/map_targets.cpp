@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "targets.hpp"
 
 namespace fuzz {

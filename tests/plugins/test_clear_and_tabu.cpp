@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <random>
 
-#include "aco/pipeline.hpp"
+#include "aco/engine/pipeline.hpp"
 #include "support.hpp"
 
 TEST_CASE("clear_and_tabu: the dead ant's walk is cleared and its dead end forbidden", "[plugin][clear_and_tabu]") {

@@ -2,7 +2,7 @@
 #include <cmath>
 
 #include "aco/path.hpp"
-#include "aco/pipeline.hpp"
+#include "aco/engine/pipeline.hpp"
 #include "support.hpp"
 
 namespace {

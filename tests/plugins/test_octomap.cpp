@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "aco/map_formats.hpp"
+#include "aco/engine/map_formats.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/voxel.hpp"
 #include "support.hpp"

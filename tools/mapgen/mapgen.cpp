@@ -43,7 +43,7 @@
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
 #include "aco/map.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "aco/rng.hpp"
 #include "aco/voxel.hpp"
 #include "families.hpp"

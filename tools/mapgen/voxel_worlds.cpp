@@ -14,7 +14,7 @@
 #include "aco/astar.hpp"
 #include "aco/error.hpp"
 #include "aco/graph.hpp"
-#include "aco/map_io.hpp"
+#include "aco/engine/map_io.hpp"
 #include "aco/rng.hpp"
 #include "aco/voxel.hpp"
 #include "files.hpp"

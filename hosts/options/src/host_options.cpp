@@ -1,17 +1,17 @@
-#include "aco/host_options.hpp"
+#include "aco/hosts/host_options.hpp"
 
 #include <boost/program_options.hpp>
 
 #include <iostream>
 
-#include "aco/crash_report.hpp"
+#include "aco/process/crash_report.hpp"
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/plugin_call.hpp"
-#include "aco/plugin_registry.hpp"
-#include "aco/program_options_error.hpp"
+#include "aco/engine/plugin_registry.hpp"
+#include "aco/hosts/program_options_error.hpp"
 #include "aco/value_parsers.hpp"
-#include "aco/worker_process.hpp"
+#include "aco/process/worker_process.hpp"
 
 namespace aco {
 namespace po = boost::program_options;

@@ -1,4 +1,4 @@
-#include "aco/program_options_error.hpp"
+#include "aco/hosts/program_options_error.hpp"
 
 #include <algorithm>
 

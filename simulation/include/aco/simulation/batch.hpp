@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "aco/worker_process.hpp"
+#include "aco/process/worker_process.hpp"
 #include "aco/simulation/simulation.hpp"
 
 namespace aco::simulation {
@@ -34,7 +34,7 @@ struct BatchSummary {
 // ends the process.
 BatchSummary run_batch(const std::vector<Scenario>& scenarios, aco::PluginRegistry& registry);
 
-// The same batch of `count` variations, each in a worker process (aco/worker_process.hpp), one
+// The same batch of `count` variations, each in a worker process (aco/process/worker_process.hpp), one
 // per lane: `command` starts acosim serving them (serve_variations). A variation whose plugin
 // crashes, runs over `limits.timeout_s` or grows its worker's memory by more than
 // `limits.memory_bytes` costs only itself: its outcome is "crashed", "timeout" (as a simulation

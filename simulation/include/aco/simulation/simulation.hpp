@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "aco/path.hpp"
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "aco/robot.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/planning/run_spec.hpp"
 
 namespace aco::simulation {
 
@@ -99,7 +99,7 @@ constexpr const char* to_string(Outcome outcome) { return kOutcomes[static_cast<
 struct SimulationResult {
   bool reached = false;
   // One of kOutcomes. In a batch of worker processes (batch.hpp), a variation whose worker
-  // crashed or ran out of memory has that failure's text (aco/failure_kind.hpp) instead.
+  // crashed or ran out of memory has that failure's text (aco/process/failure_kind.hpp) instead.
   std::string outcome;
   std::string reason;
   double time = 0.0;

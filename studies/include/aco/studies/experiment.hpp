@@ -12,9 +12,9 @@
 
 #include "aco/graph.hpp"
 #include "aco/parameters.hpp"
-#include "aco/run_spec.hpp"
+#include "aco/planning/run_spec.hpp"
 #include "aco/map.hpp"
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "aco/simulation/simulation.hpp"
 
 namespace aco::studies {
@@ -42,7 +42,7 @@ struct Problem {
   bool variations = false;
 };
 
-// A configuration is a set of run keys (aco/run_spec.hpp), written as on acoplan's command line
+// A configuration is a set of run keys (aco/planning/run_spec.hpp), written as on acoplan's command line
 // without the dashes: "planner", "neighbourhood", "max-slope", colony parameters ("ants",
 // "search"), slots ("update") and plugin parameters ("update.rho"); every key but the problem's
 // (map, scen, start, goal: the experiment's problems) and the seed (set per trial). Keys it does

@@ -8,7 +8,7 @@
 #include <memory>
 #include <string>
 
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "aco/studies/experiment.hpp"
 #include "aco/studies/runner.hpp"
 #include "aco/studies/trial_workers.hpp"

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 
 namespace aco::studies {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "aco/plugin_registry.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "aco/studies/experiment.hpp"
 #include "aco/studies/growth.hpp"
 #include "aco/studies/shards.hpp"

@@ -17,7 +17,7 @@
 #include <variant>
 #include <vector>
 
-#include "aco/failure_kind.hpp"
+#include "aco/process/failure_kind.hpp"
 #include "aco/parameters.hpp"
 
 namespace aco::studies {
@@ -50,7 +50,7 @@ struct SimulationRecord {
   int control_steps = 0;
 };
 
-// Why a trial failed: the kinds the worker processes say too (aco/failure_kind.hpp), timed_out
+// Why a trial failed: the kinds the worker processes say too (aco/process/failure_kind.hpp), timed_out
 // and out_of_memory being the trial time and memory limits; their texts are runs.failure's, the
 // JSON messages' and Python's.
 using aco::failure_kind;

@@ -10,8 +10,8 @@
 
 #include "aco/corridor.hpp"
 #include "aco/graph.hpp"
-#include "aco/planning.hpp"
-#include "aco/plugin_registry.hpp"
+#include "aco/planning/planning.hpp"
+#include "aco/engine/plugin_registry.hpp"
 #include "aco/studies/experiment.hpp"
 #include "aco/studies/trial_record.hpp"
 
@@ -50,7 +50,7 @@ class TrialRunner {
   // or the host's) comes back as a failed record with the message naming the trial. Its
   // peak_memory_mib is this process's aco::peak_memory_mib() (aco/machine.hpp) at its end.
   TrialRecord run(const TrialOrder& trial);
-  // The record of a trial that failed: `kind` is its failure (aco/failure_kind.hpp), `reason` its
+  // The record of a trial that failed: `kind` is its failure (aco/process/failure_kind.hpp), `reason` its
   // error after the trial's name.
   TrialRecord failed(const TrialOrder& trial, FailureKind kind, const std::string& reason) const;
 

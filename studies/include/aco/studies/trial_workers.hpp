@@ -1,5 +1,5 @@
 #pragma once
-// Trials in worker processes (aco/worker_process.hpp): a plugin that crashes, hangs or fills
+// Trials in worker processes (aco/process/worker_process.hpp): a plugin that crashes, hangs or fills
 // the memory costs its own trial, which is stored as failed with the reason, and the study goes
 // on. One persistent worker per lane; each loads the experiment once and is told a
 // configuration's keys the first time it runs one of its trials.
@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "aco/worker_process.hpp"
+#include "aco/process/worker_process.hpp"
 #include "aco/studies/runner.hpp"
 
 namespace aco::studies {

@@ -22,9 +22,7 @@ PlannedRuns plan(const PlanRequest& request, PluginRegistry& registry) {
     planned.map = request.map;
     start = *problem.start;
     goal = *problem.goal;
-    if (request.check_map) request.check_map(*planned.map);
-    check_cell(*planned.map, start, "start");
-    check_cell(*planned.map, goal, "goal");
+    check_ends(*planned.map, start, goal, request.check_map);
   } else {
     LoadedProblem loaded = load_problem(problem, &registry, request.check_map);
     planned.map = std::move(loaded.map);

@@ -37,6 +37,12 @@ void check_cell(const Map& map, Cell c, const std::string& what) {
     throw Error(what + " " + map.describe(c) + " is blocked: " + map.blocked_reason(c) + " (" + map.name() + ")");
 }
 
+void check_ends(const Map& map, Cell start, Cell goal, const std::function<void(const Map&)>& check_map) {
+  if (check_map) check_map(map);
+  check_cell(map, start, "start");
+  check_cell(map, goal, "goal");
+}
+
 std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem::path& file, const std::string& format,
                                                            const Keys& keys, PluginRegistry& registry,
                                                            const std::string& key_prefix) {
@@ -96,9 +102,7 @@ LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry,
     p.start = *spec.start;
     p.goal = *spec.goal;
   }
-  if (check_map) check_map(*p.map);
-  check_cell(*p.map, p.start, "start");
-  check_cell(*p.map, p.goal, "goal");
+  check_ends(*p.map, p.start, p.goal, check_map);
   return p;
 }
 

@@ -183,7 +183,10 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, const C
   const aco::PlanReport report{planned->run, registry(), planned->graph, source.name()};
   py::object record = to_python(aco::run_record(report, planned->runs.front()));
   const auto* terrain = dynamic_cast<const aco::TerrainMap*>(planned->map.get());
-  auto kept = std::make_shared<PlannedRun>(PlannedRun{planned->map, planned->run.graph, planned->runs.front(), {}});
+  // The run moves into what Python keeps: its record is made, and its pheromone (per edge, megabytes
+  // on a large map) is dropped unless the picture needs it.
+  auto kept =
+      std::make_shared<PlannedRun>(PlannedRun{planned->map, planned->run.graph, std::move(planned->runs.front()), {}});
   if (!keep_pheromone) kept->run.pheromone = {};
   if (planned->graph.volumetric) kept->voxel_view.emplace(aco::run_view(planned->graph, kept->run, false));
   return py::make_tuple(record, source.name(), terrain ? terrain->cell_size() : 1.0, kept);

@@ -150,6 +150,9 @@ LoadedProblem load_problem(const ProblemSpec& problem, PluginRegistry* registry 
                            const std::function<void(const Map&)>& check_map = {});
 // Throws an Error if `cell` ("start", "goal") is outside the map or blocked, naming the reason.
 void check_cell(const Map& map, Cell cell, const std::string& what);
+// Both ends of a problem on its map, "start" then "goal", after `check_map` if given: what
+// load_problem() checks, for a map the caller made (aco::PlanRequest::map).
+void check_ends(const Map& map, Cell start, Cell goal, const std::function<void(const Map&)>& check_map = {});
 
 // "X,Y" -> cell; throws naming `key`.
 Cell parse_cell(const std::string& text, const std::string& key);

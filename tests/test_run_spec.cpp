@@ -113,6 +113,42 @@ TEST_CASE("resolve_run names the key of every mistake", "[run_spec][errors]") {
   CHECK(key_error({{"planner", "pso"}, {"pso.particles", "10"}}).empty());
 }
 
+TEST_CASE("a host's spelling names every key of a mistake as its user writes it", "[run_spec][errors]") {
+  const aco::KeySpelling python = aco::KeySpelling::keyword(), yaml;
+  CHECK(python("update.rho") == "update_rho");
+  CHECK(python.to_give("max-memory") == "max_memory=");
+  CHECK(python.within("update.")("tau-min") == "update_tau_min");
+  CHECK(yaml.to_give("map-format", "NAME") == "map-format: NAME");
+  CHECK(aco::KeySpelling("--").to_give("map-format", "NAME") == "--map-format NAME");
+  auto error = [&](const aco::Keys& keys, const aco::KeySpelling& spelling) {
+    try {
+      aco::resolve_run(keys, test::plugins(), spelling);
+    } catch (const aco::KeyError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  // Every message of a mistake, in Python's spelling, names no option.
+  const std::vector<aco::Keys> mistakes = {{{"antz", "3"}},
+                                           {{"update", "acs"}, {"update.x1", "0.5"}},
+                                           {{"update", "acs"}, {"update.xi", "2"}},
+                                           {{"scen", "x.scen"}, {"start", "1,1"}},
+                                           {{"scen-index", "3"}},
+                                           {{"map-format", "movingai"}},
+                                           {{"same-path-stop", "maybe"}},
+                                           {{"ifwa.radius", "2"}}};
+  for (const aco::Keys& keys : mistakes) {
+    const std::string message = error(keys, python);
+    INFO(message);
+    CHECK(!message.empty());
+    CHECK(message.find("--") == std::string::npos);
+    CHECK(message.find('.') == std::string::npos);  // update_xi, not update.xi
+  }
+  CHECK_THAT(error({{"update", "acs"}, {"update.x1", "0.5"}}, python), Contains("did you mean 'update_xi'?"));
+  CHECK_THAT(error({{"scen-index", "3"}}, python), Contains("scen_index needs scen"));
+  CHECK_THAT(error({{"scen-index", "3"}}, yaml), Contains("scen-index needs scen"));
+}
+
 TEST_CASE("a settings table reads and writes its struct and takes its defaults from it", "[run_spec]") {
   const auto table = aco::colony_parameters();
   const auto ants =

@@ -30,10 +30,12 @@ constexpr std::uint64_t kBytesPerVoxelEdge = 20;
 constexpr std::uint64_t kFallbackLimit = std::uint64_t(4) << 30;
 
 std::atomic<std::uint64_t> g_limit{0};  // 0: the default
+std::atomic<const KeySpelling*> g_spelling{nullptr};  // how the host names max-memory; none: "--max-memory"
 
 std::string limit_origin() {
-  return g_limit.load() ? "set by --max-memory"
-                        : "the default, 3/4 of the available memory; change it with --max-memory";
+  const KeySpelling* spelling = g_spelling.load();
+  const std::string option = spelling ? spelling->to_give("max-memory") : "--max-memory";
+  return g_limit.load() ? "set by " + option : "the default, 3/4 of the available memory; change it with " + option;
 }
 
 }  // namespace
@@ -109,10 +111,15 @@ std::string format_bytes(std::uint64_t bytes) {
   return text;
 }
 
-MemoryLimit::MemoryLimit(std::optional<std::uint64_t> bytes) : previous_(g_limit.load()) {
+MemoryLimit::MemoryLimit(std::optional<std::uint64_t> bytes, KeySpelling spelling)
+    : previous_(g_limit.load()), spelling_(std::move(spelling)), previous_spelling_(g_spelling.load()) {
   if (bytes) g_limit.store(*bytes);
+  g_spelling.store(&spelling_);
 }
 
-MemoryLimit::~MemoryLimit() { g_limit.store(previous_); }
+MemoryLimit::~MemoryLimit() {
+  g_limit.store(previous_);
+  g_spelling.store(previous_spelling_);
+}
 
 }  // namespace aco

@@ -211,8 +211,36 @@ void check_table(std::span<const ParamSpec> table, const std::string& owner) {
   }
 }
 
+KeySpelling KeySpelling::keyword() {
+  KeySpelling spelling;
+  spelling.keyword_ = true;
+  return spelling;
+}
+
+std::string KeySpelling::operator()(const std::string& key) const {
+  std::string written = prefix_ + key;
+  if (keyword_)
+    std::replace_if(
+        written.begin(), written.end(), [](char c) { return c == '.' || c == '-'; }, '_');
+  return written;
+}
+
+std::string KeySpelling::to_give(const std::string& key, const std::string& value) const {
+  if (keyword_) return (*this)(key) + "=" + value;
+  if (value.empty()) return (*this)(key);
+  return (*this)(key) + (prefix_.starts_with("--") ? " " : ": ") + value;
+}
+
+std::string KeySpelling::plugin_list() const { return keyword_ ? "aco.plugins()" : "--list-plugins"; }
+
+KeySpelling KeySpelling::within(const std::string& scope) const {
+  KeySpelling inner = *this;
+  inner.prefix_ += scope;
+  return inner;
+}
+
 ParameterValues resolve(std::span<const ParamSpec> table, const std::map<std::string, std::string>& given,
-                        const std::string& key_prefix) {
+                        const KeySpelling& spelling) {
   ParameterValues values;
   std::vector<std::string> names;
   for (const ParamSpec& spec : table) {
@@ -220,26 +248,26 @@ ParameterValues resolve(std::span<const ParamSpec> table, const std::map<std::st
     const auto it = given.find(spec.name);
     try {
       values.set(spec.name,
-                 parse_value(spec, it == given.end() ? spec.default_value : it->second, key_prefix + spec.name));
+                 parse_value(spec, it == given.end() ? spec.default_value : it->second, spelling(spec.name)));
     } catch (const KeyError&) {
       throw;
     } catch (const Error& e) {
-      throw KeyError(key_prefix + spec.name, e.what());
+      throw KeyError(spelling(spec.name), e.what());
     }
   }
   for (const auto& [name, text] : given) {
     if (values.contains(name)) continue;
-    std::string message = "unknown parameter '" + key_prefix + name + "'";
+    std::string message = "unknown parameter '" + spelling(name) + "'";
     if (const std::string near = nearest(name, names); !near.empty())
-      message += "; did you mean '" + key_prefix + near + "'?";
+      message += "; did you mean '" + spelling(near) + "'?";
     else if (names.empty())
       message += " (this plugin has no parameters)";
     else {
       message += " (valid: ";
-      for (std::size_t i = 0; i < names.size(); ++i) message += (i ? ", " : "") + key_prefix + names[i];
+      for (std::size_t i = 0; i < names.size(); ++i) message += (i ? ", " : "") + spelling(names[i]);
       message += ")";
     }
-    throw KeyError(key_prefix + name, message);
+    throw KeyError(spelling(name), message);
   }
   return values;
 }

@@ -320,8 +320,7 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const ColonyStr
   if (s.colonies < 1 || s.colonies > s.ants)
     throw Error("colonies must be between 1 and the number of ants (" + std::to_string(s.ants) + ")");
   if (s.exchange_every < 1) throw Error("exchange-every must be at least 1");
-  if (s.colonies > 1 && s.bidirectional)
-    throw Error("colonies > 1 works with the single search only (--search single)");
+  if (s.colonies > 1 && s.bidirectional) throw Error("colonies > 1 works with the single search only (search single)");
   if (s.colonies > 1 && s.same_path_stop)
     throw Error("same-path-stop works with one colony only: the islands' ants walk apart on purpose");
 }

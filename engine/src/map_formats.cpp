@@ -85,12 +85,13 @@ std::vector<std::string> map_format_names(const PluginRegistry& registry) {
   return names;
 }
 
-std::string map_format_of(const std::filesystem::path& file, const std::string& format, PluginRegistry& registry) {
+std::string map_format_of(const std::filesystem::path& file, const std::string& format, PluginRegistry& registry,
+                          const KeySpelling& spelling) {
   if (!format.empty()) {
     if (find_builtin_map_format(format) || registry.find("map", format)) return format;
     std::string message = "unknown map format '" + format + "' (formats:";
     for (const auto& name : map_format_names(registry)) message += " " + name;
-    message += "; a map plugin adds one: --list-plugins shows them as map/NAME)";
+    message += "; a map plugin adds one: " + spelling.plugin_list() + " shows them as map/NAME)";
     if (const auto near = nearest(format, map_format_names(registry)); !near.empty())
       message += "; did you mean '" + near + "'?";
     throw Error(message);
@@ -108,23 +109,27 @@ std::string map_format_of(const std::filesystem::path& file, const std::string& 
     std::string message = file.string() + ": its ending is claimed by ";
     for (std::size_t i = 0; i < claimants.size(); ++i)
       message += (i == 0 ? "" : i + 1 == claimants.size() ? " and " : ", ") + claimants[i];
-    throw Error(message + "; choose one with --map-format NAME (map-format: NAME in experiment and scenario files)");
+    const std::string given = spelling.to_give("map-format", "NAME"),
+                      in_yaml = KeySpelling().to_give("map-format", "NAME");
+    throw Error(message + "; choose one with " + given +
+                (given == in_yaml ? "" : " (" + in_yaml + " in experiment and scenario files)"));
   }
   return chosen;
 }
 
 std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain,
-                              PluginRegistry& registry, const std::string& format, const ParameterValues& parameters) {
-  const std::string name = map_format_of(file, format, registry);
+                              PluginRegistry& registry, const std::string& format, const ParameterValues& parameters,
+                              const KeySpelling& spelling) {
+  const std::string name = map_format_of(file, format, registry, spelling);
   if (name.empty()) {
     try {
       return read_matrix_file(file, terrain);
     } catch (const Error& e) {
       const std::string ending = file.extension().string();
       if (ending.empty() || ending == ".txt") throw;
-      throw Error(
-          std::string(e.what()) + " (read as a 0/1 matrix: no built-in format or map plugin claims '" + ending +
-          "'; a map plugin reads other formats: --list-plugins lists them as map/NAME, --map-format NAME chooses one)");
+      throw Error(std::string(e.what()) + " (read as a 0/1 matrix: no built-in format or map plugin claims '" + ending +
+                  "'; a map plugin reads other formats: " + spelling.plugin_list() + " lists them as map/NAME, " +
+                  spelling.to_give("map-format", "NAME") + " chooses one)");
     }
   }
   if (const BuiltinMapFormat* builtin = find_builtin_map_format(name)) return builtin->read(file, terrain);

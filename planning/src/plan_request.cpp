@@ -10,7 +10,7 @@
 namespace aco {
 
 PlannedRuns plan(const PlanRequest& request, PluginRegistry& registry) {
-  const MemoryLimit memory(request.max_memory);
+  const MemoryLimit memory(request.max_memory, request.spelling);
   const ProblemSpec& problem = request.run.problem;
   PlannedRuns planned;
   planned.run = request.run;
@@ -24,7 +24,7 @@ PlannedRuns plan(const PlanRequest& request, PluginRegistry& registry) {
     goal = *problem.goal;
     check_ends(*planned.map, start, goal, request.check_map);
   } else {
-    LoadedProblem loaded = load_problem(problem, &registry, request.check_map);
+    LoadedProblem loaded = load_problem(problem, &registry, request.check_map, request.spelling);
     planned.map = std::move(loaded.map);
     start = loaded.start;
     goal = loaded.goal;

@@ -56,9 +56,9 @@ std::string default_preset(const std::filesystem::path& map_or_scenario) {
 }
 
 PipelineSource PipelineSource::named(const std::string& preset, const std::string& config,
-                                     const std::string& key_prefix) {
+                                     const KeySpelling& spelling) {
   if (!preset.empty() && !config.empty())
-    throw Error(key_prefix + "config and " + key_prefix + "preset: give one of them");
+    throw Error(spelling("config") + " and " + spelling("preset") + ": give one of them");
   PipelineSource source;
   source.preset = preset;
   source.config = config;
@@ -66,8 +66,8 @@ PipelineSource PipelineSource::named(const std::string& preset, const std::strin
 }
 
 PipelineSource PipelineSource::choose(const std::string& preset, const std::string& config, MapKind kind,
-                                      const std::string& key_prefix) {
-  PipelineSource source = named(preset, config, key_prefix);
+                                      const KeySpelling& spelling) {
+  PipelineSource source = named(preset, config, spelling);
   if (preset.empty() && config.empty()) {
     source.preset = recommended_preset(kind);
     source.recommended = true;
@@ -85,15 +85,15 @@ KeyedValues PipelineSource::keys() const {
   return preset.empty() ? KeyedValues() : preset_keys(preset);
 }
 
-std::string PipelineSource::name(const std::string& key_prefix) const {
-  return config.empty() ? preset : "none (" + key_prefix + "config " + config.string() + ")";
+std::string PipelineSource::name(const KeySpelling& spelling) const {
+  return config.empty() ? preset : "none (" + spelling("config") + " " + config.string() + ")";
 }
 
-std::string PipelineSource::description(const std::string& key_prefix) const {
-  if (!recommended) return name(key_prefix);
+std::string PipelineSource::description(const KeySpelling& spelling) const {
+  if (!recommended) return name(spelling);
   const std::string kind = preset == "terrain" ? "height maps" : preset == "voxel" ? "voxel worlds" : "2D maps";
-  return preset + " (the default for " + kind + "; " + key_prefix + "preset NAME for another, " + key_prefix +
-         "list-presets for the papers')";
+  return preset + " (the default for " + kind + "; " + spelling("preset") + " NAME for another, " +
+         spelling("list-presets") + " for the papers')";
 }
 
 std::filesystem::path preset_file(const std::string& name) {

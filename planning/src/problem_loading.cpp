@@ -45,30 +45,30 @@ void check_ends(const Map& map, Cell start, Cell goal, const std::function<void(
 
 std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem::path& file, const std::string& format,
                                                            const Keys& keys, PluginRegistry& registry,
-                                                           const std::string& key_prefix) {
-  const std::string option = key_prefix + "map-format";
+                                                           const KeySpelling& spelling) {
+  const std::string option = spelling("map-format");
   std::string chosen;
   try {
-    chosen = map_format_of(file, format, registry);
+    chosen = map_format_of(file, format, registry, spelling);
   } catch (const Error& e) {
-    throw KeyError(format.empty() ? key_prefix + "map" : option, format.empty() ? e.what() : option + ": " + e.what());
+    throw KeyError(format.empty() ? spelling("map") : option, format.empty() ? e.what() : option + ": " + e.what());
   }
   if (chosen.empty() || find_builtin_map_format(chosen)) {
     if (!keys.empty())
-      throw KeyError(key_prefix + kMapSlot + "." + keys.begin()->first,
-                     key_prefix + kMapSlot + "." + keys.begin()->first + ": the built-in map format '" +
+      throw KeyError(spelling(std::string(kMapSlot) + "." + keys.begin()->first),
+                     spelling(std::string(kMapSlot) + "." + keys.begin()->first) + ": the built-in map format '" +
                          (chosen.empty() ? "matrix" : chosen) + "' of " + file.string() +
                          " takes no parameters (map.NAME keys are a map plugin's)");
     return {format, {}};
   }
   const auto table = registry.load(kMapSlot, chosen).parameters();
-  return {chosen, resolve(table, keys, key_prefix + kMapSlot + ".")};
+  return {chosen, resolve(table, keys, spelling.within(std::string(kMapSlot) + "."))};
 }
 
-std::unique_ptr<Map> load_problem_map(const ProblemSpec& spec, PluginRegistry* registry) {
+std::unique_ptr<Map> load_problem_map(const ProblemSpec& spec, PluginRegistry* registry, const KeySpelling& spelling) {
   const std::filesystem::path file = spec.map.empty() && !spec.scen.empty() ? scenario_map_file(spec.scen) : spec.map;
   if (file.empty()) throw Error("a problem needs a map with start and goal, or a scenario");
-  if (registry) return load_map(file, spec.terrain, *registry, spec.map_format, spec.map_parameters);
+  if (registry) return load_map(file, spec.terrain, *registry, spec.map_format, spec.map_parameters, spelling);
   if (!spec.map_format.empty() && !find_builtin_map_format(spec.map_format))
     throw Error(file.string() + ": map format '" + spec.map_format +
                 "' is a map plugin, and no plugin registry was given");
@@ -77,7 +77,7 @@ std::unique_ptr<Map> load_problem_map(const ProblemSpec& spec, PluginRegistry* r
 }
 
 LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry,
-                           const std::function<void(const Map&)>& check_map) {
+                           const std::function<void(const Map&)>& check_map, const KeySpelling& spelling) {
   LoadedProblem p;
   if (!spec.scen.empty()) {
     const auto scenarios = load_scenarios(spec.scen);
@@ -85,7 +85,7 @@ LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry,
       throw Error("scen-index " + std::to_string(spec.scen_index) + " is out of range: " + spec.scen.string() +
                   " has " + std::to_string(scenarios.size()) + " scenarios");
     const Scenario& s = scenarios[spec.scen_index];
-    p.map = load_problem_map(spec, registry);
+    p.map = load_problem_map(spec, registry, spelling);
     if (s.volumetric != p.map->volumetric())
       throw Error(spec.scen.string() + ": its scenarios are for " + (s.volumetric ? "a voxel world" : "a 2D map") +
                   ", but " + p.map->name() + " is " + (p.map->volumetric() ? "a voxel world" : "a 2D map"));
@@ -98,7 +98,7 @@ LoadedProblem load_problem(const ProblemSpec& spec, PluginRegistry* registry,
   } else {
     if (spec.map.empty() || !spec.start || !spec.goal)
       throw Error("a problem needs a map with start and goal, or a scenario");
-    p.map = load_problem_map(spec, registry);
+    p.map = load_problem_map(spec, registry, spelling);
     p.start = *spec.start;
     p.goal = *spec.goal;
   }

@@ -137,17 +137,17 @@ namespace {
 
 // The problem keys, sorted from the others by the caller: map.NAME ones in `map_keys` without "map.".
 ProblemSpec resolve_problem_keys(const Keys& problem, const Keys& map_keys, PluginRegistry& registry,
-                                 const std::string& key_prefix) {
+                                 const KeySpelling& spelling) {
   ProblemSpec p;
   if (problem.count("map")) p.map = problem.at("map");
   if (problem.count("scen")) p.scen = problem.at("scen");
-  if (problem.count("start")) p.start = parse_cell(problem.at("start"), key_prefix + "start");
-  if (problem.count("goal")) p.goal = parse_cell(problem.at("goal"), key_prefix + "goal");
+  if (problem.count("start")) p.start = parse_cell(problem.at("start"), spelling("start"));
+  if (problem.count("goal")) p.goal = parse_cell(problem.at("goal"), spelling("goal"));
   if (!p.scen.empty() && (p.start || p.goal))
-    throw KeyError(key_prefix + "scen",
-                   "give either " + key_prefix + "scen or " + key_prefix + "start/" + key_prefix + "goal, not both");
+    throw KeyError(spelling("scen"),
+                   "give either " + spelling("scen or ") + spelling("start/") + spelling("goal, not both"));
   if (problem.count("scen-index") && p.scen.empty())
-    throw KeyError(key_prefix + "scen-index", key_prefix + "scen-index needs " + key_prefix + "scen");
+    throw KeyError(spelling("scen-index"), spelling("scen-index needs ") + spelling("scen"));
   // The map file: --map, or the scenario's (a scenario file misnamed is load_problem()'s to say).
   const bool scenario_file = p.scen.extension() == ".scen" || p.scen.extension() == ".3dscen";
   const std::filesystem::path map_file = !p.map.empty()  ? p.map
@@ -155,16 +155,15 @@ ProblemSpec resolve_problem_keys(const Keys& problem, const Keys& map_keys, Plug
                                                          : std::filesystem::path();
   if (!map_file.empty()) {
     const std::string format = problem.count("map-format") ? problem.at("map-format") : "";
-    std::tie(p.map_format, p.map_parameters) = resolve_map_format(map_file, format, map_keys, registry, key_prefix);
+    std::tie(p.map_format, p.map_parameters) = resolve_map_format(map_file, format, map_keys, registry, spelling);
   } else if (problem.count("map-format") || !map_keys.empty()) {
     const std::string key = problem.count("map-format") ? "map-format" : kMapSlot + ("." + map_keys.begin()->first);
-    throw KeyError(key_prefix + key,
-                   key_prefix + key + " needs a map (" + key_prefix + "map or " + key_prefix + "scen)");
+    throw KeyError(spelling(key), spelling(key) + " needs a map (" + spelling("map or ") + spelling("scen)"));
   }
   Keys numbers;
   for (const auto& [key, value] : problem)
     if (in_table(problem_parameters(), key)) numbers[key] = value;
-  const ParameterValues problem_values = resolve(problem_parameters(), numbers, key_prefix);
+  const ParameterValues problem_values = resolve(problem_parameters(), numbers, spelling);
   p.scen_index = static_cast<int>(problem_values.integer("scen-index"));
   p.terrain = terrain_table().read(problem_values);
   return p;
@@ -177,7 +176,7 @@ bool is_problem_key(const std::string& key) {
 
 }  // namespace
 
-ProblemSpec resolve_problem(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix) {
+ProblemSpec resolve_problem(const Keys& keys, PluginRegistry& registry, const KeySpelling& spelling) {
   Keys problem, map_keys;
   for (const auto& [key, value] : keys) {
     if (key.starts_with(std::string(kMapSlot) + ".")) {
@@ -187,35 +186,34 @@ ProblemSpec resolve_problem(const Keys& keys, PluginRegistry& registry, const st
     } else {
       std::vector<std::string> known(kProblemTexts.begin(), kProblemTexts.end());
       for (const auto& p : problem_parameters()) known.push_back(p.name);
-      std::string message = "'" + key_prefix + key + "' is not a key of a problem";
-      if (const auto near = nearest(key, known); !near.empty())
-        message += "; did you mean '" + key_prefix + near + "'?";
-      throw KeyError(key_prefix + key, message);
+      std::string message = "'" + spelling(key) + "' is not a key of a problem";
+      if (const auto near = nearest(key, known); !near.empty()) message += "; did you mean '" + spelling(near) + "'?";
+      throw KeyError(spelling(key), message);
     }
   }
-  return resolve_problem_keys(problem, map_keys, registry, key_prefix);
+  return resolve_problem_keys(problem, map_keys, registry, spelling);
 }
 
-RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix) {
+RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const KeySpelling& spelling) {
   RunSpec spec;
   // Sorted by owner: the plugins first, since their tables decide which dotted keys exist.
   Keys problem, graph, colony, planner, map_keys;
   std::map<std::string, Keys> slots;
   if (const auto it = keys.find("planner"); it != keys.end())
-    spec.planner = std::get<std::string>(parse_value(planner_parameter(), it->second, key_prefix + "planner"));
+    spec.planner = std::get<std::string>(parse_value(planner_parameter(), it->second, spelling("planner")));
   for (const char* slot : kSlots) {
     const auto it = keys.find(slot);
     spec.pipeline[slot].plugin = it != keys.end() ? it->second : default_plugin(slot);
     try {
       registry.load(slot, spec.pipeline[slot].plugin);
     } catch (const Error& e) {
-      throw KeyError(key_prefix + slot, key_prefix + slot + ": " + e.what());
+      throw KeyError(spelling(slot), spelling(slot) + ": " + e.what());
     }
   }
   auto unknown = [&](const std::string& key, std::string message) {
     if (const auto near = nearest(key, known_keys(spec, registry)); !near.empty())
-      message += "; did you mean '" + key_prefix + near + "'?";
-    throw KeyError(key_prefix + key, message);
+      message += "; did you mean '" + spelling(near) + "'?";
+    throw KeyError(spelling(key), message);
   };
   for (const auto& [key, value] : keys) {
     if (key == "planner" || is_slot(key)) continue;
@@ -229,11 +227,11 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
       } else if (const auto with = planners_with_parameters();
                  std::find(with.begin(), with.end(), owner) != with.end()) {
         if (owner != spec.planner)
-          throw KeyError(key_prefix + key, key_prefix + key + " is a parameter of the planner '" + owner +
-                                               "', but the planner is '" + spec.planner + "'");
+          throw KeyError(spelling(key), spelling(key) + " is a parameter of the planner '" + owner +
+                                            "', but the planner is '" + spec.planner + "'");
         planner[name] = value;
       } else {
-        unknown(key, "unknown key '" + key_prefix + key + "'");
+        unknown(key, "unknown key '" + spelling(key) + "'");
       }
     } else if (is_problem_key(key)) {
       problem[key] = value;
@@ -242,30 +240,30 @@ RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::strin
     } else if (in_table(colony_parameters(), key)) {
       colony[key] = value;
     } else {
-      unknown(key, "unknown key '" + key_prefix + key + "'");
+      unknown(key, "unknown key '" + spelling(key) + "'");
     }
   }
 
-  spec.problem = resolve_problem_keys(problem, map_keys, registry, key_prefix);
-  spec.graph = graph_table().read(resolve(graph_parameters(), graph, key_prefix));
-  spec.colony = colony_settings(resolve(colony_parameters(), colony, key_prefix));
-  spec.planner_parameters = resolve(planner_parameters(spec.planner), planner, key_prefix + spec.planner + ".");
+  spec.problem = resolve_problem_keys(problem, map_keys, registry, spelling);
+  spec.graph = graph_table().read(resolve(graph_parameters(), graph, spelling));
+  spec.colony = colony_settings(resolve(colony_parameters(), colony, spelling));
+  spec.planner_parameters = resolve(planner_parameters(spec.planner), planner, spelling.within(spec.planner + "."));
   if (const auto check = find_planner(spec.planner).check) {
     try {
       check(spec.planner_parameters);
     } catch (const Error& e) {
-      throw KeyError(key_prefix + spec.planner, e.what());
+      throw KeyError(spelling(spec.planner), e.what());
     }
   }
   if (const std::string& smoother = spec.pipeline.at("smoother").plugin;
       find_planner(spec.planner).continuous && smoother != default_plugin("smoother"))
-    throw KeyError(key_prefix + "smoother", key_prefix + "smoother: the planner '" + spec.planner +
-                                                "' plans a continuous path, which takes no smoother (got '" + smoother +
-                                                "'; leave smoother at '" + default_plugin("smoother") + "')");
+    throw KeyError(spelling("smoother"), spelling("smoother: the planner '") + spec.planner +
+                                             "' plans a continuous path, which takes no smoother (got '" + smoother +
+                                             "'; leave smoother at '" + default_plugin("smoother") + "')");
   for (const char* slot : kSlots) {
     SlotSpec& choice = spec.pipeline[slot];
     const auto table = registry.load(slot, choice.plugin).parameters();
-    choice.parameters = resolve(table, slots[slot], key_prefix + slot + ".");
+    choice.parameters = resolve(table, slots[slot], spelling.within(std::string(slot) + "."));
   }
   return spec;
 }

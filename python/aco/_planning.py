@@ -7,8 +7,7 @@ import functools
 import itertools
 import operator
 import os
-import re
-from typing import Any, Callable, ContextManager, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Callable, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -80,8 +79,7 @@ class Map:
         Terrain keys (``height_scale``, ``cell_size`` for PGM images) and a map plugin's keys
         (``map_format``, ``map_...``) are applied here and to every plan on this map."""
         keys = _keys(terrain_keys)
-        with _python_spelling():
-            kind, array, cell_size, name = _aco.map_arrays(os.fspath(path), keys)
+        kind, array, cell_size, name = _aco.map_arrays(os.fspath(path), keys)
         loaded = cls(array, cell_size, name, kind=kind)
         loaded.file = os.fspath(path)
         loaded.terrain_keys = keys
@@ -215,9 +213,8 @@ class Scenario:
 
 def load_scenarios(path: Union[str, os.PathLike]) -> List[Scenario]:
     """The problems of a Moving AI scenario file (.scen), in the file's order."""
-    with _python_spelling():
-        return [Scenario(**{**s, "map": os.fspath(s["map"]), "start": tuple(s["start"]), "goal": tuple(s["goal"])})
-                for s in _aco.scenarios(os.fspath(path))]
+    return [Scenario(**{**s, "map": os.fspath(s["map"]), "start": tuple(s["start"]), "goal": tuple(s["goal"])})
+            for s in _aco.scenarios(os.fspath(path))]
 
 
 class Result:
@@ -346,19 +343,6 @@ def _keys(keys: Mapping[str, Any]) -> dict:
     return {_key(name): _text(value) for name, value in keys.items()}
 
 
-# A command-line option in the libraries' messages: '--update.rho' (quoted), --update.rho: (a
-# value's message) or --max-memory (what to give).
-_OPTION = re.compile(r"(?<![\w-])('?)--([a-z](?:[\w.-]*[a-z0-9])?)('?)(:?)")
-
-
-def _spelled(match: "re.Match[str]") -> str:
-    opening, key, closing, colon = match.groups()
-    keyword = _keyword(key)
-    if (opening and closing) or colon:
-        return f"{opening}{keyword}{closing}{colon}"
-    return f"{opening}{keyword}={closing}"
-
-
 @contextlib.contextmanager
 def _reworded(reword: Callable[[str], str]) -> Iterator[None]:
     """An aco.Error raised inside with its message reworded, and otherwise as it was raised (its
@@ -369,11 +353,6 @@ def _reworded(reword: Callable[[str], str]) -> Iterator[None]:
         if error.args and isinstance(error.args[0], str):
             error.args = (reword(error.args[0]),) + error.args[1:]
         raise
-
-
-def _python_spelling() -> ContextManager[None]:
-    """aco.Error's message with the keys as Python keywords: did you mean 'ants'?, not '--ants'."""
-    return _reworded(lambda message: _OPTION.sub(_spelled, message))
 
 
 def _takes_python_objects(slot: str) -> bool:
@@ -423,10 +402,8 @@ class _LiveObjects:
             delattr(_live, name)
 
 
-def _given(preset: Optional[str], config: Any, keys: Optional[Mapping[str, Any]], run_keys: Mapping[str, Any]) -> dict:
-    """The run keys a call gives (keywords, then ``keys=``), once preset and config are checked."""
-    if preset is not None and config is not None:
-        raise Error("preset and config: give one of them")
+def _given(keys: Optional[Mapping[str, Any]], run_keys: Mapping[str, Any]) -> dict:
+    """The run keys a call gives: keywords, then ``keys=``."""
     given = dict(run_keys)
     given.update(keys or {})
     return given
@@ -470,7 +447,7 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
     bad key, value, map or cell raises aco.Error with acoplan's message, its keys spelled as
     keywords (``did you mean 'ants'?``).
     """
-    given = _given(preset, config, keys, run_keys)
+    given = _given(keys, run_keys)
     given_keys = {_key(k) for k in given}
     if given_keys & {"scen", "scen-index"}:
         raise Error("plan() takes no scenario file: read one with aco.load_scenarios(path) and plan its problems, "
@@ -491,7 +468,7 @@ def plan(map: Union[Map, np.ndarray, str, os.PathLike], start: Sequence[int], go
             map = Map(map, kind=kind, free=free)
         text_keys = dict(map.terrain_keys)
         source = map._native()
-    with _LiveObjects() as live, _python_spelling():
+    with _LiveObjects() as live:
         for name, value in live.keys(given, f"o{next(_live_names)}").items():
             text_keys[_key(name)] = _text(value)
         record, used, cell_size, planned = _aco.plan(

@@ -10,7 +10,7 @@ from typing import Any, Mapping, Optional, Union
 import numpy as np
 
 from . import _aco
-from ._planning import Error, _given, _keys, _live_names, _LiveObjects, _python_spelling
+from ._planning import Error, _given, _keys, _live_names, _LiveObjects
 
 # acosim --csv's columns: the trajectory, one row per control step (the start first).
 _TRAJECTORY_COLUMNS = ("t", "x", "y", "heading", "v", "w", "plan", "goal_index")
@@ -91,9 +91,9 @@ def simulate(scenario: Union[str, os.PathLike, Mapping[str, Any]], *, preset: Op
 
     Returns an aco.Simulation; a bad scenario or key raises aco.Error with acosim's message.
     """
-    given = _given(preset, config, keys, run_keys)
+    given = _given(keys, run_keys)
     config_text = os.fspath(config) if config is not None else ""
-    with _LiveObjects() as live, _python_spelling():
+    with _LiveObjects() as live:
         keys = _keys(live.keys(given, f"o{next(_live_names)}"))
         if not isinstance(scenario, Mapping):
             return Simulation(_aco.simulate(os.fspath(scenario), keys, preset or "", config_text))

@@ -103,10 +103,11 @@ Simulation simulate(const std::filesystem::path& file, const aco::Keys& keys, co
   Simulation run{aco::simulation::load_scenario(file, registry()), {}};
   aco::KeyedValues given;
   given.keys = keys;
-  const aco::KeyedValues changes = aco::overlay(aco::PipelineSource::named(preset, config).keys(), given);
-  if (!changes.keys.empty()) run.scenario = aco::simulation::with_run_keys(run.scenario, changes, registry());
+  const aco::KeySpelling spelling = aco::KeySpelling::keyword();
+  const aco::KeyedValues changes = aco::overlay(aco::PipelineSource::named(preset, config, spelling).keys(), given);
+  if (!changes.keys.empty()) run.scenario = aco::simulation::with_run_keys(run.scenario, changes, registry(), spelling);
   py::gil_scoped_release unlocked;  // local planners written in Python take it back
-  const aco::MemoryLimit memory(std::nullopt);
+  const aco::MemoryLimit memory(std::nullopt, spelling);
   run.result = aco::simulation::simulate(run.scenario, registry());
   return run;
 }

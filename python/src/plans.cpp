@@ -85,7 +85,8 @@ namespace {
 py::tuple map_arrays(const std::filesystem::path& file, const aco::Keys& terrain_keys) {
   aco::Keys keys = terrain_keys;
   keys["map"] = file.string();
-  return arrays_of(*aco::load_problem_map(aco::resolve_problem(keys, registry(), "--"), &registry()));
+  const aco::KeySpelling spelling = aco::KeySpelling::keyword();
+  return arrays_of(*aco::load_problem_map(aco::resolve_problem(keys, registry(), spelling), &registry(), spelling));
 }
 
 // A cell from Python: (x, y) on a grid or terrain, (x, y, z) in a voxel world.
@@ -161,9 +162,11 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, const C
                             : array->heights.size()      ? aco::MapKind::terrain
                             : array->blocked.ndim() == 3 ? aco::MapKind::voxel
                                                          : aco::MapKind::grid;
-  const aco::PipelineSource source = aco::PipelineSource::choose(preset, config, kind);
+  const aco::KeySpelling spelling = aco::KeySpelling::keyword();
+  const aco::PipelineSource source = aco::PipelineSource::choose(preset, config, kind, spelling);
   aco::PlanRequest request;
-  request.run = aco::resolve_run(aco::over_pipeline_file(source.keys(), changes).keys, registry(), "--");
+  request.spelling = spelling;
+  request.run = aco::resolve_run(aco::over_pipeline_file(source.keys(), changes).keys, registry(), spelling);
   request.run.colony.between_iterations = SignalCheck();  // Ctrl-C stops the colony after its iteration
   request.threads = static_cast<int>(threads);
   if (max_memory) request.max_memory = aco::parse_memory_size(*max_memory, "max_memory");

@@ -59,3 +59,11 @@ def test_a_bad_scenario_gets_acosims_message():
         aco.simulate(STATIC, map="other.map")
     with pytest.raises(aco.Error, match="no_such.yaml"):
         aco.simulate(SOURCE / "no_such.yaml")
+
+
+def test_a_changed_key_is_named_as_python_writes_it_and_the_scenarios_own_as_yaml_does():
+    with pytest.raises(aco.Error, match="unknown parameter 'local_horizn'; did you mean 'local_horizon'"):
+        aco.simulate(STATIC, local_horizn=1.0)
+    with pytest.raises(aco.Error, match=r"the scenario.*: unknown parameter 'local.horizn'"):
+        aco.simulate({"run": {"map": str(SOURCE / "data" / "maps" / "papers" / "paper003_20.map"), "start": [0, 0],
+                              "goal": [19, 19], "local": "dwa", "local.horizn": 1}}, ants=5)

@@ -88,6 +88,10 @@ def test_a_terrain_files_cell_size_comes_with_the_result():
     (dict(threads=0.5), "threads: 0.5 is not a whole number"),
     (dict(max_memory="1K"), "max_memory"),
     (dict(max_memory="lots"), "max_memory: 'lots'"),
+    (dict(map_format="zzz"), "map_format: unknown map format 'zzz'"),
+    (dict(map_format="zzz"), "aco.plugins() shows them as map/NAME"),
+    (dict(colonies=2, search="bidirectional"), "the single search only (search single)"),
+    (dict(preset="robust", config="my.ini"), "config and preset: give one of them"),
 ])
 def test_keys_are_spelled_as_keywords(keys, message):
     with pytest.raises(aco.Error) as error:

@@ -107,11 +107,21 @@ MovingObstacle read_moving(const std::filesystem::path& file, const YAML::Node& 
   return m;
 }
 
-aco::RunSpec resolve(const aco::KeyedValues& keys, aco::PluginRegistry& registry) {
+// The run of the keys; an error names the key where it was written. A key the caller changed
+// (`changes`) is named as the caller writes keys, the scenario's own as YAML does.
+aco::RunSpec resolve(const aco::KeyedValues& keys, aco::PluginRegistry& registry, const aco::KeyedValues& changes = {},
+                     const aco::KeySpelling& spelling = {}) {
   try {
     return aco::resolve_run(keys.keys, registry);
   } catch (const aco::KeyError& e) {
-    throw aco::Error(keys.origin(e.key()) + e.what());
+    const std::string origin = keys.origin(e.key());
+    if (!changes.keys.count(e.key())) throw aco::Error(origin + e.what());
+    try {
+      aco::resolve_run(keys.keys, registry, spelling);  // the same error, in the caller's spelling
+    } catch (const aco::KeyError& spelled) {
+      throw aco::Error(origin + spelled.what());
+    }
+    throw;
   }
 }
 
@@ -126,13 +136,14 @@ std::string period_error(const Scenario& s) {
 
 }  // namespace
 
-Scenario with_run_keys(const Scenario& scenario, const aco::KeyedValues& changes, aco::PluginRegistry& registry) {
+Scenario with_run_keys(const Scenario& scenario, const aco::KeyedValues& changes, aco::PluginRegistry& registry,
+                       const aco::KeySpelling& spelling) {
   for (const char* key : {"map", "scen", "scen-index", "start", "goal", "seed"})
     if (changes.keys.count(key))
-      throw aco::Error(changes.origin(key) + "'" + key + "' is the scenario's, not a run key to change");
+      throw aco::Error(changes.origin(key) + "'" + spelling(key) + "' is the scenario's, not a run key to change");
   Scenario s = scenario;
   s.keys = aco::overlay(scenario.keys, changes);
-  s.run = resolve(s.keys, registry);
+  s.run = resolve(s.keys, registry, changes, spelling);
   if (const std::string error = period_error(s); !error.empty())
     throw aco::Error(scenario.file.string() + ": " + error);
   return s;

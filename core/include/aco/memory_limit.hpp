@@ -9,6 +9,7 @@
 #include <string>
 
 #include "aco/graph.hpp"
+#include "aco/parameters.hpp"
 
 namespace aco {
 
@@ -49,17 +50,20 @@ inline constexpr const char* kMaxMemoryHelp =
 // "1.5 GiB", "512 MiB", "100 bytes".
 BOOST_SYMBOL_VISIBLE std::string format_bytes(std::uint64_t bytes);
 
-// The hosts' --max-memory: this limit while the object lives (none given: the default stays).
-// Process-wide; the previous limit comes back at destruction.
+// The hosts' --max-memory: this limit while the object lives (none given: the default stays);
+// a refusal names the option as `spelling` writes it (Python's "max_memory="). Process-wide; the
+// previous limit comes back at destruction.
 class BOOST_SYMBOL_VISIBLE MemoryLimit {
  public:
-  explicit MemoryLimit(std::optional<std::uint64_t> bytes);
+  explicit MemoryLimit(std::optional<std::uint64_t> bytes, KeySpelling spelling = "--");
   ~MemoryLimit();
   MemoryLimit(const MemoryLimit&) = delete;
   MemoryLimit& operator=(const MemoryLimit&) = delete;
 
  private:
   std::uint64_t previous_;  // 0: the default
+  KeySpelling spelling_;
+  const KeySpelling* previous_spelling_;
 };
 
 }  // namespace aco

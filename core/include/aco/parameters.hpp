@@ -77,10 +77,37 @@ class BOOST_SYMBOL_VISIBLE KeyError : public Error {
   std::string key_;
 };
 
+// How a host writes a key in its messages, so an error names it as its user typed it: acoplan's
+// options ("--update.rho"), YAML's keys ("update.rho") or Python's keywords ("update_rho").
+class BOOST_SYMBOL_VISIBLE KeySpelling {
+ public:
+  // A key as written, after a literal prefix: "" for YAML, "--" for options, "--update." within a
+  // slot. Implicit, so a prefix text reads as its spelling.
+  KeySpelling(std::string prefix = "") : prefix_(std::move(prefix)) {}  // NOLINT(google-explicit-constructor)
+  KeySpelling(const char* prefix) : prefix_(prefix) {}  // NOLINT(google-explicit-constructor)
+  // Python's keyword arguments: dots and dashes as underscores.
+  static KeySpelling keyword();
+
+  // The key as the user writes it: "--update.rho", "update_rho".
+  std::string operator()(const std::string& key) const;
+  // The key as the user gives it a value, in "change it with ...": "--max-memory", "max_memory=";
+  // with a `value`: "--map-format NAME", "map_format=NAME", YAML's "map-format: NAME".
+  std::string to_give(const std::string& key, const std::string& value = "") const;
+  // The spelling of the keys of one table, e.g. a slot's: within("update.")("rho") is "--update.rho".
+  KeySpelling within(const std::string& scope) const;
+  // How this host's user lists the plugins: "--list-plugins", Python's "aco.plugins()".
+  std::string plugin_list() const;
+
+ private:
+  std::string prefix_;
+  bool keyword_ = false;
+};
+
 // Defaults of a table overridden by the given texts. An unknown name is an error naming the
-// nearest valid one; `key_prefix` ("--update.") is used in messages. Throws KeyError.
+// nearest valid one; `spelling` writes the keys in messages ("--update." for acoplan's options of
+// the update slot). Throws KeyError.
 ParameterValues resolve(std::span<const ParamSpec> table, const std::map<std::string, std::string>& given,
-                        const std::string& key_prefix);
+                        const KeySpelling& spelling);
 
 // The candidate closest to `word` by edit distance, or "" if none is reasonably close.
 std::string nearest(const std::string& word, const std::vector<std::string>& candidates);

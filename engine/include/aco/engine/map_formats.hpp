@@ -29,7 +29,9 @@ const BuiltinMapFormat* find_builtin_map_format(const std::string& name);
 // The format that reads `file`: `format` if not empty (a built-in's or a map plugin's name; an
 // Error listing both kinds if it is neither), else the built-in format or map plugin claiming the
 // file's ending (map plugins are asked with their default parameters), else "" (the 0/1 matrix).
-std::string map_format_of(const std::filesystem::path& file, const std::string& format, PluginRegistry& registry);
+// Messages name the keys as `spelling` writes them.
+std::string map_format_of(const std::filesystem::path& file, const std::string& format, PluginRegistry& registry,
+                          const KeySpelling& spelling = "--");
 
 // Every map format's name, built-in first, then the map plugins found.
 std::vector<std::string> map_format_names(const PluginRegistry& registry);
@@ -39,6 +41,6 @@ std::vector<std::string> map_format_names(const PluginRegistry& registry);
 // is none, the Error says that map plugins read other formats.
 std::unique_ptr<Map> load_map(const std::filesystem::path& file, const TerrainOptions& terrain,
                               PluginRegistry& registry, const std::string& format = "",
-                              const ParameterValues& parameters = {});
+                              const ParameterValues& parameters = {}, const KeySpelling& spelling = "--");
 
 }  // namespace aco

@@ -29,6 +29,7 @@ struct PlanRequest {
   // A front end's own checks of the map, before its start and goal are checked (Python refuses a
   // voxel world's cell given as (x, y), which the command line reads as layer 0).
   std::function<void(const Map& map)> check_map;
+  KeySpelling spelling = "--";  // how messages name keys (--max-memory, --map-format): acoplan's options
 };
 
 struct PlannedRuns {

@@ -54,21 +54,21 @@ struct PipelineSource {
   std::filesystem::path config;  // the config file run, if any
   bool recommended = false;  // named by neither: the map kind's recommended preset
 
-  // `preset` and `config` as given ("" = not given; giving both is an Error spelled with
-  // `key_prefix`, "--" for acoplan's options); `kind` picks the preset when neither is given.
+  // `preset` and `config` as given ("" = not given; giving both is an Error naming them
+  // as `spelling` writes keys); `kind` picks the preset when neither is given.
   static PipelineSource choose(const std::string& preset, const std::string& config, MapKind kind,
-                               const std::string& key_prefix = "");
+                               const KeySpelling& spelling = {});
   // The named one alone (acosim's --preset and --config go over a scenario's own pipeline):
   // nothing named gives no keys.
-  static PipelineSource named(const std::string& preset, const std::string& config, const std::string& key_prefix = "");
+  static PipelineSource named(const std::string& preset, const std::string& config, const KeySpelling& spelling = {});
 
   std::filesystem::path file() const;  // the preset's or config file; empty if nothing named
   KeyedValues keys() const;  // the file's keys; none if nothing named
-  // "robust", "paper001", or "none (--config FILE)" with key_prefix "--".
-  std::string name(const std::string& key_prefix = "") const;
+  // "robust", "paper001", or "none (--config FILE)" with acoplan's spelling "--".
+  std::string name(const KeySpelling& spelling = {}) const;
   // name(), and for a recommended preset why it runs: "robust (the default for 2D maps; --preset
   // NAME for another, --list-presets for the papers')", acoplan's "preset:" line.
-  std::string description(const std::string& key_prefix = "") const;
+  std::string description(const KeySpelling& spelling = {}) const;
 };
 
 }  // namespace aco

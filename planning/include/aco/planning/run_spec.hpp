@@ -78,13 +78,13 @@ const ParamSpec& planner_parameter();
 
 // The problem keys alone -> ProblemSpec, checked as resolve_run() checks them; any other key is a
 // KeyError. Start and goal may be missing (a map to look at needs none); load_problem() asks for them.
-ProblemSpec resolve_problem(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix = "");
+ProblemSpec resolve_problem(const Keys& keys, PluginRegistry& registry, const KeySpelling& spelling = {});
 
 // Keys -> RunSpec. Every key must be known and every value valid for its table; slots default
-// to default_plugin(), every other key to its table's default. `key_prefix` ("--" for acoplan)
-// goes before a key in messages; a failure throws KeyError naming the key (the nearest valid key
-// when it is unknown).
-RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const std::string& key_prefix = "");
+// to default_plugin(), every other key to its table's default. `spelling` writes keys in messages
+// ("--ants" for acoplan, "ants" for YAML, Python's keywords); a failure throws KeyError naming the key (the nearest
+// valid key when it is unknown).
+RunSpec resolve_run(const Keys& keys, PluginRegistry& registry, const KeySpelling& spelling = {});
 
 // Every key of a run with its resolved value, defaults included, in a readable order (problem,
 // graph, planner, colony, slots, each slot's parameters after it); resolve_run() of them gives
@@ -132,22 +132,24 @@ struct LoadedProblem {
 // The map file's reader and its parameters: `format` if given, else the file's ending's
 // (aco::map_format_of(); "" for a built-in format so chosen); `keys` the map.NAME values without
 // "map.", checked against the map plugin's table (a built-in format takes none). Errors are
-// KeyErrors naming the key with `key_prefix`.
+// KeyErrors naming the key as `spelling` writes it.
 std::pair<std::string, ParameterValues> resolve_map_format(const std::filesystem::path& file, const std::string& format,
                                                            const Keys& keys, PluginRegistry& registry,
-                                                           const std::string& key_prefix = "");
+                                                           const KeySpelling& spelling = {});
 
 // The problem's map (its file, or its scenario's) read by its reader with its terrain options (map
 // plugins from `registry`; without one, built-in formats only). Every loader of a problem's map goes
-// through here: a run, an acobench trial, the report's pictures, Python's Map.load().
-std::unique_ptr<Map> load_problem_map(const ProblemSpec& problem, PluginRegistry* registry = nullptr);
+// through here: a run, an acobench trial, the report's pictures, Python's Map.load(). Messages name
+// keys as `spelling` writes them.
+std::unique_ptr<Map> load_problem_map(const ProblemSpec& problem, PluginRegistry* registry = nullptr,
+                                      const KeySpelling& spelling = "--");
 
 // Loads the map with the terrain options and its reader (map plugins from `registry`; without
 // one, built-in formats only), takes start and goal from the scenario (whose map it is unless
 // `map` is set) or the cells, and checks both cells: an Error says which cell is outside or
 // blocked, and why. `check_map`, if given, sees the map first (aco::PlanRequest::check_map).
 LoadedProblem load_problem(const ProblemSpec& problem, PluginRegistry* registry = nullptr,
-                           const std::function<void(const Map&)>& check_map = {});
+                           const std::function<void(const Map&)>& check_map = {}, const KeySpelling& spelling = "--");
 // Throws an Error if `cell` ("start", "goal") is outside the map or blocked, naming the reason.
 void check_cell(const Map& map, Cell cell, const std::string& what);
 // Both ends of a problem on its map, "start" then "goal", after `check_map` if given: what

@@ -77,8 +77,10 @@ Scenario load_scenario(const std::filesystem::path& file, aco::PluginRegistry& r
 
 // The scenario driven with other run keys: `changes` over the file's (aco::overlay: another
 // plugin in a slot drops the file's parameters of that slot). The problem keys (map, start,
-// goal) stay the scenario's. Errors name the key and where it was written.
-Scenario with_run_keys(const Scenario& scenario, const aco::KeyedValues& changes, aco::PluginRegistry& registry);
+// goal) stay the scenario's. Errors name the key and where it was written, a changed key as
+// `spelling` writes it (Python's keywords), the file's as YAML does.
+Scenario with_run_keys(const Scenario& scenario, const aco::KeyedValues& changes, aco::PluginRegistry& registry,
+                       const aco::KeySpelling& spelling = {});
 
 struct Frame {
   double t = 0.0;

@@ -129,20 +129,33 @@ TEST_CASE("the stagnation rule stops a run after that many iterations without im
   CHECK(trivial.walks.empty());
 }
 
-TEST_CASE("a time limit stops the run at an iteration boundary with the best path so far", "[colony]") {
+TEST_CASE("a time limit stops the run inside an iteration, its walks cut short", "[colony]") {
   const auto map = test::classic_map(1);
   const aco::Graph graph = aco::build_graph(map, {aco::Neighbourhood::eight, true});
   Baseline b;
   aco::ColonySettings s;
   s.iterations = 50;
-  // Any run outlasts a nanosecond: the first iteration boundary ends it, whatever the machine.
+  // Any colony's setup outlasts a nanosecond: every ant sees the limit passed at its first look at
+  // the clock, before its first move, whatever the machine. The first iteration is the last.
   s.time_limit = 1e-9;
   const auto limited = aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), s);
   CHECK(limited.stopped_by == aco::StopReason::time);
   CHECK(limited.iterations == 1);
+  CHECK(limited.ant_steps == 0);
   CHECK(limited.best_so_far.size() == 1);
-  REQUIRE(limited.solved);
-  CHECK(limited.length == limited.best_so_far.back());
+  CHECK_FALSE(limited.solved);
+  // The same in the bidirectional search and the islands.
+  aco::ColonySettings two = s;
+  two.bidirectional = true;
+  Baseline other;
+  const aco::ColonyStrategies backward = other.pipeline();
+  const auto both_ways = aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), two, &backward);
+  CHECK((both_ways.stopped_by == aco::StopReason::time && both_ways.ant_steps == 0 && both_ways.iterations == 1));
+  two.bidirectional = false;
+  two.colonies = 2;
+  const std::vector<aco::ColonyStrategies> more{backward};
+  const auto islands = aco::run_colony(graph, 0, graph.node({19, 19}), b.pipeline(), two, nullptr, more);
+  CHECK((islands.stopped_by == aco::StopReason::time && islands.ant_steps == 0 && islands.iterations == 1));
   // A limit that is never reached, and the budget's last iteration past the limit, are the
   // iteration budget's stop.
   s.time_limit = 1e6;

@@ -20,6 +20,7 @@ namespace aco {
 namespace {
 
 using colony_detail::Colony;
+using colony_detail::Deadline;
 using colony_detail::PheromoneFoundBad;
 using colony_detail::Scratch;
 
@@ -58,7 +59,7 @@ std::uint64_t construct_pair(const Graph& g, const Colony& forward, const Colony
   std::uint64_t moves = 0;
   bool forward_alive = true, backward_alive = true;
   NodeId meeting = -1;
-  while (meeting < 0 && (forward_alive || backward_alive) && moves < forward.max_moves()) {
+  while (meeting < 0 && (forward_alive || backward_alive) && !forward.stops_after(moves)) {
     if (forward_alive) {
       forward_alive = forward.step(fa, fs, frng);
       if (forward_alive) {
@@ -126,7 +127,7 @@ void exchange_corridors(std::span<Colony* const> colonies) {
 // islands search); otherwise colony 0 does, and a second colony is the bidirectional search's
 // backward one, whose walks are colony 0's reversed.
 template <class Construct>
-ColonyResult iterate(const Graph& graph, const ColonySettings& s, Clock::time_point started,
+ColonyResult iterate(const Graph& graph, const ColonySettings& s, const Deadline& deadline,
                      std::span<Colony* const> colonies, std::span<std::vector<Ant>> ants, bool islands,
                      Construct&& construct) {
   ColonyResult result;
@@ -145,7 +146,11 @@ ColonyResult iterate(const Graph& graph, const ColonySettings& s, Clock::time_po
     for (Colony* colony : colonies) colony->prepare(it), colony->set_parallel(true);
     result.ant_steps += construct(it);
     for (Colony* colony : colonies) colony->set_parallel(false);
-    for (std::size_t c = 0; c < searching; ++c) colonies[c]->search_band(ants[c]);
+    // Past the time limit (some walks may have been cut short) the iteration keeps its best walk
+    // and ends the run: no band search, no learning.
+    const bool out_of_time = deadline.passed();
+    if (!out_of_time)
+      for (std::size_t c = 0; c < searching; ++c) colonies[c]->search_band(ants[c]);
 
     int arrived = 0;
     const auto walked_before = static_cast<std::ptrdiff_t>(result.corridors.size());
@@ -180,11 +185,12 @@ ColonyResult iterate(const Graph& graph, const ColonySettings& s, Clock::time_po
     double iteration_best = ColonyResult::none;
     for (std::size_t c = 0; c < colonies.size(); ++c) {
       const double length =
-          colonies[c]->learn(ants[c], c < searching ? std::span<const std::uint64_t>(walk_corridors[c])
-                                                    : std::span<const std::uint64_t>());
+          out_of_time ? colonies[c]->keep_best(ants[c])
+                      : colonies[c]->learn(ants[c], c < searching ? std::span<const std::uint64_t>(walk_corridors[c])
+                                                                  : std::span<const std::uint64_t>());
       if (c < searching) iteration_best = std::min(iteration_best, length);
     }
-    if (islands && corridor_keys && (it + 1) % s.exchange_every == 0) exchange_corridors(colonies);
+    if (islands && corridor_keys && !out_of_time && (it + 1) % s.exchange_every == 0) exchange_corridors(colonies);
     if (iteration_best != ColonyResult::none && (!result.solved || iteration_best < result.length)) {
       result.solved = true;
       result.length = iteration_best;
@@ -205,8 +211,7 @@ ColonyResult iterate(const Graph& graph, const ColonySettings& s, Clock::time_po
       result.stopped_by = StopReason::same_path;
       break;
     }
-    if (s.time_limit > 0.0 && it + 1 < s.iterations &&
-        std::chrono::duration<double>(Clock::now() - started).count() >= s.time_limit) {
+    if ((out_of_time || deadline.passed()) && it + 1 < s.iterations) {
       result.stopped_by = StopReason::time;
       break;
     }
@@ -226,12 +231,12 @@ ColonyResult iterate(const Graph& graph, const ColonySettings& s, Clock::time_po
 }
 
 ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
-                        const ColonySettings& s, bool check_every_hook, Clock::time_point started) {
-  Colony colony(graph, start, goal, pipeline, s, check_every_hook);
+                        const ColonySettings& s, bool check_every_hook, const Deadline& deadline) {
+  Colony colony(graph, start, goal, pipeline, s, check_every_hook, deadline);
   std::vector<std::vector<Ant>> ants(1, std::vector<Ant>(s.ants));
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&colony};
-  return iterate(graph, s, started, colonies, ants, false, [&](int it) {
+  return iterate(graph, s, deadline, colonies, ants, false, [&](int it) {
     aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       Scratch& local = colony.local_scratch();
       for (int k = range.begin(); k != range.end(); ++k) {
@@ -245,13 +250,13 @@ ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Col
 
 ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& forward_pipeline,
                                const ColonyStrategies& backward_pipeline, const ColonySettings& s,
-                               bool check_every_hook, Clock::time_point started) {
-  Colony forward(graph, start, goal, forward_pipeline, s, check_every_hook);
-  Colony backward(graph, goal, start, backward_pipeline, s, check_every_hook);
+                               bool check_every_hook, const Deadline& deadline) {
+  Colony forward(graph, start, goal, forward_pipeline, s, check_every_hook, deadline);
+  Colony backward(graph, goal, start, backward_pipeline, s, check_every_hook, deadline);
   std::vector<std::vector<Ant>> ants(2, std::vector<Ant>(s.ants));
   std::vector<std::uint64_t> steps(s.ants, 0);
   Colony* colonies[] = {&forward, &backward};
-  return iterate(graph, s, started, colonies, ants, false, [&](int it) {
+  return iterate(graph, s, deadline, colonies, ants, false, [&](int it) {
     aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       Scratch& fs = forward.local_scratch();
       Scratch& bs = backward.local_scratch();
@@ -268,7 +273,7 @@ ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, co
 // Islands: colony c walks ants [first[c], first[c + 1]) of each iteration, with the random
 // streams those ants have in a single colony.
 ColonyResult run_islands(const Graph& graph, NodeId start, NodeId goal, std::span<const ColonyStrategies> pipelines,
-                         const ColonySettings& s, bool check_every_hook, Clock::time_point started) {
+                         const ColonySettings& s, bool check_every_hook, const Deadline& deadline) {
   const int count = s.colonies;
   std::vector<std::unique_ptr<Colony>> owned;
   std::vector<Colony*> colonies;
@@ -277,14 +282,14 @@ ColonyResult run_islands(const Graph& graph, NodeId start, NodeId goal, std::spa
   for (int c = 0; c < count; ++c) {
     ColonySettings own = s;
     own.ants = s.ants / count + (c < s.ants % count ? 1 : 0);
-    owned.push_back(
-        std::make_unique<Colony>(graph, start, goal, pipelines[static_cast<std::size_t>(c)], own, check_every_hook));
+    owned.push_back(std::make_unique<Colony>(graph, start, goal, pipelines[static_cast<std::size_t>(c)], own,
+                                             check_every_hook, deadline));
     colonies.push_back(owned.back().get());
     ants.emplace_back(static_cast<std::size_t>(own.ants));
     first.push_back(first.back() + own.ants);
   }
   std::vector<std::uint64_t> steps(s.ants, 0);
-  return iterate(graph, s, started, colonies, ants, true, [&](int it) {
+  return iterate(graph, s, deadline, colonies, ants, true, [&](int it) {
     aco::parallel_for(tbb::blocked_range<int>(0, s.ants), [&](const tbb::blocked_range<int>& range) {
       for (int k = range.begin(); k != range.end(); ++k) {
         const auto c = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), k) - first.begin() - 1);
@@ -358,13 +363,15 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Col
       island_pipelines.push_back(more);
     }
   }
-  // A time limit counts from here: the colony's setup (its per-edge fields, dead-end filling) too.
-  const Clock::time_point started = Clock::now();
+  // A time limit counts from here, or from the host's start of the search: the colony's setup (its
+  // per-edge fields, dead-end filling) too.
+  const Clock::time_point started = settings.search_began.value_or(Clock::now());
   const auto run = [&](const ColonySettings& s, bool check_every_hook) {
+    const Deadline deadline(started, s.time_limit);
     if (s.bidirectional)
-      return run_bidirectional(graph, start, goal, pipeline, *backward, s, check_every_hook, started);
-    if (s.colonies > 1) return run_islands(graph, start, goal, island_pipelines, s, check_every_hook, started);
-    return run_single(graph, start, goal, pipeline, s, check_every_hook, started);
+      return run_bidirectional(graph, start, goal, pipeline, *backward, s, check_every_hook, deadline);
+    if (s.colonies > 1) return run_islands(graph, start, goal, island_pipelines, s, check_every_hook, deadline);
+    return run_single(graph, start, goal, pipeline, s, check_every_hook, deadline);
   };
   try {
     return run(settings, false);

@@ -19,8 +19,9 @@ const SettingsTable<ColonySettings>& colony_table() {
       field("stagnation", &S::stagnation, "0:100000000",
             "stop after this many iterations without a shorter path (0 = run every iteration)"),
       field("time-limit", &S::time_limit, "0:1e9",
-            "stop at the first iteration boundary after this many seconds of search and return the best path so far "
-            "(0 = no limit); the result then depends on the machine, so studies keep iteration budgets"),
+            "stop after this many seconds of search, inside an iteration if need be (its walks cut short), and "
+            "return the best path so far (0 = no limit); the result then depends on the machine, so studies keep "
+            "iteration budgets"),
       field("same-path-stop", &S::same_path_stop, "",
             "stop once same-path-fraction of an iteration's ants walked the same path (paper 001)"),
       field("same-path-fraction", &S::same_path_fraction, "(0:1]", "fraction of the ants for --same-path-stop"),

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -145,16 +146,50 @@ struct Scratch {
 
 using ScratchPool = tbb::enumerable_thread_specific<Scratch>;
 
+// The run's time limit (ColonySettings::time_limit), seen inside an iteration: on a large map one
+// iteration's walks take seconds, so an ant looks at the clock every kMovesPerLook moves, and once
+// one has seen the limit pass, every ant stops where it is (a walk cut short has not arrived).
+class Deadline {
+ public:
+  using Clock = std::chrono::steady_clock;
+  // About 0.1 ms of walking (20-70 ns a move); the clock costs about 20 ns a look.
+  static constexpr std::uint64_t kMovesPerLook = 2048;
+
+  Deadline(Clock::time_point started, double seconds)
+      : limited_(seconds > 0.0),
+        end_(started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds))) {}
+
+  // Whether the limit has passed, the clock read on every kMovesPerLook-th move of a walk.
+  bool passed(std::uint64_t moves) const {
+    if (!limited_) return false;
+    if (passed_.load(std::memory_order_relaxed)) return true;
+    return moves % kMovesPerLook == 0 && look();
+  }
+  bool passed() const { return limited_ && (passed_.load(std::memory_order_relaxed) || look()); }
+
+ private:
+  bool look() const {
+    if (Clock::now() < end_) return false;
+    passed_.store(true, std::memory_order_relaxed);
+    return true;
+  }
+
+  bool limited_;
+  Clock::time_point end_;
+  mutable std::atomic<bool> passed_{false};
+};
+
 // One colony: its strategies, pheromone field and heuristic, walking from its start to its goal.
 // The plain search runs one; the bidirectional search runs two, the second from goal to start.
 class Colony {
  public:
   Colony(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
-         const ColonySettings& settings, bool check_every_hook)
+         const ColonySettings& settings, bool check_every_hook, const Deadline& deadline)
       : g_(graph),
         p_(pipeline),
         s_(settings),
         check_every_hook_(check_every_hook),
+        deadline_(deadline),
         shortener_(graph, forbidden_, settings.local_search == LocalSearch::loops ? 0 : settings.local_search_window),
         band_(graph, forbidden_, settings.band_search) {
     context_.graph = &graph;
@@ -170,9 +205,8 @@ class Colony {
     if (settings.fill_dead_ends) forbidden_ = dead_ends(graph, start, goal);
     known_forbidden_ = forbidden_;
     local_search_ = settings.local_search != LocalSearch::none;
-    int max_degree = 1;
-    for (NodeId n = 0; n < graph.num_nodes(); ++n) max_degree = std::max(max_degree, graph.degree(n));
-    scratch_ = std::make_unique<ScratchPool>([this, max_degree] { return Scratch(known_forbidden_, max_degree); });
+    for (NodeId n = 0; n < graph.num_nodes(); ++n) max_degree_ = std::max(max_degree_, graph.degree(n));
+    scratch_ = std::make_unique<ScratchPool>([this] { return Scratch(known_forbidden_, max_degree_); });
   }
 
   void begin() {
@@ -186,13 +220,22 @@ class Colony {
       p_.update->begin_run(context_);
     }
     heuristic_ = p_.heuristic->specs();
+    // A heuristic that stays the same through the run and computes by node is computed when an
+    // ant first stands on a node: on a large map the ants see a fraction of the nodes, and the
+    // run needs no pass over every edge and no double per edge before its first step.
+    on_first_visit_ = heuristic_.updates_by_node && !heuristic_.varies_by_iteration &&
+                      static_cast<std::size_t>(max_degree_) <= kMaxNeighbours;
     // The heuristic first, the pheromone after: the heuristic's double values are converted to
     // float and dropped (unless it changes by iteration) before the pheromone takes its memory.
-    compute_heuristic();
-    by_node_ = heuristic_.varies_by_iteration && heuristic_.updates_by_node;
+    if (on_first_visit_)
+      allocate(eta_, static_cast<std::size_t>(g_.num_edges()));
+    else
+      compute_heuristic();
+    by_node_ = heuristic_.updates_by_node;
     if (by_node_) {
       fresh_ = std::make_unique<std::atomic<int>[]>(static_cast<std::size_t>(g_.num_nodes()));
-      for (NodeId n = 0; n < g_.num_nodes(); ++n) fresh_[n].store(context_.iteration, std::memory_order_relaxed);
+      const int computed = on_first_visit_ ? kNeverComputed : context_.iteration;
+      for (NodeId n = 0; n < g_.num_nodes(); ++n) fresh_[n].store(computed, std::memory_order_relaxed);
     }
     allocate(tau_, static_cast<std::size_t>(g_.num_edges()));
     if (learning) return initialize_trail();
@@ -235,7 +278,8 @@ class Colony {
     return std::move(tau_);
   }
   const Ant* best() const { return has_best_ ? &best_ : nullptr; }
-  std::uint64_t max_moves() const { return max_moves_; }
+  // Whether a walk stops after `moves` moves: its step limit, or the time limit (Deadline).
+  bool stops_after(std::uint64_t moves) const { return moves >= max_moves_ || deadline_.passed(moves); }
 
   void start_walk(Ant& ant, Scratch& scratch) const {
     ant.nodes.clear();
@@ -259,7 +303,7 @@ class Colony {
     start_walk(ant, scratch);
     std::uint64_t moves = 0;
     while (ant.nodes.back() != context_.goal) {
-      if (moves >= max_moves_ || !step(ant, scratch, rng)) return moves;
+      if (stops_after(moves) || !step(ant, scratch, rng)) return moves;
       ++moves;
     }
     arrive(ant, &scratch);
@@ -309,18 +353,9 @@ class Colony {
   // ant's corridor key (aco::CorridorKeys; none in voxel worlds). Returns the length of its
   // shortest arrived walk (ColonyResult::none if none arrived).
   double learn(std::span<Ant> ants, std::span<const std::uint64_t> corridors) {
-    const Ant* iteration_best = shortest(ants);
-    if (iteration_best != nullptr && (!has_best_ || iteration_best->length < best_.length)) {
-      best_ = *iteration_best;
-      has_best_ = true;
-      best_grid_length_ = best_.length;
-      if (s_.walk_length != WalkLength::grid) {
-        best_grid_length_ = 0.0;
-        for (EdgeId e : best_.edges) best_grid_length_ += g_.cost(e);
-      }
-    }
-    const double length = iteration_best != nullptr ? iteration_best->length : ColonyResult::none;
+    const double length = keep_best(ants);
     if (s_.null_model != NullModel::none) return length;  // the twins learn nothing
+    const Ant* iteration_best = shortest(ants);
     const Ant* best_so_far = best();
     if (epochs()) {
       // The strategies see the epoch: its walks, the ones through settled corridors derated, and
@@ -350,6 +385,24 @@ class Colony {
     plain_ = trail_.plain();
     if (s_.restart_after > 0 && context_.iteration - epoch_improved_ >= s_.restart_after) restart();
     return length;
+  }
+
+  // The iteration's shortest walk, kept if it is the run's best; returns its length
+  // (ColonyResult::none if none arrived). learn() begins with it; an iteration the time limit cut
+  // short ends with it alone.
+  double keep_best(std::span<const Ant> ants) {
+    const Ant* iteration_best = shortest(ants);
+    if (iteration_best == nullptr) return ColonyResult::none;
+    if (!has_best_ || iteration_best->length < best_.length) {
+      best_ = *iteration_best;
+      has_best_ = true;
+      best_grid_length_ = best_.length;
+      if (s_.walk_length != WalkLength::grid) {
+        best_grid_length_ = 0.0;
+        for (EdgeId e : best_.edges) best_grid_length_ += g_.cost(e);
+      }
+    }
+    return iteration_best->length;
   }
 
   int restarts() const { return restarts_; }
@@ -488,13 +541,16 @@ class Colony {
   // other threads may stand on n at the same time: the first takes n's lock and updates, the
   // others wait for it; the acquire/release pair publishes the values to every later reader.
   void update_heuristic(NodeId n) const {
-    const int now = context_.iteration;
+    const int now = on_first_visit_ ? 0 : context_.iteration;
     if (fresh_[n].load(std::memory_order_acquire) == now) return;
     std::lock_guard lock(update_locks_[static_cast<std::size_t>(n) % update_locks_.size()]);
     const int since = fresh_[n].load(std::memory_order_relaxed);
     if (since == now) return;
     const EdgeId first = g_.offsets[n];
-    const std::span<double> values(eta_double_.data() + first, static_cast<std::size_t>(g_.offsets[n + 1] - first));
+    const auto degree = static_cast<std::size_t>(g_.offsets[n + 1] - first);
+    std::array<double, kMaxNeighbours> computed;  // a node's values, when no table of doubles is kept
+    const std::span<double> values = on_first_visit_ ? std::span<double>(computed.data(), degree)
+                                                     : std::span<double>(eta_double_.data() + first, degree);
     p_.heuristic->update_node(context_, n, since, values);
     check_heuristic(values, "update_node()", first);
     store_node_eta(n, values.data());
@@ -600,6 +656,7 @@ class Colony {
   ColonyStrategies p_;
   ColonySettings s_;
   bool check_every_hook_;
+  const Deadline& deadline_;
   Context context_;
   std::vector<double> tau_;  // the trail's stored values
   Trail trail_{std::span<double>()};
@@ -611,6 +668,10 @@ class Colony {
   mutable std::vector<float> eta_;
   mutable std::vector<double> eta_double_;
   bool by_node_ = false;
+  bool on_first_visit_ = false;  // the heuristic is computed node by node, once (see begin())
+  int max_degree_ = 1;
+  static constexpr int kNeverComputed = -1;
+  static constexpr std::size_t kMaxNeighbours = 32;  // the largest neighbourhood is 26 (voxel worlds)
   std::unique_ptr<std::atomic<int>[]> fresh_;  // per node: the iteration its eta^beta is for
   mutable std::array<std::mutex, 64> update_locks_;
   std::vector<std::uint8_t> forbidden_;

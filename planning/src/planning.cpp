@@ -22,8 +22,10 @@ namespace {
 std::span<const ParamSpec> no_parameters() { return {}; }
 
 void run_aco(const PlanContext& c, PlanOutcome& o) {
+  ColonySettings settings = c.run.colony;
+  settings.search_began = c.began;
   ColonyResult colony =
-      run_pipeline(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, c.run.colony, &c.figures);
+      run_pipeline(c.registry, c.run.pipeline, c.pipeline, c.graph, c.start, c.goal, settings, &c.figures);
   o.properties["ant_steps"] = static_cast<std::int64_t>(colony.ant_steps);
   o.properties["stopped_by"] = std::string(to_string(colony.stopped_by));
   if (!c.graph.volumetric) o.properties["corridors"] = static_cast<std::int64_t>(colony.corridors.size());
@@ -33,7 +35,11 @@ void run_aco(const PlanContext& c, PlanOutcome& o) {
   o.iteration_best = std::move(colony.iteration_best);
   o.pheromone = std::move(colony.pheromone);
   o.search = std::move(static_cast<SearchResult&>(colony));
-  if (!o.search.solved)
+  if (!o.search.solved && colony.stopped_by == StopReason::time)
+    o.reason = "the time limit (" + to_string(ParamValue(c.run.colony.time_limit)) +
+               " s) ended the search in iteration " + std::to_string(o.search.iterations) +
+               ", before any ant reached the goal (give it more time)";
+  else if (!o.search.solved)
     o.reason = "no ant reached the goal in " + std::to_string(o.search.iterations) +
                " iterations (try more ants or iterations, or another deadlock policy)";
 }
@@ -183,7 +189,7 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
     o.reason = "goal " + to_string(graph.cell(goal)) + " is not reachable from start " + to_string(graph.cell(start)) +
                " (" + describe(graph.options) + ")";
   } else {
-    planner.run({registry, graph, start, goal, run, pipeline, figures}, o);
+    planner.run({registry, graph, start, goal, run, pipeline, figures, began}, o);
   }
   if (o.search.solved) {
     if (planner.continuous) {

@@ -27,12 +27,14 @@ def test_keywords_and_the_keys_dict_are_the_same_keys():
     assert by_keyword.config["fill-dead-ends"] is False
 
 
-def test_a_time_limit_stops_the_colony_at_an_iteration_boundary():
-    # Every run outlasts a nanosecond: the first iteration's end stops it, on any machine.
+def test_a_time_limit_stops_the_colony_inside_an_iteration():
+    # Every colony's setup outlasts a nanosecond: each ant sees the limit passed before its first
+    # move, on any machine, and the run ends unsolved in its first iteration.
     result = aco.plan(MAP1, (0, 0), (19, 19), time_limit=1e-9, iterations=50, seed=3)
     assert result.json["stopped_by"] == "time"
-    assert result.json["iterations"] == 1
-    assert result.solved
+    assert result.json["iterations"] == 1 and result.json["ant_steps"] == 0
+    assert not result.solved
+    assert "the time limit (1e-09 s) ended the search in iteration 1" in result.reason
     assert result.config["time-limit"] == 1e-9
     assert aco.plan(MAP1, (0, 0), (19, 19), iterations=5, seed=3).json["stopped_by"] == "iterations"
 

@@ -66,13 +66,16 @@ void run_slot(Heuristic& heuristic, const Problem& problem, Trace& trace) {
     heuristic.compute_powered(c, eta_beta);
     trace.add_checked(eta_beta, "eta^beta after compute_powered() in iteration " + std::to_string(iteration));
     if (iteration == 0) first = eta_beta;
-    if (iteration == 0 || !specs.updates_by_node) continue;
-    // The contract of update_node(): from iteration 0's values, bit for bit what
+    if (!specs.updates_by_node || (iteration == 0 && specs.varies_by_iteration)) continue;
+    // The contract of update_node(): from iteration 0's values (a heuristic that varies by
+    // iteration) or from nothing (one computed by node only, `since` -1), bit for bit what
     // compute_powered() gives in this iteration.
+    const int since = specs.varies_by_iteration ? 0 : -1;
     for (NodeId n = 0; n < problem.graph.num_nodes(); ++n) {
       const auto begin = problem.graph.edges_begin(n), end = problem.graph.edges_end(n);
       std::vector<double> updated(first.begin() + begin, first.begin() + end);
-      heuristic.update_node(c, n, 0, updated);
+      if (since < 0) std::fill(updated.begin(), updated.end(), nan);
+      heuristic.update_node(c, n, since, updated);
       if (!same_bits(updated, std::span(eta_beta).subspan(begin, end - begin))) {
         trace.problem("update_node() of node " + std::to_string(n) + " in iteration " + std::to_string(iteration) +
                       " differs from compute_powered()");

@@ -54,6 +54,19 @@ class Run:
             raise FiguresError(f"section '{self.section}': '{shlex.join(words)}' exited {done.returncode}")
         return done.stdout
 
+    def timed(self, *args, ok: tuple[int, ...] = (0,)) -> tuple[str, float, float]:
+        """Runs a command from the project's root under GNU time: its stdout, its wall seconds and its
+        peak memory (maximum resident set size) in MiB. An exit status outside OK is an error."""
+        words = ["/usr/bin/time", "-f", "%e %M", *[str(a) for a in args]]
+        self.commands.append(shlex.join(words))
+        print(f"[{self.section}] {shlex.join(words)}", file=sys.stderr, flush=True)
+        done = subprocess.run(words, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
+        if done.returncode not in ok:
+            raise FiguresError(f"section '{self.section}': '{shlex.join(words)}' exited {done.returncode}: "
+                               f"{done.stderr[-500:]}")
+        wall, peak_kb = done.stderr.strip().splitlines()[-1].split()
+        return done.stdout, float(wall), int(peak_kb) / 1024
+
     def stamp(self) -> str:
         when = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d")
         commands = "; ".join(f"`{c}`" for c in dict.fromkeys(self.commands))

@@ -2,14 +2,11 @@
 from __future__ import annotations
 
 import json
-import re
-import shlex
 import statistics
-import subprocess
 from pathlib import Path
 
 from .formatting import table
-from .project import ACOPLAN, BUILD, ROOT, VOXEL, FiguresError
+from .project import ACOPLAN, BUILD, ROOT, VOXEL
 from .run import Run
 from .sections import section
 
@@ -89,17 +86,10 @@ def voxel_city_memory(run: Run) -> str:
     rows = []
     for label, extra in [("A\*", ["--planner", "astar"]), ("voxel preset, 20 ants x 20 iterations", ["--ants", "20", "--iterations", "20"]),
                          ("voxel preset, 50 ants x 100 iterations", [])]:
-        words = ["/usr/bin/time", "-v", str(ACOPLAN), "--scen", str(scen), "--scen-index", "2", "--max-memory", "4G",
-                 *extra, "--json"]
-        run.commands.append(shlex.join(words))
-        done = subprocess.run(words, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
-        if done.returncode != 0:
-            raise FiguresError(f"section '{run.section}': {shlex.join(words)} exited {done.returncode}: {done.stderr[-500:]}")
-        peak_kb = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", done.stderr).group(1))
-        wall = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\): ([\d:.]+)", done.stderr).group(1)
-        r = json.loads(done.stdout)
+        out, wall, peak = run.timed(ACOPLAN, "--scen", scen, "--scen-index", "2", "--max-memory", "4G", *extra, "--json")
+        r = json.loads(out)
         rows.append([label, "yes" if r["solved"] else "no", f"{r['grid_length']:.2f}" if r["solved"] else "-",
-                     f"{r['optimal_length']:.2f}", f"{peak_kb / 1024 / 1024:.2f} GiB", wall, f"{r['time_ms'] / 1000:.1f} s"])
+                     f"{r['optimal_length']:.2f}", f"{peak / 1024:.2f} GiB", f"{wall:.1f} s", f"{r['time_ms'] / 1000:.1f} s"])
     return (run.stamp() + "\n\nA generated city of 256x256x128 voxels (`aco_mapgen --voxel city 256x256x128 7`), its "
             "third (longest) scenario, 26-neighbourhood, under `--max-memory 4G`, 2 threads; peak = maximum resident set size "
             "(GNU time), wall = the whole process (loading the map and building the graph included), run = the planner's "

@@ -108,7 +108,9 @@ struct HeuristicSpecs {
   // than the ants' work on a large map. With varies_by_iteration, it may set this and implement
   // update_node(): the engine then calls compute_powered() in the first iteration only and
   // afterwards brings eta^beta up to date node by node, for the nodes the ants stand on, the
-  // first time they do in an iteration.
+  // first time they do in an iteration. Without varies_by_iteration, it means: computed by node
+  // only. The engine never calls compute_powered() for the whole graph, but update_node() with
+  // `since` = -1 the first time an ant stands on a node (on a large map most nodes never are).
   bool updates_by_node = false;
   // It depends on the ant's own walk (its heading, say): the engine calls step_factors() once per
   // step with all candidate edges, never once per candidate.
@@ -128,9 +130,10 @@ class BOOST_SYMBOL_VISIBLE Heuristic : public Strategy {
   // eta^beta more cheaply than a pow() per edge (see heuristic/adaptive).
   virtual void compute_powered(const Context& context, std::span<double> eta_beta);
   // With specs().updates_by_node. eta_beta: the out-edges of `node` (from graph.offsets[node]),
-  // holding eta^beta as it was in iteration `since` (< context.iteration). Sets them to what
-  // compute_powered() gives for context.iteration, bit for bit. Called from construction threads,
-  // never twice at once for one node, and only after compute_powered() ran for the run's first
+  // holding eta^beta as it was in iteration `since` (< context.iteration), or anything if `since`
+  // is -1 (never computed). Sets them to what compute_powered() gives for context.iteration, bit
+  // for bit. Called from construction threads, never twice at once for one node, and (for a
+  // heuristic that varies by iteration) only after compute_powered() ran for the run's first
   // iteration.
   virtual void update_node(const Context& context, NodeId node, int since, std::span<double> eta_beta) const;
   // With specs().uses_walk: `ant` holds the walk so far (nodes and edges). factors[i] multiplies

@@ -3,6 +3,7 @@
 // the distance to the goal, so a step straight at the goal is preferred as strongly 500 cells
 // away as next to it.
 #include <algorithm>
+#include <cmath>
 
 #include "aco/plugin.hpp"
 
@@ -22,19 +23,31 @@ class ProgressHeuristic final : public aco::Heuristic {
  public:
   bool supports_voxel_worlds() const override { return true; }
   explicit ProgressHeuristic(const aco::ParameterValues& values) : p_(kParams.read(values)) {}
+  // Computed by node, when an ant first stands on one (HeuristicSpecs::updates_by_node): on a
+  // large map the ants see a fraction of its edges.
+  aco::HeuristicSpecs specs() const override { return {.updates_by_node = true}; }
+
   void compute(const aco::Context& c, std::span<double> eta) override {
     const aco::Graph& g = *c.graph;
-    for (aco::NodeId i = 0; i < g.num_nodes(); ++i) {
-      if (g.degree(i) == 0) continue;
-      const double from = g.distance(i, c.goal);
-      for (aco::EdgeId e = g.edges_begin(i); e < g.edges_end(i); ++e) {
-        const double r = std::clamp((from - g.distance(g.targets[e], c.goal)) / g.cost(e), -1.0, 1.0);
-        eta[e] = p_.floor + (1.0 - p_.floor) * 0.5 * (1.0 + r);
-      }
+    for (aco::NodeId i = 0; i < g.num_nodes(); ++i)
+      for (aco::EdgeId e = g.edges_begin(i); e < g.edges_end(i); ++e) eta[e] = of_edge(g, c.goal, i, e);
+  }
+
+  // compute_powered()'s values for one node: eta, raised to beta as the engine's default does.
+  void update_node(const aco::Context& c, aco::NodeId node, int, std::span<double> eta_beta) const override {
+    const aco::Graph& g = *c.graph;
+    for (aco::EdgeId e = g.edges_begin(node); e < g.edges_end(node); ++e) {
+      const double eta = of_edge(g, c.goal, node, e);
+      eta_beta[static_cast<std::size_t>(e - g.edges_begin(node))] = c.beta == 1.0 ? eta : std::pow(eta, c.beta);
     }
   }
 
  private:
+  double of_edge(const aco::Graph& g, aco::NodeId goal, aco::NodeId from, aco::EdgeId e) const {
+    const double r = std::clamp((g.distance(from, goal) - g.distance(g.targets[e], goal)) / g.cost(e), -1.0, 1.0);
+    return p_.floor + (1.0 - p_.floor) * 0.5 * (1.0 + r);
+  }
+
   Parameters p_;
 };
 

@@ -1,9 +1,11 @@
 #pragma once
 // The colony engine: iterations x ants, classic transition rule, tabu lists, ants built in
 // parallel with TBB and bit-identical for any thread count.
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -100,6 +102,9 @@ struct ColonySettings {
   // run_colony(). It may throw to abandon the run (the Python package raises KeyboardInterrupt
   // so on Ctrl-C); it must not change the run, which stays the same whether it is set or not.
   std::function<void()> between_iterations;
+  // Not a key: when the search began, which time_limit counts from; none: when run_colony()
+  // starts. A host whose search begins earlier (acoplan's reachability test) sets it.
+  std::optional<std::chrono::steady_clock::time_point> search_began;
 };
 
 // The colony's parameter table (ants, iterations, alpha, beta, seed, ...; defaults from the

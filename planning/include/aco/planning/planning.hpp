@@ -5,6 +5,7 @@
 // Planners are a table (as OMPL's planners are classes behind one interface): a name, a
 // parameter table, a check of its values, and a run function. A new planner is one more row in
 // planning.cpp; hosts, the irace dump and the run keys ("<planner>.<parameter>") iterate it.
+#include <chrono>
 #include <cstdint>
 #include <map>
 #include <span>
@@ -57,6 +58,7 @@ struct PlanContext {
   const RunSpec& run;
   const PipelinePlugins& pipeline;
   FigureSink& figures;  // where the plugins' figures go (plan() adds them to the properties)
+  std::chrono::steady_clock::time_point began;  // the search's start, which a time limit counts from
 };
 
 struct Planner {

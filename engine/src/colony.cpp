@@ -211,7 +211,7 @@ ColonyResult iterate(const Graph& graph, const ColonySettings& s, const Deadline
       result.stopped_by = StopReason::same_path;
       break;
     }
-    if ((out_of_time || deadline.passed()) && it + 1 < s.iterations) {
+    if (deadline.passed() && it + 1 < s.iterations) {  // cut short, or passed while it learned
       result.stopped_by = StopReason::time;
       break;
     }

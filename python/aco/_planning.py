@@ -326,11 +326,6 @@ def _key(name: str) -> str:
     return name.replace("_", "-")
 
 
-def _keyword(key: str) -> str:
-    """A run key as its Python keyword, _key()'s inverse: update.rho -> update_rho."""
-    return key.replace(".", "_").replace("-", "_")
-
-
 def _text(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"

@@ -57,7 +57,8 @@ def large_2048(run: Run):
                      f"{gap(cut)}, {cut['time_ms'] / 1000:.3f} s, {cut['iterations']} it.", gap(two)])
     return {(LARGE_MAPS, "large-2048"): run.stamp() + (
         "\n\nThe longest of 10 scenarios on each map, 2 threads, seed 1. Gap: the grid path's over the exact A\\* "
-        "optimum. Search: the colony's own time (its set-up included); wall and peak memory (GNU time): the whole "
+        "optimum. Search: acoplan's search time (`time_ms`: the reachability test, the colony's set-up and walks, "
+        "the smoother); wall and peak memory (GNU time): the whole "
         "process, loading the map, building the graph and the yardsticks included. The time-limit columns give the "
         "gap, the search time and the iterations run:\n\n"
         + table(["map (2048x2048)", "optimum", "bare: gap", "search", "wall", "peak memory", "no-learning twin: gap",

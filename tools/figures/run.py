@@ -46,26 +46,25 @@ class Run:
 
     def tool(self, *args) -> str:
         """Runs a command from the project's root; returns its stdout. Its stderr goes to ours."""
-        words = [str(a) for a in args]
-        self.commands.append(shlex.join(words))
-        print(f"[{self.section}] {shlex.join(words)}", file=sys.stderr, flush=True)
-        done = subprocess.run(words, stdout=subprocess.PIPE, stderr=sys.stderr, text=True, cwd=ROOT)
-        if done.returncode != 0:
-            raise FiguresError(f"section '{self.section}': '{shlex.join(words)}' exited {done.returncode}")
-        return done.stdout
+        return self._run([str(a) for a in args], (0,), stderr=sys.stderr).stdout
 
     def timed(self, *args, ok: tuple[int, ...] = (0,)) -> tuple[str, float, float]:
         """Runs a command from the project's root under GNU time: its stdout, its wall seconds and its
         peak memory (maximum resident set size) in MiB. An exit status outside OK is an error."""
-        words = ["/usr/bin/time", "-f", "%e %M", *[str(a) for a in args]]
-        self.commands.append(shlex.join(words))
-        print(f"[{self.section}] {shlex.join(words)}", file=sys.stderr, flush=True)
-        done = subprocess.run(words, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=ROOT)
-        if done.returncode not in ok:
-            raise FiguresError(f"section '{self.section}': '{shlex.join(words)}' exited {done.returncode}: "
-                               f"{done.stderr[-500:]}")
+        done = self._run(["/usr/bin/time", "-f", "%e %M", *[str(a) for a in args]], ok, stderr=subprocess.PIPE)
         wall, peak_kb = done.stderr.strip().splitlines()[-1].split()
         return done.stdout, float(wall), int(peak_kb) / 1024
+
+    def _run(self, words: list[str], ok: tuple[int, ...], stderr) -> subprocess.CompletedProcess:
+        """Runs WORDS from the project's root, noted for the stamp; an exit status outside OK is an error
+        (with the end of the command's stderr, where it was captured)."""
+        self.commands.append(shlex.join(words))
+        print(f"[{self.section}] {shlex.join(words)}", file=sys.stderr, flush=True)
+        done = subprocess.run(words, stdout=subprocess.PIPE, stderr=stderr, text=True, cwd=ROOT)
+        if done.returncode not in ok:
+            said = f": {done.stderr[-500:]}" if done.stderr else ""
+            raise FiguresError(f"section '{self.section}': '{shlex.join(words)}' exited {done.returncode}{said}")
+        return done
 
     def stamp(self) -> str:
         when = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d")

@@ -29,22 +29,26 @@ class ProgressHeuristic final : public aco::Heuristic {
 
   void compute(const aco::Context& c, std::span<double> eta) override {
     const aco::Graph& g = *c.graph;
-    for (aco::NodeId i = 0; i < g.num_nodes(); ++i)
-      for (aco::EdgeId e = g.edges_begin(i); e < g.edges_end(i); ++e) eta[e] = of_edge(g, c.goal, i, e);
+    for (aco::NodeId i = 0; i < g.num_nodes(); ++i) {
+      const double from = g.distance(i, c.goal);
+      for (aco::EdgeId e = g.edges_begin(i); e < g.edges_end(i); ++e) eta[e] = of_edge(g, c.goal, from, e);
+    }
   }
 
   // compute_powered()'s values for one node: eta, raised to beta as the engine's default does.
   void update_node(const aco::Context& c, aco::NodeId node, int, std::span<double> eta_beta) const override {
     const aco::Graph& g = *c.graph;
+    const double from = g.distance(node, c.goal);
     for (aco::EdgeId e = g.edges_begin(node); e < g.edges_end(node); ++e) {
-      const double eta = of_edge(g, c.goal, node, e);
+      const double eta = of_edge(g, c.goal, from, e);
       eta_beta[static_cast<std::size_t>(e - g.edges_begin(node))] = c.beta == 1.0 ? eta : std::pow(eta, c.beta);
     }
   }
 
  private:
-  double of_edge(const aco::Graph& g, aco::NodeId goal, aco::NodeId from, aco::EdgeId e) const {
-    const double r = std::clamp((g.distance(from, goal) - g.distance(g.targets[e], goal)) / g.cost(e), -1.0, 1.0);
+  // eta of edge e, whose source node is `from` cells (its distance) from the goal.
+  double of_edge(const aco::Graph& g, aco::NodeId goal, double from, aco::EdgeId e) const {
+    const double r = std::clamp((from - g.distance(g.targets[e], goal)) / g.cost(e), -1.0, 1.0);
     return p_.floor + (1.0 - p_.floor) * 0.5 * (1.0 + r);
   }
 

@@ -3,7 +3,7 @@
 # rules: tests/fixtures/nonconforming_update.cpp (not deterministic; NaN at q = 10; refuses
 # rho = 0, which its range admits), lingering_update.cpp (keeps per-run state across runs) and
 # throwing_update.cpp (throws 42 from its factory when asked; throws in iteration 3, as Context::iteration, by default)
-# and flat_init.cpp (claims voxel worlds but reads Graph::edge_costs, empty there: fails in 3D only).
+# and flat_init.cpp (claims voxel worlds but measures steps in the plane: fails in 3D only).
 #   tests/plugin_check_catches_test.sh ACO_PLUGIN_CHECK FAULTY_PLUGIN_DIR
 set -euo pipefail
 check=$1 dir=$2
@@ -30,7 +30,7 @@ expect_failures "$dir/aco_update_nonconforming.so" \
 expect_failures "$dir/aco_init_flat.so" \
   '^PASS init/flat \[defaults\] values$' \
   '^PASS init/flat \[defaults\] reused$' \
-  '^FAIL init/flat \[defaults\] 3D values: voxels: tau after initialize()\[0\] = nan (must be finite and > 0) (and [0-9]* more) \[in a voxel world Graph::edge_costs and reverse_edges are empty: use cost(e) and reverse_edge(e); cells have z, moves dz\]$' \
+  '^FAIL init/flat \[defaults\] 3D values: voxels: tau after initialize()\[[0-9]*\] = inf (must be finite and > 0) (and [0-9]* more) \[in a voxel world cells have z and moves dz: use cost(e), reverse_edge(e) and position(n)\]$' \
   '^PASS init/flat \[defaults\] 3D deterministic$' \
   '^PASS init/flat \[defaults\] 3D threads$' \
   '^PASS init/flat \[defaults\] 3D reused$'

@@ -27,8 +27,8 @@ void check_result(const aco::Graph& g, aco::NodeId start, aco::NodeId goal, cons
   REQUIRE(r.path.front() == start);
   REQUIRE(r.path.back() == goal);
   REQUIRE(aco::path_length(g, r.path) == Approx(r.length));
-  REQUIRE(path.front() == g.positions[start]);
-  REQUIRE(path.back() == g.positions[goal]);
+  REQUIRE(path.front() == g.position(start));
+  REQUIRE(path.back() == g.position(goal));
   for (std::size_t i = 1; i < path.size(); ++i) {
     const aco::Cell a{int(path[i - 1].x()), int(path[i - 1].y())}, b{int(path[i].x()), int(path[i].y())};
     const bool edge = g.find_edge(g.node(a), g.node(b)) >= 0;

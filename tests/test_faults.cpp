@@ -221,7 +221,7 @@ TEST_CASE("a waypoint is on a free cell when a free cell's closed square holds i
   // On terrain, positions are in the cell size's units.
   const aco::TerrainMap terrain(3, 1, 10.0, {1, 1, 1}, 90, "flat");
   const aco::Graph ground = aco::build_graph(terrain, {});
-  CHECK(aco::on_free_cell(ground, ground.positions[2]));
+  CHECK(aco::on_free_cell(ground, ground.position(2)));
   CHECK(aco::on_free_cell(ground, {25, 5, 1}));
   CHECK_FALSE(aco::on_free_cell(ground, {25, 5.1, 1}));
 }

@@ -32,8 +32,9 @@ void check_invariants(const aco::Graph& g) {
   REQUIRE(static_cast<int>(g.offsets.size()) == g.num_nodes() + 1);
   REQUIRE(g.offsets.front() == 0);
   REQUIRE(g.offsets.back() == g.num_edges());
-  REQUIRE(g.edge_costs.size() == g.targets.size());
-  REQUIRE(g.reverse_edges.size() == g.targets.size());
+  REQUIRE(g.edge_moves.size() == g.targets.size());
+  CHECK(g.terrain_costs.empty());  // a flat grid stores no step lengths and no positions
+  CHECK(g.terrain_positions.empty());
   for (aco::NodeId n = 0; n < g.num_nodes(); ++n) {
     if (!g.passable(n)) CHECK(g.degree(n) == 0);
     for (aco::EdgeId e = g.edges_begin(n); e < g.edges_end(n); ++e) {
@@ -49,6 +50,7 @@ void check_invariants(const aco::Graph& g) {
       CHECK(g.cost(r) == g.cost(e));
       const aco::Cell a = g.cell(n), b = g.cell(m);
       CHECK(g.cost(e) == Approx(std::hypot(double(a.x - b.x), double(a.y - b.y))));
+      CHECK(g.cost(e) == (g.position(n) - g.position(m)).norm());  // bit for bit, as the stored lengths were
     }
   }
 }

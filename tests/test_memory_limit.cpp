@@ -67,8 +67,10 @@ TEST_CASE("the planning estimate grows with the cells and the neighbourhood, and
   CHECK(e(100, 100, Neighbourhood::four) < e(100, 100, Neighbourhood::eight));
   CHECK(e(100, 100, Neighbourhood::eight) < e(100, 100, Neighbourhood::sixteen));
   CHECK(e(200, 100, Neighbourhood::eight) == 2 * e(100, 100, Neighbourhood::eight));
-  // At least the graph's per-edge arrays: target, cost, reverse (4 + 8 + 4 bytes).
-  CHECK(e(100, 100, Neighbourhood::eight) >= 100 * 100 * 8 * 16);
+  // At least the graph's target and move and the colony's pheromone and heuristic (4 + 1 + 8 + 4 bytes).
+  CHECK(e(100, 100, Neighbourhood::eight) >= 100 * 100 * 8 * 17);
+  // A terrain's graph keeps positions and step lengths as well.
+  CHECK(aco::planning_memory_estimate(100, 100, Neighbourhood::eight, true) > e(100, 100, Neighbourhood::eight));
   CHECK(e(0, 100, Neighbourhood::eight) == 0);
   CHECK(e(INT32_MAX, INT32_MAX, Neighbourhood::sixteen) == UINT64_MAX);
   CHECK(aco::memory_limit() == aco::default_memory_limit());

@@ -36,15 +36,15 @@ aco::OmplSettings settings(const std::string& planner, double time_limit, std::u
 void check_path(const aco::Graph& g, aco::NodeId start, aco::NodeId goal, const aco::OmplResult& r) {
   REQUIRE(r.solved);
   REQUIRE(r.path.size() >= 2);
-  CHECK(r.path.front() == g.positions[start]);
-  CHECK(r.path.back() == g.positions[goal]);
+  CHECK(r.path.front() == g.position(start));
+  CHECK(r.path.back() == g.position(goal));
   for (std::size_t i = 1; i < r.path.size(); ++i) {
     INFO("segment " << i << " of " << r.path.size() - 1);
     CHECK(r.path[i].z() == 0.0);
     CHECK(aco::segment_free(*g.map, r.path[i - 1].head<2>(), r.path[i].head<2>(), g.options.corner_cutting));
   }
   CHECK(r.length == aco::polyline_length(r.path));
-  CHECK(r.length >= (g.positions[goal] - g.positions[start]).norm() - 1e-9);
+  CHECK(r.length >= (g.position(goal) - g.position(start)).norm() - 1e-9);
   // The anytime curve: one entry per reported solution, the final path's length last.
   REQUIRE(!r.best_so_far.empty());
   CHECK(r.best_so_far.back() == r.length);
@@ -99,7 +99,7 @@ TEST_CASE("ompl: an open map, start at the goal, bad settings and maps", "[ompl]
   // On an open map the simplified path of RRT-Connect is the straight line.
   const auto r = solve(g, {0, 7}, {11, 0}, settings("rrtconnect", 1.0), 1.0);
   check_path(g, g.node({0, 7}), g.node({11, 0}), r);
-  CHECK(r.length == Approx((g.positions[g.node({11, 0})] - g.positions[g.node({0, 7})]).norm()));
+  CHECK(r.length == Approx((g.position(g.node({11, 0})) - g.position(g.node({0, 7}))).norm()));
   const auto here = aco::run_ompl(g, g.node({3, 3}), g.node({3, 3}), settings("bitstar", 1.0));
   CHECK(here.solved);
   CHECK(here.length == 0.0);
@@ -144,8 +144,8 @@ TEST_CASE("ompl: plan() takes the continuous path as it is", "[ompl]") {
   CHECK(o.search.path.empty());
   CHECK(std::isnan(o.search.length));
   CHECK(o.length == aco::polyline_length(o.path));
-  CHECK(o.path.front() == g.positions[g.node({0, 0})]);
-  CHECK(o.path.back() == g.positions[g.node({19, 19})]);
+  CHECK(o.path.front() == g.position(g.node({0, 0})));
+  CHECK(o.path.back() == g.position(g.node({19, 19})));
   CHECK(o.search.iterations == static_cast<int>(o.search.best_so_far.size()));
   CHECK(o.search.best_so_far[o.search.best_iteration - 1] == o.length);
   CHECK(o.count("ompl.graph_states") > 0);

@@ -246,7 +246,7 @@ TEST_CASE("The SVG of a terrain shows shading, contours and a height legend", "[
   picture.start = g.node({0, 0});
   picture.goal = g.node({3, 2});
   picture.grid_path = {g.node({0, 0}), g.node({1, 1}), g.node({2, 2}), g.node({3, 2})};
-  picture.path = aco::Waypoints{g.positions[picture.grid_path[0]], g.positions[picture.grid_path[3]]};
+  picture.path = aco::Waypoints{g.position(picture.grid_path[0]), g.position(picture.grid_path[3])};
   const std::string svg = aco::render_svg(g, picture);
   CHECK_THAT(svg, Contains("<g id=\"terrain\"") && Contains("<g id=\"contours\"") && Contains("class=\"contour\"") &&
                       Contains("id=\"height-legend\"") && Contains(">800</text>") && Contains(">1000</text>") &&

@@ -82,7 +82,7 @@ TEST_CASE("the voxel worlds of the conformance checks: sizes, moves and reachabl
     CHECK(p.graph.volumetric);
     CHECK(p.graph.options.neighbourhood == aco::Neighbourhood::twenty_six);
     CHECK_FALSE(p.graph.options.corner_cutting);
-    CHECK(p.graph.edge_costs.empty());
+    CHECK(p.graph.terrain_costs.empty());
     const auto path = p.shortest_path();
     // The way up: every path climbs from z = 0 to the top layer.
     CHECK(p.graph.cell(path.front()).z == 0);
@@ -228,7 +228,7 @@ TEST_CASE("the python plugins do not claim voxel worlds, and the checks say they
 
 TEST_CASE("a plugin that claims voxel worlds but reads the graph as a grid's fails the 3D checks",
           "[conformance][voxel]") {
-  // init/flat sets tau = 1 / Graph::edge_costs[e], which is empty in a voxel world.
+  // init/flat sets tau = 1 / the step's length in the plane, which is 0 for a step up or down.
   const auto results = check(fs::path(ACO_TEST_FAULTY_PLUGIN_DIR) / "aco_init_flat.so", {}).at("init/flat");
   std::map<std::string, CheckResult> by_check;
   for (const auto& r : results) by_check.emplace(r.check, r);
@@ -240,10 +240,10 @@ TEST_CASE("a plugin that claims voxel worlds but reads the graph as a grid's fai
   REQUIRE(by_check.count("3D values") == 1);
   const CheckResult& values = by_check.at("3D values");
   CHECK(values.status == CheckResult::Status::fail);
-  CHECK(values.line().rfind("FAIL init/flat [defaults] 3D values: voxels: tau after initialize()[0] = nan (must be "
+  CHECK(values.line().rfind("FAIL init/flat [defaults] 3D values: voxels: tau after initialize()[2] = inf (must be "
                             "finite and > 0)",
                             0) == 0);
-  CHECK_THAT(values.detail, Contains("use cost(e) and reverse_edge(e)"));
+  CHECK_THAT(values.detail, Contains("use cost(e), reverse_edge(e) and position(n)"));
 
   // A plugin that does not claim them is not run there: one line says so, not a failure.
   const auto taut = check(fs::path(ACO_TEST_PLUGIN_DIR) / "aco_smoother_taut.so", {}).at("smoother/taut");

@@ -53,7 +53,7 @@ TEST_CASE("a voxel world's graph has the 6, 18 and 26 moves, with costs and reve
     INFO(aco::describe(g.options));
     CHECK(g.volumetric);
     CHECK(g.num_nodes() == 27);
-    CHECK(g.edge_costs.empty());  // the lean voxel graph stores none
+    CHECK(g.terrain_costs.empty());  // the lean graph stores none
     CHECK(g.degree(g.node({1, 1, 1})) == expected);
     std::set<std::tuple<int, int, int>> seen;
     for (aco::NodeId a = 0; a < g.num_nodes(); ++a)

@@ -72,8 +72,8 @@ case "$slot" in
   const std::vector<aco::NodeId> path = problem.shortest_path();
   const auto points = plugin->smooth(problem.context(), path);
   REQUIRE(!points.empty());
-  CHECK(points.front() == problem.graph.positions[path.front()]);
-  CHECK(points.back() == problem.graph.positions[path.back()]);
+  CHECK(points.front() == problem.graph.position(path.front()));
+  CHECK(points.back() == problem.graph.position(path.back()));
   CHECK(aco::polyline_length(points) <= aco::path_length(problem.graph, path) + 1e-9);  // never longer' ;;
   local) interface=LocalPlanner; method='  aco::VelocityCommand command(const aco::LocalView& view) override {
     return aco::dynamic_window(view.robot, view.limits, view.period).clamp({p_.value, 0.0});  // straight ahead

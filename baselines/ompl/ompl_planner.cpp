@@ -150,7 +150,7 @@ std::uint32_t ompl_seed(std::uint64_t seed) { return static_cast<std::uint32_t>(
 void check_plane(const Graph& graph) {
   for (NodeId n = 0; n < graph.num_nodes(); ++n) {
     const Cell c = graph.cell(n);
-    if (graph.positions[n] != Eigen::Vector3d(c.x, c.y, 0.0))
+    if (graph.position(n) != Eigen::Vector3d(c.x, c.y, 0.0))
       throw Error("ompl: plans in the plane over cells of unit size; " + graph.map->name() + " places cell " +
                   to_string(c) + " elsewhere (a terrain's heights or cell size)");
   }
@@ -181,7 +181,7 @@ OmplResult run_ompl(const Graph& graph, NodeId start, NodeId goal, const OmplSet
   const OmplPlanner& kind = find_ompl_planner(settings.planner);
   const Map& map = *graph.map;
   const bool corner_cutting = graph.options.corner_cutting;
-  const Eigen::Vector3d from = graph.positions[start], to = graph.positions[goal];
+  const Eigen::Vector3d from = graph.position(start), to = graph.position(goal);
 
   OmplResult r;
   if (start == goal) {  // no planner needed, and some of OMPL's do not expect it

@@ -73,11 +73,6 @@ std::span<const Move> moves(Neighbourhood neighbourhood) {
   return std::span<const Move>(kMoves).first(static_cast<std::size_t>(neighbourhood));
 }
 
-double Graph::move_length(int k) {
-  static const std::array<double, 3> kLengths = {1.0, std::sqrt(2.0), std::sqrt(3.0)};
-  return kLengths[k < 6 ? 0 : k < 18 ? 1 : 2];
-}
-
 std::string describe(const GraphOptions& options) {
   return std::to_string(static_cast<int>(options.neighbourhood)) + "-neighbourhood, " +
          (options.corner_cutting ? "corner cutting" : "no corner cutting");
@@ -116,8 +111,7 @@ EdgeId Graph::edge_by_move(NodeId from, int dx, int dy, int dz) const {
 }
 
 EdgeId Graph::reverse_edge(EdgeId e) const {
-  if (!volumetric) return reverse_edges[e];
-  const Move& m = kMoves3d[edge_moves[e]];
+  const Move& m = volumetric ? kMoves3d[edge_moves[e]] : kMoves[edge_moves[e]];
   return edge_by_move(targets[e], -m.dx, -m.dy, -m.dz);
 }
 
@@ -144,28 +138,41 @@ void check_neighbourhood_fits(const Map& map, const GraphOptions& options) {
                 map.name() + " is " + std::to_string(w) + "x" + std::to_string(h));
 }
 
-// A voxel world's edges: target and move only (Graph's comment says why).
-void build_voxel_edges(const Map& map, Graph& g) {
+// Whether a cell's move k leads to a free cell by the neighbourhood's rule.
+bool move_allowed(const Map& map, const Graph& g, Cell c, int k) {
+  const Move& m = moves(g.options.neighbourhood)[k];
+  const Cell to{c.x + m.dx, c.y + m.dy, c.z + m.dz};
+  if (!map.passable(to)) return false;
+  if (g.volumetric) return g.options.corner_cutting || k < 6 || box_clear(map, c, m);
+  return move_clear(map, c, m, g.options.corner_cutting) && map.step_allowed(c, to);
+}
+
+// A terrain's cell centres are not at their coordinates (heights, cell size): only there are
+// positions and step lengths stored.
+bool places_cells_elsewhere(const Map& map, const Graph& g) {
+  for (NodeId id = 0; id < g.num_nodes(); ++id) {
+    const Cell c = g.cell(id);
+    if (map.position(c) != Eigen::Vector3d(c.x, c.y, c.z)) return true;
+  }
+  return false;
+}
+
+// Targets and moves, in move order per node.
+void build_edges(const Map& map, Graph& g) {
   const auto all = moves(g.options.neighbourhood);
-  const int n = g.num_nodes();
-  // One pass to count, one to fill: a 26-neighbour world's edges would otherwise grow a vector
-  // of hundreds of millions by doubling, twice its size at the peak.
+  const NodeId n = g.num_nodes();
+  // One pass to count, one to fill: the edges would otherwise grow a vector of tens or hundreds
+  // of millions by doubling, twice its size at the peak.
   for (NodeId id = 0; id < n; ++id) {
     const Cell c = g.cell(id);
-    g.positions[id] = map.position(c);
     std::uint32_t mask = 0;
-    if (map.passable(c)) {
-      for (std::size_t k = 0; k < all.size(); ++k) {
-        const Move& m = all[k];
-        const Cell to{c.x + m.dx, c.y + m.dy, c.z + m.dz};
-        const bool clear = g.options.corner_cutting || k < 6 || box_clear(map, c, m);
-        if (map.passable(to) && clear) mask |= 1u << k;
-      }
-    }
+    if (map.passable(c))
+      for (int k = 0; k < static_cast<int>(all.size()); ++k)
+        if (move_allowed(map, g, c, k)) mask |= 1u << k;
     g.move_mask[id] = mask;
     g.offsets[id + 1] = g.offsets[id] + std::popcount(mask);
   }
-  check_voxel_graph_memory(n, g.offsets[n], map.name());
+  if (g.volumetric) check_voxel_graph_memory(n, g.offsets[n], map.name());
   g.targets.resize(static_cast<std::size_t>(g.offsets[n]));
   g.edge_moves.resize(g.targets.size());
   for (NodeId id = 0; id < n; ++id) {
@@ -180,6 +187,17 @@ void build_voxel_edges(const Map& map, Graph& g) {
   }
 }
 
+// A step rule (a terrain's slope limit, Map::step_allowed()) may be asymmetric (uphill vs
+// downhill); the engine needs reversible edges for node-based pheromone, so say so instead of
+// failing later.
+void check_reversible(const Map& map, const Graph& g) {
+  for (NodeId id = 0; id < g.num_nodes(); ++id)
+    for (EdgeId e = g.edges_begin(id); e < g.edges_end(id); ++e)
+      if (g.reverse_edge(e) < 0)
+        throw Error(map.name() + ": the step " + to_string(g.cell(id)) + " -> " + to_string(g.cell(g.targets[e])) +
+                    " is allowed but its reverse is not");
+}
+
 }  // namespace
 
 Graph build_graph(const Map& map, const GraphOptions& options) {
@@ -191,52 +209,33 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   g.height = map.height();
   g.depth = map.depth();
   g.volumetric = map.volumetric();
-  const int moves = static_cast<int>(options.neighbourhood);
-  // A voxel world is checked once its edges are counted (build_voxel_edges()): in a city or a
+  const int move_count = static_cast<int>(options.neighbourhood);
+  const bool terrain = places_cells_elsewhere(map, g);
+  // A voxel world is checked once its edges are counted (build_edges()): in a city or a
   // forest most of them are, but not all, and the worst case would refuse worlds that fit.
-  if (!g.volumetric) check_planning_memory(g.width, g.height, options.neighbourhood, map.name());
+  if (!g.volumetric) check_planning_memory(g.width, g.height, options.neighbourhood, map.name(), terrain);
   // Node and edge ids are 32-bit: a map with more cells or possible edges than that (reachable
   // only with a raised memory limit) is refused instead of overflowing them.
   const std::int64_t cells = std::int64_t{g.width} * g.height * g.depth;
-  if (cells * moves > std::numeric_limits<EdgeId>::max())
-    throw Error(map.name() + ": " + std::to_string(cells) + " cells with the " + std::to_string(moves) +
+  if (cells * move_count > std::numeric_limits<EdgeId>::max())
+    throw Error(map.name() + ": " + std::to_string(cells) + " cells with the " + std::to_string(move_count) +
                 "-neighbourhood exceed the graph's 32-bit node and edge ids");
   const int n = g.num_nodes();
   if (g.volumetric) check_voxel_graph_memory(n, 0, map.name());  // the per-voxel arrays, before they are made
   g.offsets.assign(n + 1, 0);
   g.move_mask.assign(n, 0);
-  g.positions.resize(n);
-  if (g.volumetric) {
-    build_voxel_edges(map, g);
-    return g;
-  }
-  for (NodeId id = 0; id < n; ++id) {
-    const Cell c = g.cell(id);
-    g.positions[id] = map.position(c);
-    if (map.passable(c)) {
-      for (int k = 0; k < moves; ++k) {
-        const Cell to{c.x + kMoves[k].dx, c.y + kMoves[k].dy};
-        if (!map.passable(to) || !move_clear(map, c, kMoves[k], options.corner_cutting) || !map.step_allowed(c, to))
-          continue;
-        g.targets.push_back(g.node(to));
-        g.move_mask[id] |= 1u << k;
-      }
-    }
-    g.offsets[id + 1] = static_cast<EdgeId>(g.targets.size());
-  }
-  g.edge_costs.resize(g.targets.size());
-  g.reverse_edges.assign(g.targets.size(), -1);
-  for (NodeId id = 0; id < n; ++id) {
-    for (EdgeId e = g.edges_begin(id); e < g.edges_end(id); ++e) {
-      g.edge_costs[e] = g.distance(id, g.targets[e]);
-      g.reverse_edges[e] = g.find_edge(g.targets[e], id);
-      // A terrain's step_allowed() may be asymmetric (uphill vs downhill); the engine needs
-      // reversible edges for node-based pheromone, so say so instead of failing later.
-      if (g.reverse_edges[e] < 0)
-        throw Error(map.name() + ": the step " + to_string(g.cell(id)) + " -> " + to_string(g.cell(g.targets[e])) +
-                    " is allowed but its reverse is not");
-    }
-  }
+  const auto all = moves(options.neighbourhood);
+  for (std::size_t k = 0; k < all.size(); ++k)
+    g.move_lengths[k] = std::sqrt(double(all[k].dx * all[k].dx + all[k].dy * all[k].dy + all[k].dz * all[k].dz));
+  build_edges(map, g);
+  // Moves in a voxel world know no step rule; a 2D map's may come from a map plugin.
+  if (!g.volumetric) check_reversible(map, g);
+  if (!terrain) return g;
+  g.terrain_positions.resize(static_cast<std::size_t>(n));
+  for (NodeId id = 0; id < n; ++id) g.terrain_positions[id] = map.position(g.cell(id));
+  g.terrain_costs.resize(g.targets.size());
+  for (NodeId id = 0; id < n; ++id)
+    for (EdgeId e = g.edges_begin(id); e < g.edges_end(id); ++e) g.terrain_costs[e] = g.distance(id, g.targets[e]);
   return g;
 }
 

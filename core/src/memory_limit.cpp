@@ -12,20 +12,21 @@
 namespace aco {
 namespace {
 
-// Peak resident memory of acoplan (/usr/bin/time -v; 10 ants, 3 iterations, 2 threads) on
-// random Moving AI maps with 20 % obstacles grew by 130, 182 and 287 bytes per cell from
-// 512x512 to 2048x2048 with the 4-, 8- and 16-neighbourhood. With the edges those maps have
-// (about 2.6, 4.2 and 7.5 per cell) that is 48 bytes per cell plus 32 per edge: per edge the
-// graph's target, cost and reverse (4 + 8 + 4) and the colony's pheromone and heuristic (8 + 8);
-// per cell the grid, the graph's offsets, move mask and position (1 + 4 + 2 + 24) and the
-// searches' per-node arrays. A terrain map adds 17 bytes per cell (height, slope, reason); on an
-// obstacle-free map (all edges present) the 8-neighbourhood grew by 303 bytes per cell from
-// 512x512 to 2048x2048 (peak 1.25 GB), under this estimate's 320. The estimate counts every edge
-// present and rounds the per-cell part up to cover terrains.
-constexpr std::uint64_t kBytesPerCell = 64;
-constexpr std::uint64_t kBytesPerEdge = 32;
-// A voxel world's edge stores its target and its move (4 + 1; aco/graph.hpp says why), and the
-// colony's pheromone and float heuristic (8 + 4); rounded up.
+// Peak resident memory of acoplan (GNU time; 10 ants, 3 iterations, 2 threads) on obstacle-free
+// maps, where every edge is present, grew by 129, 212 and 333 bytes per cell from 512x512 to
+// 2048x2048 with the 4-, 8- and 16-neighbourhood: 46 bytes per cell and 21 per edge. Per edge the
+// graph's target and move (4 + 1; aco/graph.hpp says why) and the colony's pheromone and float
+// heuristic (8 + 4); per cell the grid, the graph's offsets and move mask (1 + 4 + 4) and the
+// searches' per-node arrays. Rounded up to 48 and 24. A terrain adds per cell its height, slope
+// and reason (17 bytes) and the position the graph keeps (24), and per edge the step's length (8).
+// The estimate counts every edge present.
+constexpr std::uint64_t kBytesPerCell = 48;
+constexpr std::uint64_t kBytesPerEdge = 24;
+constexpr std::uint64_t kTerrainBytesPerCell = 48;
+constexpr std::uint64_t kTerrainBytesPerEdge = 8;
+// A voxel world: 4 + 1 bytes per edge in the graph, 8 + 4 in the colony, rounded up; per voxel
+// as a grid's cell, rounded up.
+constexpr std::uint64_t kBytesPerVoxel = 64;
 constexpr std::uint64_t kBytesPerVoxelEdge = 20;
 constexpr std::uint64_t kFallbackLimit = std::uint64_t(4) << 30;
 
@@ -38,24 +39,44 @@ std::string limit_origin() {
   return g_limit.load() ? "set by " + option : "the default, 3/4 of the available memory; change it with " + option;
 }
 
-}  // namespace
-
-std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood) {
-  return planning_memory_estimate(width, height, 1, neighbourhood);
-}
-
-std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height, std::int64_t depth,
-                                       Neighbourhood neighbourhood) {
+std::uint64_t estimate(std::int64_t width, std::int64_t height, std::int64_t depth, Neighbourhood neighbourhood,
+                       bool terrain) {
   if (width <= 0 || height <= 0 || depth <= 0) return 0;
   constexpr auto kMax = std::numeric_limits<std::uint64_t>::max();
   // int by int fits in 62 bits; times a depth or the bytes per cell it may not, so saturate.
   std::uint64_t cells = std::uint64_t(width) * std::uint64_t(height);
   if (cells > kMax / std::uint64_t(depth)) return kMax;
   cells *= std::uint64_t(depth);
-  const std::uint64_t per_edge = volumetric(neighbourhood) ? kBytesPerVoxelEdge : kBytesPerEdge;
-  const std::uint64_t per_cell = kBytesPerCell + per_edge * static_cast<std::uint64_t>(neighbourhood);
+  const bool world = volumetric(neighbourhood);
+  const std::uint64_t per_edge = world ? kBytesPerVoxelEdge : kBytesPerEdge + (terrain ? kTerrainBytesPerEdge : 0);
+  const std::uint64_t per_cell = (world ? kBytesPerVoxel : kBytesPerCell + (terrain ? kTerrainBytesPerCell : 0)) +
+                                 per_edge * static_cast<std::uint64_t>(neighbourhood);
   if (cells > kMax / per_cell) return kMax;
   return cells * per_cell;
+}
+
+void refuse_above_limit(std::uint64_t estimate, std::int64_t width, std::int64_t height, std::int64_t depth,
+                        Neighbourhood neighbourhood, const std::string& name) {
+  const std::uint64_t limit = memory_limit();
+  if (estimate <= limit) return;
+  const bool world = depth > 1 || volumetric(neighbourhood);
+  const std::string size = std::to_string(width) + "x" + std::to_string(height) +
+                           (world ? std::string("x") + std::to_string(depth) + " voxel world" : " map");
+  throw Error(name + ": a " + size + " needs about " + format_bytes(estimate) + " to plan on (estimate with the " +
+              std::to_string(static_cast<int>(neighbourhood)) + "-neighbourhood), more than the memory limit of " +
+              format_bytes(limit) + " (" + limit_origin() + "): refused");
+}
+
+}  // namespace
+
+std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood,
+                                       bool terrain) {
+  return estimate(width, height, 1, neighbourhood, terrain);
+}
+
+std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height, std::int64_t depth,
+                                       Neighbourhood neighbourhood) {
+  return estimate(width, height, depth, neighbourhood, false);
 }
 
 std::uint64_t default_memory_limit() {
@@ -73,25 +94,17 @@ std::uint64_t memory_limit() {
 }
 
 void check_planning_memory(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood,
-                           const std::string& name) {
-  check_planning_memory(width, height, 1, neighbourhood, name);
+                           const std::string& name, bool terrain) {
+  refuse_above_limit(estimate(width, height, 1, neighbourhood, terrain), width, height, 1, neighbourhood, name);
 }
 
 void check_planning_memory(std::int64_t width, std::int64_t height, std::int64_t depth, Neighbourhood neighbourhood,
                            const std::string& name) {
-  const std::uint64_t estimate = planning_memory_estimate(width, height, depth, neighbourhood);
-  const std::uint64_t limit = memory_limit();
-  if (estimate <= limit) return;
-  const bool world = depth > 1 || volumetric(neighbourhood);
-  const std::string size = std::to_string(width) + "x" + std::to_string(height) +
-                           (world ? std::string("x") + std::to_string(depth) + " voxel world" : " map");
-  throw Error(name + ": a " + size + " needs about " + format_bytes(estimate) + " to plan on (estimate with the " +
-              std::to_string(static_cast<int>(neighbourhood)) + "-neighbourhood), more than the memory limit of " +
-              format_bytes(limit) + " (" + limit_origin() + "): refused");
+  refuse_above_limit(estimate(width, height, depth, neighbourhood, false), width, height, depth, neighbourhood, name);
 }
 
 void check_voxel_graph_memory(std::int64_t voxels, std::int64_t edges, const std::string& name) {
-  const std::uint64_t estimate = std::uint64_t(std::max<std::int64_t>(voxels, 0)) * kBytesPerCell +
+  const std::uint64_t estimate = std::uint64_t(std::max<std::int64_t>(voxels, 0)) * kBytesPerVoxel +
                                  std::uint64_t(std::max<std::int64_t>(edges, 0)) * kBytesPerVoxelEdge;
   const std::uint64_t limit = memory_limit();
   if (estimate <= limit) return;

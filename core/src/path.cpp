@@ -56,7 +56,7 @@ bool on_free_voxel(const Map& map, const Eigen::Vector3d& p) {
 Waypoints to_waypoints(const Graph& graph, std::span<const NodeId> path) {
   Waypoints points;
   points.reserve(path.size());
-  for (NodeId n : path) points.push_back(graph.positions[n]);
+  for (NodeId n : path) points.push_back(graph.position(n));
   return points;
 }
 
@@ -110,12 +110,12 @@ std::string waypoint_problem(const Graph& graph, NodeId start, NodeId goal, std:
     if (!points[i].allFinite()) return which + "is not finite";
     if (!on_free_cell(graph, points[i])) return which + "lies on no free cell";
   }
-  if (points.front() != graph.positions[start])
+  if (points.front() != graph.position(start))
     return "the first waypoint, " + to_text(points.front()) + ", is not the start " +
-           graph.map->describe(graph.cell(start)) + " at " + to_text(graph.positions[start]);
-  if (points.back() != graph.positions[goal])
+           graph.map->describe(graph.cell(start)) + " at " + to_text(graph.position(start));
+  if (points.back() != graph.position(goal))
     return "the last waypoint, " + to_text(points.back()) + ", is not the goal " +
-           graph.map->describe(graph.cell(goal)) + " at " + to_text(graph.positions[goal]);
+           graph.map->describe(graph.cell(goal)) + " at " + to_text(graph.position(goal));
   return "";
 }
 

@@ -18,17 +18,17 @@ std::vector<Eigen::Matrix<double, D, 1>> forces_in(const Graph& graph, NodeId st
                                                    const PotentialFieldGains& gains) {
   using Vector = Eigen::Matrix<double, D, 1>;
   std::vector<Vector> forces(graph.num_nodes(), Vector::Zero());
-  const auto planar = [&](NodeId n) -> Vector { return graph.positions[n].template head<D>(); };
+  const auto planar = [&](NodeId n) -> Vector { return graph.position(n).template head<D>(); };
 
-  const double z0 = D == 2 ? graph.positions[start].z() : 0.0;
+  const double z0 = D == 2 ? graph.position(start).z() : 0.0;
   double z_max = z0;
   if constexpr (D == 2)
     for (NodeId n = 0; n < graph.num_nodes(); ++n)
-      if (graph.passable(n)) z_max = std::max(z_max, graph.positions[n].z());
+      if (graph.passable(n)) z_max = std::max(z_max, graph.position(n).z());
   // Weight of cell m as a source of repulsion: 0 at or below the start height.
   std::vector<double> weight(graph.num_nodes(), 0.0);
   for (NodeId m = 0; m < graph.num_nodes(); ++m) {
-    const double z = D == 2 ? graph.positions[m].z() : 0.0;
+    const double z = D == 2 ? graph.position(m).z() : 0.0;
     weight[m] = !graph.passable(m) ? 1.0 : z > z0 ? (z - z0) / (z_max - z0) : 0.0;
   }
 
@@ -82,7 +82,7 @@ PotentialField::PotentialField(const Graph& graph, NodeId start, NodeId goal, co
 double PotentialField::along(EdgeId e) const {
   const NodeId from = graph_.source(e);
   if (!graph_.volumetric) return planar_[from].dot(planar_direction(graph_, e));
-  return spatial_[from].dot((graph_.positions[graph_.targets[e]] - graph_.positions[from]).normalized());
+  return spatial_[from].dot((graph_.position(graph_.targets[e]) - graph_.position(from)).normalized());
 }
 
 double PotentialField::strength(EdgeId e) const {

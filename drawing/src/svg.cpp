@@ -268,7 +268,7 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
   out << "</g>\n";
   const double line = std::max(0.08, 2.0 / scale);
   std::vector<std::pair<double, double>> points;
-  for (NodeId n : pic.grid_path) points.emplace_back(graph.positions[n].x() / unit, graph.positions[n].y() / unit);
+  for (NodeId n : pic.grid_path) points.emplace_back(graph.position(n).x() / unit, graph.position(n).y() / unit);
   std::ostringstream style;
   style << "id=\"grid-path\" stroke=\"#1565c0\" stroke-width=\"" << line << "\" stroke-linejoin=\"round\"";
   polyline(out, points, style.str().c_str());
@@ -280,7 +280,7 @@ void draw_map(std::ostream& out, const Graph& graph, const RunPicture& pic, doub
   polyline(out, points, style.str().c_str());
   for (const auto& [node, colour] : {std::pair{pic.start, kStartColour}, std::pair{pic.goal, kGoalColour}}) {
     if (!ends) break;
-    const auto& p = graph.positions[node];
+    const auto& p = graph.position(node);
     out << "<circle cx=\"" << p.x() / unit << "\" cy=\"" << p.y() / unit << "\" r=\"" << std::max(0.35, 4.0 / scale)
         << "\" fill=\"" << colour << "\"/>\n";
   }

@@ -97,7 +97,7 @@ std::string pipeline_lines(const PlanReport& report) {
 // The measures of one run.
 nlohmann::json run_json(const aco::Graph& graph, const PlanRun& o) {
   bool three_d = graph.volumetric;
-  for (const auto& p : graph.positions) three_d = three_d || p.z() != 0.0;
+  for (const auto& p : graph.terrain_positions) three_d = three_d || p.z() != 0.0;
   nlohmann::json j;
   j["solved"] = o.solved();
   j["length"] = o.solved() ? nlohmann::json(o.length) : nlohmann::json(nullptr);

@@ -32,6 +32,8 @@ class Object {
   // read-only copy. A Python exception is thrown as an Error with the py::error_already_set nested.
   virtual void call(const char* method, const Context& context, const Iteration* iteration,
                     std::span<double> field) = 0;
+  // A run begins: the arrays made from the last run's graph (its step lengths, ...) are made again.
+  virtual void new_run() = 0;
   virtual bool has(const char* method) const = 0;
   // bool(object.attribute), calling it if it is a method; false if there is none.
   virtual bool flag(const char* attribute) const = 0;
@@ -52,6 +54,7 @@ class Adapter : public Interface {
   // The object's optional begin_run(self, context): where it resets what it keeps from a run, since
   // one object may serve several runs (the lifecycle of docs/writing-plugins.md).
   void begin_run(const Context& context) override {
+    object_->new_run();
     if (has_begin_run_) object_->call("begin_run", context, nullptr, {});
   }
   std::unique_ptr<Object> object_;

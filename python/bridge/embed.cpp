@@ -17,8 +17,6 @@ using namespace py::literals;
 namespace aco::python {
 namespace {
 
-static_assert(sizeof(Eigen::Vector3d) == 3 * sizeof(double), "positions are read as an n x 3 array");
-
 // A process without Python (acoplan, acobench's workers) gets an interpreter on first use, kept
 // until exit: finalising it would break numpy, which cannot be imported twice.
 void start_interpreter() {
@@ -130,13 +128,13 @@ class PythonObject final : public Object {
     if (!Py_IsInitialized()) {  // a Python process shutting down: nothing left to free into
       object_.release();
       namespace_.release();
-      cells_.release();
+      for (py::object* kept : {&cells_, &costs_, &reverse_, &positions_}) kept->release();
       return;
     }
     py::gil_scoped_acquire gil;
     object_ = py::object();
     namespace_ = py::object();
-    cells_ = py::object();
+    for (py::object* kept : {&cells_, &costs_, &reverse_, &positions_}) *kept = py::object();
   }
 
   void call(const char* method, const Context& context, const Iteration* iteration, std::span<double> field) override {
@@ -157,6 +155,11 @@ class PythonObject final : public Object {
       throw Error(label_ + "." + method +
                   "() kept a view made of one of its arrays (a slice, a reshape, ...) past the call, where the "
                   "engine reuses or frees that memory; keep a copy (np.array(...)) instead");
+  }
+
+  void new_run() override {
+    py::gil_scoped_acquire gil;
+    costs_ = reverse_ = positions_ = py::none();  // another run may plan on another graph of the same size
   }
 
   bool has(const char* method) const override {
@@ -193,14 +196,12 @@ class PythonObject final : public Object {
   py::object make_context(const Context& c, LentArrays& lent) {
     const Graph& g = *c.graph;
     if (cells_.is_none() || width_ != g.width || height_ != g.height) make_cells(g);
+    if (costs_.is_none() || nodes_ != g.num_nodes() || edges_ != g.num_edges()) make_computed_arrays(g);
     const py::object graph = namespace_(
         "width"_a = g.width, "height"_a = g.height, "node_count"_a = g.num_nodes(), "edge_count"_a = g.num_edges(),
-        "offsets"_a = lent.lend(g.offsets), "targets"_a = lent.lend(g.targets), "costs"_a = lent.lend(g.edge_costs),
-        "reverse"_a = g.reverse_edges.empty() ? py::object(py::none()) : py::object(lent.lend(g.reverse_edges)),
-        "positions"_a = lent.lend(g.positions.empty() ? nullptr : g.positions.front().data(),
-                                  {static_cast<py::ssize_t>(g.positions.size()), 3}, false),
-        "cells"_a = cells_, "neighbourhood"_a = static_cast<int>(g.options.neighbourhood),
-        "corner_cutting"_a = g.options.corner_cutting);
+        "offsets"_a = lent.lend(g.offsets), "targets"_a = lent.lend(g.targets), "costs"_a = costs_,
+        "reverse"_a = reverse_, "positions"_a = positions_, "cells"_a = cells_,
+        "neighbourhood"_a = static_cast<int>(g.options.neighbourhood), "corner_cutting"_a = g.options.corner_cutting);
     return namespace_("graph"_a = graph, "start"_a = c.start, "goal"_a = c.goal, "ants"_a = c.ants,
                       "max_iterations"_a = c.max_iterations, "alpha"_a = c.alpha, "beta"_a = c.beta, "seed"_a = c.seed,
                       "iteration"_a = c.iteration);
@@ -219,6 +220,31 @@ class PythonObject final : public Object {
     cells_ = std::move(cells);
     width_ = g.width;
     height_ = g.height;
+  }
+
+  // The graph computes step lengths, reverse edges and positions from its moves and cells instead
+  // of storing them (aco/graph.hpp): made once per run (begin_run()) and kept (copies, not views).
+  void make_computed_arrays(const Graph& g) {
+    py::array_t<double> costs(g.num_edges());
+    py::array_t<std::int32_t> reverse(g.num_edges());
+    py::array_t<double> positions({static_cast<py::ssize_t>(g.num_nodes()), py::ssize_t{3}});
+    auto cost = costs.mutable_unchecked<1>();
+    auto back = reverse.mutable_unchecked<1>();
+    auto at = positions.mutable_unchecked<2>();
+    for (EdgeId e = 0; e < g.num_edges(); ++e) {
+      cost(e) = g.cost(e);
+      back(e) = g.reverse_edge(e);
+    }
+    for (NodeId n = 0; n < g.num_nodes(); ++n) {
+      const Eigen::Vector3d p = g.position(n);
+      for (int k = 0; k < 3; ++k) at(n, k) = p[k];
+    }
+    for (const py::array& array : {py::array(costs), py::array(reverse), py::array(positions)}) make_read_only(array);
+    costs_ = std::move(costs);
+    reverse_ = std::move(reverse);
+    positions_ = std::move(positions);
+    nodes_ = g.num_nodes();
+    edges_ = g.num_edges();
   }
 
   py::object make_ant(const Ant& ant) {
@@ -260,6 +286,8 @@ class PythonObject final : public Object {
   py::object namespace_;  // types.SimpleNamespace
   py::object cells_ = py::none();
   int width_ = 0, height_ = 0;
+  py::object costs_ = py::none(), reverse_ = py::none(), positions_ = py::none();
+  int nodes_ = 0, edges_ = 0;
 };
 
 std::vector<std::string> split(const std::string& text, char separator) {

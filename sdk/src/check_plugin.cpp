@@ -152,8 +152,8 @@ void check_typed(PluginRegistry& registry, const PluginFile& plugin, const Optio
       const auto& problems_found = one.trace.problems;
       // In a voxel world, what a plugin written for grids gets wrong.
       const std::string hint = prefix.empty() ? ""
-                                              : " [in a voxel world Graph::edge_costs and reverse_edges are empty: "
-                                                "use cost(e) and reverse_edge(e); cells have z, moves dz]";
+                                              : " [in a voxel world cells have z and moves dz: use cost(e), "
+                                                "reverse_edge(e) and position(n)]";
       result(
           prefix + "values",
           problems_found.empty()

@@ -27,7 +27,7 @@ std::optional<Cell> centre_of(const Graph& g, const Eigen::Vector3d& p) {
   if (!in(p.x(), g.width) || !in(p.y(), g.height) || !in(p.z(), g.depth)) return std::nullopt;
   const Cell c{static_cast<int>(std::lround(p.x())), static_cast<int>(std::lround(p.y())),
                g.volumetric ? static_cast<int>(std::lround(p.z())) : 0};
-  if (g.positions[g.node(c)] != p) return std::nullopt;
+  if (g.position(g.node(c)) != p) return std::nullopt;
   return c;
 }
 
@@ -147,8 +147,8 @@ void run_slot(Smoother& smoother, const Problem& problem, Trace& trace) {
       trace.add_checked(std::span<const double>(p.data(), 3), what + ": waypoint coordinate", -INFINITY);
     const double length = polyline_length(points);
     trace.add_checked(std::span(&length, 1), what + ": length");
-    if ((points.front() - problem.graph.positions[path.front()]).norm() > 1e-9 ||
-        (points.back() - problem.graph.positions[path.back()]).norm() > 1e-9)
+    if ((points.front() - problem.graph.position(path.front())).norm() > 1e-9 ||
+        (points.back() - problem.graph.position(path.back())).norm() > 1e-9)
       trace.problem(what + " does not begin at the path's first node and end at its last");
     // As plan() checks them: every waypoint on a free cell (a free voxel in 3D). And where two
     // consecutive waypoints are cell centres, the straight line between them is free by the
@@ -175,7 +175,7 @@ void run_slot(Smoother& smoother, const Problem& problem, Trace& trace) {
 void run_slot(LocalPlanner& planner, const Problem& problem, Trace& trace) {
   const std::vector<NodeId> shortest = problem.shortest_path();
   std::vector<Eigen::Vector2d> path;
-  for (const NodeId n : shortest) path.push_back(problem.graph.positions[n].head<2>());
+  for (const NodeId n : shortest) path.push_back(problem.graph.position(n).head<2>());
   const double sensor_range = 3.0;
   struct Drive {
     std::string name;

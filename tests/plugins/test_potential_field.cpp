@@ -60,7 +60,7 @@ TEST_CASE("potential field: on a flat empty map the force is k towards the goal"
       CHECK(forces[n].norm() == 0.0);
       continue;
     }
-    const Eigen::Vector2d to_goal = (g.positions[g.node(goal)] - g.positions[n]).head<2>().normalized();
+    const Eigen::Vector2d to_goal = (g.position(g.node(goal)) - g.position(n)).head<2>().normalized();
     CHECK(forces[n].norm() == Approx(2.0));
     CHECK(forces[n].normalized().dot(to_goal) == Approx(1.0));
   }

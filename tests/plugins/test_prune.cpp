@@ -47,15 +47,15 @@ int check_pruned(const aco::Graph& g, const std::vector<aco::NodeId>& path, cons
                  std::size_t lookahead = 0) {
   REQUIRE(!path.empty());
   REQUIRE(!pruned.empty());
-  CHECK(pruned.front() == g.positions[path.front()]);
-  CHECK(pruned.back() == g.positions[path.back()]);
+  CHECK(pruned.front() == g.position(path.front()));
+  CHECK(pruned.back() == g.position(path.back()));
   const double grid = aco::path_length(g, path);
   CHECK(aco::polyline_length(pruned) <= grid + 1e-9);
   // Waypoint k sits at path index index[k].
   std::vector<std::size_t> index;
   std::size_t from = 0;
   for (const auto& p : pruned) {
-    while (from < path.size() && g.positions[path[from]] != p) ++from;
+    while (from < path.size() && g.position(path[from]) != p) ++from;
     REQUIRE(from < path.size());
     index.push_back(from++);
   }
@@ -289,8 +289,8 @@ TEST_CASE("prune with clearance: every shortcut passes that far from blocked cel
     REQUIRE(best);
     const auto clear = prune(g, best->nodes, {{"clearance", "0.4"}});
     const auto plain = prune(g, best->nodes);
-    CHECK(clear.front() == g.positions[best->nodes.front()]);
-    CHECK(clear.back() == g.positions[best->nodes.back()]);
+    CHECK(clear.front() == g.position(best->nodes.front()));
+    CHECK(clear.back() == g.position(best->nodes.back()));
     CHECK(clear.size() < best->nodes.size());  // still shortcuts
     CHECK(aco::polyline_length(clear) <= best->length + 1e-9);
     for (std::size_t i = 1; i < clear.size(); ++i) CHECK(nearest(map, clear[i - 1], clear[i]) >= 0.4 - 1e-6);

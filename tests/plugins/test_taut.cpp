@@ -50,7 +50,7 @@ TEST_CASE("taut: declared parameters and trivial paths", "[plugin][taut]") {
   CHECK(d.parameters()[2].name == std::string("clearance"));
   const auto map = test::grid({"....", "...."});
   const auto g = aco::build_graph(map, {});
-  CHECK(taut(g, nodes(g, {{1, 1}})) == aco::Waypoints{g.positions[g.node({1, 1})]});
+  CHECK(taut(g, nodes(g, {{1, 1}})) == aco::Waypoints{g.position(g.node({1, 1}))});
   const auto step = nodes(g, {{0, 0}, {1, 1}});
   CHECK(taut(g, step) == aco::to_waypoints(g, step));
   CHECK_THROWS(taut(g, step, {{"rounds", "0"}}));
@@ -182,6 +182,6 @@ TEST_CASE("taut on terrain: shortcuts only where the surface is shorter", "[plug
   REQUIRE(straight);
   const auto rf = taut(gf, straight->nodes);
   CHECK(aco::polyline_length(rf) == Approx(2 * std::hypot(8, 3)).epsilon(1e-12));
-  CHECK(rf.front() == gf.positions[gf.node({0, 0})]);
-  CHECK(rf.back() == gf.positions[gf.node({8, 3})]);
+  CHECK(rf.front() == gf.position(gf.node({0, 0})));
+  CHECK(rf.back() == gf.position(gf.node({8, 3})));
 }

@@ -3,6 +3,7 @@
 // Node id = (z * height + y) * width + x for every cell (z = 0 but in voxel worlds); blocked
 // cells simply have no edges.
 #include <Eigen/Core>
+#include <array>
 #include <boost/config.hpp>
 #include <cstdint>
 #include <span>
@@ -44,11 +45,12 @@ struct Move {
 // in 3D the 6 faces, then the 12 edges, then the 8 corners.
 std::span<const Move> moves(Neighbourhood neighbourhood);
 
-// A voxel world's graph has up to 26 edges per voxel: stored like a grid's, 16 bytes per edge
-// would make a 256x256x128 world's graph alone 3 GB. So in a voxel world an edge stores only its
-// target and its move, and its cost and reverse are computed from the move (cost(),
-// reverse_edge()); edge_costs and reverse_edges are empty there. On grids and terrains, where a
-// step's cost depends on heights, both are stored as before.
+// Memory goes per cell, not per edge: on a 2048x2048 map the graph has 30 million edges. So an
+// edge stores only its target and its move (5 bytes); its step length and its reverse edge are
+// computed from the move (cost(), reverse_edge()), and a node's position from its cell
+// (position()). Only a map whose cell centres are not at their coordinates (a terrain's heights
+// and cell size) stores positions and step lengths: terrain_positions and terrain_costs, empty
+// on every other map.
 struct BOOST_SYMBOL_VISIBLE Graph {
   const Map* map = nullptr;
   GraphOptions options;
@@ -58,11 +60,11 @@ struct BOOST_SYMBOL_VISIBLE Graph {
   bool volumetric = false;  // a voxel world's graph (6-, 18- or 26-neighbourhood)
   std::vector<EdgeId> offsets;  // edges of node n: [offsets[n], offsets[n+1])
   std::vector<NodeId> targets;  // per edge
-  std::vector<double> edge_costs;  // per edge, Euclidean length between cell positions; empty in 3D
-  std::vector<EdgeId> reverse_edges;  // per edge: the edge target->source; empty in 3D
-  std::vector<std::uint8_t> edge_moves;  // per edge in 3D: its index in moves(); empty in 2D
-  std::vector<Eigen::Vector3d> positions;  // per node
+  std::vector<std::uint8_t> edge_moves;  // per edge: its index in moves()
   std::vector<std::uint32_t> move_mask;  // per node: which moves (in the graph's move order) have an edge
+  std::vector<Eigen::Vector3d> terrain_positions;  // per node on a terrain (Map::position()); else empty
+  std::vector<double> terrain_costs;  // per edge on a terrain: the distance between its ends; else empty
+  std::array<double, 26> move_lengths{};  // per move in moves(): its Euclidean length
 
   int num_nodes() const { return width * height * depth; }
   int num_edges() const { return static_cast<int>(targets.size()); }
@@ -70,10 +72,16 @@ struct BOOST_SYMBOL_VISIBLE Graph {
   EdgeId edges_end(NodeId n) const { return offsets[n + 1]; }
   int degree(NodeId n) const { return offsets[n + 1] - offsets[n]; }
   // The step's Euclidean length (every move here is reversible).
-  double cost(EdgeId e) const { return volumetric ? move_length(edge_moves[e]) : edge_costs[e]; }
+  double cost(EdgeId e) const { return terrain_costs.empty() ? move_lengths[edge_moves[e]] : terrain_costs[e]; }
   // The edge target->source (every move here is reversible).
   EdgeId reverse_edge(EdgeId e) const;
   NodeId source(EdgeId e) const { return targets[reverse_edge(e)]; }
+  // The position of the node's cell centre: Map::position() of its cell.
+  Eigen::Vector3d position(NodeId n) const {
+    if (!terrain_positions.empty()) return terrain_positions[n];
+    const Cell c = cell(n);
+    return {double(c.x), double(c.y), double(c.z)};
+  }
 
   NodeId node(Cell c) const { return (c.z * height + c.y) * width + c.x; }
   Cell cell(NodeId n) const {
@@ -87,9 +95,7 @@ struct BOOST_SYMBOL_VISIBLE Graph {
   EdgeId find_edge(NodeId a, NodeId b) const;
   // Edge leaving `from` by the move (dx, dy, dz), or -1; O(1), no division.
   EdgeId edge_by_move(NodeId from, int dx, int dy, int dz = 0) const;
-  double distance(NodeId a, NodeId b) const { return (positions[a] - positions[b]).norm(); }
-  // The length of the 3D move with index k in moves(): 1, sqrt 2 or sqrt 3.
-  static double move_length(int k);
+  double distance(NodeId a, NodeId b) const { return (position(a) - position(b)).norm(); }
 };
 
 // Builds the graph of a map. A voxel world (Map::volumetric()) takes the 6-, 18- or

@@ -16,9 +16,10 @@ namespace aco {
 // Bytes that planning on a width x height map takes with this neighbourhood, every cell free
 // (the worst case): the grid or terrain, the graph, the colony's per-edge fields (pheromone and
 // heuristic) and the per-node search arrays. Measured, not derived from sizeof alone (see
-// memory_limit.cpp). Exact in 64 bits for any int width and height.
+// memory_limit.cpp). Exact in 64 bits for any int width and height. A terrain's graph stores
+// positions and step lengths (aco/graph.hpp): more.
 BOOST_SYMBOL_VISIBLE std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height,
-                                                            Neighbourhood neighbourhood);
+                                                            Neighbourhood neighbourhood, bool terrain = false);
 // The same for a voxel world of `depth` layers (a 6-, 18- or 26-neighbourhood; a voxel world's
 // graph stores less per edge, aco/graph.hpp).
 BOOST_SYMBOL_VISIBLE std::uint64_t planning_memory_estimate(std::int64_t width, std::int64_t height, std::int64_t depth,
@@ -33,7 +34,7 @@ BOOST_SYMBOL_VISIBLE std::uint64_t default_memory_limit();
 // Refuses (Error naming `name`, the estimate and the limit) a map whose planning would need
 // more than the limit.
 BOOST_SYMBOL_VISIBLE void check_planning_memory(std::int64_t width, std::int64_t height, Neighbourhood neighbourhood,
-                                                const std::string& name);
+                                                const std::string& name, bool terrain = false);
 BOOST_SYMBOL_VISIBLE void check_planning_memory(std::int64_t width, std::int64_t height, std::int64_t depth,
                                                 Neighbourhood neighbourhood, const std::string& name);
 

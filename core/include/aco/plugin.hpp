@@ -49,8 +49,10 @@ namespace aco {
 //     updates_by_node() and uses_walk().
 // 14: voxel worlds: Cell::z, Map::depth() and volumetric(), Graph's depth, 26-move masks, cost()
 //     and reverse_edge(), Strategy::supports_voxel_worlds().
+// 15: Graph stores per edge only its target and move: cost(), reverse_edge() and position()
+//     compute the rest (edge_costs, reverse_edges and positions removed; terrains keep theirs).
 // A literal, so the record can spell it; kPluginAbiVersion is the one to use in code.
-#define ACO_FRAMEWORK_PLUGIN_ABI 14
+#define ACO_FRAMEWORK_PLUGIN_ABI 15
 inline constexpr std::uint32_t kPluginAbiVersion = ACO_FRAMEWORK_PLUGIN_ABI;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";

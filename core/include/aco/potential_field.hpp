@@ -67,7 +67,7 @@ class BOOST_SYMBOL_VISIBLE PotentialField {
 
 // Unit direction of edge e in the map plane.
 inline Eigen::Vector2d planar_direction(const Graph& graph, EdgeId e) {
-  return (graph.positions[graph.targets[e]] - graph.positions[graph.source(e)]).head<2>().normalized();
+  return (graph.position(graph.targets[e]) - graph.position(graph.source(e))).head<2>().normalized();
 }
 
 }  // namespace aco

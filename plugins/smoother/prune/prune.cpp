@@ -44,7 +44,7 @@ class PruneSmoother final : public aco::Smoother {
            return aco::line_of_sight(*g.map, from, to, g.options.corner_cutting) &&
                   (p_.clearance <= 0.0 || aco::keeps_clear(*g.map, from, to, p_.clearance));
          }))
-      points.push_back(g.positions[path[k]]);
+      points.push_back(g.position(path[k]));
     return points;
   }
 

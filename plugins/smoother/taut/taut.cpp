@@ -38,7 +38,7 @@ const aco::SettingsTable<Parameters> kParams({
 bool planar(const aco::Graph& g, std::span<const aco::NodeId> path) {
   return std::all_of(path.begin(), path.end(), [&g](aco::NodeId n) {
     const aco::Cell c = g.cell(n);
-    return g.positions[n] == Eigen::Vector3d(c.x, c.y, 0.0);
+    return g.position(n) == Eigen::Vector3d(c.x, c.y, 0.0);
   });
 }
 
@@ -79,9 +79,9 @@ aco::Waypoints pull_over_nodes(const aco::Graph& g, std::span<const aco::NodeId>
   for (std::size_t k = 1; k < path.size(); ++k) along[k] = along[k - 1] + g.distance(path[k - 1], path[k]);
   const aco::Map& map = *g.map;
   const auto segment = [&](std::size_t i, std::size_t j) {
-    if (!surface) return aco::Waypoints{g.positions[path[j]]};
+    if (!surface) return aco::Waypoints{g.position(path[j])};
     aco::Waypoints points = over_surface(map, g.cell(path[i]), g.cell(path[j]));
-    points.back() = g.positions[path[j]];
+    points.back() = g.position(path[j]);
     return points;
   };
   const auto can_join = [&](std::size_t i, std::size_t j) {
@@ -90,12 +90,12 @@ aco::Waypoints pull_over_nodes(const aco::Graph& g, std::span<const aco::NodeId>
     if (clearance > 0.0 && !aco::keeps_clear(map, from, to, clearance)) return false;
     if (!surface) return true;  // a straight segment in the plane is never longer (triangle inequality)
     aco::Waypoints points = segment(i, j);
-    points.insert(points.begin(), g.positions[path[i]]);
+    points.insert(points.begin(), g.position(path[i]));
     // Equal lengths still join, to drop the nodes of a straight run.
     return aco::polyline_length(points) <= (along[j] - along[i]) * (1 + 1e-12);
   };
   const std::vector<std::size_t> kept = aco::greedy_shortcuts(path.size(), 0, can_join);
-  aco::Waypoints points{g.positions[path[kept.front()]]};
+  aco::Waypoints points{g.position(path[kept.front()])};
   for (std::size_t k = 1; k < kept.size(); ++k)
     for (const Eigen::Vector3d& p : segment(kept[k - 1], kept[k])) {
       // A sample where the surface keeps its slope adds nothing but a waypoint.
@@ -180,8 +180,8 @@ class TautSmoother final : public aco::Smoother {
       add_touched_cells(best, cells);
     }
     // Exactly the nodes' positions at the ends, whatever the search's arithmetic.
-    best.front() = g.positions[path.front()];
-    best.back() = g.positions[path.back()];
+    best.front() = g.position(path.front());
+    best.back() = g.position(path.back());
     return best;
   }
 

@@ -6,10 +6,12 @@
 #include <boost/multiprecision/cpp_int.hpp>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
+#include "aco/parallel.hpp"
 
 namespace aco {
 namespace {
@@ -41,7 +43,8 @@ constexpr std::array<Move, 26> kMoves3d = {
 
 // The cells a move's segment passes through besides its two ends, and whether touching
 // them only at a corner (diagonal moves) is what they guard.
-bool move_clear(const Map& map, Cell from, Move m, bool corner_cutting) {
+template <class M>
+bool move_clear(const M& map, Cell from, Move m, bool corner_cutting) {
   const int adx = m.dx < 0 ? -m.dx : m.dx;
   const int ady = m.dy < 0 ? -m.dy : m.dy;
   if (adx + ady == 1) return true;
@@ -58,7 +61,8 @@ bool move_clear(const Map& map, Cell from, Move m, bool corner_cutting) {
 
 // A 3D move without corner cutting: every voxel of the box it spans is free (the two ends are
 // checked by the caller).
-bool box_clear(const Map& map, Cell from, Move m) {
+template <class M>
+bool box_clear(const M& map, Cell from, Move m) {
   for (int x = 0; x <= (m.dx != 0 ? 1 : 0); ++x)
     for (int y = 0; y <= (m.dy != 0 ? 1 : 0); ++y)
       for (int z = 0; z <= (m.dz != 0 ? 1 : 0); ++z)
@@ -139,12 +143,15 @@ void check_neighbourhood_fits(const Map& map, const GraphOptions& options) {
 }
 
 // Whether a cell's move k leads to a free cell by the neighbourhood's rule.
-bool move_allowed(const Map& map, const Graph& g, Cell c, int k) {
-  const Move& m = moves(g.options.neighbourhood)[k];
+template <class M>
+bool move_allowed(const M& map, const Graph& g, Cell c, const Move& m, int k) {
   const Cell to{c.x + m.dx, c.y + m.dy, c.z + m.dz};
   if (!map.passable(to)) return false;
   if (g.volumetric) return g.options.corner_cutting || k < 6 || box_clear(map, c, m);
-  return move_clear(map, c, m, g.options.corner_cutting) && map.step_allowed(c, to);
+  if (!move_clear(map, c, m, g.options.corner_cutting)) return false;
+  // A plain grid keeps Map's step rule, which allows every step (OccupancyGrid is final).
+  if constexpr (std::is_same_v<M, OccupancyGrid>) return true;
+  return map.step_allowed(c, to);
 }
 
 // A terrain's cell centres are not at their coordinates (heights, cell size): only there are
@@ -157,21 +164,41 @@ bool places_cells_elsewhere(const Map& map, const Graph& g) {
   return false;
 }
 
+// Each node's moves (move_mask). Over nodes in parallel where the map is known to answer
+// passable() from several threads at once (a plain grid, whose calls are not virtual here
+// either); a map plugin's map is asked from one thread.
+template <class M>
+void mark_moves(const M& map, Graph& g, bool in_parallel) {
+  const auto all = moves(g.options.neighbourhood);
+  const int count = static_cast<int>(all.size());
+  const auto mark = [&](int first_row, int end_row) {  // rows of all layers: z * height + y
+    for (int row = first_row; row < end_row; ++row)
+      for (int x = 0; x < g.width; ++x) {
+        const Cell c{x, row % g.height, row / g.height};
+        std::uint32_t mask = 0;
+        if (map.passable(c))
+          for (int k = 0; k < count; ++k)
+            if (move_allowed(map, g, c, all[k], k)) mask |= 1u << k;
+        g.move_mask[static_cast<std::size_t>(row) * g.width + x] = mask;
+      }
+  };
+  const int rows = g.height * g.depth;
+  if (!in_parallel) return mark(0, rows);
+  aco::parallel_for(tbb::blocked_range<int>(0, rows, 16),
+                    [&](const tbb::blocked_range<int>& r) { mark(r.begin(), r.end()); });
+}
+
 // Targets and moves, in move order per node.
 void build_edges(const Map& map, Graph& g) {
   const auto all = moves(g.options.neighbourhood);
   const NodeId n = g.num_nodes();
+  if (const auto* grid = dynamic_cast<const OccupancyGrid*>(&map))
+    mark_moves(*grid, g, true);
+  else
+    mark_moves(map, g, false);
   // One pass to count, one to fill: the edges would otherwise grow a vector of tens or hundreds
   // of millions by doubling, twice its size at the peak.
-  for (NodeId id = 0; id < n; ++id) {
-    const Cell c = g.cell(id);
-    std::uint32_t mask = 0;
-    if (map.passable(c))
-      for (int k = 0; k < static_cast<int>(all.size()); ++k)
-        if (move_allowed(map, g, c, k)) mask |= 1u << k;
-    g.move_mask[id] = mask;
-    g.offsets[id + 1] = g.offsets[id] + std::popcount(mask);
-  }
+  for (NodeId id = 0; id < n; ++id) g.offsets[id + 1] = g.offsets[id] + std::popcount(g.move_mask[id]);
   if (g.volumetric) check_voxel_graph_memory(n, g.offsets[n], map.name());
   g.targets.resize(static_cast<std::size_t>(g.offsets[n]));
   g.edge_moves.resize(g.targets.size());
@@ -191,9 +218,14 @@ void build_edges(const Map& map, Graph& g) {
 // downhill); the engine needs reversible edges for node-based pheromone, so say so instead of
 // failing later.
 void check_reversible(const Map& map, const Graph& g) {
+  const auto all = moves(g.options.neighbourhood);
+  std::array<int, 16> opposite{};
+  for (std::size_t k = 0; k < all.size(); ++k)
+    for (std::size_t j = 0; j < all.size(); ++j)
+      if (all[j].dx == -all[k].dx && all[j].dy == -all[k].dy) opposite[k] = static_cast<int>(j);
   for (NodeId id = 0; id < g.num_nodes(); ++id)
     for (EdgeId e = g.edges_begin(id); e < g.edges_end(id); ++e)
-      if (g.reverse_edge(e) < 0)
+      if (!(g.move_mask[g.targets[e]] >> opposite[g.edge_moves[e]] & 1u))
         throw Error(map.name() + ": the step " + to_string(g.cell(id)) + " -> " + to_string(g.cell(g.targets[e])) +
                     " is allowed but its reverse is not");
 }

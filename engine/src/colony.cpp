@@ -52,23 +52,24 @@ void append_reversed(const Graph& g, Ant& ant, const Ant& reversed, std::size_t 
 // checking every step keeps that node the only one they share, so the joined path is simple.
 // Reaching the other colony's start is such a meeting. An ant that dies leaves its walk to be met.
 // Both ants then carry the joined path (each in its own direction) into their colony's update.
+// `explorers`: both ants of the pair are explorers (ColonySettings::explorers).
 std::uint64_t construct_pair(const Graph& g, const Colony& forward, const Colony& backward, Ant& fa, Ant& ba,
-                             Scratch& fs, Scratch& bs, Rng& frng, Rng& brng) {
+                             Scratch& fs, Scratch& bs, Rng& frng, Rng& brng, bool explorers) {
   forward.start_walk(fa, fs);
   backward.start_walk(ba, bs);
   std::uint64_t moves = 0;
   bool forward_alive = true, backward_alive = true;
   NodeId meeting = -1;
-  while (meeting < 0 && (forward_alive || backward_alive) && !forward.stops_after(moves)) {
+  while (meeting < 0 && (forward_alive || backward_alive) && !forward.stops_after(moves, explorers)) {
     if (forward_alive) {
-      forward_alive = forward.step(fa, fs, frng);
+      forward_alive = forward.step(fa, fs, frng, explorers);
       if (forward_alive) {
         ++moves;
         if (bs.walked(fa.nodes.back())) meeting = fa.nodes.back();
       }
     }
     if (meeting < 0 && backward_alive) {
-      backward_alive = backward.step(ba, bs, brng);
+      backward_alive = backward.step(ba, bs, brng, explorers);
       if (backward_alive) {
         ++moves;
         if (fs.walked(ba.nodes.back())) meeting = ba.nodes.back();
@@ -241,7 +242,7 @@ ColonyResult run_single(const Graph& graph, NodeId start, NodeId goal, const Col
       Scratch& local = colony.local_scratch();
       for (int k = range.begin(); k != range.end(); ++k) {
         Rng rng = walk_stream(s, it, static_cast<std::uint64_t>(k), static_cast<std::uint64_t>(s.ants));
-        steps[k] = colony.construct(ants[0][k], local, rng);
+        steps[k] = colony.construct(ants[0][k], local, rng, colony.explorer(k));
       }
     });
     return std::accumulate(steps.begin(), steps.end(), std::uint64_t{0});
@@ -263,7 +264,8 @@ ColonyResult run_bidirectional(const Graph& graph, NodeId start, NodeId goal, co
       for (int k = range.begin(); k != range.end(); ++k) {
         const auto a = 2 * static_cast<std::uint64_t>(k), pairs = 2 * static_cast<std::uint64_t>(s.ants);
         Rng frng = walk_stream(s, it, a, pairs), brng = walk_stream(s, it, a + 1, pairs);
-        steps[k] = construct_pair(graph, forward, backward, ants[0][k], ants[1][k], fs, bs, frng, brng);
+        steps[k] =
+            construct_pair(graph, forward, backward, ants[0][k], ants[1][k], fs, bs, frng, brng, forward.explorer(k));
       }
     });
     return std::accumulate(steps.begin(), steps.end(), std::uint64_t{0});
@@ -294,8 +296,8 @@ ColonyResult run_islands(const Graph& graph, NodeId start, NodeId goal, std::spa
       for (int k = range.begin(); k != range.end(); ++k) {
         const auto c = static_cast<std::size_t>(std::upper_bound(first.begin(), first.end(), k) - first.begin() - 1);
         Rng rng = walk_stream(s, it, static_cast<std::uint64_t>(k), static_cast<std::uint64_t>(s.ants));
-        steps[k] =
-            colonies[c]->construct(ants[c][static_cast<std::size_t>(k - first[c])], colonies[c]->local_scratch(), rng);
+        steps[k] = colonies[c]->construct(ants[c][static_cast<std::size_t>(k - first[c])], colonies[c]->local_scratch(),
+                                          rng, colonies[c]->explorer(k - first[c]));
       }
     });
     return std::accumulate(steps.begin(), steps.end(), std::uint64_t{0});

@@ -38,6 +38,10 @@ const SettingsTable<ColonySettings>& colony_table() {
       field("band-search", &S::band_search, "0:64",
             "replace each iteration's shortest walk by the shortest path within this many moves of it, so it takes a "
             "nearby door it missed (0 = none)"),
+      field("explorers", &S::explorers, "0:1",
+            "this share of each iteration's ants walk by the heuristic alone, ignoring the pheromone, and the "
+            "shortest of their walks gets a band search of its own, so that a settled colony still samples other "
+            "corridors (0 = none)"),
       field("walk-limit", &S::walk_limit, "0:1e6",
             "an ant dies after this many times as many moves as the best path so far has steps (0 = no limit)"),
       choice("walk-length", &S::walk_length, {"grid", "line-of-sight"}, {WalkLength::grid, WalkLength::line_of_sight},

@@ -245,8 +245,12 @@ class Colony {
     return std::move(tau_);
   }
   const Ant* best() const { return has_best_ ? &best_ : nullptr; }
-  // Whether a walk stops after `moves` moves: its step limit, or the time limit (Deadline).
-  bool stops_after(std::uint64_t moves) const { return moves >= max_moves_ || deadline_.passed(moves); }
+  // Whether a walk stops after `moves` moves: its step limit (none for an explorer, as for the
+  // restarts twin's walks: a way round through other rooms is long before it is short), or the
+  // time limit (Deadline).
+  bool stops_after(std::uint64_t moves, bool explorer = false) const {
+    return (!explorer && moves >= max_moves_) || deadline_.passed(moves);
+  }
 
   void start_walk(Ant& ant, Scratch& scratch) const {
     ant.nodes.clear();
@@ -258,19 +262,23 @@ class Colony {
     scratch.enter(context_.start);
   }
 
+  // Whether ant k of an iteration is an explorer (ColonySettings::explorers): the last ones.
+  bool explorer(int k) const { return k >= first_explorer_; }
+
   // Moves the ant one node on, backing off first while it is stuck. False: the ant died.
-  bool step(Ant& ant, Scratch& scratch, Rng& rng) const {
+  bool step(Ant& ant, Scratch& scratch, Rng& rng, bool explorer) const {
+    if (explorer) return step<true, true, true>(ant, scratch, rng);
     const bool tau_alpha_is_tau = s_.alpha == 1.0 || s_.null_model == NullModel::no_learning;
     if (plain_) return tau_alpha_is_tau ? step<true, true>(ant, scratch, rng) : step<false, true>(ant, scratch, rng);
     return tau_alpha_is_tau ? step<true, false>(ant, scratch, rng) : step<false, false>(ant, scratch, rng);
   }
 
   // One ant's whole walk to the goal; returns the number of moves it made.
-  std::uint64_t construct(Ant& ant, Scratch& scratch, Rng& rng) const {
+  std::uint64_t construct(Ant& ant, Scratch& scratch, Rng& rng, bool explorer = false) const {
     start_walk(ant, scratch);
     std::uint64_t moves = 0;
     while (ant.nodes.back() != context_.goal) {
-      if (stops_after(moves) || !step(ant, scratch, rng)) return moves;
+      if (stops_after(moves, explorer) || !step(ant, scratch, rng, explorer)) return moves;
       ++moves;
     }
     arrive(ant, &scratch);
@@ -310,11 +318,17 @@ class Colony {
   void search_band(std::span<Ant> ants) {
     if (s_.band_search == 0) return;
     const Ant* walk = shortest(ants);
-    if (walk == nullptr) return;
-    Ant& ant = ants[static_cast<std::size_t>(walk - ants.data())];
-    if (s_.null_model != NullModel::restarts && has_best_ && ant.nodes == best_.nodes) return;
-    if (band_.improve(ant) && s_.walk_length == WalkLength::line_of_sight)
-      ant.length = sight_length(g_, ant.nodes, s_.sight_limit);
+    // The explorers' shortest, unless it is the iteration's: polished too, or it could never
+    // compete with a best path that had its band search.
+    const auto first_explorer = std::min(ants.size(), static_cast<std::size_t>(first_explorer_));
+    const Ant* scout = shortest(ants.subspan(first_explorer));
+    for (const Ant* chosen : {walk, scout == walk ? nullptr : scout}) {
+      if (chosen == nullptr) continue;
+      Ant& ant = ants[static_cast<std::size_t>(chosen - ants.data())];
+      if (s_.null_model != NullModel::restarts && has_best_ && ant.nodes == best_.nodes) continue;
+      if (band_.improve(ant) && s_.walk_length == WalkLength::line_of_sight)
+        ant.length = sight_length(g_, ant.nodes, s_.sight_limit);
+    }
   }
 
   // A path of the other colony's walks, reversed: the same length, not pulled taut anew from
@@ -534,8 +548,9 @@ class Colony {
   }
 
   // Specialised for alpha = 1, the usual case, which needs no pow() in the inner loop, and for a
-  // plain trail (stored values are tau), which needs no scale and bounds.
-  template <bool kAlphaOne, bool kPlain>
+  // plain trail (stored values are tau), which needs no scale and bounds; an explorer reads no
+  // pheromone (tau = 1 on every edge).
+  template <bool kAlphaOne, bool kPlain, bool kExplorer = false>
   bool step(Ant& ant, Scratch& scratch, Rng& rng) const {
     const std::uint32_t tabu = 2 * scratch.stamp;
     const Scratch::MarkT* marks = scratch.marks.data();
@@ -556,7 +571,7 @@ class Colony {
       for (EdgeId e = offsets[current], end = offsets[current + 1]; e < end; ++e) {
         const NodeId j = targets[e];
         if (marks[j] >= tabu) continue;  // on the walk, backed off or forbidden
-        const double stored = tau[e];
+        const double stored = kExplorer ? 1.0 : tau[e];
         negative |= !(stored >= 0.0);
         // min and max pass NaN on (std::max(NaN, low) is NaN), for the check below to see.
         const double t = kPlain ? stored : std::min(std::max(stored * scale, low), high);
@@ -646,6 +661,8 @@ class Colony {
   bool by_node_ = false;
   bool on_first_visit_ = false;  // the heuristic is computed node by node, once (see begin())
   int max_degree_ = 1;
+  // Ants from this index on are explorers (ColonySettings::explorers).
+  int first_explorer_ = s_.ants - static_cast<int>(std::lround(s_.explorers * s_.ants));
   static constexpr int kNeverComputed = -1;
   static constexpr std::size_t kMaxNeighbours = 32;  // the largest neighbourhood is 26 (voxel worlds)
   std::unique_ptr<std::atomic<int>[]> fresh_;  // per node: the iteration its eta^beta is for

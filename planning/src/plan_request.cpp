@@ -11,6 +11,9 @@ namespace aco {
 
 PlannedRuns plan(const PlanRequest& request, PluginRegistry& registry) {
   const MemoryLimit memory(request.max_memory, request.spelling);
+  // From the start: building the graph runs in parallel too, and --threads 1 means no worker
+  // thread at all (a signal sent to the process then reaches the thread in the plugin's hook).
+  const ThreadLimit threads(request.threads);
   const ProblemSpec& problem = request.run.problem;
   PlannedRuns planned;
   planned.run = request.run;
@@ -30,7 +33,6 @@ PlannedRuns plan(const PlanRequest& request, PluginRegistry& registry) {
     goal = loaded.goal;
   }
   planned.graph = build_graph(*planned.map, request.run.graph);
-  const ThreadLimit threads(request.threads);
   planned.runs = plan_runs(registry, planned.graph, planned.graph.node(start), planned.graph.node(goal), request.run,
                            request.repeat);
   return planned;

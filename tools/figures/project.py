@@ -18,6 +18,7 @@ GETTING_STARTED = Path("docs/getting-started.md")
 RESULTS = Path("docs/results.md")
 IMAGES = Path("docs/images")
 VOXEL = Path("docs/voxel-worlds.md")
+CORRIDORS = Path("docs/corridors.md")
 
 
 class FiguresError(Exception):

@@ -63,6 +63,11 @@ struct ColonySettings {
   // path among the nodes within band_search moves of it, so that it takes a nearby door or gap it
   // missed (0 = none).
   int band_search = 0;
+  // Explorers: this share of each iteration's ants (the last ones) walk by the heuristic alone,
+  // as the restarts twin's ants do, and the iteration's shortest explorer walk gets a band search
+  // of its own; the colony learns from their walks like any other. A colony settled in one
+  // corridor then still samples the others, and moves when an explorer finds a shorter one.
+  double explorers = 0.0;
   // An ant that has made walk_limit times as many moves as the best path so far has steps dies
   // (0 = no limit): on large maps a lost ant can otherwise fill whole rooms before it backs out.
   double walk_limit = 0.0;

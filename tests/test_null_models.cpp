@@ -1,4 +1,5 @@
-// The colony's null models (docs/learning.md): what each twin keeps and drops, checked on runs.
+// The colony's null models (docs/learning.md): what each twin keeps and drops, checked on runs; and
+// explorer ants, the restart twin's kind of walk inside a learning colony.
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
@@ -74,6 +75,30 @@ aco::ColonySettings twin_settings(aco::NullModel model) {
   return s;
 }
 
+// Two runs of the same plugins (uniform, progress, `update`, backtrack) that must walk the same
+// walks, bit for bit, with q0 0 and 0.7: checked, and returned.
+struct SameWalks {
+  aco::ColonyResult first, second;
+  int second_updates = 0;  // update() calls in the second run
+};
+std::vector<SameWalks> same_walks(aco::ColonySettings first, aco::ColonySettings second, const char* update) {
+  Arena a;
+  std::vector<SameWalks> runs;
+  for (double q0 : {0.0, 0.7}) {
+    first.q0 = second.q0 = q0;
+    Strategies p("uniform", "progress", update, "backtrack"), q("uniform", "progress", update, "backtrack");
+    SameWalks& r = runs.emplace_back();
+    r.first = aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), first);
+    r.second = aco::run_colony(a.graph, a.start, a.goal, q.pipeline(), second);
+    r.second_updates = q.counting.updates;
+    CHECK(r.first.path == r.second.path);
+    CHECK(r.first.best_so_far == r.second.best_so_far);
+    CHECK(r.first.iteration_best == r.second.iteration_best);
+    CHECK(r.first.ant_steps == r.second.ant_steps);
+  }
+  return runs;
+}
+
 }  // namespace
 
 TEST_CASE("the no-learning twin never changes the pheromone: no init, update or deadlock learning is used",
@@ -108,21 +133,12 @@ TEST_CASE("the no-learning twin walks as the colony with alpha 0 does when nothi
   // With alpha 0 the colony's choice ignores tau (tau^0 = 1); the backtrack policy learns
   // nothing between iterations. So the two runs walk the same walks, bit for bit: the twin is
   // the colony with the pheromone ignored, and nothing else changed (walk limit included).
-  Arena a;
   auto twin = twin_settings(aco::NullModel::no_learning);
   auto alpha_zero = twin_settings(aco::NullModel::none);
   alpha_zero.alpha = 0.0;
-  for (double q0 : {0.0, 0.7}) {
-    twin.q0 = alpha_zero.q0 = q0;
-    Strategies p("uniform", "progress", "acs", "backtrack"), q("uniform", "progress", "acs", "backtrack");
-    const auto t = aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), twin);
-    const auto c = aco::run_colony(a.graph, a.start, a.goal, q.pipeline(), alpha_zero);
-    CHECK(t.path == c.path);
-    CHECK(t.best_so_far == c.best_so_far);
-    CHECK(t.iteration_best == c.iteration_best);
-    CHECK(t.ant_steps == c.ant_steps);
-    CHECK(q.counting.updates == alpha_zero.iterations);  // the colony did learn, and ignored it
-    CHECK(c.pheromone != t.pheromone);
+  for (const SameWalks& runs : same_walks(twin, alpha_zero, "acs")) {
+    CHECK(runs.second_updates == alpha_zero.iterations);  // the colony did learn, and ignored it
+    CHECK(runs.second.pheromone != runs.first.pheromone);
   }
 }
 
@@ -290,4 +306,44 @@ null-models: [ACS]
   const std::string partial_md = file_bytes(partial / "report.md");
   CHECK_THAT(partial_md, Contains("| ACS | restarts | 8/8 vs 8/8 |"));
   CHECK_THAT(partial_md, Contains("| ACS | no-learning | 12/12 vs 12/12 |"));
+}
+
+// Explorer ants (ColonySettings::explorers): the restart twin's kind of walk inside a colony that
+// learns from them.
+TEST_CASE("a colony of explorers walks as the colony with alpha 0 and no walk limit does", "[colony][explorers]") {
+  // An explorer's choice ignores tau, as tau^0 = 1 does, and no walk limit stops it; the backtrack
+  // policy learns nothing between iterations. So the walks are the same, bit for bit.
+  auto explorers = twin_settings(aco::NullModel::none);
+  explorers.explorers = 1.0;
+  explorers.band_search = 4;
+  auto alpha_zero = explorers;
+  alpha_zero.explorers = 0.0;
+  alpha_zero.alpha = 0.0;
+  alpha_zero.walk_limit = 0.0;
+  for (const SameWalks& runs : same_walks(explorers, alpha_zero, "max_min")) CHECK(runs.first.solved);
+}
+
+TEST_CASE("explorers change the walks, and the run stays the same for any thread count",
+          "[colony][explorers][determinism]") {
+  Arena a;
+  auto mixed = twin_settings(aco::NullModel::none);
+  mixed.band_search = 4;
+  auto plain = mixed;
+  mixed.explorers = 0.25;  // the last 2 of 8 ants
+  Strategies p("uniform", "progress", "max_min", "backtrack"), q("uniform", "progress", "max_min", "backtrack");
+  const auto with = aco::run_colony(a.graph, a.start, a.goal, p.pipeline(), mixed);
+  const auto without = aco::run_colony(a.graph, a.start, a.goal, q.pipeline(), plain);
+  REQUIRE(with.solved);
+  CHECK(with.ant_steps != without.ant_steps);
+  test::run_on_thread_counts(a.graph, a.start, a.goal, mixed, {"uniform", "progress", "max_min", "backtrack"});
+}
+
+TEST_CASE("acoplan takes --explorers as a share of the ants and refuses one outside 0..1", "[acoplan][explorers]") {
+  const auto map = (test::data_dir() / "maps/classic20/map2.txt").string();
+  const auto ok = test::acoplan(
+      {"--map", map, "--start", "0,0", "--goal", "19,19", "--explorers", "0.2", "--ants", "10", "--iterations", "5"});
+  CHECK(ok.exit_code == 0);
+  const auto bad = test::acoplan({"--map", map, "--start", "0,0", "--goal", "19,19", "--explorers", "1.5"});
+  CHECK(bad.exit_code != 0);
+  CHECK_THAT(bad.err, Contains("explorers") && Contains("[0, 1]"));
 }

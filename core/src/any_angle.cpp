@@ -156,8 +156,12 @@ struct AnyAngleSearch::State {
 
   explicit State(const Map& m) : map(m), w(m.width()), h(m.height()) {
     open.resize(static_cast<std::size_t>(w * h));
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) open[y * w + x] = m.passable({x, y}) ? 1 : 0;
+    // A plain grid answers without a virtual call per cell (the taut smoother's corridors are grids
+    // the size of the path's bounding box, searched up to four times a run).
+    if (const auto* grid = dynamic_cast<const OccupancyGrid*>(&m))
+      fill_open(*grid);
+    else
+      fill_open(m);
     runs.resize(h);
     for (std::int64_t y = 0; y < h; ++y)
       for (std::int64_t x = 0; x < w;) {
@@ -170,12 +174,26 @@ struct AnyAngleSearch::State {
         runs[y].push_back({2 * x, 2 * end});
         x = end;
       }
+    // A corner touches three free cells: only the vertices of free cells are tried, row by row
+    // (a corridor is a thin band of its bounding box).
     corners.resize(h + 1);
-    for (std::int64_t v = 1; v < h; ++v)
-      for (std::int64_t u = 1; u < w; ++u)
-        if (is_corner(2 * u, 2 * v)) corners[v].push_back(2 * u);
+    for (std::int64_t y = 0; y < h; ++y)
+      for (const auto& [left, right] : runs[y])
+        for (std::int64_t v = y; v <= y + 1; ++v)
+          for (std::int64_t u = left / 2; u <= right / 2; ++u)
+            if (is_corner(2 * u, 2 * v)) corners[v].push_back(2 * u);
+    for (auto& row : corners) {
+      std::sort(row.begin(), row.end());
+      row.erase(std::unique(row.begin(), row.end()), row.end());
+    }
     best.resize(static_cast<std::size_t>((w + 1) * (h + 1)));
     stamp.resize(best.size(), 0);
+  }
+
+  template <class M>
+  void fill_open(const M& m) {
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) open[y * w + x] = m.passable({x, y}) ? 1 : 0;
   }
 
   bool cell(std::int64_t x, std::int64_t y) const { return x >= 0 && y >= 0 && x < w && y < h && open[y * w + x]; }

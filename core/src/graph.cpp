@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdlib>
+#include <functional>
 #include <bit>
 #include <boost/multiprecision/cpp_int.hpp>
 #include <cmath>
@@ -271,7 +273,32 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   return g;
 }
 
-bool reachable(const Graph& graph, NodeId start, NodeId goal) { return BreadthFirstSearch().find(graph, start, goal); }
+bool reachable(const Graph& graph, NodeId start, NodeId goal) {
+  // Depth first, the neighbour nearest the goal first: on open ground it heads almost straight
+  // there, where a breadth-first search visits every cell closer than the goal (a tenth of a
+  // second on a 2048x2048 map, before every run). Unreachable, both visit the start's component.
+  std::vector<std::uint8_t> seen(static_cast<std::size_t>(graph.num_nodes()), 0);
+  std::vector<NodeId> stack{start};
+  seen[start] = 1;
+  const Cell target = graph.cell(goal);
+  std::vector<std::pair<int, NodeId>> next;  // (distance to the goal, node), one node's unseen neighbours
+  while (!stack.empty()) {
+    const NodeId n = stack.back();
+    stack.pop_back();
+    if (n == goal) return true;
+    next.clear();
+    for (EdgeId e = graph.edges_begin(n); e < graph.edges_end(n); ++e) {
+      const NodeId m = graph.targets[e];
+      if (seen[m]) continue;
+      seen[m] = 1;
+      const Cell c = graph.cell(m);
+      next.emplace_back(std::max({std::abs(c.x - target.x), std::abs(c.y - target.y), std::abs(c.z - target.z)}), m);
+    }
+    std::sort(next.begin(), next.end(), std::greater<>());  // the nearest on top of the stack
+    for (const auto& [distance, m] : next) stack.push_back(m);
+  }
+  return false;
+}
 
 bool BreadthFirstSearch::find(const Graph& graph, NodeId from, NodeId to, std::span<const std::uint8_t> blocked,
                               NodeId avoid, std::size_t limit) {

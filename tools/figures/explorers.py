@@ -41,7 +41,8 @@ def explorers(run: Run):
     for label, words in RUNS:
         gaps, times, unsolved = [], [], 0
         for problem in problems(folder):
-            record = json.loads(run.tool(ACOPLAN, "--json", "--threads", "2", *problem, *words))
+            pattern = " ".join([str(ACOPLAN), "--json", "--threads", "2", "--scen", "SCEN", "--scen-index", "I", *words])
+            record = json.loads(run.tool(ACOPLAN, "--json", "--threads", "2", *problem, *words, stamped=pattern))
             times.append(record["time_ms"])
             if record["solved"]:
                 gaps.append(100 * (record["grid_length"] / record["optimal_length"] - 1))
@@ -57,6 +58,6 @@ def explorers(run: Run):
                "null models on the mean and on the worst gap.")
     return {(CORRIDORS, "explorers"): run.stamp() + (
         f"\n\nFresh maps of `aco_mapgen --benchmark {SEED}` (random, room, maze, cave and hall maps, 32x32 to "
-        "512x512; the first, middle and last scenario of each), 2 threads, seed 1. Gap: the grid path's over the "
+        "512x512; SCEN and I: the first, middle and last scenario of each), 2 threads, seed 1. Gap: the grid path's over the "
         "exact A\\* optimum; time: acoplan's search time (`time_ms`):\n\n"
         + table(["run", "solved", "mean gap", "worst gap", "time, mean"], rows) + "\n\n" + verdict)}

@@ -44,9 +44,11 @@ class Run:
     started: float = 0.0
     note: str = ""  # said in the stamp after the commands
 
-    def tool(self, *args) -> str:
-        """Runs a command from the project's root; returns its stdout. Its stderr goes to ours."""
-        return self._run([str(a) for a in args], (0,), stderr=sys.stderr).stdout
+    def tool(self, *args, stamped: str = "") -> str:
+        """Runs a command from the project's root; returns its stdout. Its stderr goes to ours. The stamp
+        lists STAMPED instead of the command where given: the pattern of a command run for many
+        problems ("acoplan --scen SCEN ..."), listed once."""
+        return self._run([str(a) for a in args], (0,), stderr=sys.stderr, stamped=stamped).stdout
 
     def timed(self, *args, ok: tuple[int, ...] = (0,)) -> tuple[str, float, float]:
         """Runs a command from the project's root under GNU time: its stdout, its wall seconds and its
@@ -55,10 +57,10 @@ class Run:
         wall, peak_kb = done.stderr.strip().splitlines()[-1].split()
         return done.stdout, float(wall), int(peak_kb) / 1024
 
-    def _run(self, words: list[str], ok: tuple[int, ...], stderr) -> subprocess.CompletedProcess:
-        """Runs WORDS from the project's root, noted for the stamp; an exit status outside OK is an error
-        (with the end of the command's stderr, where it was captured)."""
-        self.commands.append(shlex.join(words))
+    def _run(self, words: list[str], ok: tuple[int, ...], stderr, stamped: str = "") -> subprocess.CompletedProcess:
+        """Runs WORDS from the project's root, noted for the stamp (as STAMPED, if given); an exit status
+        outside OK is an error (with the end of the command's stderr, where it was captured)."""
+        self.commands.append(stamped or shlex.join(words))
         print(f"[{self.section}] {shlex.join(words)}", file=sys.stderr, flush=True)
         done = subprocess.run(words, stdout=subprocess.PIPE, stderr=stderr, text=True, cwd=ROOT)
         if done.returncode not in ok:

@@ -802,3 +802,18 @@ TEST_CASE("edge_by_move and find_edge agree with a scan of the edge list", "[gra
       }
   }
 }
+
+TEST_CASE("A step rule that allows a step but not its reverse is refused by name", "[graph]") {
+  // A map plugin's step rule (Map::step_allowed()) need not be symmetric; the engine needs every
+  // edge's reverse. Plain grids skip the check: their moves are symmetric by construction.
+  class OneWay final : public aco::Map {
+   public:
+    int width() const override { return 3; }
+    int height() const override { return 1; }
+    bool passable(aco::Cell c) const override { return contains(c); }
+    bool step_allowed(aco::Cell from, aco::Cell to) const override { return !(from.x == 1 && to.x == 0); }
+    std::string name() const override { return "one-way"; }
+  } map;
+  CHECK_THROWS_WITH(aco::build_graph(map, {aco::Neighbourhood::four, false}),
+                    "one-way: the step (0,0) -> (1,0) is allowed but its reverse is not");
+}

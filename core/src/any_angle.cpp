@@ -156,12 +156,9 @@ struct AnyAngleSearch::State {
 
   explicit State(const Map& m) : map(m), w(m.width()), h(m.height()) {
     open.resize(static_cast<std::size_t>(w * h));
-    // A plain grid answers without a virtual call per cell (the taut smoother's corridors are grids
-    // the size of the path's bounding box, searched up to four times a run).
-    if (const auto* grid = dynamic_cast<const OccupancyGrid*>(&m))
-      fill_open(*grid);
-    else
-      fill_open(m);
+    // The taut smoother's corridors are plain grids the size of the path's bounding box, searched
+    // up to four times a run.
+    with_concrete_map(m, [this](const auto& concrete) { fill_open(concrete); });
     runs.resize(h);
     for (std::int64_t y = 0; y < h; ++y)
       for (std::int64_t x = 0; x < w;) {

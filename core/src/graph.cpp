@@ -144,6 +144,11 @@ void check_neighbourhood_fits(const Map& map, const GraphOptions& options) {
                 map.name() + " is " + std::to_string(w) + "x" + std::to_string(h));
 }
 
+// An OccupancyGrid (final) keeps Map's position() and step rule, and answers passable() from
+// several threads at once (with_concrete_map() hands it over as itself).
+template <class M>
+constexpr bool kPlainGrid = std::is_same_v<M, OccupancyGrid>;
+
 // Whether a cell's move k leads to a free cell by the neighbourhood's rule.
 template <class M>
 bool move_allowed(const M& map, const Graph& g, Cell c, const Move& m, int k) {
@@ -151,14 +156,15 @@ bool move_allowed(const M& map, const Graph& g, Cell c, const Move& m, int k) {
   if (!map.passable(to)) return false;
   if (g.volumetric) return g.options.corner_cutting || k < 6 || box_clear(map, c, m);
   if (!move_clear(map, c, m, g.options.corner_cutting)) return false;
-  // A plain grid keeps Map's step rule, which allows every step (OccupancyGrid is final).
-  if constexpr (std::is_same_v<M, OccupancyGrid>) return true;
+  if constexpr (kPlainGrid<M>) return true;  // Map's step rule allows every step
   return map.step_allowed(c, to);
 }
 
 // A terrain's cell centres are not at their coordinates (heights, cell size): only there are
 // positions and step lengths stored.
-bool places_cells_elsewhere(const Map& map, const Graph& g) {
+template <class M>
+bool places_cells_elsewhere(const M& map, const Graph& g) {
+  if constexpr (kPlainGrid<M>) return false;  // Map's position(): the cell's coordinates
   for (NodeId id = 0; id < g.num_nodes(); ++id) {
     const Cell c = g.cell(id);
     if (map.position(c) != Eigen::Vector3d(c.x, c.y, c.z)) return true;
@@ -166,11 +172,10 @@ bool places_cells_elsewhere(const Map& map, const Graph& g) {
   return false;
 }
 
-// Each node's moves (move_mask). Over nodes in parallel where the map is known to answer
-// passable() from several threads at once (a plain grid, whose calls are not virtual here
-// either); a map plugin's map is asked from one thread.
+// Each node's moves (move_mask): rows in parallel on a plain grid; a map plugin's map is asked
+// from one thread.
 template <class M>
-void mark_moves(const M& map, Graph& g, bool in_parallel) {
+void mark_moves(const M& map, Graph& g) {
   const auto all = moves(g.options.neighbourhood);
   const int count = static_cast<int>(all.size());
   const auto mark = [&](int first_row, int end_row) {  // rows of all layers: z * height + y
@@ -185,19 +190,32 @@ void mark_moves(const M& map, Graph& g, bool in_parallel) {
       }
   };
   const int rows = g.height * g.depth;
-  if (!in_parallel) return mark(0, rows);
-  aco::parallel_for(tbb::blocked_range<int>(0, rows, 16),
-                    [&](const tbb::blocked_range<int>& r) { mark(r.begin(), r.end()); });
+  if constexpr (kPlainGrid<M>)
+    aco::parallel_for(tbb::blocked_range<int>(0, rows, 16),
+                      [&](const tbb::blocked_range<int>& r) { mark(r.begin(), r.end()); });
+  else
+    mark(0, rows);
+}
+
+// A step rule (a terrain's slope limit, Map::step_allowed()) may be asymmetric (uphill vs
+// downhill); the engine needs reversible edges for node-based pheromone, so say so instead of
+// failing later. A plain grid's moves and a voxel world's are symmetric by construction.
+template <class M>
+void check_reversible(const M& map, const Graph& g) {
+  if (kPlainGrid<M> || g.volumetric) return;
+  for (NodeId id = 0; id < g.num_nodes(); ++id)
+    for (EdgeId e = g.edges_begin(id); e < g.edges_end(id); ++e)
+      if (g.reverse_edge(e) < 0)
+        throw Error(map.name() + ": the step " + to_string(g.cell(id)) + " -> " + to_string(g.cell(g.targets[e])) +
+                    " is allowed but its reverse is not");
 }
 
 // Targets and moves, in move order per node.
-void build_edges(const Map& map, Graph& g) {
+template <class M>
+void build_edges(const M& map, Graph& g) {
   const auto all = moves(g.options.neighbourhood);
   const NodeId n = g.num_nodes();
-  if (const auto* grid = dynamic_cast<const OccupancyGrid*>(&map))
-    mark_moves(*grid, g, true);
-  else
-    mark_moves(map, g, false);
+  mark_moves(map, g);
   // One pass to count, one to fill: the edges would otherwise grow a vector of tens or hundreds
   // of millions by doubling, twice its size at the peak.
   for (NodeId id = 0; id < n; ++id) g.offsets[id + 1] = g.offsets[id] + std::popcount(g.move_mask[id]);
@@ -214,22 +232,7 @@ void build_edges(const Map& map, Graph& g) {
       ++e;
     }
   }
-}
-
-// A step rule (a terrain's slope limit, Map::step_allowed()) may be asymmetric (uphill vs
-// downhill); the engine needs reversible edges for node-based pheromone, so say so instead of
-// failing later.
-void check_reversible(const Map& map, const Graph& g) {
-  const auto all = moves(g.options.neighbourhood);
-  std::array<int, 16> opposite{};
-  for (std::size_t k = 0; k < all.size(); ++k)
-    for (std::size_t j = 0; j < all.size(); ++j)
-      if (all[j].dx == -all[k].dx && all[j].dy == -all[k].dy) opposite[k] = static_cast<int>(j);
-  for (NodeId id = 0; id < g.num_nodes(); ++id)
-    for (EdgeId e = g.edges_begin(id); e < g.edges_end(id); ++e)
-      if (!(g.move_mask[g.targets[e]] >> opposite[g.edge_moves[e]] & 1u))
-        throw Error(map.name() + ": the step " + to_string(g.cell(id)) + " -> " + to_string(g.cell(g.targets[e])) +
-                    " is allowed but its reverse is not");
+  check_reversible(map, g);
 }
 
 }  // namespace
@@ -244,7 +247,8 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   g.depth = map.depth();
   g.volumetric = map.volumetric();
   const int move_count = static_cast<int>(options.neighbourhood);
-  const bool terrain = places_cells_elsewhere(map, g);
+  bool terrain = false;
+  with_concrete_map(map, [&](const auto& concrete) { terrain = places_cells_elsewhere(concrete, g); });
   // A voxel world is checked once its edges are counted (build_edges()): in a city or a
   // forest most of them are, but not all, and the worst case would refuse worlds that fit.
   if (!g.volumetric) check_planning_memory(g.width, g.height, options.neighbourhood, map.name(), terrain);
@@ -261,9 +265,7 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   const auto all = moves(options.neighbourhood);
   for (std::size_t k = 0; k < all.size(); ++k)
     g.move_lengths[k] = std::sqrt(double(all[k].dx * all[k].dx + all[k].dy * all[k].dy + all[k].dz * all[k].dz));
-  build_edges(map, g);
-  // Moves in a voxel world know no step rule; a 2D map's may come from a map plugin.
-  if (!g.volumetric) check_reversible(map, g);
+  with_concrete_map(map, [&g](const auto& concrete) { build_edges(concrete, g); });
   if (!terrain) return g;
   g.terrain_positions.resize(static_cast<std::size_t>(n));
   for (NodeId id = 0; id < n; ++id) g.terrain_positions[id] = map.position(g.cell(id));

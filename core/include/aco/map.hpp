@@ -76,4 +76,15 @@ class BOOST_SYMBOL_VISIBLE OccupancyGrid final : public Map {
   GridGeometry geometry_;
 };
 
+// Calls f(map) with the OccupancyGrid itself where the map is one, else with the Map: a loop over
+// every cell of a large map then makes no virtual call per cell on a plain grid (final, so its
+// passable() inlines), which keeps Map's position() and step rule.
+template <class F>
+void with_concrete_map(const Map& map, F&& f) {
+  if (const auto* grid = dynamic_cast<const OccupancyGrid*>(&map))
+    f(*grid);
+  else
+    f(map);
+}
+
 }  // namespace aco

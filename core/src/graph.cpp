@@ -275,11 +275,12 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   return g;
 }
 
-bool reachable(const Graph& graph, NodeId start, NodeId goal) {
+bool reachable(const Graph& graph, NodeId start, NodeId goal, std::span<const std::uint8_t> closed) {
   // Depth first, the neighbour nearest the goal first: on open ground it heads almost straight
   // there, where a breadth-first search visits every cell closer than the goal (a tenth of a
   // second on a 2048x2048 map, before every run). Unreachable, both visit the start's component.
   std::vector<std::uint8_t> seen(static_cast<std::size_t>(graph.num_nodes()), 0);
+  if (!closed.empty()) std::copy(closed.begin(), closed.end(), seen.begin());
   std::vector<NodeId> stack{start};
   seen[start] = 1;
   const Cell target = graph.cell(goal);

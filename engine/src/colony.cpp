@@ -14,11 +14,16 @@
 #include "aco/error.hpp"
 #include "aco/parallel.hpp"
 #include "aco/rng.hpp"
+#include "coarse_to_fine.hpp"
 #include "colony_walks.hpp"
 
 namespace aco {
 namespace {
 
+using colony_detail::coarse_corridor;
+using colony_detail::coarse_problem;
+using colony_detail::coarsens;
+using colony_detail::CoarseProblem;
 using colony_detail::Colony;
 using colony_detail::Deadline;
 using colony_detail::PheromoneFoundBad;
@@ -133,7 +138,11 @@ ColonyResult iterate(const Graph& graph, const ColonySettings& s, const Deadline
                      Construct&& construct) {
   ColonyResult result;
   const SearchClock clock;
+  const auto setting_up = Clock::now();
   for (Colony* colony : colonies) colony->begin();
+  // The run ends with passes over the per-edge fields as its set-up began with (the final check,
+  // the pheromone handed out, their memory freed): a time limit leaves them as long.
+  deadline.hold_back(Clock::now() - setting_up);
   const std::size_t searching = islands ? colonies.size() : 1;
   // The corridors walked; in voxel worlds corridors are not classes of one key.
   std::optional<CorridorKeys> corridor_keys;
@@ -332,6 +341,46 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const ColonyStr
     throw Error("same-path-stop works with one colony only: the islands' ants walk apart on purpose");
 }
 
+struct FineLevel {
+  ColonySettings settings;  // with the coarse colony's corridor, if it leaves one
+  std::shared_ptr<const ColonyResult> coarse;
+};
+
+// ColonySettings::coarse_to_fine: the coarse colony's run (its figures not recorded: they are the
+// run's on the map itself), and the settings for the map itself, with the corridor it leaves.
+FineLevel coarse_to_fine(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
+                         const ColonySettings& settings, Clock::time_point started, const ColonyStrategies* backward,
+                         std::span<const ColonyStrategies> islands) {
+  FineLevel fine{settings, nullptr};
+  const int block = settings.coarse_to_fine;
+  if (block <= 1 || settings.closed || !coarsens(graph, block)) return fine;
+  const std::optional<CoarseProblem> coarse = coarse_problem(graph, start, goal, block);
+  if (!coarse) return fine;
+  // The run's settings, coarse_to_fine included: a coarse map still large is planned coarse to
+  // fine in turn.
+  ColonySettings level = settings;
+  level.search_began = started;
+  level.time_limit = settings.time_limit / 2;
+  const auto quiet = [](ColonyStrategies strategies) {
+    strategies.figures = nullptr;
+    return strategies;
+  };
+  std::optional<ColonyStrategies> quiet_backward;
+  if (backward) quiet_backward = quiet(*backward);
+  std::vector<ColonyStrategies> quiet_islands;
+  for (const ColonyStrategies& island : islands) quiet_islands.push_back(quiet(island));
+  auto result =
+      std::make_shared<ColonyResult>(run_colony(coarse->graph, coarse->start, coarse->goal, quiet(pipeline), level,
+                                                quiet_backward ? &*quiet_backward : nullptr, quiet_islands));
+  if (result->solved) {
+    auto closed = std::make_shared<std::vector<std::uint8_t>>(coarse_corridor(graph, *coarse, result->path, block));
+    if (reachable(graph, start, goal, *closed)) fine.settings.closed = std::move(closed);
+  }
+  result->pheromone = {};
+  fine.coarse = std::move(result);
+  return fine;
+}
+
 }  // namespace
 
 ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
@@ -368,6 +417,7 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Col
   // A time limit counts from here, or from the host's start of the search: the colony's setup (its
   // per-edge fields, dead-end filling) too.
   const Clock::time_point started = settings.search_began.value_or(Clock::now());
+  const FineLevel fine = coarse_to_fine(graph, start, goal, pipeline, settings, started, backward, islands);
   const auto run = [&](const ColonySettings& s, bool check_every_hook) {
     const Deadline deadline(started, s.time_limit);
     if (s.bidirectional)
@@ -376,13 +426,16 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Col
     return run_single(graph, start, goal, pipeline, s, check_every_hook, deadline);
   };
   try {
-    return run(settings, false);
+    ColonyResult result = run(fine.settings, false);
+    result.coarse = fine.coarse;
+    result.walked_coarse_corridor = fine.settings.closed != nullptr;
+    return result;
   } catch (const PheromoneFoundBad& found) {
     // Strategies start every run afresh (begin_run(), strategies.hpp), so the repeat makes the
     // same writes and its check after every hook throws the Error that names the plugin, the hook
     // and the iteration.
     // Up to the iteration that found the value, with no time limit to stop the repeat earlier.
-    ColonySettings repeat = settings;
+    ColonySettings repeat = fine.settings;
     repeat.iterations = found.iteration + 1;
     repeat.time_limit = 0.0;
     try {

@@ -44,6 +44,10 @@ const SettingsTable<ColonySettings>& colony_table() {
             "corridors (0 = none)"),
       field("walk-limit", &S::walk_limit, "0:1e6",
             "an ant dies after this many times as many moves as the best path so far has steps (0 = no limit)"),
+      field("coarse-to-fine", &S::coarse_to_fine, "0:64",
+            "on a 2D map at least 256 such blocks wide or high: plan first on the map coarsened into blocks of this "
+            "many cells a side (free where all their cells are), then let the ants walk only within one block of "
+            "that colony's best path (0 or 1 = plan on the map alone)"),
       choice("walk-length", &S::walk_length, {"grid", "line-of-sight"}, {WalkLength::grid, WalkLength::line_of_sight},
              "the length an arrived walk is ranked and rewarded by: the sum of its grid steps, or its length pulled "
              "taut Theta*-style (a waypoint is kept while the walk's next cells are in line of sight of it)"),

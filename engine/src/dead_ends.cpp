@@ -4,7 +4,7 @@
 
 namespace aco {
 
-std::vector<std::uint8_t> dead_ends(const Graph& g, NodeId start, NodeId goal) {
+std::vector<std::uint8_t> dead_ends(const Graph& g, NodeId start, NodeId goal, std::span<const std::uint8_t> closed) {
   const int n = g.num_nodes();
   std::vector<std::uint8_t> dead(n, 1);
   dead[start] = dead[goal] = 0;
@@ -30,7 +30,7 @@ std::vector<std::uint8_t> dead_ends(const Graph& g, NodeId start, NodeId goal) {
     Frame& f = stack.back();
     if (f.next < g.edges_end(f.node)) {
       const NodeId next = g.targets[f.next++];
-      if (next == f.parent) continue;
+      if (next == f.parent || (!closed.empty() && closed[next] && next != start)) continue;
       if (order[next] < 0) {
         order[next] = low[next] = counter++;
         vertices.push_back(next);

@@ -25,6 +25,8 @@ class Deadline {
     return moves % kMovesPerLook == 0 && look();
   }
   bool passed() const { return limited_ && (passed_.load(std::memory_order_relaxed) || look()); }
+  // Ends the search this much earlier, for work after it; before the walks begin.
+  void hold_back(Clock::duration reserve) const { end_ -= reserve; }
 
  private:
   bool look() const {
@@ -34,7 +36,7 @@ class Deadline {
   }
 
   bool limited_;
-  Clock::time_point end_;
+  mutable Clock::time_point end_;
   mutable std::atomic<bool> passed_{false};
 };
 

@@ -29,6 +29,10 @@ void run_aco(const PlanContext& c, PlanOutcome& o) {
   o.properties["ant_steps"] = static_cast<std::int64_t>(colony.ant_steps);
   o.properties["stopped_by"] = std::string(to_string(colony.stopped_by));
   if (!c.graph.volumetric) o.properties["corridors"] = static_cast<std::int64_t>(colony.corridors.size());
+  if (colony.coarse) {  // coarse to fine: the coarse colony's path, in the coarse map's steps
+    o.properties["coarse.length"] = colony.coarse->solved ? colony.coarse->length : -1.0;
+    o.properties["coarse.corridor"] = std::string(colony.walked_coarse_corridor ? "walked" : "not used");
+  }
   if (c.run.colony.restart_after > 0 || c.run.colony.colonies > 1)
     o.properties["restarts"] = static_cast<std::int64_t>(colony.restarts);
   o.corridors = std::move(colony.corridors);
@@ -204,6 +208,9 @@ PlanOutcome plan(PluginRegistry& registry, const Graph& graph, NodeId start, Nod
       context.goal = goal;
       context.seed = run.colony.seed;
       context.figures = &figures;
+      if (run.colony.time_limit > 0)
+        context.deadline = began + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                       std::chrono::duration<double>(run.colony.time_limit));
       o.search.length = path_length(graph, o.search.path);
       pipeline.smoother->begin_run(context);
       o.path = pipeline.smoother->smooth(context, o.search.path);

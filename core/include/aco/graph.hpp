@@ -105,8 +105,8 @@ struct BOOST_SYMBOL_VISIBLE Graph {
 // knight move (2x2, 1xN) is an Error.
 Graph build_graph(const Map& map, const GraphOptions& options);
 
-// Whether goal can be reached from start at all (breadth-first search).
-bool reachable(const Graph& graph, NodeId start, NodeId goal);
+// Whether goal can be reached from start at all, through no node marked in `closed` (if given).
+bool reachable(const Graph& graph, NodeId start, NodeId goal, std::span<const std::uint8_t> closed = {});
 
 // Breadth-first search for a path that avoids some nodes. One object serves many searches on a
 // graph without clearing per-node arrays in between (stamps), as a plugin searching once per

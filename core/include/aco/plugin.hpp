@@ -51,8 +51,9 @@ namespace aco {
 //     and reverse_edge(), Strategy::supports_voxel_worlds().
 // 15: Graph stores per edge only its target and move: cost(), reverse_edge() and position()
 //     compute the rest (edge_costs, reverse_edges and positions removed; terrains keep theirs).
+// 16: Context::deadline, the run's time limit for the smoother.
 // A literal, so the record can spell it; kPluginAbiVersion is the one to use in code.
-#define ACO_FRAMEWORK_PLUGIN_ABI 15
+#define ACO_FRAMEWORK_PLUGIN_ABI 16
 inline constexpr std::uint32_t kPluginAbiVersion = ACO_FRAMEWORK_PLUGIN_ABI;
 inline constexpr std::uint32_t kPluginMagic = 0x50434f41;  // "ACOP"
 inline constexpr const char* kPluginAliasPrefix = "aco_plugin__";

@@ -4,8 +4,10 @@
 #include <Eigen/Core>
 #include <boost/config.hpp>
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -31,6 +33,10 @@ struct Context {
   // Where record() and add() go (aco/figures.hpp); null, as in a plugin's own unit test or
   // aco-plugin-check, checks what they are given and keeps nothing.
   FigureSink* figures = nullptr;
+  // When the run's time limit ends (none: no limit). The smoother runs after the search, within
+  // the limit too: past it, a smoother that refines in rounds stops and returns what it has.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+  bool past_deadline() const { return deadline && std::chrono::steady_clock::now() >= *deadline; }
 
   // A plugin's own figures of its run (restarts, nodes forbidden, deadlocks resolved), kept beside
   // the planner's (PlanOutcome::properties) as "<slot>/<plugin>.<name>": in acoplan's --json,

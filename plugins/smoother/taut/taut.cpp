@@ -170,7 +170,7 @@ class TautSmoother final : public aco::Smoother {
     std::vector<aco::Cell> cells;
     for (const aco::NodeId n : path) cells.push_back(g.cell(n));
     add_touched_cells(best, cells);
-    for (int round = 0; round < p_.rounds; ++round) {
+    for (int round = 0; round < p_.rounds && !c.past_deadline(); ++round) {
       const auto found =
           shortest_in_corridor(*g.map, cells, p_.corridor_width, g.cell(path.front()), g.cell(path.back()));
       if (!found || !(found->length < best_length * (1 - 1e-12))) break;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -71,6 +72,14 @@ struct ColonySettings {
   // An ant that has made walk_limit times as many moves as the best path so far has steps dies
   // (0 = no limit): on large maps a lost ant can otherwise fill whole rooms before it backs out.
   double walk_limit = 0.0;
+  // Coarse to fine (multilevel ant colony optimisation; Korošec, Šilc and Robič 2004): on a 2D
+  // map of at least 256 blocks of this many cells along its longer side, a colony with these
+  // settings first plans on the map coarsened into those blocks (a block is free where all its
+  // cells are; coarse to fine in turn while still that large), and the ants on the map itself
+  // then walk only within one block of the coarse colony's best path. The coarse colony has half
+  // of a time limit. Where the coarse map does not connect start and goal, or its corridor does
+  // not, the colony plans on the whole map. Smaller maps, and 0 or 1: one level.
+  int coarse_to_fine = 0;
   WalkLength walk_length = WalkLength::grid;
   // Line-of-sight walks: the longest straight segment, in cells, checked from a waypoint (0 = no
   // limit). A check costs its length in cells, so unlimited segments cost a walk's length squared
@@ -110,6 +119,9 @@ struct ColonySettings {
   // Not a key: when the search began, which time_limit counts from; none: when run_colony()
   // starts. A host whose search begins earlier (acoplan's reachability test) sets it.
   std::optional<std::chrono::steady_clock::time_point> search_began;
+  // Not a key: per node, 1 where no ant may go (coarse_to_fine's corridor, for one); none: every
+  // passable node is open. Dead-end filling works within it.
+  std::shared_ptr<const std::vector<std::uint8_t>> closed;
 };
 
 // The colony's parameter table (ants, iterations, alpha, beta, seed, ...; defaults from the
@@ -145,6 +157,10 @@ struct ColonyResult : SearchResult {
   // whether it ever walked the optimum's corridor. None in voxel worlds.
   std::vector<std::uint64_t> corridors;
   int restarts = 0;  // epochs begun by restart_after
+  // Coarse to fine (ColonySettings::coarse_to_fine): the coarse colony's result (its path in the
+  // coarse map's nodes) and whether its corridor bounded the walks on the map itself.
+  std::shared_ptr<const ColonyResult> coarse;
+  bool walked_coarse_corridor = false;
 };
 
 // Runs the colony in the calling thread's TBB arena. Throws Error if a strategy writes a

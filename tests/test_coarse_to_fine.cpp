@@ -1,0 +1,159 @@
+// Coarse to fine (ColonySettings::coarse_to_fine) and the closed nodes it hands the colony on the
+// map itself (ColonySettings::closed, dead_ends() and reachable() within them).
+#include <catch2/catch.hpp>
+#include <random>
+
+#include "aco/engine/dead_ends.hpp"
+#include "aco/engine/pipeline.hpp"
+#include "support.hpp"
+
+namespace {
+
+// The graph without the edges to and from the nodes marked in `closed`.
+aco::Graph without(const aco::Graph& graph, const std::vector<std::uint8_t>& closed) {
+  aco::Graph narrowed = graph;
+  narrowed.targets.clear();
+  narrowed.edge_moves.clear();
+  for (aco::NodeId n = 0; n < graph.num_nodes(); ++n) {
+    narrowed.offsets[n] = narrowed.num_edges();
+    for (aco::EdgeId e = graph.edges_begin(n); e < graph.edges_end(n); ++e)
+      if (!closed[n] && !closed[graph.targets[e]]) {
+        narrowed.targets.push_back(graph.targets[e]);
+        narrowed.edge_moves.push_back(graph.edge_moves[e]);
+      }
+  }
+  narrowed.offsets[graph.num_nodes()] = narrowed.num_edges();
+  return narrowed;
+}
+
+// A map of rooms, `side` cells a side: walls every 32 cells, 4 cells thick, each wall segment
+// between two crossings with a door of 8 cells at a random place, and random pillars (2x2) in the
+// rooms; the corners (4,4) and (side - 5, side - 5) are free.
+aco::OccupancyGrid rooms(int side, std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  aco::OccupancyGrid map(side, side, "rooms");
+  const auto block = [&](int x0, int y0, int w, int h) {
+    for (int y = y0; y < std::min(side, y0 + h); ++y)
+      for (int x = x0; x < std::min(side, x0 + w); ++x) map.set_blocked({x, y}, true);
+  };
+  for (int wall = 32; wall < side; wall += 32) {
+    block(wall, 0, 4, side);
+    block(0, wall, side, 4);
+  }
+  for (int wall = 32; wall < side; wall += 32)
+    for (int from = 0; from < side; from += 32) {
+      const int door = from + 4 + static_cast<int>(rng() % 20);
+      for (int y = door; y < door + 8; ++y)
+        for (int x = wall; x < wall + 4; ++x) map.set_blocked({x, y}, false), map.set_blocked({y, x}, false);
+    }
+  for (int pillar = 0; pillar < side * side / 400; ++pillar)
+    block(static_cast<int>(rng() % side), static_cast<int>(rng() % side), 2, 2);
+  for (const aco::Cell corner : {aco::Cell{4, 4}, aco::Cell{side - 5, side - 5}})
+    for (int y = corner.y - 2; y <= corner.y + 2; ++y)
+      for (int x = corner.x - 2; x <= corner.x + 2; ++x) map.set_blocked({x, y}, false);
+  return map;
+}
+
+aco::ColonySettings settings(int coarse_to_fine) {
+  aco::ColonySettings s;
+  s.ants = 20;
+  s.iterations = 10;
+  s.beta = 3;
+  s.q0 = 0.7;
+  s.seed = 5;
+  s.fill_dead_ends = true;
+  s.local_search = aco::LocalSearch::straighten;
+  s.walk_limit = 4;
+  s.coarse_to_fine = coarse_to_fine;
+  return s;
+}
+
+aco::ColonyResult plan(const aco::Graph& graph, aco::Cell start, aco::Cell goal, const aco::ColonySettings& s) {
+  const aco::PipelineSpec spec =
+      test::pipeline({{"heuristic", "progress"}, {"update", "max_min"}, {"deadlock", "backtrack"}});
+  const auto pipeline = aco::instantiate(test::plugins(), spec);
+  return aco::run_pipeline(test::plugins(), spec, pipeline, graph, graph.node(start), graph.node(goal), s);
+}
+
+}  // namespace
+
+TEST_CASE("dead ends and reachability within closed nodes are those of the graph without them",
+          "[coarse_to_fine][dead_ends]") {
+  std::mt19937 rng(17);
+  for (int trial = 0; trial < 200; ++trial) {
+    const auto problem = test::random_problem(rng, 4, 12);
+    const aco::Graph graph = aco::build_graph(problem.map, {});
+    const aco::NodeId start = graph.node(problem.start), goal = graph.node(problem.goal);
+    std::vector<std::uint8_t> closed(graph.num_nodes(), 0);
+    for (auto& c : closed) c = rng() % 4 == 0;
+    closed[start] = closed[goal] = 0;
+    const aco::Graph narrowed = without(graph, closed);
+    INFO("trial " << trial);
+    CHECK(aco::reachable(graph, start, goal, closed) == aco::reachable(narrowed, start, goal));
+    CHECK(aco::dead_ends(graph, start, goal, closed) == aco::dead_ends(narrowed, start, goal));
+  }
+}
+
+TEST_CASE("coarse to fine: the ants walk within one block of the coarse colony's path", "[coarse_to_fine]") {
+  const aco::OccupancyGrid map = rooms(1024, 3);
+  const aco::Graph graph = aco::build_graph(map, {});
+  const aco::Cell start{4, 4}, goal{1019, 1019};
+  const aco::ColonyResult run = plan(graph, start, goal, settings(4));
+  REQUIRE(run.solved);
+  REQUIRE(run.coarse);
+  REQUIRE(run.coarse->solved);
+  CHECK(run.walked_coarse_corridor);
+  // The coarse map is 256x256 blocks: too small to be coarsened again, so its path is in its cells.
+  const int coarse_side = 256;
+  for (const aco::NodeId n : run.coarse->path) CHECK(n < coarse_side * coarse_side);
+  for (const aco::NodeId n : run.path) {
+    const aco::Cell c = graph.cell(n);
+    const bool near = std::any_of(run.coarse->path.begin(), run.coarse->path.end(), [&](aco::NodeId b) {
+      return std::abs(b % coarse_side - c.x / 4) <= 1 && std::abs(b / coarse_side - c.y / 4) <= 1;
+    });
+    INFO("cell " << aco::to_string(c));
+    CHECK(near);
+  }
+  CHECK(run.path.front() == graph.node(start));
+  CHECK(run.path.back() == graph.node(goal));
+  for (std::size_t k = 1; k < run.path.size(); ++k) CHECK(graph.find_edge(run.path[k - 1], run.path[k]) >= 0);
+}
+
+TEST_CASE("coarse to fine gives bit-identical runs for any thread count", "[coarse_to_fine][determinism]") {
+  const aco::OccupancyGrid map = rooms(1024, 4);
+  const aco::Graph graph = aco::build_graph(map, {});
+  aco::ColonySettings s = settings(4);
+  s.iterations = 4;
+  const aco::ColonyResult run = test::run_on_thread_counts(graph, graph.node({4, 4}), graph.node({1019, 1019}), s,
+                                                           {"uniform", "progress", "max_min", "backtrack"});
+  CHECK(run.solved);
+  CHECK(run.walked_coarse_corridor);
+}
+
+TEST_CASE("coarse to fine leaves small maps to one level, bit for bit", "[coarse_to_fine]") {
+  // 1020 cells a side in blocks of 4: 255 blocks, one short of a coarse level.
+  const aco::OccupancyGrid map = rooms(1020, 5);
+  const aco::Graph graph = aco::build_graph(map, {});
+  aco::ColonySettings s = settings(4);
+  s.iterations = 3;
+  const aco::ColonyResult coarse = plan(graph, {4, 4}, {1015, 1015}, s);
+  s.coarse_to_fine = 0;
+  const aco::ColonyResult one_level = plan(graph, {4, 4}, {1015, 1015}, s);
+  CHECK_FALSE(coarse.coarse);
+  CHECK_FALSE(coarse.walked_coarse_corridor);
+  test::check_same_run(coarse, one_level);
+}
+
+TEST_CASE("coarse to fine plans on the whole map where the blocks close the only door", "[coarse_to_fine]") {
+  // A wall across the map with one door of a single cell: every block on the wall is closed.
+  aco::OccupancyGrid map(1024, 1024, "one door");
+  for (int y = 0; y < 1024; ++y)
+    if (y != 700) map.set_blocked({512, y}, true);
+  const aco::Graph graph = aco::build_graph(map, {});
+  aco::ColonySettings s = settings(4);
+  s.iterations = 3;
+  const aco::ColonyResult run = plan(graph, {10, 10}, {1000, 1000}, s);
+  CHECK(run.solved);
+  CHECK_FALSE(run.coarse);
+  CHECK_FALSE(run.walked_coarse_corridor);
+}

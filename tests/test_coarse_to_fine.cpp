@@ -157,3 +157,35 @@ TEST_CASE("coarse to fine plans on the whole map where the blocks close the only
   CHECK_FALSE(run.coarse);
   CHECK_FALSE(run.walked_coarse_corridor);
 }
+
+TEST_CASE("the coarse colony is the colony with the same settings on the map in blocks, explorers its own",
+          "[coarse_to_fine]") {
+  const aco::OccupancyGrid map = rooms(1024, 6);
+  const aco::Graph graph = aco::build_graph(map, {});
+  const aco::Cell start{4, 4}, goal{1019, 1019};
+  aco::ColonySettings s = settings(4);
+  s.iterations = 4;
+  s.coarse_explorers = 0.2;
+  const aco::ColonyResult run = plan(graph, start, goal, s);
+  REQUIRE(run.coarse);
+  // The rule stated anew: a block is free where its 16 cells are, the start's and the goal's always.
+  aco::OccupancyGrid blocks(256, 256, "blocks");
+  for (int by = 0; by < 256; ++by)
+    for (int bx = 0; bx < 256; ++bx)
+      for (int k = 0; k < 16; ++k)
+        if (!map.passable({4 * bx + k % 4, 4 * by + k / 4})) blocks.set_blocked({bx, by}, true);
+  blocks.set_blocked({start.x / 4, start.y / 4}, false);
+  blocks.set_blocked({goal.x / 4, goal.y / 4}, false);
+  aco::ColonySettings level = s;
+  level.coarse_to_fine = 0;
+  level.explorers = 0.2;
+  const aco::Graph coarse_graph = aco::build_graph(blocks, {});
+  const aco::ColonyResult alone = plan(coarse_graph, {start.x / 4, start.y / 4}, {goal.x / 4, goal.y / 4}, level);
+  CHECK(run.coarse->path == alone.path);
+  CHECK(run.coarse->length == alone.length);
+  CHECK(run.coarse->iteration_best == alone.iteration_best);
+  CHECK(run.coarse->ant_steps == alone.ant_steps);
+  // Without coarse explorers the coarse colony walks otherwise.
+  s.coarse_explorers = 0.0;
+  CHECK(plan(graph, start, goal, s).coarse->ant_steps != run.coarse->ant_steps);
+}

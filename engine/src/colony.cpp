@@ -361,6 +361,7 @@ FineLevel coarse_to_fine(const Graph& graph, NodeId start, NodeId goal, const Co
   ColonySettings level = settings;
   level.search_began = started;
   level.time_limit = settings.time_limit / 2;
+  level.explorers = settings.coarse_explorers;
   const auto quiet = [](ColonyStrategies strategies) {
     strategies.figures = nullptr;
     return strategies;

@@ -48,6 +48,9 @@ const SettingsTable<ColonySettings>& colony_table() {
             "on a 2D map at least 256 such blocks wide or high: plan first on the map coarsened into blocks of this "
             "many cells a side (free where all their cells are), then let the ants walk only within one block of "
             "that colony's best path (0 or 1 = plan on the map alone)"),
+      field("coarse-explorers", &S::coarse_explorers, "0:1",
+            "with coarse-to-fine: the share of explorers (as --explorers) of the coarse colonies, which choose the "
+            "corridor; the colony on the map itself keeps --explorers"),
       choice("walk-length", &S::walk_length, {"grid", "line-of-sight"}, {WalkLength::grid, WalkLength::line_of_sight},
              "the length an arrived walk is ranked and rewarded by: the sum of its grid steps, or its length pulled "
              "taut Theta*-style (a waypoint is kept while the walk's next cells are in line of sight of it)"),

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -25,8 +26,11 @@ class Deadline {
     return moves % kMovesPerLook == 0 && look();
   }
   bool passed() const { return limited_ && (passed_.load(std::memory_order_relaxed) || look()); }
-  // Ends the search this much earlier, for work after it; before the walks begin.
-  void hold_back(Clock::duration reserve) const { end_ -= reserve; }
+  // Ends the search this much earlier, for work after it, but takes at most half of the time
+  // left: the walks must still have some. Before the walks begin.
+  void hold_back(Clock::duration reserve) const {
+    if (limited_) end_ -= std::min(reserve, std::max(Clock::duration::zero(), (end_ - Clock::now()) / 2));
+  }
 
  private:
   bool look() const {

@@ -80,6 +80,9 @@ struct ColonySettings {
   // of a time limit. Where the coarse map does not connect start and goal, or its corridor does
   // not, the colony plans on the whole map. Smaller maps, and 0 or 1: one level.
   int coarse_to_fine = 0;
+  // The explorers' share (explorers) at the coarse levels of coarse_to_fine: there the colony
+  // chooses the corridor the ants on the map itself keep, and its walks are short.
+  double coarse_explorers = 0.0;
   WalkLength walk_length = WalkLength::grid;
   // Line-of-sight walks: the longest straight segment, in cells, checked from a waypoint (0 = no
   // limit). A check costs its length in cells, so unlimited segments cost a walk's length squared

@@ -45,11 +45,15 @@ std::vector<std::uint8_t> coarse_corridor(const Graph& graph, const CoarseProble
       for (int x = std::max(0, c.x - 1); x <= std::min(coarse.graph.width - 1, c.x + 1); ++x)
         open_block[static_cast<std::size_t>(coarse.graph.node({x, y}))] = 1;
   }
+  // Opened block by block, with no division per cell of the map.
   std::vector<std::uint8_t> closed(static_cast<std::size_t>(graph.num_nodes()), 1);
-  for (int y = 0; y < graph.height; ++y)
-    for (int x = 0; x < graph.width; ++x)
-      if (open_block[static_cast<std::size_t>(coarse.graph.node({x / block, y / block}))])
-        closed[static_cast<std::size_t>(graph.node({x, y}))] = 0;
+  for (NodeId b = 0; b < coarse.graph.num_nodes(); ++b) {
+    if (!open_block[static_cast<std::size_t>(b)]) continue;
+    const Cell c = coarse.graph.cell(b);
+    const int x0 = c.x * block, x1 = std::min(graph.width, x0 + block);
+    for (int y = c.y * block; y < std::min(graph.height, (c.y + 1) * block); ++y)
+      std::fill_n(closed.begin() + graph.node({x0, y}), x1 - x0, std::uint8_t{0});
+  }
   return closed;
 }
 

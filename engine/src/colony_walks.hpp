@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -20,12 +19,9 @@
 #include <string>
 #include <vector>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
-
 #include "aco/engine/colony.hpp"
 #include "deadline.hpp"
+#include "huge_pages.hpp"
 #include "aco/engine/dead_ends.hpp"
 #include "aco/error.hpp"
 #include "aco/figures.hpp"
@@ -36,32 +32,6 @@
 #include "aco/rng.hpp"
 
 namespace aco::colony_detail {
-
-// Asks the kernel to back a large, untouched buffer with transparent huge pages. On a 512x512 map
-// a per-edge field is 16 MB; faulting it in 4 kB pages costs tens of milliseconds per run, more
-// than the ants' work on a short run. Asked only where the kernel gives huge pages to those who
-// ask ("madvise" mode): in "always" mode it backs the buffer with them anyway where it has them
-// free, and asking adds the wait while it compacts memory for more (up to 0.3 s for a 2048x2048
-// map's field). A hint only: never a change of result.
-inline bool huge_pages_on_request() {
-  std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
-  std::string modes;
-  std::getline(mode, modes);
-  return modes.find("[madvise]") != std::string::npos;
-}
-
-inline void prefer_huge_pages(void* data, std::size_t bytes) {
-#ifdef __linux__
-  static const bool on_request = huge_pages_on_request();
-  constexpr std::uintptr_t kHuge = std::uintptr_t{1} << 21;
-  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
-  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kHuge - 1);
-  if (on_request && end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#else
-  (void)data;
-  (void)bytes;
-#endif
-}
 
 // x^p with the common exponents spared a pow() call: it runs once per candidate of every step.
 inline double power(double x, double p) {
@@ -184,7 +154,10 @@ class Colony {
       forbidden_ = *settings.closed;
     else
       forbidden_.assign(graph.num_nodes(), 0);
-    if (settings.fill_dead_ends) forbidden_ = dead_ends(graph, start, goal, forbidden_);
+    if (settings.fill_dead_ends)
+      forbidden_ = dead_ends(
+          graph, start, goal,
+          settings.closed ? std::span<const std::uint8_t>(*settings.closed) : std::span<const std::uint8_t>());
     known_forbidden_ = forbidden_;
     local_search_ = settings.local_search != LocalSearch::none;
     for (NodeId n = 0; n < graph.num_nodes(); ++n) max_degree_ = std::max(max_degree_, graph.degree(n));

@@ -68,6 +68,17 @@ aco::OccupancyGrid random_grid(std::mt19937& rng, int w, int h) {
   return map;
 }
 
+aco::Graph build(const aco::Map& map, aco::Neighbourhood n, bool corner_cutting) {
+  aco::GraphOptions options;
+  options.neighbourhood = n;
+  options.corner_cutting = corner_cutting;
+  return aco::build_graph(map, options);
+}
+
+bool has_edge(const aco::Graph& g, aco::Cell a, aco::Cell b) { return g.find_edge(g.node(a), g.node(b)) >= 0; }
+
+std::vector<std::string> open_grid(int w, int h) { return std::vector<std::string>(h, std::string(w, '.')); }
+
 aco::OccupancyGrid grid(const std::vector<std::string>& rows) {
   aco::OccupancyGrid g(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), "test grid");
   for (int y = 0; y < g.height(); ++y)

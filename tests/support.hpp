@@ -31,6 +31,13 @@ std::vector<std::string> map1_acoplan_args(const std::string& plugin_dir, const 
 // A map from rows of text: '#' blocked, anything else free. Row 0 is the top.
 aco::OccupancyGrid grid(const std::vector<std::string>& rows);
 
+// A map's graph with the given neighbourhood and corner rule.
+aco::Graph build(const aco::Map& map, aco::Neighbourhood n, bool corner_cutting = false);
+// Whether the graph has an edge from cell a to cell b.
+bool has_edge(const aco::Graph& g, aco::Cell a, aco::Cell b);
+// The rows of a w x h map with no obstacle, for grid().
+std::vector<std::string> open_grid(int w, int h);
+
 // The build tree's plugins (a process-wide registry).
 aco::PluginRegistry& plugins();
 

@@ -9,23 +9,6 @@
 
 namespace {
 
-// The graph without the edges to and from the nodes marked in `closed`.
-aco::Graph without(const aco::Graph& graph, const std::vector<std::uint8_t>& closed) {
-  aco::Graph narrowed = graph;
-  narrowed.targets.clear();
-  narrowed.edge_moves.clear();
-  for (aco::NodeId n = 0; n < graph.num_nodes(); ++n) {
-    narrowed.offsets[n] = narrowed.num_edges();
-    for (aco::EdgeId e = graph.edges_begin(n); e < graph.edges_end(n); ++e)
-      if (!closed[n] && !closed[graph.targets[e]]) {
-        narrowed.targets.push_back(graph.targets[e]);
-        narrowed.edge_moves.push_back(graph.edge_moves[e]);
-      }
-  }
-  narrowed.offsets[graph.num_nodes()] = narrowed.num_edges();
-  return narrowed;
-}
-
 // A map of rooms, `side` cells a side: walls every 32 cells, 4 cells thick, each wall segment
 // between two crossings with a door of 8 cells at a random place, and random pillars (2x2) in the
 // rooms; the corners (4,4) and (side - 5, side - 5) are free.
@@ -87,7 +70,7 @@ TEST_CASE("dead ends and reachability within closed nodes are those of the graph
     std::vector<std::uint8_t> closed(graph.num_nodes(), 0);
     for (auto& c : closed) c = rng() % 4 == 0;
     closed[start] = closed[goal] = 0;
-    const aco::Graph narrowed = without(graph, closed);
+    const aco::Graph narrowed = aco::subgraph(graph, closed);
     INFO("trial " << trial);
     CHECK(aco::reachable(graph, start, goal, closed) == aco::reachable(narrowed, start, goal));
     CHECK(aco::dead_ends(graph, start, goal, closed) == aco::dead_ends(narrowed, start, goal));
@@ -102,7 +85,10 @@ TEST_CASE("coarse to fine: the ants walk within one block of the coarse colony's
   REQUIRE(run.solved);
   REQUIRE(run.coarse);
   REQUIRE(run.coarse->solved);
-  CHECK(run.walked_coarse_corridor);
+  // The ants walked the corridor's graph, whose edges the pheromone is per edge of.
+  REQUIRE(run.corridor_graph);
+  CHECK(run.corridor_graph->num_edges() * 10 < graph.num_edges());
+  CHECK(run.pheromone.size() == static_cast<std::size_t>(run.corridor_graph->num_edges()));
   // The coarse map is 256x256 blocks: too small to be coarsened again, so its path is in its cells.
   const int coarse_side = 256;
   for (const aco::NodeId n : run.coarse->path) CHECK(n < coarse_side * coarse_side);
@@ -127,7 +113,7 @@ TEST_CASE("coarse to fine gives bit-identical runs for any thread count", "[coar
   const aco::ColonyResult run = test::run_on_thread_counts(graph, graph.node({4, 4}), graph.node({1019, 1019}), s,
                                                            {"uniform", "progress", "max_min", "backtrack"});
   CHECK(run.solved);
-  CHECK(run.walked_coarse_corridor);
+  CHECK(run.corridor_graph);
 }
 
 TEST_CASE("coarse to fine leaves small maps to one level, bit for bit", "[coarse_to_fine]") {
@@ -140,7 +126,7 @@ TEST_CASE("coarse to fine leaves small maps to one level, bit for bit", "[coarse
   s.coarse_to_fine = 0;
   const aco::ColonyResult one_level = plan(graph, {4, 4}, {1015, 1015}, s);
   CHECK_FALSE(coarse.coarse);
-  CHECK_FALSE(coarse.walked_coarse_corridor);
+  CHECK_FALSE(coarse.corridor_graph);
   test::check_same_run(coarse, one_level);
 }
 
@@ -155,7 +141,7 @@ TEST_CASE("coarse to fine plans on the whole map where the blocks close the only
   const aco::ColonyResult run = plan(graph, {10, 10}, {1000, 1000}, s);
   CHECK(run.solved);
   CHECK_FALSE(run.coarse);
-  CHECK_FALSE(run.walked_coarse_corridor);
+  CHECK_FALSE(run.corridor_graph);
 }
 
 TEST_CASE("the coarse colony is the colony with the same settings on the map in blocks, explorers its own",

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <set>
 #include <string>
 #include <utility>
@@ -249,6 +250,42 @@ TEST_CASE("Reverse edges, find_edge and blocked cells on a map with obstacles", 
       CHECK(g.cell(g.node({5, 3})) == aco::Cell{5, 3});
       CHECK(g.node({5, 3}) == 3 * 8 + 5);
     }
+  }
+}
+
+TEST_CASE("subgraph keeps the edges between open nodes, and per_edge_of maps their values back", "[graph]") {
+  std::mt19937 rng(23);
+  for (int trial = 0; trial < 100; ++trial) {
+    const aco::OccupancyGrid map =
+        test::random_grid(rng, 3 + static_cast<int>(rng() % 10), 3 + static_cast<int>(rng() % 10));
+    const auto n = trial % 3 == 0 ? aco::Neighbourhood::four : aco::Neighbourhood::eight;
+    const aco::Graph g = build(map, n, trial % 2 == 0);
+    std::vector<std::uint8_t> closed(g.num_nodes(), 0);
+    for (auto& c : closed) c = rng() % 3 == 0;
+    const aco::Graph part = aco::subgraph(g, closed);
+    INFO("trial " << trial);
+    REQUIRE(part.num_nodes() == g.num_nodes());
+    check_invariants(part);
+    std::vector<double> values(static_cast<std::size_t>(part.num_edges()));
+    for (std::size_t e = 0; e < values.size(); ++e) values[e] = 1.0 + static_cast<double>(e);
+    const std::vector<double> whole = aco::per_edge_of(g, part, values);
+    REQUIRE(whole.size() == static_cast<std::size_t>(g.num_edges()));
+    int kept = 0;
+    for (aco::NodeId a = 0; a < g.num_nodes(); ++a)
+      for (aco::EdgeId e = g.edges_begin(a); e < g.edges_end(a); ++e) {
+        const aco::NodeId b = g.targets[e];
+        const aco::EdgeId in_part = part.find_edge(a, b);
+        if (closed[a] || closed[b]) {
+          CHECK(in_part == -1);
+          CHECK(whole[e] == 0.0);
+          continue;
+        }
+        ++kept;
+        REQUIRE(in_part >= 0);
+        CHECK(part.cost(in_part) == g.cost(e));
+        CHECK(whole[e] == values[in_part]);
+      }
+    CHECK(part.num_edges() == kept);
   }
 }
 

@@ -121,6 +121,53 @@ EdgeId Graph::reverse_edge(EdgeId e) const {
   return edge_by_move(targets[e], -m.dx, -m.dy, -m.dz);
 }
 
+Graph subgraph(const Graph& graph, std::span<const std::uint8_t> closed) {
+  Graph open;
+  open.map = graph.map;
+  open.options = graph.options;
+  open.width = graph.width;
+  open.height = graph.height;
+  open.depth = graph.depth;
+  open.volumetric = graph.volumetric;
+  open.move_lengths = graph.move_lengths;
+  const NodeId n = graph.num_nodes();
+  open.offsets.assign(static_cast<std::size_t>(n) + 1, 0);
+  open.move_mask.assign(static_cast<std::size_t>(n), 0);
+  const bool terrain = !graph.terrain_positions.empty();
+  if (terrain) open.terrain_positions = graph.terrain_positions;
+  const auto kept = [&](EdgeId e) { return !closed[graph.targets[e]]; };
+  std::size_t edges = 0;  // counted first: the edges of a large corridor would grow by doubling
+  for (NodeId a = 0; a < n; ++a)
+    if (!closed[a])
+      for (EdgeId e = graph.edges_begin(a); e < graph.edges_end(a); ++e) edges += kept(e);
+  open.targets.reserve(edges);
+  open.edge_moves.reserve(edges);
+  if (terrain) open.terrain_costs.reserve(edges);
+  for (NodeId a = 0; a < n; ++a) {
+    open.offsets[a] = static_cast<EdgeId>(open.targets.size());
+    if (closed[a]) continue;
+    for (EdgeId e = graph.edges_begin(a); e < graph.edges_end(a); ++e) {
+      if (!kept(e)) continue;
+      open.targets.push_back(graph.targets[e]);
+      open.edge_moves.push_back(graph.edge_moves[e]);
+      open.move_mask[a] |= 1u << graph.edge_moves[e];
+      if (terrain) open.terrain_costs.push_back(graph.terrain_costs[e]);
+    }
+  }
+  open.offsets[n] = static_cast<EdgeId>(open.targets.size());
+  return open;
+}
+
+std::vector<double> per_edge_of(const Graph& graph, const Graph& part, std::span<const double> values) {
+  std::vector<double> whole(static_cast<std::size_t>(graph.num_edges()), 0.0);
+  for (NodeId a = 0; a < part.num_nodes(); ++a)
+    for (EdgeId e = part.edges_begin(a), in_whole = graph.edges_begin(a); e < part.edges_end(a); ++e) {
+      while (graph.edge_moves[in_whole] != part.edge_moves[e]) ++in_whole;  // both in move order
+      whole[static_cast<std::size_t>(in_whole)] = values[static_cast<std::size_t>(e)];
+    }
+  return whole;
+}
+
 EdgeId Graph::find_edge(NodeId a, NodeId b) const {
   const Cell ca = cell(a), cb = cell(b);
   return edge_by_move(a, cb.x - ca.x, cb.y - ca.y, cb.z - ca.z);
@@ -400,8 +447,12 @@ bool voxel_line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
 
 }  // namespace
 
-bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
-  if (map.volumetric()) return voxel_line_of_sight(map, a, b, corner_cutting);
+namespace {
+
+// line_of_sight() in the plane, for the concrete map (with_concrete_map()): the smoothers' string
+// pulling asks it thousands of times along a long path, a virtual call per cell otherwise.
+template <class M>
+bool planar_line_of_sight(const M& map, Cell a, Cell b, bool corner_cutting) {
   // Amanatides-Woo traversal in exact integers. Seen from a's centre, the segment leaves the
   // current column after crossing x-distance ix + 1/2, i.e. at t = (2*ix + 1) / (2*|dx|), and
   // the current row at t = (2*iy + 1) / (2*|dy|). Cross-multiplied: compare (2*ix + 1) * |dy|
@@ -441,9 +492,20 @@ bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
       ++ix;
       ++iy;
     }
-    if (!map.passable(c) || !map.step_allowed(previous, c)) return false;
+    if (!map.passable(c)) return false;
+    if constexpr (!std::is_same_v<M, OccupancyGrid>)  // a plain grid allows every step between free cells
+      if (!map.step_allowed(previous, c)) return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool line_of_sight(const Map& map, Cell a, Cell b, bool corner_cutting) {
+  if (map.volumetric()) return voxel_line_of_sight(map, a, b, corner_cutting);
+  bool free = false;
+  with_concrete_map(map, [&](const auto& concrete) { free = planar_line_of_sight(concrete, a, b, corner_cutting); });
+  return free;
 }
 
 namespace {

@@ -138,11 +138,10 @@ ColonyResult iterate(const Graph& graph, const ColonySettings& s, const Deadline
                      Construct&& construct) {
   ColonyResult result;
   const SearchClock clock;
-  const auto setting_up = Clock::now();
   for (Colony* colony : colonies) colony->begin();
-  // The run ends with passes over the per-edge fields as its set-up began with (the final check,
-  // the pheromone handed out, their memory freed): a time limit leaves them as long.
-  deadline.hold_back(Clock::now() - setting_up);
+  // The run ends with passes over the per-node and per-edge fields its set-up made (the final
+  // check, the pheromone handed out, their memory freed): a time limit leaves them as long.
+  deadline.hold_back(Clock::now() - colonies.front()->constructed());
   const std::size_t searching = islands ? colonies.size() : 1;
   // The corridors walked; in voxel worlds corridors are not classes of one key.
   std::optional<CorridorKeys> corridor_keys;
@@ -344,6 +343,7 @@ void check_inputs(const Graph& graph, NodeId start, NodeId goal, const ColonyStr
 struct FineLevel {
   ColonySettings settings;  // with the coarse colony's corridor, if it leaves one
   std::shared_ptr<const ColonyResult> coarse;
+  std::shared_ptr<const Graph> corridor_graph;  // the corridor's edges only, if it leaves one
 };
 
 // ColonySettings::coarse_to_fine: the coarse colony's run (its figures not recorded: they are the
@@ -351,7 +351,7 @@ struct FineLevel {
 FineLevel coarse_to_fine(const Graph& graph, NodeId start, NodeId goal, const ColonyStrategies& pipeline,
                          const ColonySettings& settings, Clock::time_point started, const ColonyStrategies* backward,
                          std::span<const ColonyStrategies> islands) {
-  FineLevel fine{settings, nullptr};
+  FineLevel fine{settings, nullptr, nullptr};
   const int block = settings.coarse_to_fine;
   if (block <= 1 || settings.closed || !coarsens(graph, block)) return fine;
   const std::optional<CoarseProblem> coarse = coarse_problem(graph, start, goal, block);
@@ -375,7 +375,11 @@ FineLevel coarse_to_fine(const Graph& graph, NodeId start, NodeId goal, const Co
                                                 quiet_backward ? &*quiet_backward : nullptr, quiet_islands));
   if (result->solved) {
     auto closed = std::make_shared<std::vector<std::uint8_t>>(coarse_corridor(graph, *coarse, result->path, block));
-    if (reachable(graph, start, goal, *closed)) fine.settings.closed = std::move(closed);
+    if (reachable(graph, start, goal, *closed)) {
+      // The ants walk the corridor's graph: per-edge fields for its edges only, not the map's.
+      fine.corridor_graph = std::make_shared<const Graph>(subgraph(graph, *closed));
+      fine.settings.closed = std::move(closed);
+    }
   }
   result->pheromone = {};
   fine.coarse = std::move(result);
@@ -419,17 +423,18 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Col
   // per-edge fields, dead-end filling) too.
   const Clock::time_point started = settings.search_began.value_or(Clock::now());
   const FineLevel fine = coarse_to_fine(graph, start, goal, pipeline, settings, started, backward, islands);
+  const Graph& walked = fine.corridor_graph ? *fine.corridor_graph : graph;
   const auto run = [&](const ColonySettings& s, bool check_every_hook) {
     const Deadline deadline(started, s.time_limit);
     if (s.bidirectional)
-      return run_bidirectional(graph, start, goal, pipeline, *backward, s, check_every_hook, deadline);
-    if (s.colonies > 1) return run_islands(graph, start, goal, island_pipelines, s, check_every_hook, deadline);
-    return run_single(graph, start, goal, pipeline, s, check_every_hook, deadline);
+      return run_bidirectional(walked, start, goal, pipeline, *backward, s, check_every_hook, deadline);
+    if (s.colonies > 1) return run_islands(walked, start, goal, island_pipelines, s, check_every_hook, deadline);
+    return run_single(walked, start, goal, pipeline, s, check_every_hook, deadline);
   };
   try {
     ColonyResult result = run(fine.settings, false);
     result.coarse = fine.coarse;
-    result.walked_coarse_corridor = fine.settings.closed != nullptr;
+    result.corridor_graph = fine.corridor_graph;
     return result;
   } catch (const PheromoneFoundBad& found) {
     // Strategies start every run afresh (begin_run(), strategies.hpp), so the repeat makes the
@@ -442,10 +447,10 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Col
     try {
       run(repeat, true);
     } catch (const PheromoneFoundBad&) {}
-    const NodeId from = graph.source(static_cast<EdgeId>(found.edge));
+    const NodeId from = walked.source(static_cast<EdgeId>(found.edge));
     throw InvalidValueError(
-        "the pheromone of edge " + to_string(graph.cell(from)) + " -> " +
-        to_string(graph.cell(graph.targets[found.edge])) + " was " + to_string(ParamValue(found.value)) + " " +
+        "the pheromone of edge " + to_string(walked.cell(from)) + " -> " +
+        to_string(walked.cell(walked.targets[found.edge])) + " was " + to_string(ParamValue(found.value)) + " " +
         found.where + " in iteration " + std::to_string(found.iteration) +
         " (0-based, as Context::iteration), but not when the run was repeated with a check after every hook: "
         "the init, update or deadlock plugin is not deterministic (aco-plugin-check tells which); it must be "

@@ -227,6 +227,7 @@ class Colony {
   }
 
   Scratch& local_scratch() { return scratch_->local(); }
+  std::chrono::steady_clock::time_point constructed() const { return constructed_; }
   const Context& context() const { return context_; }
   std::vector<double> take_pheromone() {  // at the end of a run
     trail_.values();
@@ -631,6 +632,8 @@ class Colony {
     return static_cast<int>(roulette(rng, {weights, static_cast<std::size_t>(n)}, total));
   }
 
+  // First: the colony's set-up is timed from here (constructed()).
+  const std::chrono::steady_clock::time_point constructed_ = std::chrono::steady_clock::now();
   const Graph& g_;
   ColonyStrategies p_;
   ColonySettings s_;

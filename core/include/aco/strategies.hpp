@@ -36,7 +36,12 @@ struct Context {
   // When the run's time limit ends (none: no limit). The smoother runs after the search, within
   // the limit too: past it, a smoother that refines in rounds stops and returns what it has.
   std::optional<std::chrono::steady_clock::time_point> deadline;
-  bool past_deadline() const { return deadline && std::chrono::steady_clock::now() >= *deadline; }
+  bool past_deadline() const { return !leaves_time_for({}); }
+  // Whether work taking `duration` from now would end before the deadline (always, with none):
+  // a round as long as the last one, say.
+  bool leaves_time_for(std::chrono::steady_clock::duration duration) const {
+    return !deadline || std::chrono::steady_clock::now() + duration < *deadline;
+  }
 
   // A plugin's own figures of its run (restarts, nodes forbidden, deadlocks resolved), kept beside
   // the planner's (PlanOutcome::properties) as "<slot>/<plugin>.<name>": in acoplan's --json,

@@ -6,6 +6,7 @@
 // pulls the string over the grid path's nodes and takes a shortcut only when it is shorter over
 // the surface and, with a clearance, keeps clear. README.md gives the readings.
 #include <algorithm>
+#include <chrono>
 #include <climits>
 #include <cmath>
 #include <cstddef>
@@ -170,7 +171,10 @@ class TautSmoother final : public aco::Smoother {
     std::vector<aco::Cell> cells;
     for (const aco::NodeId n : path) cells.push_back(g.cell(n));
     add_touched_cells(best, cells);
-    for (int round = 0; round < p_.rounds && !c.past_deadline(); ++round) {
+    // Within a time limit a round begins only where one as long as the last still ends before it.
+    std::chrono::steady_clock::duration last_round{};
+    for (int round = 0; round < p_.rounds && c.leaves_time_for(last_round); ++round) {
+      const auto round_began = std::chrono::steady_clock::now();
       const auto found =
           shortest_in_corridor(*g.map, cells, p_.corridor_width, g.cell(path.front()), g.cell(path.back()));
       if (!found || !(found->length < best_length * (1 - 1e-12))) break;
@@ -178,6 +182,7 @@ class TautSmoother final : public aco::Smoother {
       best_length = found->length;
       cells.clear();
       add_touched_cells(best, cells);
+      last_round = std::chrono::steady_clock::now() - round_began;
     }
     // Exactly the nodes' positions at the ends, whatever the search's arithmetic.
     best.front() = g.position(path.front());

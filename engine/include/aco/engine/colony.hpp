@@ -161,9 +161,11 @@ struct ColonyResult : SearchResult {
   std::vector<std::uint64_t> corridors;
   int restarts = 0;  // epochs begun by restart_after
   // Coarse to fine (ColonySettings::coarse_to_fine): the coarse colony's result (its path in the
-  // coarse map's nodes) and whether its corridor bounded the walks on the map itself.
+  // coarse map's nodes) and, where its corridor bounded the walks on the map itself, the
+  // corridor's graph (subgraph()) they walked, which `pheromone` is per edge of (per_edge_of()
+  // gives it per edge of the run's graph); null: the walks had the whole map.
   std::shared_ptr<const ColonyResult> coarse;
-  bool walked_coarse_corridor = false;
+  std::shared_ptr<const Graph> corridor_graph;
 };
 
 // Runs the colony in the calling thread's TBB arena. Throws Error if a strategy writes a

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -41,6 +42,7 @@ struct PlanOutcome {
   std::map<std::string, ParamValue> properties;
   std::vector<double> iteration_best;  // aco: per iteration, for pictures
   std::vector<double> pheromone;  // aco: final tau per edge, for pictures
+  std::shared_ptr<const Graph> pheromone_graph;  // aco: the graph `pheromone` is per edge of; null: the run's
   std::vector<std::uint64_t> corridors;  // aco: the corridors its walks took (ColonyResult::corridors)
 
   bool solved() const { return search.solved; }

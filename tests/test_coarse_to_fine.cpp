@@ -86,19 +86,29 @@ TEST_CASE("coarse to fine: the ants walk within one block of the coarse colony's
   REQUIRE(run.coarse);
   REQUIRE(run.coarse->solved);
   // The ants walked the corridor's graph, whose edges the pheromone is per edge of.
-  REQUIRE(run.corridor_graph);
-  CHECK(run.corridor_graph->num_edges() * 10 < graph.num_edges());
-  CHECK(run.pheromone.size() == static_cast<std::size_t>(run.corridor_graph->num_edges()));
+  REQUIRE(run.walked_coarse_corridor);
   // The coarse map is 256x256 blocks: too small to be coarsened again, so its path is in its cells.
   const int coarse_side = 256;
   for (const aco::NodeId n : run.coarse->path) CHECK(n < coarse_side * coarse_side);
-  for (const aco::NodeId n : run.path) {
+  const auto in_corridor = [&](aco::NodeId n) {
     const aco::Cell c = graph.cell(n);
-    const bool near = std::any_of(run.coarse->path.begin(), run.coarse->path.end(), [&](aco::NodeId b) {
+    return std::any_of(run.coarse->path.begin(), run.coarse->path.end(), [&](aco::NodeId b) {
       return std::abs(b % coarse_side - c.x / 4) <= 1 && std::abs(b / coarse_side - c.y / 4) <= 1;
     });
-    INFO("cell " << aco::to_string(c));
-    CHECK(near);
+  };
+  for (const aco::NodeId n : run.path) {
+    INFO("cell " << aco::to_string(graph.cell(n)));
+    CHECK(in_corridor(n));
+  }
+  // The pheromone is the corridor's edges' only, each named by its edge in the map's graph.
+  CHECK(run.pheromone.size() * 10 < static_cast<std::size_t>(graph.num_edges()));
+  REQUIRE(run.pheromone_edges.size() == run.pheromone.size());
+  for (std::size_t i = 0; i < run.pheromone_edges.size(); ++i) {
+    const aco::EdgeId e = run.pheromone_edges[i];
+    REQUIRE(e >= 0);
+    REQUIRE(e < graph.num_edges());
+    if (i > 0) CHECK(e > run.pheromone_edges[i - 1]);
+    if (i % 97 == 0) CHECK((in_corridor(graph.source(e)) && in_corridor(graph.targets[e])));
   }
   CHECK(run.path.front() == graph.node(start));
   CHECK(run.path.back() == graph.node(goal));
@@ -113,7 +123,7 @@ TEST_CASE("coarse to fine gives bit-identical runs for any thread count", "[coar
   const aco::ColonyResult run = test::run_on_thread_counts(graph, graph.node({4, 4}), graph.node({1019, 1019}), s,
                                                            {"uniform", "progress", "max_min", "backtrack"});
   CHECK(run.solved);
-  CHECK(run.corridor_graph);
+  CHECK(run.walked_coarse_corridor);
 }
 
 TEST_CASE("coarse to fine leaves small maps to one level, bit for bit", "[coarse_to_fine]") {
@@ -126,7 +136,7 @@ TEST_CASE("coarse to fine leaves small maps to one level, bit for bit", "[coarse
   s.coarse_to_fine = 0;
   const aco::ColonyResult one_level = plan(graph, {4, 4}, {1015, 1015}, s);
   CHECK_FALSE(coarse.coarse);
-  CHECK_FALSE(coarse.corridor_graph);
+  CHECK_FALSE(coarse.walked_coarse_corridor);
   test::check_same_run(coarse, one_level);
 }
 
@@ -141,7 +151,7 @@ TEST_CASE("coarse to fine plans on the whole map where the blocks close the only
   const aco::ColonyResult run = plan(graph, {10, 10}, {1000, 1000}, s);
   CHECK(run.solved);
   CHECK_FALSE(run.coarse);
-  CHECK_FALSE(run.corridor_graph);
+  CHECK_FALSE(run.walked_coarse_corridor);
 }
 
 TEST_CASE("the coarse colony is the colony with the same settings on the map in blocks, explorers its own",

@@ -253,7 +253,7 @@ TEST_CASE("Reverse edges, find_edge and blocked cells on a map with obstacles", 
   }
 }
 
-TEST_CASE("subgraph keeps the edges between open nodes, and per_edge_of maps their values back", "[graph]") {
+TEST_CASE("subgraph keeps the edges between open nodes, and edges_in and per_edge map them back", "[graph]") {
   std::mt19937 rng(23);
   for (int trial = 0; trial < 100; ++trial) {
     const aco::OccupancyGrid map =
@@ -268,7 +268,7 @@ TEST_CASE("subgraph keeps the edges between open nodes, and per_edge_of maps the
     check_invariants(part);
     std::vector<double> values(static_cast<std::size_t>(part.num_edges()));
     for (std::size_t e = 0; e < values.size(); ++e) values[e] = 1.0 + static_cast<double>(e);
-    const std::vector<double> whole = aco::per_edge_of(g, part, values);
+    const std::vector<double> whole = aco::per_edge(g, aco::edges_in(g, part), values);
     REQUIRE(whole.size() == static_cast<std::size_t>(g.num_edges()));
     int kept = 0;
     for (aco::NodeId a = 0; a < g.num_nodes(); ++a)

@@ -91,16 +91,25 @@ std::uint64_t obstacle_key(std::uint64_t n) {
 }  // namespace
 
 CorridorKeys::CorridorKeys(const Map& map)
-    : width_(map.width()),
-      height_(map.height()),
-      up_to_(static_cast<std::size_t>(map.width()) * static_cast<std::size_t>(map.height()), 0) {
+    : width_(map.width()), height_(map.height()), row_begin_(static_cast<std::size_t>(map.height()) + 1, 0) {
   const std::vector<Cell> cells = obstacles_inside(map);
   obstacles_ = cells.size();
-  std::uint64_t n = 0;
-  for (const Cell& c : cells) up_to_[static_cast<std::size_t>(c.y) * width_ + c.x] = obstacle_key(++n);
-  for (int y = 0; y < height_; ++y)  // running sums along each row
-    for (int x = 1; x < width_; ++x)
-      up_to_[static_cast<std::size_t>(y) * width_ + x] += up_to_[static_cast<std::size_t>(y) * width_ + x - 1];
+  std::vector<std::size_t> order(cells.size());  // by row, then by x; an obstacle's key is its number's
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return cells[a].y != cells[b].y ? cells[a].y < cells[b].y : cells[a].x < cells[b].x;
+  });
+  for (const Cell& c : cells) ++row_begin_[static_cast<std::size_t>(c.y) + 1];
+  for (int y = 0; y < height_; ++y)
+    row_begin_[static_cast<std::size_t>(y) + 1] += row_begin_[static_cast<std::size_t>(y)];
+  ray_x_.reserve(cells.size());
+  up_to_.reserve(cells.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Cell c = cells[order[k]];
+    const bool first_of_row = k == row_begin_[static_cast<std::size_t>(c.y)];
+    ray_x_.push_back(c.x);
+    up_to_.push_back(obstacle_key(order[k] + 1) + (first_of_row ? 0 : up_to_.back()));  // running sums along the row
+  }
 }
 
 // The keys of the rays a segment crosses, signed. The ray of the obstacle in cell (ox, oy) runs
@@ -131,7 +140,7 @@ std::uint64_t CorridorKeys::key(std::span<const Eigen::Vector3d> path) const {
 
 // crossing()'s rule, with a one-row step (every step of the 4- and 8-neighbourhoods) in integers:
 // it crosses the rays of the lower cell's row (larger y) at that cell's x. A 2D graph numbers its
-// nodes as the cells, row by row, so a node is its cell's index in up_to_. Its row is found from
+// nodes as the cells, row by row, so a node's column is its offset from its row's first. Its row is found from
 // the last node's without a division where it is the same or the next one up or down: this runs
 // on every walk that arrives, and on a 20x20 map a division per node was 8 % of a run.
 std::uint64_t CorridorKeys::key(const Graph& graph, std::span<const NodeId> walk) const {
@@ -147,9 +156,9 @@ std::uint64_t CorridorKeys::key(const Graph& graph, std::span<const NodeId> walk
                          : column < 0 && column >= -width        ? row - 1
                                                                  : b / graph.width;
     if (next_row == row + 1)
-      sum += up_to_[static_cast<std::size_t>(b)];
+      sum += keys_up_to(next_row, static_cast<int>(column - width));
     else if (next_row == row - 1)
-      sum -= up_to_[static_cast<std::size_t>(a)];
+      sum -= keys_up_to(row, static_cast<int>(a - row_begin));
     else if (next_row != row)
       sum += crossing(a % graph.width, row, b % graph.width, next_row);
     row = next_row;

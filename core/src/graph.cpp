@@ -158,13 +158,19 @@ Graph subgraph(const Graph& graph, std::span<const std::uint8_t> closed) {
   return open;
 }
 
-std::vector<double> per_edge_of(const Graph& graph, const Graph& part, std::span<const double> values) {
-  std::vector<double> whole(static_cast<std::size_t>(graph.num_edges()), 0.0);
+std::vector<EdgeId> edges_in(const Graph& graph, const Graph& part) {
+  std::vector<EdgeId> ids(static_cast<std::size_t>(part.num_edges()));
   for (NodeId a = 0; a < part.num_nodes(); ++a)
-    for (EdgeId e = part.edges_begin(a), in_whole = graph.edges_begin(a); e < part.edges_end(a); ++e) {
-      while (graph.edge_moves[in_whole] != part.edge_moves[e]) ++in_whole;  // both in move order
-      whole[static_cast<std::size_t>(in_whole)] = values[static_cast<std::size_t>(e)];
+    for (EdgeId e = part.edges_begin(a), in_graph = graph.edges_begin(a); e < part.edges_end(a); ++e) {
+      while (graph.edge_moves[in_graph] != part.edge_moves[e]) ++in_graph;  // both in move order
+      ids[static_cast<std::size_t>(e)] = in_graph++;
     }
+  return ids;
+}
+
+std::vector<double> per_edge(const Graph& graph, std::span<const EdgeId> edges, std::span<const double> values) {
+  std::vector<double> whole(static_cast<std::size_t>(graph.num_edges()), 0.0);
+  for (std::size_t i = 0; i < edges.size(); ++i) whole[static_cast<std::size_t>(edges[i])] = values[i];
   return whole;
 }
 

@@ -381,7 +381,9 @@ FineLevel coarse_to_fine(const Graph& graph, NodeId start, NodeId goal, const Co
       fine.settings.closed = std::move(closed);
     }
   }
+  // Its path is what the level below uses: its fields' memory goes now.
   result->pheromone = {};
+  result->pheromone_edges = {};
   fine.coarse = std::move(result);
   return fine;
 }
@@ -434,7 +436,10 @@ ColonyResult run_colony(const Graph& graph, NodeId start, NodeId goal, const Col
   try {
     ColonyResult result = run(fine.settings, false);
     result.coarse = fine.coarse;
-    result.corridor_graph = fine.corridor_graph;
+    if (fine.corridor_graph) {
+      result.walked_coarse_corridor = true;
+      result.pheromone_edges = edges_in(graph, *fine.corridor_graph);
+    }
     return result;
   } catch (const PheromoneFoundBad& found) {
     // Strategies start every run afresh (begin_run(), strategies.hpp), so the repeat makes the

@@ -26,6 +26,7 @@
 #include "aco/error.hpp"
 #include "aco/figures.hpp"
 #include "aco/engine/local_search.hpp"
+#include "aco/engine/zero_pages.hpp"
 #include "aco/parallel.hpp"
 #include "aco/plugin_error.hpp"
 #include "aco/engine/plugin_guard.hpp"
@@ -103,22 +104,40 @@ struct Scratch {
   using MarkT = std::uint8_t;
   static constexpr MarkT kForbidden = 0xFF;
   static constexpr std::uint32_t kLastStamp = 0x7E;  // 2 x stamp + 1 stays below kForbidden
-  Scratch(const std::vector<std::uint8_t>& forbidden, int max_degree)
+  // Only nodes an edge leads to are marked forbidden: no ant can stand on another. So on a
+  // corridor's graph (coarse to fine) the marks' pages are the corridor's (ZeroPages).
+  Scratch(const Graph& graph, const std::vector<std::uint8_t>& forbidden, int max_degree)
       : marks(forbidden.size()), candidates(max_degree), weights(max_degree), factors(max_degree) {
-    for (std::size_t n = 0; n < forbidden.size(); ++n) marks[n] = forbidden[n] ? kForbidden : MarkT{0};
+    for (NodeId n = 0; n < graph.num_nodes(); ++n)
+      if (forbidden[static_cast<std::size_t>(n)] && graph.degree(n) > 0)
+        marks[static_cast<std::size_t>(n)] = kForbidden;
   }
   std::uint32_t next_stamp() {
     if (++stamp > kLastStamp) {
-      for (MarkT& m : marks) m = m == kForbidden ? kForbidden : MarkT{0};
+      clear_walks();
       stamp = 1;
     }
     return stamp;
+  }
+  // Every mark but kForbidden back to 0. Eight marks of 0 (a page no walk wrote, most of a large
+  // map's) are read as one word and left unwritten.
+  void clear_walks() {
+    MarkT* const first = marks.begin();
+    const std::size_t size = marks.size();
+    std::size_t i = 0;
+    for (; i + 8 <= size; i += 8) {
+      std::uint64_t word;
+      std::memcpy(&word, first + i, sizeof word);
+      if (word == 0) continue;
+      for (std::size_t k = i; k < i + 8; ++k) first[k] = first[k] == kForbidden ? kForbidden : MarkT{0};
+    }
+    for (; i < size; ++i) first[i] = first[i] == kForbidden ? kForbidden : MarkT{0};
   }
   bool walked(NodeId n) const { return marks[n] == 2 * stamp + 1; }
   void enter(NodeId n) { marks[n] = static_cast<MarkT>(2 * stamp + 1); }
   void leave(NodeId n) { marks[n] = static_cast<MarkT>(2 * stamp); }
   void forbid(NodeId n, bool forbidden) { marks[n] = forbidden ? kForbidden : MarkT{0}; }
-  std::vector<MarkT> marks;
+  ZeroPages<MarkT> marks;
   std::uint32_t stamp = 0;
   std::vector<EdgeId> candidates;
   std::vector<double> weights;
@@ -161,7 +180,7 @@ class Colony {
     known_forbidden_ = forbidden_;
     local_search_ = settings.local_search != LocalSearch::none;
     for (NodeId n = 0; n < graph.num_nodes(); ++n) max_degree_ = std::max(max_degree_, graph.degree(n));
-    scratch_ = std::make_unique<ScratchPool>([this] { return Scratch(known_forbidden_, max_degree_); });
+    scratch_ = std::make_unique<ScratchPool>([this] { return Scratch(g_, known_forbidden_, max_degree_); });
   }
 
   void begin() {
@@ -188,9 +207,9 @@ class Colony {
       compute_heuristic();
     by_node_ = heuristic_.updates_by_node;
     if (by_node_) {
-      fresh_ = std::make_unique<std::atomic<int>[]>(static_cast<std::size_t>(g_.num_nodes()));
-      const int computed = on_first_visit_ ? kNeverComputed : context_.iteration;
-      for (NodeId n = 0; n < g_.num_nodes(); ++n) fresh_[n].store(computed, std::memory_order_relaxed);
+      fresh_ = ZeroPages<int>(static_cast<std::size_t>(g_.num_nodes()));  // all kNeverComputed
+      if (!on_first_visit_)
+        for (NodeId n = 0; n < g_.num_nodes(); ++n) fresh(n).store(context_.iteration + 1, std::memory_order_relaxed);
     }
     allocate(tau_, static_cast<std::size_t>(g_.num_edges()));
     if (learning) return initialize_trail();
@@ -521,9 +540,9 @@ class Colony {
   // others wait for it; the acquire/release pair publishes the values to every later reader.
   void update_heuristic(NodeId n) const {
     const int now = on_first_visit_ ? 0 : context_.iteration;
-    if (fresh_[n].load(std::memory_order_acquire) == now) return;
+    if (fresh(n).load(std::memory_order_acquire) == now + 1) return;
     std::lock_guard lock(update_locks_[static_cast<std::size_t>(n) % update_locks_.size()]);
-    const int since = fresh_[n].load(std::memory_order_relaxed);
+    const int since = fresh(n).load(std::memory_order_relaxed) - 1;
     if (since == now) return;
     const EdgeId first = g_.offsets[n];
     const auto degree = static_cast<std::size_t>(g_.offsets[n + 1] - first);
@@ -533,8 +552,9 @@ class Colony {
     p_.heuristic->update_node(context_, n, since, values);
     check_heuristic(values, "update_node()", first);
     store_node_eta(n, values.data());
-    fresh_[n].store(now, std::memory_order_release);
+    fresh(n).store(now + 1, std::memory_order_release);
   }
+  std::atomic_ref<int> fresh(NodeId n) const { return std::atomic_ref<int>(fresh_[static_cast<std::size_t>(n)]); }
 
   // Specialised for alpha = 1, the usual case, which needs no pow() in the inner loop, and for a
   // plain trail (stored values are tau), which needs no scale and bounds; an explorer reads no
@@ -542,7 +562,7 @@ class Colony {
   template <bool kAlphaOne, bool kPlain, bool kExplorer = false>
   bool step(Ant& ant, Scratch& scratch, Rng& rng) const {
     const std::uint32_t tabu = 2 * scratch.stamp;
-    const Scratch::MarkT* marks = scratch.marks.data();
+    const Scratch::MarkT* marks = scratch.marks.begin();
     EdgeId* candidates = scratch.candidates.data();
     double* weights = scratch.weights.data();
     const EdgeId* offsets = g_.offsets.data();
@@ -656,7 +676,9 @@ class Colony {
   int first_explorer_ = s_.ants - static_cast<int>(std::lround(s_.explorers * s_.ants));
   static constexpr int kNeverComputed = -1;
   static constexpr std::size_t kMaxNeighbours = 32;  // the largest neighbourhood is 26 (voxel worlds)
-  std::unique_ptr<std::atomic<int>[]> fresh_;  // per node: the iteration its eta^beta is for
+  // Per node (fresh()): 1 + the iteration its eta^beta is for, 0 (kNeverComputed + 1) at first; the
+  // pages of the nodes ants stood on only.
+  mutable ZeroPages<int> fresh_;
   mutable std::array<std::mutex, 64> update_locks_;
   std::vector<std::uint8_t> forbidden_;
   std::vector<std::uint8_t> known_forbidden_;  // what the threads' marks hold (publish_forbidden())

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "aco/engine/zero_pages.hpp"
+
 namespace aco {
 
 std::vector<std::uint8_t> dead_ends(const Graph& g, NodeId start, NodeId goal, std::span<const std::uint8_t> closed) {
@@ -13,7 +15,9 @@ std::vector<std::uint8_t> dead_ends(const Graph& g, NodeId start, NodeId goal, s
   // start is the root, so every vertex left on the vertex stack when goal's subtree is done
   // forms, with start, the block of that edge. Blocks inside the subtree are popped as Tarjan's
   // algorithm finds them. Iterative: a 512x512 maze is a path of 130,000 cells.
-  std::vector<int> order(n, -1), low(n, 0);
+  // Discovery numbers from 1 (0: not yet found), in pages written where the search goes: on a
+  // corridor of a large map (coarse to fine) a few percent of them.
+  ZeroPages<int> order(static_cast<std::size_t>(n)), low(static_cast<std::size_t>(n));
   std::vector<NodeId> vertices;
   struct Frame {
     NodeId node;
@@ -21,7 +25,7 @@ std::vector<std::uint8_t> dead_ends(const Graph& g, NodeId start, NodeId goal, s
     EdgeId next;
   };
   std::vector<Frame> stack;
-  int counter = 0;
+  int counter = 1;
   order[start] = low[start] = counter++;
   order[goal] = low[goal] = counter++;
   vertices.push_back(goal);
@@ -31,7 +35,7 @@ std::vector<std::uint8_t> dead_ends(const Graph& g, NodeId start, NodeId goal, s
     if (f.next < g.edges_end(f.node)) {
       const NodeId next = g.targets[f.next++];
       if (next == f.parent || (!closed.empty() && closed[next] && next != start)) continue;
-      if (order[next] < 0) {
+      if (order[next] == 0) {
         order[next] = low[next] = counter++;
         vertices.push_back(next);
         stack.push_back({next, f.node, g.edges_begin(next)});

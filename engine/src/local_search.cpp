@@ -12,7 +12,7 @@ namespace aco {
 
 void WalkScratch::reset(int num_nodes) {
   if (static_cast<int>(marks.size()) == num_nodes) return;
-  marks.assign(num_nodes, Mark{});
+  marks = ZeroPages<Mark>(static_cast<std::size_t>(num_nodes));
   current = 0;
 }
 
@@ -193,10 +193,10 @@ BandSearch::BandSearch(const Graph& graph, const std::vector<std::uint8_t>& forb
 bool BandSearch::improve(Ant& ant) {
   if (stamp_.empty()) {
     const auto n = static_cast<std::size_t>(g_.num_nodes());
-    stamp_.assign(n, 0);
-    hops_.resize(n);
-    via_.resize(n);
-    distance_.resize(n);
+    stamp_ = ZeroPages<std::uint32_t>(n);
+    hops_ = ZeroPages<std::int32_t>(n);
+    via_ = ZeroPages<EdgeId>(n);
+    distance_ = ZeroPages<double>(n);
   }
   if (++current_ == 0) {
     std::fill(stamp_.begin(), stamp_.end(), 0);

@@ -31,14 +31,14 @@ void run_aco(const PlanContext& c, PlanOutcome& o) {
   if (!c.graph.volumetric) o.properties["corridors"] = static_cast<std::int64_t>(colony.corridors.size());
   if (colony.coarse) {  // coarse to fine: the coarse colony's path, in the coarse map's steps
     o.properties["coarse.length"] = colony.coarse->solved ? colony.coarse->length : -1.0;
-    o.properties["coarse.corridor"] = std::string(colony.corridor_graph ? "walked" : "not used");
+    o.properties["coarse.corridor"] = std::string(colony.walked_coarse_corridor ? "walked" : "not used");
   }
   if (c.run.colony.restart_after > 0 || c.run.colony.colonies > 1)
     o.properties["restarts"] = static_cast<std::int64_t>(colony.restarts);
   o.corridors = std::move(colony.corridors);
   o.iteration_best = std::move(colony.iteration_best);
   o.pheromone = std::move(colony.pheromone);
-  o.pheromone_graph = std::move(colony.corridor_graph);
+  o.pheromone_edges = std::move(colony.pheromone_edges);
   o.search = std::move(static_cast<SearchResult&>(colony));
   if (!o.search.solved && colony.stopped_by == StopReason::time)
     o.reason = "the time limit (" + to_string(ParamValue(c.run.colony.time_limit)) +

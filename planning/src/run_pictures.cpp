@@ -12,7 +12,8 @@ RunPicture run_picture(const Graph& graph, const PlanRun& run, bool pheromone) {
   picture.grid_path = run.search.path;
   picture.path = run.path;
   if (pheromone)
-    picture.pheromone = run.pheromone_graph ? per_edge_of(graph, *run.pheromone_graph, run.pheromone) : run.pheromone;
+    picture.pheromone =
+        run.pheromone_edges.empty() ? run.pheromone : per_edge(graph, run.pheromone_edges, run.pheromone);
   picture.best_so_far = run.search.best_so_far;
   picture.iteration_best = run.iteration_best;
   picture.optimal_length = run.optimal_length.value_or(0.0);

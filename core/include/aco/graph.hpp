@@ -109,9 +109,10 @@ Graph build_graph(const Map& map, const GraphOptions& options);
 // node ids, move order and every other edge stay as they are. Per-edge fields on it cost the
 // open part's edges only: coarse to fine's ants walk a corridor of a large map.
 Graph subgraph(const Graph& graph, std::span<const std::uint8_t> closed);
-// Values per edge of `part`, a subgraph() of `graph`, as values per edge of `graph`: 0 on the
-// edges `part` lacks.
-std::vector<double> per_edge_of(const Graph& graph, const Graph& part, std::span<const double> values);
+// Per edge of `part`, a subgraph() of `graph`: its id in `graph`.
+std::vector<EdgeId> edges_in(const Graph& graph, const Graph& part);
+// Values per edge of `graph`, given at some of its edges (`edges`, with `values` alike): 0 elsewhere.
+std::vector<double> per_edge(const Graph& graph, std::span<const EdgeId> edges, std::span<const double> values);
 
 // Whether goal can be reached from start at all, through no node marked in `closed` (if given).
 bool reachable(const Graph& graph, NodeId start, NodeId goal, std::span<const std::uint8_t> closed = {});

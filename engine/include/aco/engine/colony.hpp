@@ -161,11 +161,12 @@ struct ColonyResult : SearchResult {
   std::vector<std::uint64_t> corridors;
   int restarts = 0;  // epochs begun by restart_after
   // Coarse to fine (ColonySettings::coarse_to_fine): the coarse colony's result (its path in the
-  // coarse map's nodes) and, where its corridor bounded the walks on the map itself, the
-  // corridor's graph (subgraph()) they walked, which `pheromone` is per edge of (per_edge_of()
-  // gives it per edge of the run's graph); null: the walks had the whole map.
+  // coarse map's nodes) and whether its corridor bounded the walks on the map itself. Where it
+  // did, the ants walked the corridor's graph (subgraph()), and `pheromone` is per edge of that:
+  // `pheromone_edges` gives each value's edge in the run's graph (per_edge() spreads them out).
   std::shared_ptr<const ColonyResult> coarse;
-  std::shared_ptr<const Graph> corridor_graph;
+  bool walked_coarse_corridor = false;
+  std::vector<EdgeId> pheromone_edges;  // empty: `pheromone` is per edge of the run's graph
 };
 
 // Runs the colony in the calling thread's TBB arena. Throws Error if a strategy writes a

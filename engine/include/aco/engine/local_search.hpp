@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "aco/engine/zero_pages.hpp"
 #include "aco/strategies.hpp"
 
 namespace aco {
@@ -13,12 +14,13 @@ namespace aco {
 // Per-thread buffers, reused from walk to walk.
 struct WalkScratch {
   // Per node: its position on the walk, valid where the stamp is the current one. One entry of
-  // two words, so a lookup is one cache line, not one in each of two arrays.
+  // two words, so a lookup is one cache line, not one in each of two arrays. The pages of the
+  // nodes the thread's walks have been on only.
   struct Mark {
     std::uint32_t stamp = 0;
     std::int32_t index = 0;
   };
-  std::vector<Mark> marks;
+  ZeroPages<Mark> marks;
   std::uint32_t current = 0;
   std::vector<NodeId> nodes;
   std::vector<NodeId> segment;
@@ -68,18 +70,19 @@ class BandSearch {
 
   // Replaces an arrived ant's walk (start and goal kept) by the shortest path in its band if that
   // is shorter, with its grid length; returns whether it did. The band's tables are allocated at
-  // the first call (20 bytes per node).
+  // the first call (20 bytes per node, of which the bands' pages are used).
   bool improve(Ant& ant);
 
  private:
   const Graph& g_;
   const std::vector<std::uint8_t>& forbidden_;
   int radius_;
-  std::vector<std::uint32_t> stamp_;  // per node: in the band of the current call if == current_
+  // Per node, the pages of the bands searched only.
+  ZeroPages<std::uint32_t> stamp_;  // in the band of the current call if == current_
   std::uint32_t current_ = 0;
-  std::vector<std::int32_t> hops_;  // per band node: moves from the walk
-  std::vector<EdgeId> via_;  // per band node: the edge of its shortest path from the start (-1: none yet)
-  std::vector<double> distance_;  // per band node: of that path
+  ZeroPages<std::int32_t> hops_;  // valid in the band: moves from the walk
+  ZeroPages<EdgeId> via_;  // valid in the band: the edge of its shortest path from the start (-1: none yet)
+  ZeroPages<double> distance_;  // valid in the band: of that path
   std::vector<NodeId> queue_;
 };
 

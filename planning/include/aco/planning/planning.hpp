@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cstdint>
 #include <map>
-#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -42,7 +41,7 @@ struct PlanOutcome {
   std::map<std::string, ParamValue> properties;
   std::vector<double> iteration_best;  // aco: per iteration, for pictures
   std::vector<double> pheromone;  // aco: final tau per edge, for pictures
-  std::shared_ptr<const Graph> pheromone_graph;  // aco: the graph `pheromone` is per edge of; null: the run's
+  std::vector<EdgeId> pheromone_edges;  // aco, coarse to fine: each value's edge (ColonyResult's)
   std::vector<std::uint64_t> corridors;  // aco: the corridors its walks took (ColonyResult::corridors)
 
   bool solved() const { return search.solved; }

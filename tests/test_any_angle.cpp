@@ -167,6 +167,30 @@ TEST_CASE("Any-angle optimum on open maps is the Euclidean distance", "[any_angl
         }
 }
 
+TEST_CASE("Any-angle search gives up when asked, and finds the same path when never asked", "[any_angle]") {
+  // A maze's scenarios: searches of thousands of expansions.
+  const fs::path scen = test::data_dir() / "maps/generated/maze64-2-s1.map.scen";
+  const auto map = aco::load_map(aco::scenario_map_file(scen));
+  aco::AnyAngleSearch search(*map);
+  int long_searches = 0;
+  for (const aco::Scenario& s : aco::load_scenarios(scen)) {
+    const aco::Cell a = s.start, b = s.goal;
+    INFO(aco::to_string(a) << " -> " << aco::to_string(b));
+    const auto plain = search.find(a, b);
+    const std::size_t expanded = search.expanded();
+    int asked = 0;
+    const auto never = search.find(a, b, [&asked] { return ++asked < 0; });
+    REQUIRE(plain.has_value() == never.has_value());
+    if (plain) CHECK(plain->waypoints == never->waypoints);
+    CHECK(asked == static_cast<int>(expanded / 1024));  // asked every 1024 expansions
+    if (expanded < 1024) continue;
+    ++long_searches;
+    CHECK_FALSE(search.find(a, b, [] { return true; }));  // gives up at its first question
+    CHECK(search.expanded() == 1024);
+  }
+  CHECK(long_searches > 0);
+}
+
 TEST_CASE("Any-angle optimum on hand-made maps with known optima", "[any_angle]") {
   SECTION("a wall with a gap: around the gap's corner vertices") {
     const auto map = test::grid({

@@ -374,7 +374,7 @@ struct AnyAngleSearch::State {
     }
   }
 
-  std::optional<AnyAnglePath> find(Cell start_cell, Cell goal_cell) {
+  std::optional<AnyAnglePath> find(Cell start_cell, Cell goal_cell, const std::function<bool()>& give_up) {
     expanded = 0;
     if (!map.passable(start_cell) || !map.passable(goal_cell)) return std::nullopt;
     const Point s{2 * std::int64_t{start_cell.x} + 1, 2 * std::int64_t{start_cell.y} + 1};
@@ -406,7 +406,7 @@ struct AnyAngleSearch::State {
         std::reverse(path.waypoints.begin(), path.waypoints.end());
         return path;
       }
-      ++expanded;
+      if (++expanded % 1024 == 0 && give_up && give_up()) return std::nullopt;
       if (n.kind == Kind::flat)
         expand_flat(n);
       else
@@ -418,7 +418,10 @@ struct AnyAngleSearch::State {
 
 AnyAngleSearch::AnyAngleSearch(const Map& map) : state_(std::make_unique<State>(map)) {}
 AnyAngleSearch::~AnyAngleSearch() = default;
-std::optional<AnyAnglePath> AnyAngleSearch::find(Cell start, Cell goal) { return state_->find(start, goal); }
+std::optional<AnyAnglePath> AnyAngleSearch::find(Cell start, Cell goal) { return state_->find(start, goal, {}); }
+std::optional<AnyAnglePath> AnyAngleSearch::find(Cell start, Cell goal, const std::function<bool()>& give_up) {
+  return state_->find(start, goal, give_up);
+}
 std::size_t AnyAngleSearch::expanded() const { return state_->expanded; }
 
 std::optional<AnyAnglePath> any_angle_optimum(const Map& map, Cell start, Cell goal) {

@@ -30,6 +30,7 @@
 #include <boost/config.hpp>
 #include <cstdint>
 #include <memory>
+#include <functional>
 #include <optional>
 #include <span>
 
@@ -58,6 +59,8 @@ class BOOST_SYMBOL_VISIBLE AnyAngleSearch {
   AnyAngleSearch(const AnyAngleSearch&) = delete;
   AnyAngleSearch& operator=(const AnyAngleSearch&) = delete;
   std::optional<AnyAnglePath> find(Cell start, Cell goal);
+  // The same, asking `give_up` every 1024 expansions: true ends the search with none (a time limit).
+  std::optional<AnyAnglePath> find(Cell start, Cell goal, const std::function<bool()>& give_up);
   std::size_t expanded() const;  // search nodes expanded by the last find()
 
  private:

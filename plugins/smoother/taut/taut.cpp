@@ -133,9 +133,11 @@ void add_touched_cells(const aco::Waypoints& points, std::vector<aco::Cell>& cel
 }
 
 // The shortest valid path (any_angle.hpp's rule) from start to goal through the cells within
-// `width` of `cells` that are free on the map, searched on a map cropped to them.
-std::optional<aco::AnyAnglePath> shortest_in_corridor(const aco::Map& map, const std::vector<aco::Cell>& cells,
-                                                      int width, aco::Cell start, aco::Cell goal) {
+// `width` of `cells` that are free on the map, searched on a map cropped to them. None once the
+// run's time limit has passed (Context::deadline), the search given up.
+std::optional<aco::AnyAnglePath> shortest_in_corridor(const aco::Context& c, const aco::Map& map,
+                                                      const std::vector<aco::Cell>& cells, int width, aco::Cell start,
+                                                      aco::Cell goal) {
   int x0 = INT_MAX, y0 = INT_MAX, x1 = INT_MIN, y1 = INT_MIN;
   for (const aco::Cell& c : cells) {
     x0 = std::min(x0, c.x), y0 = std::min(y0, c.y), x1 = std::max(x1, c.x), y1 = std::max(y1, c.y);
@@ -149,7 +151,10 @@ std::optional<aco::AnyAnglePath> shortest_in_corridor(const aco::Map& map, const
     for (int y = std::max(y0, c.y - width); y <= std::min(y1, c.y + width); ++y)
       for (int x = std::max(x0, c.x - width); x <= std::min(x1, c.x + width); ++x)
         if (map.passable({x, y})) corridor.set_blocked({x - x0, y - y0}, false);
-  auto found = aco::any_angle_optimum(corridor, {start.x - x0, start.y - y0}, {goal.x - x0, goal.y - y0});
+  aco::AnyAngleSearch search(corridor);
+  if (c.past_deadline()) return std::nullopt;
+  auto found =
+      search.find({start.x - x0, start.y - y0}, {goal.x - x0, goal.y - y0}, [&c] { return c.past_deadline(); });
   if (found)
     for (Eigen::Vector3d& p : found->waypoints) p += Eigen::Vector3d(x0, y0, 0.0);
   return found;
@@ -176,7 +181,7 @@ class TautSmoother final : public aco::Smoother {
     for (int round = 0; round < p_.rounds && c.leaves_time_for(last_round); ++round) {
       const auto round_began = std::chrono::steady_clock::now();
       const auto found =
-          shortest_in_corridor(*g.map, cells, p_.corridor_width, g.cell(path.front()), g.cell(path.back()));
+          shortest_in_corridor(c, *g.map, cells, p_.corridor_width, g.cell(path.front()), g.cell(path.back()));
       if (!found || !(found->length < best_length * (1 - 1e-12))) break;
       best = found->waypoints;
       best_length = found->length;

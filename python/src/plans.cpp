@@ -190,7 +190,10 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, const C
   // on a large map) is dropped unless the picture needs it.
   auto kept =
       std::make_shared<PlannedRun>(PlannedRun{planned->map, planned->run.graph, std::move(planned->runs.front()), {}});
-  if (!keep_pheromone) kept->run.pheromone = {};
+  if (!keep_pheromone) {
+    kept->run.pheromone = {};
+    kept->run.pheromone_edges = {};
+  }
   if (planned->graph.volumetric) kept->voxel_view.emplace(aco::run_view(planned->graph, kept->run, false));
   return py::make_tuple(record, source.name(), terrain ? terrain->cell_size() : 1.0, kept);
 }

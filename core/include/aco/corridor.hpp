@@ -12,6 +12,7 @@
 // homotopy classes for paths that do not circle an obstacle and come back: loop-free paths, as
 // every smoothed or optimal path is.
 #include <Eigen/Core>
+#include <algorithm>
 #include <boost/config.hpp>
 #include <cstddef>
 #include <cstdint>
@@ -64,15 +65,12 @@ class BOOST_SYMBOL_VISIBLE CorridorKeys {
  private:
   std::uint64_t crossing(double ax, double ay, double bx, double by) const;
   // The sum of the keys of the row's obstacles at or left of x: the keys a crossing of the row at x
-  // counts. Most rows have none or a few.
+  // counts, found by a binary search among the row's rays.
   std::uint64_t keys_up_to(int row, int x) const {
-    std::uint64_t sum = 0;
-    for (std::uint32_t i = row_begin_[static_cast<std::size_t>(row)]; i < row_begin_[static_cast<std::size_t>(row) + 1];
-         ++i) {
-      if (ray_x_[i] > x) break;
-      sum = up_to_[i];
-    }
-    return sum;
+    const auto first = ray_x_.begin() + row_begin_[static_cast<std::size_t>(row)];
+    const auto last = ray_x_.begin() + row_begin_[static_cast<std::size_t>(row) + 1];
+    const auto after = std::upper_bound(first, last, x);  // a random map's row has dozens
+    return after == first ? 0 : up_to_[static_cast<std::size_t>(after - ray_x_.begin()) - 1];
   }
   int width_ = 0, height_ = 0;
   // The obstacles' rays row by row, by x: row r's are [row_begin_[r], row_begin_[r + 1]), each

@@ -65,12 +65,17 @@ class BOOST_SYMBOL_VISIBLE CorridorKeys {
  private:
   std::uint64_t crossing(double ax, double ay, double bx, double by) const;
   // The sum of the keys of the row's obstacles at or left of x: the keys a crossing of the row at x
-  // counts, found by a binary search among the row's rays.
+  // counts. A short row (most are) is scanned, a long one (a random map's) searched.
   std::uint64_t keys_up_to(int row, int x) const {
-    const auto first = ray_x_.begin() + row_begin_[static_cast<std::size_t>(row)];
-    const auto last = ray_x_.begin() + row_begin_[static_cast<std::size_t>(row) + 1];
-    const auto after = std::upper_bound(first, last, x);  // a random map's row has dozens
-    return after == first ? 0 : up_to_[static_cast<std::size_t>(after - ray_x_.begin()) - 1];
+    const std::uint32_t first = row_begin_[static_cast<std::size_t>(row)];
+    const std::uint32_t last = row_begin_[static_cast<std::size_t>(row) + 1];
+    std::uint32_t after = first;
+    if (last - first <= 8)
+      while (after < last && ray_x_[after] <= x) ++after;
+    else
+      after = static_cast<std::uint32_t>(std::upper_bound(ray_x_.begin() + first, ray_x_.begin() + last, x) -
+                                         ray_x_.begin());
+    return after == first ? 0 : up_to_[after - 1];
   }
   int width_ = 0, height_ = 0;
   // The obstacles' rays row by row, by x: row r's are [row_begin_[r], row_begin_[r + 1]), each

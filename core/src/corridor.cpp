@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <utility>
 
 namespace aco {
@@ -95,7 +96,7 @@ CorridorKeys::CorridorKeys(const Map& map)
   const std::vector<Cell> cells = obstacles_inside(map);
   obstacles_ = cells.size();
   std::vector<std::size_t> order(cells.size());  // by row, then by x; an obstacle's key is its number's
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return cells[a].y != cells[b].y ? cells[a].y < cells[b].y : cells[a].x < cells[b].x;
   });

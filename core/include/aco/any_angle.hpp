@@ -29,8 +29,8 @@
 #include <Eigen/Core>
 #include <boost/config.hpp>
 #include <cstdint>
-#include <memory>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 

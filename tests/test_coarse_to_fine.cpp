@@ -1,10 +1,17 @@
 // Coarse to fine (ColonySettings::coarse_to_fine) and the closed nodes it hands the colony on the
 // map itself (ColonySettings::closed, dead_ends() and reachable() within them).
 #include <catch2/catch.hpp>
+#include <algorithm>
+#include <cstdlib>
+#include <memory>
 #include <random>
 
+#include "aco/engine/coarse_to_fine.hpp"
 #include "aco/engine/dead_ends.hpp"
 #include "aco/engine/pipeline.hpp"
+#include "aco/planning/plan_request.hpp"
+#include "aco/planning/presets.hpp"
+#include "aco/voxel.hpp"
 #include "support.hpp"
 
 namespace {
@@ -184,4 +191,121 @@ TEST_CASE("the coarse colony is the colony with the same settings on the map in 
   // Without coarse explorers the coarse colony walks otherwise.
   s.coarse_explorers = 0.0;
   CHECK(plan(graph, start, goal, s).coarse->ant_steps != run.coarse->ant_steps);
+}
+
+namespace {
+
+// A voxel world of 2^22 voxels (512x512x16), the least that is planned coarse to fine
+// (aco::kCoarseWorldVoxels): a hall 64 voxels deep (y < 64), the rest solid, cut in two at x = 256
+// by a wall with one door (y 20-27, z 4-11).
+std::shared_ptr<aco::VoxelMap> hall_with_door(int depth = 16) {
+  auto world = std::make_shared<aco::VoxelMap>(512, 512, depth, "hall");
+  for (int z = 0; z < depth; ++z)
+    for (int y = 0; y < 512; ++y)
+      for (int x = 0; x < 512; ++x) {
+        const bool door = y >= 20 && y < 28 && z >= 4 && z < 12;
+        world->set_blocked({x, y, z}, y >= 64 || (x == 256 && !door));
+      }
+  return world;
+}
+
+aco::PlannedRuns plan_in(std::shared_ptr<const aco::Map> world, const aco::Keys& changes, int threads = 2) {
+  const aco::KeySpelling spelling = "--";
+  const auto source = aco::PipelineSource::choose("", "", aco::MapKind::voxel, spelling);
+  aco::KeyedValues keys;
+  keys.keys = {{"ants", "10"}, {"iterations", "5"}};
+  for (const auto& [key, value] : changes) keys.keys.insert_or_assign(key, value);
+  aco::PlanRequest request;
+  request.run = aco::resolve_run(aco::over_pipeline_file(source.keys(), keys).keys, test::plugins(), spelling);
+  request.run.problem.start = aco::Cell{10, 10, 2};
+  request.run.problem.goal = aco::Cell{500, 50, 12};
+  request.map = std::move(world);
+  request.threads = threads;
+  return aco::plan(request, test::plugins());
+}
+
+}  // namespace
+
+TEST_CASE("a voxel world of millions of voxels is planned in the coarse colony's corridor", "[coarse_to_fine][voxel]") {
+  const auto world = hall_with_door();
+  const aco::PlannedRuns planned = plan_in(world, {});
+  REQUIRE(planned.runs.size() == 1);
+  const aco::PlanRun& run = planned.runs.front();
+  REQUIRE(run.solved());
+  CHECK(run.text("coarse.corridor") == "walked");
+  CHECK(std::get<double>(run.properties.at("coarse.length")) > 0);
+  // The graph is the corridor's: not the hall's 524288 voxels' edges, and A*'s optimum on it is not
+  // the world's, so none is given.
+  CHECK(planned.graph.num_edges() < 524288 * 26 / 4);
+  CHECK_FALSE(run.optimal_length);
+  // The path: free voxels, each step one of the 26 moves, through the door.
+  const std::vector<aco::NodeId>& path = run.search.path;
+  REQUIRE(path.size() >= 2);
+  CHECK(path.front() == planned.graph.node({10, 10, 2}));
+  CHECK(path.back() == planned.graph.node({500, 50, 12}));
+  bool through_door = false;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const aco::Cell c = planned.graph.cell(path[i]);
+    CHECK(world->passable(c));
+    if (c.x == 256) through_door = c.y >= 20 && c.y < 28 && c.z >= 4 && c.z < 12;
+    if (i == 0) continue;
+    const aco::Cell b = planned.graph.cell(path[i - 1]);
+    CHECK(std::max({std::abs(c.x - b.x), std::abs(c.y - b.y), std::abs(c.z - b.z)}) == 1);
+  }
+  CHECK(through_door);
+  // The same run with one thread.
+  CHECK(plan_in(world, {}, 1).runs.front().search.path == path);
+}
+
+TEST_CASE("a voxel world's coarse colony out of time leaves the run unsolved, with the reason",
+          "[coarse_to_fine][voxel]") {
+  const aco::PlannedRuns planned = plan_in(hall_with_door(), {{"time-limit", "0.000001"}});
+  const aco::PlanRun& run = planned.runs.front();
+  CHECK_FALSE(run.solved());
+  CHECK_THAT(run.reason, Catch::Contains("ran out before the colony on the world in blocks of 2 voxels a side"));
+  CHECK(run.text("coarse.corridor") == "not used");
+}
+
+TEST_CASE("a smaller voxel world, or coarse-to-fine 0, is planned on its whole graph", "[coarse_to_fine][voxel]") {
+  const auto check_whole = [](const aco::PlannedRuns& planned) {
+    const aco::PlanRun& run = planned.runs.front();
+    REQUIRE(run.solved());
+    CHECK_FALSE(run.properties.count("coarse.corridor"));
+    CHECK(run.optimal_length);
+  };
+  check_whole(plan_in(hall_with_door(15), {}));
+  check_whole(plan_in(hall_with_door(), {{"coarse-to-fine", "0"}}));
+}
+
+TEST_CASE("a voxel world's coarse map: blocks of 2x2x2, free where all their voxels are", "[coarse_to_fine][voxel]") {
+  aco::VoxelMap world(6, 4, 5, "w");
+  world.set_blocked({3, 0, 0}, true);  // block (1,0,0)
+  world.set_blocked({5, 3, 4}, true);  // block (2,1,2): the goal's, free whatever its voxels
+  const auto coarse = aco::coarse_map(world, {0, 0, 0}, {4, 2, 4}, 2, 0);
+  REQUIRE(coarse);
+  REQUIRE(coarse->map->volumetric());
+  CHECK(coarse->map->width() == 3);
+  CHECK(coarse->map->height() == 2);
+  CHECK(coarse->map->depth() == 3);
+  CHECK(coarse->start == aco::Cell{0, 0, 0});
+  CHECK(coarse->goal == aco::Cell{2, 1, 2});
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < 3; ++x) CHECK(coarse->map->passable({x, y, z}) == (aco::Cell{x, y, z} != aco::Cell{1, 0, 0}));
+  // Opened one deep around the start, the blocked block is free too.
+  CHECK(aco::coarse_map(world, {0, 0, 0}, {4, 2, 4}, 2, 1)->map->passable({1, 0, 0}));
+  // Start and goal in one block: no coarse level.
+  CHECK_FALSE(aco::coarse_map(world, {0, 0, 0}, {1, 1, 1}, 2, 0));
+  // The corridor: voxels within `radius` blocks of the path's blocks.
+  const aco::Graph blocks = aco::build_graph(*coarse->map, {aco::Neighbourhood::twenty_six, false});
+  const std::vector<aco::NodeId> path{blocks.node({0, 0, 0})};
+  const auto near = aco::coarse_corridor(world, blocks, path, 2, 1);
+  const auto wider = aco::coarse_corridor(world, blocks, path, 2, 2);
+  for (int z = 0; z < 5; ++z)
+    for (int y = 0; y < 4; ++y)
+      for (int x = 0; x < 6; ++x) {
+        const std::size_t voxel = (static_cast<std::size_t>(z) * 4 + y) * 6 + x;
+        CHECK(near[voxel] == (x < 4 && z < 4 ? 0 : 1));
+        CHECK(wider[voxel] == 0);
+      }
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <set>
 #include <string>
@@ -13,6 +14,7 @@
 #include "aco/graph.hpp"
 #include "aco/path.hpp"
 #include "aco/rng.hpp"
+#include "aco/voxel.hpp"
 #include "support.hpp"
 
 namespace {
@@ -287,6 +289,43 @@ TEST_CASE("subgraph keeps the edges between open nodes, and edges_in and per_edg
       }
     CHECK(part.num_edges() == kept);
   }
+}
+
+TEST_CASE("build_graph with closed nodes is the subgraph of the whole graph, in 2D and in voxel worlds", "[graph]") {
+  std::mt19937 rng(29);
+  const auto same = [](const aco::Graph& a, const aco::Graph& b) {
+    CHECK(a.offsets == b.offsets);
+    CHECK(a.targets == b.targets);
+    CHECK(a.edge_moves == b.edge_moves);
+    CHECK(a.move_mask == b.move_mask);
+  };
+  for (int trial = 0; trial < 60; ++trial) {
+    INFO("trial " << trial);
+    std::unique_ptr<aco::Map> map;
+    aco::GraphOptions options{aco::Neighbourhood::eight, trial % 2 == 0};
+    if (trial % 3 == 0) {
+      auto world = std::make_unique<aco::VoxelMap>(3 + static_cast<int>(rng() % 6), 3 + static_cast<int>(rng() % 6),
+                                                   2 + static_cast<int>(rng() % 5), "world");
+      for (int z = 0; z < world->depth(); ++z)
+        for (int y = 0; y < world->height(); ++y)
+          for (int x = 0; x < world->width(); ++x) world->set_blocked({x, y, z}, rng() % 4 == 0);
+      map = std::move(world);
+      options.neighbourhood = trial % 2 ? aco::Neighbourhood::twenty_six : aco::Neighbourhood::eighteen;
+    } else {
+      map = std::make_unique<aco::OccupancyGrid>(
+          test::random_grid(rng, 3 + static_cast<int>(rng() % 10), 3 + static_cast<int>(rng() % 10)));
+    }
+    const aco::Graph whole = aco::build_graph(*map, options);
+    std::vector<std::uint8_t> closed(static_cast<std::size_t>(whole.num_nodes()), 0);
+    for (auto& c : closed) c = rng() % 3 == 0;
+    const aco::Graph part = aco::build_graph(*map, options, closed);
+    if (!map->volumetric()) check_invariants(part);
+    same(part, aco::subgraph(whole, closed));
+    same(aco::build_graph(*map, options, {}), whole);
+  }
+  const auto map = test::grid({"...", "..."});
+  CHECK_THROWS_WITH(aco::build_graph(map, {aco::Neighbourhood::four, false}, std::vector<std::uint8_t>(5, 0)),
+                    Catch::Contains("5 entries for 6 nodes"));
 }
 
 TEST_CASE("reachable across a wall", "[graph]") {

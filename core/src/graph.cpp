@@ -14,6 +14,7 @@
 #include "aco/error.hpp"
 #include "aco/memory_limit.hpp"
 #include "aco/parallel.hpp"
+#include "aco/voxel.hpp"
 
 namespace aco {
 namespace {
@@ -201,6 +202,10 @@ void check_neighbourhood_fits(const Map& map, const GraphOptions& options) {
 // several threads at once (with_concrete_map() hands it over as itself).
 template <class M>
 constexpr bool kPlainGrid = std::is_same_v<M, OccupancyGrid>;
+// A voxel world (final) has Map's position() and is read from several threads at once too: its
+// 26 moves per voxel are what building a large world's graph costs.
+template <class M>
+constexpr bool kReadInParallel = kPlainGrid<M> || std::is_same_v<M, VoxelMap>;
 
 // Whether a cell's move k leads to a free cell by the neighbourhood's rule.
 template <class M>
@@ -217,7 +222,7 @@ bool move_allowed(const M& map, const Graph& g, Cell c, const Move& m, int k) {
 // positions and step lengths stored.
 template <class M>
 bool places_cells_elsewhere(const M& map, const Graph& g) {
-  if constexpr (kPlainGrid<M>) return false;  // Map's position(): the cell's coordinates
+  if constexpr (kReadInParallel<M>) return false;  // Map's position(): the cell's coordinates
   for (NodeId id = 0; id < g.num_nodes(); ++id) {
     const Cell c = g.cell(id);
     if (map.position(c) != Eigen::Vector3d(c.x, c.y, c.z)) return true;
@@ -225,25 +230,28 @@ bool places_cells_elsewhere(const M& map, const Graph& g) {
   return false;
 }
 
-// Each node's moves (move_mask): rows in parallel on a plain grid; a map plugin's map is asked
-// from one thread.
+// Each node's moves (move_mask), none from or into a node marked in `closed` (if given): rows in
+// parallel on a plain grid or a voxel world; a map plugin's map is asked from one thread.
 template <class M>
-void mark_moves(const M& map, Graph& g) {
+void mark_moves(const M& map, Graph& g, std::span<const std::uint8_t> closed) {
   const auto all = moves(g.options.neighbourhood);
   const int count = static_cast<int>(all.size());
   const auto mark = [&](int first_row, int end_row) {  // rows of all layers: z * height + y
     for (int row = first_row; row < end_row; ++row)
       for (int x = 0; x < g.width; ++x) {
         const Cell c{x, row % g.height, row / g.height};
+        const std::size_t id = static_cast<std::size_t>(row) * g.width + x;
         std::uint32_t mask = 0;
-        if (map.passable(c))
+        if (map.passable(c) && (closed.empty() || !closed[id]))
           for (int k = 0; k < count; ++k)
-            if (move_allowed(map, g, c, all[k], k)) mask |= 1u << k;
-        g.move_mask[static_cast<std::size_t>(row) * g.width + x] = mask;
+            if (move_allowed(map, g, c, all[k], k) &&
+                (closed.empty() || !closed[g.node({c.x + all[k].dx, c.y + all[k].dy, c.z + all[k].dz})]))
+              mask |= 1u << k;
+        g.move_mask[id] = mask;
       }
   };
   const int rows = g.height * g.depth;
-  if constexpr (kPlainGrid<M>)
+  if constexpr (kReadInParallel<M>)
     aco::parallel_for(tbb::blocked_range<int>(0, rows, 16),
                       [&](const tbb::blocked_range<int>& r) { mark(r.begin(), r.end()); });
   else
@@ -265,10 +273,10 @@ void check_reversible(const M& map, const Graph& g) {
 
 // Targets and moves, in move order per node.
 template <class M>
-void build_edges(const M& map, Graph& g) {
+void build_edges(const M& map, Graph& g, std::span<const std::uint8_t> closed) {
   const auto all = moves(g.options.neighbourhood);
   const NodeId n = g.num_nodes();
-  mark_moves(map, g);
+  mark_moves(map, g, closed);
   // One pass to count, one to fill: the edges would otherwise grow a vector of tens or hundreds
   // of millions by doubling, twice its size at the peak.
   for (NodeId id = 0; id < n; ++id) g.offsets[id + 1] = g.offsets[id] + std::popcount(g.move_mask[id]);
@@ -290,7 +298,9 @@ void build_edges(const M& map, Graph& g) {
 
 }  // namespace
 
-Graph build_graph(const Map& map, const GraphOptions& options) {
+Graph build_graph(const Map& map, const GraphOptions& options) { return build_graph(map, options, {}); }
+
+Graph build_graph(const Map& map, const GraphOptions& options, std::span<const std::uint8_t> closed) {
   check_neighbourhood_fits(map, options);
   Graph g;
   g.map = &map;
@@ -301,7 +311,7 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   g.volumetric = map.volumetric();
   const int move_count = static_cast<int>(options.neighbourhood);
   bool terrain = false;
-  with_concrete_map(map, [&](const auto& concrete) { terrain = places_cells_elsewhere(concrete, g); });
+  with_concrete_world(map, [&](const auto& concrete) { terrain = places_cells_elsewhere(concrete, g); });
   // A voxel world is checked once its edges are counted (build_edges()): in a city or a
   // forest most of them are, but not all, and the worst case would refuse worlds that fit.
   if (!g.volumetric) check_planning_memory(g.width, g.height, options.neighbourhood, map.name(), terrain);
@@ -318,7 +328,10 @@ Graph build_graph(const Map& map, const GraphOptions& options) {
   const auto all = moves(options.neighbourhood);
   for (std::size_t k = 0; k < all.size(); ++k)
     g.move_lengths[k] = std::sqrt(double(all[k].dx * all[k].dx + all[k].dy * all[k].dy + all[k].dz * all[k].dz));
-  with_concrete_map(map, [&g](const auto& concrete) { build_edges(concrete, g); });
+  if (!closed.empty() && closed.size() != static_cast<std::size_t>(n))
+    throw Error("build_graph: `closed` has " + std::to_string(closed.size()) + " entries for " + std::to_string(n) +
+                " nodes");
+  with_concrete_world(map, [&](const auto& concrete) { build_edges(concrete, g, closed); });
   if (!terrain) return g;
   g.terrain_positions.resize(static_cast<std::size_t>(n));
   for (NodeId id = 0; id < n; ++id) g.terrain_positions[id] = map.position(g.cell(id));

@@ -25,8 +25,12 @@ constexpr std::uint64_t kBytesPerEdge = 24;
 constexpr std::uint64_t kTerrainBytesPerCell = 48;
 constexpr std::uint64_t kTerrainBytesPerEdge = 8;
 // A voxel world: 4 + 1 bytes per edge in the graph, 8 + 4 in the colony, rounded up; per voxel
-// as a grid's cell, rounded up.
-constexpr std::uint64_t kBytesPerVoxel = 64;
+// the world and the graph's offsets and move mask (1 + 4 + 4), a corridor's mask and a search's
+// marks, rounded up: the colony's per-node tables cost only the pages its walks write
+// (aco/engine/zero_pages.hpp). Measured (GNU time, acoplan with the voxel preset): Warframe's
+// Complex on one level, 7.8 million voxels and 198 million edges, peaked at 3.25 GiB (17 bytes
+// per edge and 24 per voxel, process included); DB1 in a corridor, 49 million voxels, at 0.56 GiB.
+constexpr std::uint64_t kBytesPerVoxel = 16;
 constexpr std::uint64_t kBytesPerVoxelEdge = 20;
 constexpr std::uint64_t kFallbackLimit = std::uint64_t(4) << 30;
 
@@ -103,14 +107,27 @@ void check_planning_memory(std::int64_t width, std::int64_t height, std::int64_t
   refuse_above_limit(estimate(width, height, depth, neighbourhood, false), width, height, depth, neighbourhood, name);
 }
 
+void check_voxel_world_memory(std::int64_t width, std::int64_t height, std::int64_t depth, const std::string& name) {
+  const std::uint64_t voxels = std::uint64_t(std::max<std::int64_t>(width, 0)) *
+                               std::uint64_t(std::max<std::int64_t>(height, 0)) *
+                               std::uint64_t(std::max<std::int64_t>(depth, 0));  // each at most 100000: no overflow
+  const std::uint64_t estimate = voxels * kBytesPerVoxel, limit = memory_limit();
+  if (estimate <= limit) return;
+  throw Error(name + ": a " + std::to_string(width) + "x" + std::to_string(height) + "x" + std::to_string(depth) +
+              " voxel world needs about " + format_bytes(estimate) + " to plan on (" + std::to_string(kBytesPerVoxel) +
+              " bytes per voxel, before its edges), more than the memory limit of " + format_bytes(limit) + " (" +
+              limit_origin() + "): refused");
+}
+
 void check_voxel_graph_memory(std::int64_t voxels, std::int64_t edges, const std::string& name) {
   const std::uint64_t estimate = std::uint64_t(std::max<std::int64_t>(voxels, 0)) * kBytesPerVoxel +
                                  std::uint64_t(std::max<std::int64_t>(edges, 0)) * kBytesPerVoxelEdge;
   const std::uint64_t limit = memory_limit();
   if (estimate <= limit) return;
-  throw Error(name + ": " + std::to_string(voxels) + " voxels with " + std::to_string(edges) + " edges need about " +
-              format_bytes(estimate) + " to plan on, more than the memory limit of " + format_bytes(limit) + " (" +
-              limit_origin() + "): refused");
+  const std::string edge_count = edges > 0 ? " with " + std::to_string(edges) + " edges" : std::string();
+  throw Error(name + ": " + std::to_string(voxels) + " voxels" + edge_count + " need about " + format_bytes(estimate) +
+              " to plan on, more than the memory limit of " + format_bytes(limit) + " (" + limit_origin() +
+              "): refused");
 }
 
 std::string format_bytes(std::uint64_t bytes) {

@@ -1,5 +1,7 @@
 #include "aco/engine/colony.hpp"
 
+#include "aco/engine/coarse_to_fine.hpp"
+
 #include <tbb/blocked_range.h>
 
 #include <algorithm>
@@ -14,16 +16,11 @@
 #include "aco/error.hpp"
 #include "aco/parallel.hpp"
 #include "aco/rng.hpp"
-#include "coarse_to_fine.hpp"
 #include "colony_walks.hpp"
 
 namespace aco {
 namespace {
 
-using colony_detail::coarse_corridor;
-using colony_detail::coarse_problem;
-using colony_detail::coarsens;
-using colony_detail::CoarseProblem;
 using colony_detail::Colony;
 using colony_detail::Deadline;
 using colony_detail::PheromoneFoundBad;
@@ -354,7 +351,8 @@ FineLevel coarse_to_fine(const Graph& graph, NodeId start, NodeId goal, const Co
   FineLevel fine{settings, nullptr, nullptr};
   const int block = settings.coarse_to_fine;
   if (block <= 1 || settings.closed || !coarsens(graph, block)) return fine;
-  const std::optional<CoarseProblem> coarse = coarse_problem(graph, start, goal, block);
+  const std::optional<CoarseProblem> coarse =
+      coarse_problem(*graph.map, graph.options, graph.cell(start), graph.cell(goal), block);
   if (!coarse) return fine;
   // The run's settings, coarse_to_fine included: a coarse map still large is planned coarse to
   // fine in turn.
@@ -374,7 +372,8 @@ FineLevel coarse_to_fine(const Graph& graph, NodeId start, NodeId goal, const Co
       std::make_shared<ColonyResult>(run_colony(coarse->graph, coarse->start, coarse->goal, quiet(pipeline), level,
                                                 quiet_backward ? &*quiet_backward : nullptr, quiet_islands));
   if (result->solved) {
-    auto closed = std::make_shared<std::vector<std::uint8_t>>(coarse_corridor(graph, *coarse, result->path, block));
+    auto closed =
+        std::make_shared<std::vector<std::uint8_t>>(coarse_corridor(*graph.map, coarse->graph, result->path, block));
     if (reachable(graph, start, goal, *closed)) {
       // The ants walk the corridor's graph: per-edge fields for its edges only, not the map's.
       fine.corridor_graph = std::make_shared<const Graph>(subgraph(graph, *closed));

@@ -125,12 +125,6 @@ bool parse_number(std::string_view text, Number& value) {
   return ec == std::errc() && ptr == end;
 }
 
-// A voxel world's size is checked with the leanest neighbourhood (6): the run's own edges are
-// counted and checked again when the graph is built.
-void check_voxel_memory(int width, int height, int depth, const std::string& name) {
-  check_planning_memory(width, height, depth, Neighbourhood::six, name);
-}
-
 }  // namespace
 
 OccupancyGrid read_movingai_map(std::istream& in, const std::string& name) {
@@ -447,7 +441,7 @@ VoxelMap read_movingai_voxels(std::istream& in, const std::string& name) {
   const int width = parse_dimension(reader, std::string(f[1]), "width");
   const int height = parse_dimension(reader, std::string(f[2]), "height");
   const int depth = parse_dimension(reader, std::string(f[3]), "depth");
-  check_voxel_memory(width, height, depth, name);
+  check_voxel_world_memory(width, height, depth, name);  // its edges: when its graph is built
   VoxelMap map(width, height, depth, name);
   const int size[3] = {width, height, depth};
   static const char* const kAxis[3] = {"x", "y", "z"};

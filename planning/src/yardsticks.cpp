@@ -22,7 +22,7 @@ std::optional<bool> judge_corridor(const OptimalCorridor& corridor, PlanOutcome&
 }
 
 std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal,
-                               const RunSpec& run, std::int64_t count) {
+                               const RunSpec& run, std::int64_t count, bool whole_map) {
   RunSpec seeded = run;
   std::vector<PlanRun> runs;
   for (std::int64_t i = 0; i < count; ++i, ++seeded.colony.seed) {
@@ -31,7 +31,7 @@ std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, Nod
     runs.push_back(std::move(o));
   }
   const OptimalCorridor corridor(*graph.map, graph.cell(start), graph.cell(goal));
-  const Yardsticks measures = yardsticks(graph, start, goal, &corridor);
+  const Yardsticks measures = whole_map ? yardsticks(graph, start, goal, &corridor) : Yardsticks{};
   for (auto& o : runs) {
     o.optimal_length = measures.optimal_length;
     o.any_angle_length = measures.any_angle_length;

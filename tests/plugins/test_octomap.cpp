@@ -296,9 +296,9 @@ TEST_CASE("octomap: every refusal names the file and the cause", "[plugin][octom
           "65536x65536x65536 voxel grid at 0.25 m per voxel is 281474976710656 voxels, more than the graph's "
           "32-bit node ids allow");
   {
-    // 1 MiB: the hall's 9216 voxels need about 1.6 MiB (184 bytes each with the 6-neighbourhood)
+    // 1 MiB: the hall's 9216 voxels need about 1.2 MiB (136 bytes each with the 6-neighbourhood)
     const aco::MemoryLimit limit(std::uint64_t(1) << 20);
-    refused(hall_bt, "needs about 1.6 MiB", {{"unknown", "free"}});
+    refused(hall_bt, "needs about 1.2 MiB", {{"unknown", "free"}});
     refused(hall_bt, "more than the memory limit of 1.0 MiB");
     CHECK(read(hall_bt, {{"resolution", "0.5"}})->voxels() == 16 * 12 * 6);
   }

@@ -1,12 +1,11 @@
-"""The voxel preset, its null models and A* on voxel worlds, and a large city's memory."""
+"""The voxel preset, its null models and A* on voxel worlds."""
 from __future__ import annotations
 
 import json
 import statistics
-from pathlib import Path
 
 from .formatting import table
-from .project import ACOPLAN, BUILD, ROOT, VOXEL
+from .project import ACOPLAN, ROOT, VOXEL
 from .run import Run
 from .sections import section
 
@@ -21,8 +20,8 @@ VOXEL_WORLDS = [  # (label, scenario file, scenario indices)
 VOXEL_SEEDS = 3
 
 
-@section("voxel", "15-30 min", "the voxel preset, its null models and A* on voxel worlds; a 256x256x128 city's memory",
-         [(VOXEL, "voxel-quality"), (VOXEL, "voxel-memory")])
+@section("voxel", "10-20 min", "the voxel preset, its null models and A* on voxel worlds",
+         [(VOXEL, "voxel-quality")])
 def voxel(run: Run):
     twins = {"preset": [], "no-learning": ["--null-model", "no-learning"], "restarts": ["--null-model", "restarts"]}
     rows = []
@@ -67,30 +66,9 @@ def voxel(run: Run):
                "scenario unless the table says otherwise.\n\n"
                + table(["world", "scenarios", "pipeline", "solved", "grid gap % (mean)", "grid gap % (worst)",
                         "final / optimum (mean)", "time per run", "ns per ant step"], rows))
-    run.commands.clear()  # the memory region's stamp lists its own commands only
-    memory = voxel_city_memory(run)
-    return {(VOXEL, "voxel-quality"): quality, (VOXEL, "voxel-memory"): memory}
+    return {(VOXEL, "voxel-quality"): quality}
 
 
 def stored_voxel_optimum(scen: str, index: int) -> float:
     lines = (ROOT / scen).read_text().splitlines()[2:]
     return float(lines[index].split()[6])
-
-
-def voxel_city_memory(run: Run) -> str:
-    """A 256x256x128 city planned under a 4 GiB limit: peak memory and time, from GNU time."""
-    folder = Path("build/results/voxel")  # from the project's root, as the tools run
-    (ROOT / folder).mkdir(parents=True, exist_ok=True)
-    run.tool(BUILD / "tools/aco_mapgen", "--voxel", "city", "256x256x128", "7", folder, "3")
-    scen = folder / "city256x256x128-s7.3dmap.3dscen"
-    rows = []
-    for label, extra in [("A\*", ["--planner", "astar"]), ("voxel preset, 20 ants x 20 iterations", ["--ants", "20", "--iterations", "20"]),
-                         ("voxel preset, 50 ants x 100 iterations", [])]:
-        out, wall, peak = run.timed(ACOPLAN, "--scen", scen, "--scen-index", "2", "--max-memory", "4G", *extra, "--json")
-        r = json.loads(out)
-        rows.append([label, "yes" if r["solved"] else "no", f"{r['grid_length']:.2f}" if r["solved"] else "-",
-                     f"{r['optimal_length']:.2f}", f"{peak / 1024:.2f} GiB", f"{wall:.1f} s", f"{r['time_ms'] / 1000:.1f} s"])
-    return (run.stamp() + "\n\nA generated city of 256x256x128 voxels (`aco_mapgen --voxel city 256x256x128 7`), its "
-            "third (longest) scenario, 26-neighbourhood, under `--max-memory 4G`, 2 threads; peak = maximum resident set size "
-            "(GNU time), wall = the whole process (loading the map and building the graph included), run = the planner's "
-            "own time:\n\n" + table(["planner", "solved", "grid length", "optimum", "peak memory", "wall", "run"], rows))

@@ -104,6 +104,10 @@ struct BOOST_SYMBOL_VISIBLE Graph {
 // middle of the edge those two cells share, never through a corner. The 16-neighbourhood on a map with no room for a
 // knight move (2x2, 1xN) is an Error.
 Graph build_graph(const Map& map, const GraphOptions& options);
+// The same graph without the nodes marked in `closed` (per node): subgraph(build_graph(map, options),
+// closed) without the whole graph ever built, for a world whose graph would not fit in memory
+// (the corridor of a voxel world planned coarse to fine).
+Graph build_graph(const Map& map, const GraphOptions& options, std::span<const std::uint8_t> closed);
 
 // The graph without the nodes marked in `closed` (per node): their edges, in and out, are gone, and
 // node ids, move order and every other edge stay as they are. Per-edge fields on it cost the

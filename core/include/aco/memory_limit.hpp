@@ -38,6 +38,13 @@ BOOST_SYMBOL_VISIBLE void check_planning_memory(std::int64_t width, std::int64_t
 BOOST_SYMBOL_VISIBLE void check_planning_memory(std::int64_t width, std::int64_t height, std::int64_t depth,
                                                 Neighbourhood neighbourhood, const std::string& name);
 
+// A voxel world's file, by its header's size: refuses (Error naming `name`, the size, the estimate
+// and the limit) one whose voxels alone (16 bytes each: the world and the graph's per-voxel
+// arrays) would need more than the limit. Its edges are checked when its graph is built
+// (check_voxel_graph_memory()), which may hold a corridor's only.
+BOOST_SYMBOL_VISIBLE void check_voxel_world_memory(std::int64_t width, std::int64_t height, std::int64_t depth,
+                                                   const std::string& name);
+
 // A voxel world's graph, once its edges are counted (before they are stored): refuses (Error) one
 // whose voxels and edges would need more than the limit. The estimate of a whole world above
 // counts every possible edge, so it is the check of a file's header; this one is the run's.

@@ -50,4 +50,14 @@ class BOOST_SYMBOL_VISIBLE VoxelMap final : public Map {
   Eigen::Vector3d origin_{0, 0, 0};
 };
 
+// with_concrete_map() (aco/map.hpp), with a voxel world as itself too: a loop over its millions
+// of voxels then makes no virtual call per voxel either.
+template <class F>
+void with_concrete_world(const Map& map, F&& f) {
+  if (const auto* world = dynamic_cast<const VoxelMap*>(&map))
+    f(*world);
+  else
+    with_concrete_map(map, f);
+}
+
 }  // namespace aco

@@ -42,8 +42,9 @@ double gap_percent(double length, double optimal);
 std::optional<bool> judge_corridor(const OptimalCorridor& corridor, PlanOutcome& run);
 
 // `count` runs of `run` with seeds seed, seed+1, ..., each with the A* optimum, the any-angle
-// optimum and its corridor.
+// optimum and its corridor. Not `whole_map`: the graph is a corridor of its map (a voxel world
+// planned coarse to fine, aco/planning/plan_request.hpp), whose optimum is not the map's: none.
 std::vector<PlanRun> plan_runs(PluginRegistry& registry, const Graph& graph, NodeId start, NodeId goal,
-                               const RunSpec& run, std::int64_t count);
+                               const RunSpec& run, std::int64_t count, bool whole_map = true);
 
 }  // namespace aco

@@ -25,13 +25,18 @@ demo_packages=(g++ cmake make libboost-dev libboost-program-options-dev libeigen
 # (ompl_benchmark_statistics) and sqlite3.
 # liboctomap-dev: the map plugin map/octomap (.bt and .ot voxel worlds) and tools/octomapgen,
 # which made data/maps/octomap (without it the build leaves both out).
+# ROS 1 (Debian's own packages): libroscpp-dev and libnav-msgs-dev build aco-ros-planner
+# (hosts/ros_planner; without them the build leaves it out); python3-rosmaster, python3-rospy,
+# python3-nav-msgs, python3-roslaunch and python3-rosservice run its test (a real master, a map
+# published with rospy) and its launch file.
 extra=("$@")
 [ "${1:-}" != --demo ] || extra=()
 packages=("${demo_packages[@]}" catch2 clang libclang-rt-14-dev
           chromium python3 openmpi-bin libopenmpi-dev python3-dev pybind11-dev python3-numpy python3-pandas
           python3-pytest python3-matplotlib python3-venv python3-pip python3-setuptools python3-wheel mypy
           python3-nbclient python3-nbformat python3-ipykernel clang-format-14 libompl-dev ompl-demos sqlite3
-          liboctomap-dev "${extra[@]}")
+          liboctomap-dev libroscpp-dev libnav-msgs-dev python3-rosmaster python3-rospy python3-nav-msgs
+          python3-roslaunch python3-rosservice "${extra[@]}")
 # r-cran-irace: tools/irace/run.sh and the irace_tuning_run test. Installed without its
 # recommended packages: they pull in hundreds of R packages (GDAL, spatial statistics) irace never loads.
 packages_without_recommends=(r-cran-irace)

@@ -22,4 +22,4 @@ Run through tools/figures.sh (which builds first); `tools/figures.sh --list` lis
 # stamps), sections.py (the registry), formatting.py, bench_output.py (aco_bench's text), and a
 # module per group of sections, imported here. Each registers its sections as it is imported: in
 # this order --list shows them and a run without sections runs them.
-from . import benchmarks, experiments, ompl, durations, pictures, large_maps, large_2048, voxel, voxel_large, explorers  # noqa: F401
+from . import benchmarks, experiments, ompl, durations, pictures, large_maps, large_2048, voxel, voxel_large, ros, explorers  # noqa: F401

@@ -19,6 +19,7 @@ RESULTS = Path("docs/results.md")
 IMAGES = Path("docs/images")
 VOXEL = Path("docs/voxel-worlds.md")
 CORRIDORS = Path("docs/corridors.md")
+ROS = Path("docs/ros.md")
 
 
 class FiguresError(Exception):

@@ -36,7 +36,7 @@ def check(condition, what):
 
 def test(ros: RosSession):
     import rospy
-    from nav_msgs.msg import Path as PathMessage
+    from nav_msgs.msg import OccupancyGrid, Path as PathMessage
 
     ros.start_node(KEYS)
     office = occupancy_grid(OFFICE, "map")
@@ -107,6 +107,21 @@ def test(ros: RosSession):
         plan, said = call((8, 8), (90, 60))
         check(not plan.poses and f"~{name}" in said, f"{what}: empty plan, the error names ~{name}")
         rospy.delete_param(f"{NODE}/{name}")
+    # The node's own parameters: unknown cells free, the occupancy threshold, the pheromone.
+    rospy.set_param(f"{NODE}/allow_unknown", True)
+    plan, said = call((8, 8), (0, 0))
+    check(not plan.poses and "not reachable" in said, "~allow_unknown: a goal in unknown space is free (and walled off)")
+    rospy.delete_param(f"{NODE}/allow_unknown")
+    rospy.set_param(f"{NODE}/occupied_threshold", 0)
+    plan, said = call((8, 8), (90, 60))
+    check(not plan.poses and "the start" in said and "occupied" in said, "~occupied_threshold 0: every cell is occupied")
+    rospy.delete_param(f"{NODE}/occupied_threshold")
+    rospy.set_param(f"{NODE}/publish_pheromone", True)
+    plan, said = call((8, 8), (90, 60))
+    field = rospy.wait_for_message("pheromone", OccupancyGrid, timeout=10)
+    check(field.info.width == info.width and len(field.data) == len(office.data) and max(field.data) == 100
+          and min(field.data) >= 0, "~publish_pheromone: the field on the map's cells, scaled to 0-100")
+    rospy.delete_param(f"{NODE}/publish_pheromone")
     # A parameter changed between calls changes the next plan: no smoother, every grid step a pose.
     pruned, _ = call((8, 8), (90, 60))
     rospy.set_param(f"{NODE}/smoother", "none")

@@ -88,6 +88,14 @@ TEST_CASE("acoplan --json reports every documented field", "[acoplan]") {
   CHECK(j["config"]["seed"] == 3);
 }
 
+TEST_CASE("acoplan with the start as goal reports no gap and no NaN", "[acoplan]") {
+  const auto r = test::acoplan({"--map", map1, "--start", "0,0", "--goal", "0,0"});
+  REQUIRE(r.exit_code == 0);
+  CHECK_THAT(r.out, Catch::Contains("gap 0.00 % for the grid path"));
+  CHECK_THAT(r.out, Catch::Contains("final path 0.00 % longer"));
+  CHECK_THAT(r.out, !Catch::Contains("nan"));
+}
+
 TEST_CASE("acoplan is deterministic for a seed, whatever the thread count", "[acoplan][determinism]") {
   const std::vector<std::string> base{"--scen", arena_scen, "--scen-index", "120", "--iterations", "40"};
   auto one = base, two = base;

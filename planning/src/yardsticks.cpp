@@ -11,7 +11,9 @@ Yardsticks yardsticks(const Graph& graph, NodeId start, NodeId goal, const Optim
   return y;
 }
 
-double relative_gap(double length, double optimal) { return length / optimal - 1.0; }
+double relative_gap(double length, double optimal) {
+  return length == optimal ? 0.0 : length / optimal - 1.0;  // start = goal: 0 over 0 is no gap
+}
 double gap_percent(double length, double optimal) { return 100.0 * relative_gap(length, optimal); }
 
 std::optional<bool> judge_corridor(const OptimalCorridor& corridor, PlanOutcome& run) {

@@ -30,7 +30,8 @@ struct Yardsticks {
 };
 Yardsticks yardsticks(const Graph& graph, NodeId start, NodeId goal, const OptimalCorridor* corridor);
 
-// The excess of a length over its optimum: length / optimal - 1; gap_percent() is 100 times it.
+// The excess of a length over its optimum: length / optimal - 1, and 0 where the length is the
+// optimum (0 where start = goal); gap_percent() is 100 times it.
 double relative_gap(double length, double optimal);
 double gap_percent(double length, double optimal);
 

@@ -681,5 +681,15 @@ TEST_CASE("an experiment's problem in a voxel world names voxels, and 2D problem
   CHECK_THROWS_WITH(load("name: x\nproblems:\n  - {map: " + map1() +
                          ", start: [0, 0, 0, 1], goal: [1, 1]}\n"
                          "baseline: {name: b}\n"),
-                    Contains("'start' must be a cell [x, y] (or [x, y, z] in a voxel world)"));
+                    Contains("'start' must be a cell [x, y]"));
+  // A voxel world's cell without its z, and a 2D map's with one, are refused, not read as layer 0.
+  CHECK_THROWS_WITH(load("name: x\nproblems:\n  - {map: " + simple + ", start: [56, 76], goal: [48, 85, 45]}\n" +
+                         "baseline: {name: b}\n"),
+                    Contains("'start' has no z, but the problem's map is a voxel world: give its cells as [x, y, z]"));
+  CHECK_THROWS_WITH(load("name: x\nproblems:\n  - {map: " + simple + ", start: [56, 76, 52], goal: '48,85'}\n" +
+                         "baseline: {name: b}\n"),
+                    Contains("'goal' has no z"));
+  CHECK_THROWS_WITH(load("name: x\nproblems:\n  - {map: " + map1() + ", start: [0, 0, 0], goal: [19, 19]}\n" +
+                         "baseline: {name: b}\n"),
+                    Contains("'start' has a z, but the problem's map is a 2D map: give its cells as [x, y]"));
 }

@@ -392,6 +392,18 @@ TEST_CASE("acoplan rejects malformed map files with the file, line and problem",
 
 // A folder read as a config file used to read as an empty one: a run with the defaults, no
 // error. /dev/zero never ended.
+TEST_CASE("acoplan refuses a voxel world's cell without its z and a 2D map's with one", "[acoplan][bad-input]") {
+  const std::string world = (test::data_dir() / "maps/voxel/generated/caves64x64x32-s1.3dmap").string();
+  const auto flat = test::acoplan({"--map", world, "--start", "42,24", "--goal", "44,24,22"});
+  CHECK(flat.exit_code == 1);
+  CHECK_THAT(flat.err,
+             Catch::Contains("--start 42,24 has no z, but " + world + " is a voxel world: give its cells as X,Y,Z"));
+  const auto layered = test::acoplan({"--map", map1, "--start", "0,0", "--goal", "19,19,0"});
+  CHECK(layered.exit_code == 1);
+  CHECK_THAT(layered.err,
+             Catch::Contains("--goal 19,19,0 has a z, but " + map1 + " is a 2D map: give its cells as X,Y"));
+}
+
 TEST_CASE("acoplan refuses a config file that is a folder or a device", "[acoplan][bad-input]") {
   expect_error({"--config", "/tmp"}, "/tmp: is a directory, not a config file");
   expect_error({"--config", "/dev/zero"}, "/dev/zero: not a regular file");

@@ -39,6 +39,12 @@ MapKind map_kind(const std::filesystem::path& map_or_scenario) {
   return extension == ".asc" || extension == ".pgm" ? MapKind::terrain : MapKind::grid;
 }
 
+std::optional<bool> cells_have_z(const std::filesystem::path& map_or_scenario, const std::string& map_format) {
+  if (map_kind(map_or_scenario) == MapKind::voxel) return true;
+  if (map_format.empty()) return false;
+  return std::nullopt;
+}
+
 std::string recommended_preset(MapKind kind) {
   switch (kind) {
     case MapKind::terrain:

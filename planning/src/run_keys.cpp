@@ -11,6 +11,7 @@
 #include "aco/engine/map_io.hpp"
 #include "aco/engine/pipeline.hpp"
 #include "aco/planning/planning.hpp"
+#include "aco/planning/presets.hpp"
 #include "aco/settings_table.hpp"
 
 namespace aco {
@@ -84,11 +85,13 @@ std::vector<std::pair<std::string, ParamValue>> run_values(const RunSpec& spec) 
     keys.emplace_back("scen", p.scen.string());
     keys.emplace_back("scen-index", std::int64_t{p.scen_index});
   }
-  // Cells as the keys take them: "X,Y", and ",Z" above the ground layer.
+  // Cells as the keys take them: "X,Y", and ",Z" in a voxel world (even on its ground layer, where
+  // "X,Y" would be refused) or above the ground layer.
+  const bool world = cells_have_z(!p.map.empty() ? p.map : p.scen, p.map_format).value_or(false);
   for (const auto& [key, cell] : {std::pair{"start", p.start}, std::pair{"goal", p.goal}})
     if (cell)
       keys.emplace_back(key, std::to_string(cell->x) + "," + std::to_string(cell->y) +
-                                 (cell->z != 0 ? "," + std::to_string(cell->z) : ""));
+                                 (cell->z != 0 || world ? "," + std::to_string(cell->z) : ""));
   auto add = [&keys](const std::string& prefix, const ParameterValues& values) {
     for (const auto& [name, value] : values.all()) keys.emplace_back(prefix + name, value);
   };
@@ -156,6 +159,19 @@ ProblemSpec resolve_problem_keys(const Keys& problem, const Keys& map_keys, Plug
   if (!map_file.empty()) {
     const std::string format = problem.count("map-format") ? problem.at("map-format") : "";
     std::tie(p.map_format, p.map_parameters) = resolve_map_format(map_file, format, map_keys, registry, spelling);
+    // A voxel world's cell without its z would silently be layer 0; a 2D map's has none.
+    if (const std::optional<bool> with_z = cells_have_z(map_file, p.map_format))
+      for (const char* end : {"start", "goal"}) {
+        if (!problem.count(end)) continue;
+        const std::string& text = problem.at(end);
+        const bool has_z = std::count(text.begin(), text.end(), ',') == 2;
+        if (*with_z && !has_z)
+          throw KeyError(spelling(end), spelling(end) + " " + text + " has no z, but " + map_file.string() +
+                                            " is a voxel world: give its cells as X,Y,Z");
+        if (!*with_z && has_z)
+          throw KeyError(spelling(end), spelling(end) + " " + text + " has a z, but " + map_file.string() +
+                                            " is a 2D map: give its cells as X,Y (a voxel world's cells have a z)");
+      }
   } else if (problem.count("map-format") || !map_keys.empty()) {
     const std::string key = problem.count("map-format") ? "map-format" : kMapSlot + ("." + map_keys.begin()->first);
     throw KeyError(spelling(key), spelling(key) + " needs a map (" + spelling("map or ") + spelling("scen)"));

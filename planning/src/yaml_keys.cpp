@@ -52,19 +52,32 @@ bool boolean(const std::filesystem::path& file, const YAML::Node& node, const st
   fail(file, node, "'" + key + "' must be true or false, not '" + text + "'");
 }
 
-Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, bool voxels) {
-  if (node.IsSequence() && node.size() == 2)
-    return {integer(file, node[0], key + "[0]", 0), integer(file, node[1], key + "[1]", 0)};
-  if (voxels && node.IsSequence() && node.size() == 3)
-    return {integer(file, node[0], key + "[0]", 0), integer(file, node[1], key + "[1]", 0),
-            integer(file, node[2], key + "[2]", 0)};
-  if (voxels && node.IsScalar()) {
+Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, std::optional<bool> with_z,
+          bool texts) {
+  const std::string wanted = with_z == std::optional<bool>(false) ? "[x, y]"
+                             : with_z                             ? "[x, y, z]"
+                                                                  : "[x, y] (or [x, y, z] in a voxel world)";
+  std::optional<Cell> c;
+  std::size_t axes = 0;
+  if (node.IsSequence() && (node.size() == 2 || node.size() == 3)) {
+    axes = node.size();
+    c = Cell{integer(file, node[0], key + "[0]", 0), integer(file, node[1], key + "[1]", 0),
+             axes == 3 ? integer(file, node[2], key + "[2]", 0) : 0};
+  } else if (texts && node.IsScalar()) {
     try {
-      return parse_cell(node.Scalar(), key);
+      c = parse_cell(node.Scalar(), key);
+      axes = static_cast<std::size_t>(std::count(node.Scalar().begin(), node.Scalar().end(), ',')) + 1;
     } catch (const Error&) {}
   }
-  fail(file, node,
-       "'" + key + "' must be a cell [x, y]" + std::string(voxels ? " (or [x, y, z] in a voxel world)" : ""));
+  if (!c) fail(file, node, "'" + key + "' must be a cell " + wanted);
+  // A voxel world's cell without its z would silently be layer 0; a 2D map's has none.
+  if (with_z && *with_z && axes != 3)
+    fail(file, node, "'" + key + "' has no z, but the problem's map is a voxel world: give its cells as " + wanted);
+  if (with_z && !*with_z && axes != 2)
+    fail(file, node,
+         "'" + key + "' has a z, but the problem's map is a 2D map: give its cells as " + wanted +
+             " (a voxel world's cells have a z)");
+  return *c;
 }
 
 void only_keys(const std::filesystem::path& file, const YAML::Node& map, const std::vector<std::string>& allowed,

@@ -160,8 +160,9 @@ std::vector<Problem> read_problems(const std::filesystem::path& file, const YAML
       } catch (const aco::Error& e) {
         fail(file, entry, e.what());
       }
-      p.start = cell(file, entry["start"], "start", /*voxels=*/true);
-      p.goal = cell(file, entry["goal"], "goal", /*voxels=*/true);
+      const std::optional<bool> with_z = aco::cells_have_z(p.map, p.map_format);
+      p.start = cell(file, entry["start"], "start", with_z, /*texts=*/true);
+      p.goal = cell(file, entry["goal"], "goal", with_z, /*texts=*/true);
       p.name = entry["name"] ? scalar(file, entry["name"], "name") : std::filesystem::path(map).stem().string();
       problems.push_back(std::move(p));
     }

@@ -4,6 +4,7 @@
 // the classic Ant System setting of the paper experiments (ant-system). acoplan and acosim take
 // --preset NAME, experiment and scenario files `preset: NAME`; each is `--config` of its file.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,10 @@ enum class MapKind { grid, terrain, voxel };
 // By the file's ending ("terrain" for .asc and .pgm, "voxel" for .3dmap, .bt and .ot; a Moving AI
 // .scen or .3dscen file by the map it names).
 MapKind map_kind(const std::filesystem::path& map_or_scenario);
+// Whether a map file's cells have a z: true for a voxel world (map_kind()), false for a map of a
+// built-in 2D format (`map_format` empty), none for a map plugin's other files, whose kind shows
+// only once they are read.
+std::optional<bool> cells_have_z(const std::filesystem::path& map_or_scenario, const std::string& map_format);
 
 // The preset a run naming no pipeline runs: robust, terrain or voxel.
 std::string recommended_preset(MapKind kind);

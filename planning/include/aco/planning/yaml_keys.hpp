@@ -5,6 +5,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
+#include <optional>
 #include <map>
 #include <string>
 #include <vector>
@@ -23,9 +24,11 @@ std::string where(const std::filesystem::path& file, const YAML::Node& node);  /
 std::string scalar(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);
 int integer(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, int low);
 bool boolean(const std::filesystem::path& file, const YAML::Node& node, const std::string& key);  // true or false
-// [x, y]; with `voxels` also [x, y, z] and the command line's "x,y" and "x,y,z" (an experiment's
-// problems, whose map may be a voxel world).
-Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key, bool voxels = false);
+// [x, y]. An experiment's problem gives `with_z`, whether its map's cells have one
+// (cells_have_z()): [x, y, z] in a voxel world, [x, y] on a 2D map, either where a map plugin's
+// file does not say; and there also the command line's "x,y" or "x,y,z".
+Cell cell(const std::filesystem::path& file, const YAML::Node& node, const std::string& key,
+          std::optional<bool> with_z = false, bool texts = false);
 // Fails on a key of `map` that is not allowed, naming the nearest allowed one.
 void only_keys(const std::filesystem::path& file, const YAML::Node& map, const std::vector<std::string>& allowed,
                const std::string& what);

@@ -31,4 +31,9 @@ done
 # A bad factor is refused with a clear message.
 if "$mapgen" --upsample "$root/data/maps/movingai/arena.map" 0 "$out" 2> "$out.err"; then exit 1; fi
 grep -q "FACTOR must be 1 to 64" "$out.err"
+# A number too large for one is named, not "stoi".
+if "$mapgen" --upsample "$root/data/maps/movingai/arena.map" 99999999999 "$out" 2> "$out.err"; then exit 1; fi
+grep -q "FACTOR must be a whole number" "$out.err"
+if "$mapgen" --benchmark "$out" 99999999999 2> "$out.err"; then exit 1; fi
+grep -q -- "--benchmark: FIRST_SEED must be a whole number" "$out.err"
 echo "aco_mapgen --upsample: map and scenarios checked"

@@ -326,4 +326,6 @@ TEST_CASE("aco_mapgen --voxel refuses a bad kind, size, seed or count", "[voxel_
   fails({"city", "512x512x512", "1", dir.string()}, "more than 16777216 voxels");
   fails({"city", "16x16x16", "-1", dir.string()}, "SEED must be a whole number");
   fails({"city", "16x16x16", "1", dir.string(), "-2"}, "COUNT must be 0 to 100000");
+  fails({"city", "16x16x16", "1", dir.string(), "99999999999"},
+        "--voxel: COUNT must be a whole number from -2147483648 to 2147483647, not '99999999999'");
 }

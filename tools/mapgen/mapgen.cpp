@@ -22,6 +22,7 @@
 // Deterministic: fixed seeds, aco::Rng only (no std:: distributions, no clock), so two runs write
 // byte-identical files.
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -30,6 +31,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -469,12 +471,22 @@ void write_ros_office(const std::filesystem::path& dir) {
   std::cout << "office.yaml, office.pgm: " << kWidth << "x" << kHeight << " cells at 0.1 m\n";
 }
 
+// A whole-number argument, or an Error naming it (std::stoi says only "stoi").
+int whole_number(const std::string& text, const std::string& what) {
+  int value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size())
+    throw aco::Error(what + " must be a whole number from " + std::to_string(std::numeric_limits<int>::min()) + " to " +
+                     std::to_string(std::numeric_limits<int>::max()) + ", not '" + text + "'");
+  return value;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if ((argc == 6 || argc == 7) && std::string(argv[1]) == "--voxel") {
     try {
-      write_voxel_world(argv[2], argv[3], argv[4], argv[5], argc == 7 ? std::stoi(argv[6]) : 10);
+      write_voxel_world(argv[2], argv[3], argv[4], argv[5], argc == 7 ? whole_number(argv[6], "--voxel: COUNT") : 10);
       return 0;
     } catch (const std::exception& e) {
       std::cerr << "aco_mapgen: " << e.what() << "\n";
@@ -484,7 +496,8 @@ int main(int argc, char** argv) {
   if ((argc == 5 || argc == 6) && std::string(argv[1]) == "--upsample") {
     try {
       std::filesystem::create_directories(argv[4]);
-      write_upsampled(argv[2], std::stoi(argv[3]), argv[4], argc == 6 ? std::stoi(argv[5]) : 10);
+      write_upsampled(argv[2], whole_number(argv[3], "--upsample: FACTOR"), argv[4],
+                      argc == 6 ? whole_number(argv[5], "--upsample: COUNT") : 10);
       return 0;
     } catch (const std::exception& e) {
       std::cerr << "aco_mapgen: " << e.what() << "\n";
@@ -527,7 +540,8 @@ int main(int argc, char** argv) {
   try {
     if (benchmark) {
       std::filesystem::create_directories(argv[2]);
-      write_benchmark(argv[2], argc >= 4 ? std::stoi(argv[3]) : 1, large, argc == 5 ? argv[4] : "");
+      write_benchmark(argv[2], argc >= 4 ? whole_number(argv[3], std::string(argv[1]) + ": FIRST_SEED") : 1, large,
+                      argc == 5 ? argv[4] : "");
       return 0;
     }
     const std::filesystem::path dir = argv[1];

@@ -541,7 +541,7 @@ std::vector<Scenario> read_voxel_scenarios(std::istream& in, const std::string& 
     const std::size_t n = split_fields(line, f, 8);
     if (n == 0) continue;
     if (n != 7 && n != 8)
-      reader.fail("expected 8 fields (start x y z, goal x y z, optimal length, ratio), found " +
+      reader.fail("expected 8 fields (start x y z, goal x y z, optimal length, ratio), or 7 without the ratio, found " +
                   std::string(n > 8 ? "more than 8" : std::to_string(n)));
     Scenario s;
     s.map_path = map_path;

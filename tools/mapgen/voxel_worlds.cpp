@@ -256,9 +256,11 @@ void write_voxel_world(const std::string& kind, const std::string& size_text, co
     world.emplace(cave_world(s, rng, file));
   std::ostringstream map_text;
   aco::write_movingai_voxels(*world, map_text);
+  // Both texts made before either file is written: a world whose scenarios fail leaves no file.
+  const std::string scenarios = count > 0 ? voxel_scenarios(*world, file, count, rng) : "";
   std::filesystem::create_directories(dir);
   write_file(dir / file, map_text.str());
-  if (count > 0) write_file(dir / (file + ".3dscen"), voxel_scenarios(*world, file, count, rng));
+  if (count > 0) write_file(dir / (file + ".3dscen"), scenarios);
   std::cout << file << ": " << s.width << "x" << s.height << "x" << s.depth << ", " << world->blocked_count()
             << " blocked, " << count << " scenarios\n";
 }

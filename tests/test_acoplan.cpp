@@ -430,6 +430,15 @@ TEST_CASE("acoplan names a bad config line, and shows '%' placeholders in any in
   expect_error({"--beta", "%x%"}, "--beta: '%x%' is not a finite number");
 }
 
+TEST_CASE("acoplan refuses real values a double holds without precision or not at all", "[acoplan][bad-input]") {
+  // Subnormal: read, but a plugin's arithmetic on it overflowed ("wrote inf") and printing it failed.
+  for (const char* key : {"--update.rho", "--beta", "--q0", "--time-limit", "--heuristic.floor", "--init.tau0"})
+    expect_error({key, "1e-310"}, std::string(key) + ": 1e-310 is too close to 0 to compute with (a subnormal " +
+                                      "number); give 0 or a value of at least 2.2250738585072014e-308 in size");
+  expect_error({"--update.rho", "1e-400"}, "--update.rho: 1e-400 is beyond what a double holds");
+  expect_error({"--beta", "1e400"}, "--beta: 1e400 is beyond what a double holds");
+}
+
 TEST_CASE("acoplan rejects blocked, out-of-range and malformed start and goal cells", "[acoplan][bad-input]") {
   expect_error({"--map", map1, "--start", "6,0", "--goal", "19,19"},
                "start (6,0) is blocked: an obstacle (" + map1 + ")");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -38,7 +39,9 @@ std::string format_number(double v) {
   s.precision(12);
   s << v;
   // Readable for the usual values, exact for the rest: the text must read back as v.
-  if (std::stod(s.str()) == v) return s.str();
+  double back = 0.0;
+  const std::string text = s.str();
+  if (parse_real(text, back) && back == v) return text;
   char exact[64];
   return std::string(exact, std::to_chars(exact, exact + sizeof exact, v).ptr);
 }
@@ -181,7 +184,19 @@ ParamValue parse_value(const ParamSpec& spec, const std::string& text, const std
         number = static_cast<double>(i);
         value = i;
       } else {
-        if (!parse_real(text, number)) throw Error(key + ": " + quoted + " is not a finite number");
+        if (!parse_real(text, number)) {
+          double ignored = 0.0;
+          const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), ignored);
+          if (ec == std::errc::result_out_of_range && end == text.data() + text.size())
+            throw Error(key + ": " + text + " is beyond what a double holds (above 1.8e308, or a nonzero value " +
+                        "below 4.9e-324 in size)");
+          throw Error(key + ": " + quoted + " is not a finite number");
+        }
+        // Read, but with its precision lost: a plugin's arithmetic on it overflows ("wrote inf"),
+        // and printing it back failed ("stod").
+        if (std::fpclassify(number) == FP_SUBNORMAL)
+          throw Error(key + ": " + text + " is too close to 0 to compute with (a subnormal number); give 0 or a " +
+                      "value of at least " + format_number(std::numeric_limits<double>::min()) + " in size");
         value = number;
       }
       const NumericRange r = *numeric_range(spec);

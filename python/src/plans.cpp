@@ -153,8 +153,6 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, const C
                const std::optional<std::string>& max_memory, bool keep_pheromone) {
   aco::KeyedValues changes;
   changes.keys = keys;
-  changes.keys["start"] = cell_text(start);
-  changes.keys["goal"] = cell_text(goal);
   const auto* file = std::get_if<std::filesystem::path>(&map);
   if (file) changes.keys["map"] = file->string();
   const auto* array = std::get_if<ArrayMap>(&map);
@@ -167,6 +165,10 @@ py::tuple plan(const std::variant<std::filesystem::path, ArrayMap>& map, const C
   aco::PlanRequest request;
   request.spelling = spelling;
   request.run = aco::resolve_run(aco::over_pipeline_file(source.keys(), changes).keys, registry(), spelling);
+  // The cells as given, not as keys: check_arity() below names them with the map's size, once it is read.
+  const auto to_cell = [](const CellArg& c) { return aco::Cell{c.at(0), c.at(1), c.size() == 3 ? c[2] : 0}; };
+  request.run.problem.start = to_cell(start);
+  request.run.problem.goal = to_cell(goal);
   request.run.colony.between_iterations = SignalCheck();  // Ctrl-C stops the colony after its iteration
   request.threads = static_cast<int>(threads);
   if (max_memory) request.max_memory = aco::parse_memory_size(*max_memory, "max_memory");

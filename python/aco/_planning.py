@@ -5,6 +5,7 @@ import contextlib
 import dataclasses
 import functools
 import itertools
+import math
 import operator
 import os
 from typing import Any, Callable, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
@@ -18,6 +19,7 @@ Error = _aco.Error
 _SCOPES = frozenset(_aco.key_scopes())
 _SLOTS = ("init", "heuristic", "update", "deadlock", "smoother", "local")
 _KINDS = ("occupancy", "terrain")
+_MAX_CELLS = 2**31 - 1  # the graph's node ids are 32-bit (aco/graph.hpp)
 _live_names = itertools.count()
 # The ESRI grid's usual marker of a cell without data; Map.save() picks another if a height is it.
 _NODATA = -9999.0
@@ -52,6 +54,12 @@ class Map:
                         f"not of shape {array.shape}")
         if not (np.issubdtype(array.dtype, np.number) or array.dtype == np.bool_):
             raise Error(f"a map array holds bools or integers (occupancy) or floats (heights), not {array.dtype}")
+        # Before anything is computed over it: a strided view of a small array can be of any size,
+        # and numpy would allocate its cells (gigabytes) to compare them.
+        cells = math.prod(array.shape)
+        if cells > _MAX_CELLS:
+            raise Error(f"a map array of shape {array.shape} has {cells} cells, more than the graph's 32-bit node "
+                        f"ids allow ({_MAX_CELLS})")
         if kind is not None and kind not in _KINDS:
             raise Error(f"kind must be 'occupancy' or 'terrain', not {kind!r}")
         if array.ndim == 3:

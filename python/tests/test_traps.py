@@ -109,6 +109,14 @@ def test_the_huge_map_message_names_max_memory(tmp_path):
         aco.plan(huge, (0, 0), (1, 1), max_memory="1G")
 
 
+@pytest.mark.parametrize("shape", [(100000, 100000), (2000, 2000, 2000)])
+def test_a_huge_strided_view_is_refused_before_numpy_computes_over_it(shape):
+    # Every cell the same byte: numpy would allocate the whole view to compare it (issue 56).
+    view = np.lib.stride_tricks.as_strided(np.zeros(1, dtype=bool), shape=shape, strides=(0,) * len(shape))
+    with pytest.raises(aco.Error, match=r"a map array of shape .* cells, more than the graph's 32-bit node ids allow"):
+        aco.plan(view, (0,) * len(shape), (1,) * len(shape))
+
+
 def test_max_memory_lets_a_map_that_fits_plan():
     assert aco.plan(MAP1, (0, 0), (19, 19), seed=1, max_memory="1G").solved
     assert aco.plan(MAP1, (0, 0), (19, 19), seed=1, max_memory=1 << 30).solved

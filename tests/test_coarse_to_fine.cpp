@@ -266,6 +266,20 @@ TEST_CASE("a voxel world's coarse colony out of time leaves the run unsolved, wi
   CHECK(run.text("coarse.corridor") == "not used");
 }
 
+TEST_CASE("a voxel world's coarse colony that finds no path with no time limit leaves the whole world",
+          "[coarse_to_fine][voxel]") {
+  // One ant that dies in its first dead end (no back-off), led by nothing: the coarse colony ends
+  // without a path, and the world is planned on its whole graph, not refused for a time limit.
+  const aco::PlannedRuns planned =
+      plan_in(hall_with_door(),
+              {{"deadlock", "discard"}, {"ants", "1"}, {"iterations", "1"}, {"heuristic", "distance"}, {"beta", "0"}});
+  const aco::PlanRun& run = planned.runs.front();
+  CHECK_FALSE(run.properties.count("coarse.corridor"));
+  CHECK(run.optimal_length);  // A* on the whole graph
+  CHECK_THAT(run.reason, !Catch::Contains("time limit"));
+  CHECK(planned.graph.num_edges() > 524288 * 13);  // the hall's, not a corridor's
+}
+
 TEST_CASE("a smaller voxel world, or coarse-to-fine 0, is planned on its whole graph", "[coarse_to_fine][voxel]") {
   const auto check_whole = [](const aco::PlannedRuns& planned) {
     const aco::PlanRun& run = planned.runs.front();

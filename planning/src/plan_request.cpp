@@ -114,12 +114,13 @@ PlannedRuns plan(const PlanRequest& request, PluginRegistry& registry) {
   WorldGraph world = world_graph(registry, *planned.map, start, goal, request.run, began);
   planned.graph = std::move(world.graph);
   const NodeId from = planned.graph.node(start), to = planned.graph.node(goal);
-  if (!world.coarse || (!world.corridor && world.coarse->solved())) {
+  // No corridor, and no coarse colony out of time: the whole world's graph (world_graph() built it).
+  if (!world.corridor && !out_of_time(world, request.run)) {
     planned.runs = plan_runs(registry, planned.graph, from, to, request.run, request.repeat);
     return planned;
   }
-  // In the corridor: the time limit left, and the coarse levels counted in each run's time. With
-  // none, the coarse colony's reason is the runs'.
+  // In the corridor: the time limit left, and the coarse levels counted in each run's time. Out
+  // of time at a coarse level: the runs say so.
   const double spent_s = seconds_since(began);
   if (world.corridor) {
     RunSpec fine = request.run;

@@ -95,10 +95,8 @@ std::optional<aco::Cell> free_cell_near(const aco::OccupancyGrid& grid, aco::Cel
 // Per cell the strongest pheromone into it, 0-100, rows as the map's.
 std::vector<std::int8_t> pheromone_field(const aco::PlannedRuns& planned) {
   const aco::Graph& graph = planned.graph;
-  const std::vector<double> per_edge = aco::run_picture(graph, planned.best(), true).pheromone;
-  std::vector<double> per_cell(static_cast<std::size_t>(graph.num_nodes()), 0.0);
-  for (std::size_t e = 0; e < per_edge.size(); ++e)
-    per_cell[graph.targets[e]] = std::max(per_cell[graph.targets[e]], per_edge[e]);
+  const std::vector<double> per_cell =
+      aco::strongest_into(graph, aco::run_picture(graph, planned.best(), true).pheromone);
   const double strongest = *std::max_element(per_cell.begin(), per_cell.end());
   std::vector<std::int8_t> field(per_cell.size(), 0);
   for (aco::NodeId n = 0; n < graph.num_nodes(); ++n) {

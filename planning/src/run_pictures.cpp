@@ -20,6 +20,13 @@ RunPicture run_picture(const Graph& graph, const PlanRun& run, bool pheromone) {
   return picture;
 }
 
+std::vector<double> strongest_into(const Graph& graph, std::span<const double> per_edge) {
+  std::vector<double> into(static_cast<std::size_t>(graph.num_nodes()), 0.0);
+  for (EdgeId e = 0; e < graph.num_edges(); ++e)
+    into[graph.targets[e]] = std::max(into[graph.targets[e]], per_edge[static_cast<std::size_t>(e)]);
+  return into;
+}
+
 VoxelWorldView run_view(const Graph& graph, const PlanRun& run, bool pheromone) {
   VoxelWorldView view(*graph.map);
   view.title = run_title(graph.map->name(), run.solved(), run.length, run.seed);
@@ -28,9 +35,7 @@ VoxelWorldView run_view(const Graph& graph, const PlanRun& run, bool pheromone) 
   view.start = graph.cell(run.start);
   view.goal = graph.cell(run.goal);
   if (!pheromone || run.pheromone.empty()) return view;
-  std::vector<double> into(graph.num_nodes(), 0.0);
-  for (EdgeId e = 0; e < graph.num_edges(); ++e)
-    into[graph.targets[e]] = std::max(into[graph.targets[e]], run.pheromone[e]);
+  const std::vector<double> into = strongest_into(graph, run.pheromone);
   std::vector<NodeId> nodes;
   for (NodeId n = 0; n < graph.num_nodes(); ++n)
     if (graph.degree(n) > 0) nodes.push_back(n);

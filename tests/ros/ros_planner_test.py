@@ -20,7 +20,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tools/ros"))
 from publish_map import occupancy_grid  # noqa: E402
-from ros_session import NODE, RosSession  # noqa: E402
+from ros_session import NODE, RosSession, cell_centre  # noqa: E402
 
 BUILD = Path(sys.argv[1]).resolve()
 OFFICE = ROOT / "data/maps/ros/office.yaml"
@@ -42,9 +42,8 @@ def test(ros: RosSession):
     office = occupancy_grid(OFFICE, "map")
     info = office.info
 
-    def centre(cell):  # aco's cell (x, row from the top) in the map's frame
-        return (info.origin.position.x + (cell[0] + 0.5) * info.resolution,
-                info.origin.position.y + (info.height - 1 - cell[1] + 0.5) * info.resolution)
+    def centre(cell):
+        return cell_centre(info, cell)
 
     def call(start_cell, goal_cell, tolerance=0.0, frame="map"):
         return ros.make_plan(centre(start_cell), centre(goal_cell), tolerance, frame)

@@ -16,7 +16,7 @@ from .sections import section
 
 sys.path.insert(0, str(ROOT / "tools/ros"))
 from publish_map import occupancy_grid  # noqa: E402
-from ros_session import NODE, RosSession  # noqa: E402
+from ros_session import NODE, RosSession, cell_centre  # noqa: E402
 
 OFFICE = Path("data/maps/ros/office.yaml")
 OFFICE_CELLS = ((8, 8), (90, 60))  # aco's cells (x, row from the top): docs/ros.md's rosservice call
@@ -24,11 +24,6 @@ CITY = Path("data/maps/movingai/street/Berlin_0_512.map")
 CITY_RESOLUTION, CITY_ORIGIN = 0.05, (-12.8, -3.2)  # metres: a 25.6 m square off the frame's origin
 REQUESTS = 20  # the city's scenarios, spread over its file's second half (the longer ones)
 COLONIES = [("robust (the default)", {}), ("a small colony: `~ants 10 ~iterations 20`", {"ants": 10, "iterations": 20})]
-
-
-def centre(info, cell):
-    return (info.origin.position.x + (cell[0] + 0.5) * info.resolution,
-            info.origin.position.y + (info.height - 1 - cell[1] + 0.5) * info.resolution)
 
 
 def moving_ai_grid(map_file: Path):
@@ -90,7 +85,7 @@ def ros(run: Run):
         ros_session.start_node({})
         office = occupancy_grid(ROOT / OFFICE, "map")
         ros_session.publish(office, "aco planner: map 100x70")
-        start, goal = (centre(office.info, c) for c in OFFICE_CELLS)
+        start, goal = (cell_centre(office.info, c) for c in OFFICE_CELLS)
         plan, _ = ros_session.make_plan(start, goal)
         points = [(p.pose.position.x, p.pose.position.y) for p in plan.poses]
         (ROOT / IMAGES).mkdir(parents=True, exist_ok=True)
@@ -114,7 +109,7 @@ def ros(run: Run):
             began = time.perf_counter()
             for start_cell, goal_cell, optimum in scenarios(CITY):
                 asked = time.perf_counter()
-                plan, _ = ros_session.make_plan(centre(city.info, start_cell), centre(city.info, goal_cell))
+                plan, _ = ros_session.make_plan(cell_centre(city.info, start_cell), cell_centre(city.info, goal_cell))
                 latencies.append(time.perf_counter() - asked)
                 if plan.poses:
                     solved += 1

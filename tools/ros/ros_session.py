@@ -15,6 +15,12 @@ from pathlib import Path
 NODE = "/aco_planner"
 
 
+def cell_centre(info, cell):
+    """The centre of aco's cell (x, row from the top) in the frame of a map with nav_msgs' `info`."""
+    return (info.origin.position.x + (cell[0] + 0.5) * info.resolution,
+            info.origin.position.y + (info.height - 1 - cell[1] + 0.5) * info.resolution)
+
+
 def free_port() -> int:
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))

@@ -215,18 +215,24 @@ UPDATE acobench_meta SET value = '6' WHERE key = 'format_version';
   if (rc != SQLITE_OK) throw std::runtime_error("downgrading " + db.string() + ": " + message);
 }
 
-int count_runs(const std::filesystem::path& db) {
+std::string sql_value(const std::filesystem::path& db, const std::string& sql) {
   sqlite3* handle = nullptr;
-  int count = -1;
+  std::string value = "(no row)";
   if (sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
     sqlite3_stmt* statement = nullptr;
-    if (sqlite3_prepare_v2(handle, "SELECT count(*) FROM runs", -1, &statement, nullptr) == SQLITE_OK &&
+    if (sqlite3_prepare_v2(handle, sql.c_str(), -1, &statement, nullptr) == SQLITE_OK &&
         sqlite3_step(statement) == SQLITE_ROW)
-      count = sqlite3_column_int(statement, 0);
+      value =
+          sqlite3_column_text(statement, 0) ? reinterpret_cast<const char*>(sqlite3_column_text(statement, 0)) : "NULL";
     sqlite3_finalize(statement);
   }
   sqlite3_close(handle);
-  return count;
+  return value;
+}
+
+int count_runs(const std::filesystem::path& db) {
+  const std::string count = sql_value(db, "SELECT count(*) FROM runs");
+  return count == "(no row)" ? -1 : std::stoi(count);
 }
 
 #ifdef ACO_TEST_MPIEXEC

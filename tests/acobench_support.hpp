@@ -39,7 +39,11 @@ std::vector<std::string> trial_rows(const std::filesystem::path& db);
 // trials give the same rows whatever order the trials were stored in.
 std::vector<std::string> database_rows(const std::filesystem::path& db);
 
-int count_runs(const std::filesystem::path& db);
+// The first column of the first row of a query, as text ("NULL" for NULL, "(no row)" where the
+// file or the query gives none), read with SQLite alone.
+std::string sql_value(const std::filesystem::path& db, const std::string& sql);
+
+int count_runs(const std::filesystem::path& db);  // -1 where the file holds no runs table
 
 // Rewrites a database this acobench made into the layout of format 6 (before OMPL's layout: the
 // text of ENUMs, the free text and plugins in their old columns, no limits), as an acobench of

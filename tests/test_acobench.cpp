@@ -247,6 +247,41 @@ TEST_CASE("a run stopped with SIGTERM says what is stored and the command that g
                                        " --threads 1` again to run the others"));
 }
 
+// The highest resident memory of a running process so far (VmHWM), in KiB.
+long peak_memory_kib(pid_t pid) {
+  std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
+  return -1;
+}
+
+TEST_CASE("a study of four billion trials stores its first ones at once in little memory and resumes",
+          "[acobench][slow]") {
+  std::string text = kSmall;
+  text.replace(text.find("repetitions: 4"), 14, "repetitions: 1000000000");
+  const auto file = experiment(text);
+  const auto db = file.parent_path() / "huge.db", log = file.parent_path() / "huge.log";
+  for (int round = 0; round < 2; ++round) {
+    const int before = round == 0 ? 0 : count_runs(db);
+    const pid_t child =
+        test::start({ACO_TEST_ACOBENCH, "run", file.string(), "--db", db.string(), "--threads", "1"}, log);
+    // A list of the trials made before the first runs (96 GB) never gets here within the minute.
+    wait_for_trials(db, before + 20);
+    const long peak = peak_memory_kib(child);
+    kill(child, SIGKILL);
+    int status = 0;
+    waitpid(child, &status, 0);
+    INFO("round " << round << ", stored before " << before << ", peak " << peak << " KiB");
+    CHECK(count_runs(db) >= before + 20);
+    CHECK(peak > 0);
+    CHECK(peak < 256 * 1024);
+    CHECK_THAT(file_bytes(log), Contains("4000000000 trials: 4 configurations x 1 problem x 1000000000 repetitions; " +
+                                         std::to_string(before) + " already in"));
+  }
+  // Resumed, not rerun: the second run's trials are others than the first's.
+  CHECK(sql_value(db, "SELECT count(*) - count(DISTINCT plannerid || ':' || repetition) FROM runs") == "0");
+}
+
 TEST_CASE("acobench refuses a blocked start, a missing database and an unknown command", "[acobench][errors]") {
   std::string blocked = kSmall;
   blocked.replace(blocked.find("start: [0, 0]"), 13, "start: [6, 0]");  // an obstacle of map1

@@ -3,7 +3,6 @@
 // path to acoplan's --json, acobench's database, runs.csv and report. The plugin is the fixture
 // tests/fixtures/figures_deadlock.cpp (built unoptimised: the report must warn of it).
 #include <catch2/catch.hpp>
-#include <sqlite3.h>
 
 #include <fstream>
 #include <limits>
@@ -44,22 +43,6 @@ std::string read(const std::filesystem::path& file) {
   std::stringstream text;
   text << in.rdbuf();
   return text.str();
-}
-
-// The first column of the first row of a query, as text.
-std::string sql_value(const std::filesystem::path& db, const std::string& sql) {
-  sqlite3* handle = nullptr;
-  std::string value = "(no row)";
-  if (sqlite3_open_v2(db.c_str(), &handle, SQLITE_OPEN_READONLY, nullptr) == SQLITE_OK) {
-    sqlite3_stmt* statement = nullptr;
-    if (sqlite3_prepare_v2(handle, sql.c_str(), -1, &statement, nullptr) == SQLITE_OK &&
-        sqlite3_step(statement) == SQLITE_ROW)
-      value =
-          sqlite3_column_text(statement, 0) ? reinterpret_cast<const char*>(sqlite3_column_text(statement, 0)) : "NULL";
-    sqlite3_finalize(statement);
-  }
-  sqlite3_close(handle);
-  return value;
 }
 
 }  // namespace

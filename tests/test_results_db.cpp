@@ -185,8 +185,9 @@ TEST_CASE("a results database reads back every stored trial after reopening", "[
 
   const auto done = db.finished();
   CHECK(done.size() == 8);
-  CHECK(done.contains({1, mmas, 1}));
-  CHECK_FALSE(done.contains({1, mmas, 2}));
+  CHECK(std::is_sorted(done.begin(), done.end()));
+  CHECK(std::binary_search(done.begin(), done.end(), std::tuple{1, mmas, 1}));
+  CHECK_FALSE(std::binary_search(done.begin(), done.end(), std::tuple{1, mmas, 2}));
 
   // The OMPL columns: one experiment per problem, NULLs where a value does not exist.
   CHECK(sql_value(file, "SELECT count(*) FROM experiments") == "2");
@@ -381,7 +382,7 @@ TEST_CASE("a database grows by the problems an experiment adds, and leaves out t
     const auto trials = grown.trials();
     REQUIRE(trials.size() == 1);
     CHECK(trials[0].problem == 2);  // map1, third of the problems given
-    CHECK(grown.finished() == std::set<std::tuple<int, int, int>>{{2, trials[0].config, 0}});
+    CHECK(grown.finished() == std::vector<std::tuple<int, int, int>>{{2, trials[0].config, 0}});
   }
   CHECK(sql_value(file, "SELECT group_concat(name) FROM experiments") == "map1,arena,extra");
   auto without_map1 = aco::studies::ResultsDb(file, kName, kFingerprint, {extra});
@@ -506,7 +507,8 @@ TEST_CASE("a process killed while storing leaves whole trials, and a rerun conti
   const int id = db.add_config(config("ant_system", 0.5));
   const int wanted = stored + 3;
   for (int repetition = 0; repetition < wanted; ++repetition)
-    if (!done.contains({repetition % 2, id, repetition})) db.store(trial(repetition % 2, id, repetition, true, 10));
+    if (!std::binary_search(done.begin(), done.end(), std::tuple{repetition % 2, id, repetition}))
+      db.store(trial(repetition % 2, id, repetition, true, 10));
   CHECK(db.finished().size() == static_cast<std::size_t>(wanted));
   CHECK(sql_value(file, "SELECT max(repetition) FROM runs") == std::to_string(wanted - 1));
 }

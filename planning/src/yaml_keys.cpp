@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <limits>
 
 #include "aco/error.hpp"
 #include "aco/engine/input_file.hpp"
@@ -41,7 +42,9 @@ int integer(const std::filesystem::path& file, const YAML::Node& node, const std
   int value = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (ec != std::errc() || end != text.data() + text.size() || value < low)
-    fail(file, node, "'" + key + "' must be a whole number >= " + std::to_string(low) + ", not '" + text + "'");
+    fail(file, node,
+         "'" + key + "' must be a whole number from " + std::to_string(low) + " to " +
+             std::to_string(std::numeric_limits<int>::max()) + ", not '" + text + "'");
   return value;
 }
 

@@ -7,6 +7,7 @@
 #include <deque>
 #include <iostream>
 #include <mutex>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <thread>
@@ -94,6 +95,33 @@ void Session::abort(int code) const {
   std::_Exit(code);  // MPI_Abort does not return; this is for the compiler
 }
 
+namespace {
+
+// A batch's trials in their numbers' order, made one ahead of the one handed out.
+class Pending {
+ public:
+  explicit Pending(const TrialSequence& trials) : trials_(trials) {}
+  bool any() {
+    while (!ahead_ && next_ < trials_.count) ahead_ = trials_.at(next_++);
+    return ahead_.has_value();
+  }
+  TrialOrder take() {
+    any();
+    const TrialOrder t = *ahead_;
+    ahead_.reset();
+    return t;
+  }
+  // No fewer than the trials left: some of those not yet numbered may be stored already.
+  std::size_t left() const { return (ahead_ ? 1 : 0) + trials_.count - next_; }
+
+ private:
+  const TrialSequence& trials_;
+  std::size_t next_ = 0;
+  std::optional<TrialOrder> ahead_;
+};
+
+}  // namespace
+
 struct Coordinator::State {
   const Session& session;
   std::string fingerprint;
@@ -129,19 +157,18 @@ struct Coordinator::State {
     session.abort(1);
   }
 
-  // Hands trials to the workers that asked, each at most its share of what is left, so the
-  // last trials spread over the workers.
-  void serve(TrialRunner& runner, std::deque<TrialOrder>& queue, std::size_t& outstanding) {
-    while (!waiting.empty() && !queue.empty()) {
+  // Hands trials to the workers that asked, each at most its share of what is left (at most the
+  // trials not yet numbered), so the last trials spread over the workers.
+  void serve(TrialRunner& runner, Pending& queue, std::size_t& outstanding) {
+    while (!waiting.empty() && queue.any()) {
       const auto began = std::chrono::steady_clock::now();
       const auto [rank, want] = waiting.front();
       waiting.pop_front();
-      const std::size_t share = (queue.size() + workers() - 1) / workers();
+      const std::size_t share = (queue.left() + workers() - 1) / workers();
       const std::size_t count = std::min<std::size_t>(static_cast<std::size_t>(want), share);
       json work = {{"configs", json::array()}, {"trials", json::array()}};
-      for (std::size_t i = 0; i < count; ++i) {
-        const TrialOrder t = queue.front();
-        queue.pop_front();
+      for (std::size_t i = 0; i < count && queue.any(); ++i) {
+        const TrialOrder t = queue.take();
         if (known[rank].insert(t.config).second) {
           const Configuration& c = runner.config(t.config);
           work["configs"].push_back(config_json(t.config, c));
@@ -160,13 +187,13 @@ Coordinator::Coordinator(const Session& session, std::string fingerprint)
 
 Coordinator::~Coordinator() = default;
 
-void Coordinator::run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+void Coordinator::run(TrialRunner& runner, const TrialSequence& trials,
                       const std::function<void(const TrialRecord&)>& finished) {
-  std::deque<TrialOrder> queue(trials.begin(), trials.end());
+  Pending queue{trials};
   std::size_t outstanding = 0;
   State& s = *state_;
   s.serve(runner, queue, outstanding);
-  while (!queue.empty() || outstanding > 0) {
+  while (queue.any() || outstanding > 0) {
     s.handle(receive(MPI_ANY_SOURCE), outstanding, finished);
     s.serve(runner, queue, outstanding);
   }

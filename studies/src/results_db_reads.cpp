@@ -1,6 +1,7 @@
 // Reading a results database: what a rerun skips, and what reports show.
 #include "aco/studies/results_db.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -23,15 +24,16 @@ const TrialField& failure_field() {
 
 }  // namespace
 
-std::set<std::tuple<int, int, int>> ResultsDb::finished() const {
+std::vector<std::tuple<int, int, int>> ResultsDb::finished() const {
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
-  std::set<std::tuple<int, int, int>> done;
+  std::vector<std::tuple<int, int, int>> done;
   Statement read(d.db, "SELECT experimentid, plannerid, repetition FROM runs");
   read.run();
   while (read.next())
     if (const auto problem = d.problem_of.find(read.integer(0)); problem != d.problem_of.end())
-      done.emplace(problem->second, static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2)));
+      done.emplace_back(problem->second, static_cast<int>(read.integer(1)), static_cast<int>(read.integer(2)));
+  std::sort(done.begin(), done.end());
   return done;
 }
 

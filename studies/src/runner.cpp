@@ -6,7 +6,9 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
+#include <tuple>
 #include <nlohmann/json.hpp>
 
 #include "aco/error.hpp"
@@ -19,13 +21,15 @@
 
 namespace aco::studies {
 
-void ThreadExecutor::run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+void ThreadExecutor::run(TrialRunner& runner, const TrialSequence& trials,
                          const std::function<void(const TrialRecord&)>& finished) {
   const aco::ThreadLimit threads(threads_);
   std::mutex mutex;
-  aco::parallel_for(tbb::blocked_range<std::size_t>(0, trials.size(), 1), [&](const auto& range) {
+  aco::parallel_for(tbb::blocked_range<std::size_t>(0, trials.count, 1), [&](const auto& range) {
     for (std::size_t i = range.begin(); i != range.end(); ++i) {
-      const TrialRecord record = runner.run(trials[i]);
+      const auto trial = trials.at(i);
+      if (!trial) continue;
+      const TrialRecord record = runner.run(*trial);
       const std::lock_guard lock(mutex);
       finished(record);
     }
@@ -40,9 +44,9 @@ class Runner {
       : e_(e), registry_(registry), options_(options), trials_(e, registry), threads_(options.threads) {
     executor_ = options.executor ? options.executor : &threads_;
     // Refused before the database is made: a shard run leaves no file behind.
-    const bool tied = std::any_of(e.configurations.begin(), e.configurations.end(),
-                                  [](const Configuration& c) { return !c.time_limit_from().empty(); });
-    if (tied && options.shard)
+    tied_ = std::any_of(e.configurations.begin(), e.configurations.end(),
+                        [](const Configuration& c) { return !c.time_limit_from().empty(); });
+    if (tied_ && options.shard)
       throw aco::Error(std::string(kTimeLimitFrom) +
                        ": a trial's time limit is the time another configuration took on the same problem and "
                        "repetition, which another shard may run: run this experiment without --shard (in one "
@@ -78,10 +82,10 @@ class Runner {
     for (const auto& r : records) optimal_.push_back(r.optimal_length);
     // The ablation's choices and the time limits of tied configurations need the results of
     // trials an earlier, interrupted run stored.
-    if (e.ablation_target || tied)
+    if (e.ablation_target || tied_)
       for (const auto& t : db_->trials()) {
         if (e.ablation_target) add_score(t);
-        measured_[{t.problem, t.config, t.repetition}] = {t.time_s, t.error};
+        if (tied_) measured_[{t.problem, t.config, t.repetition}] = {t.time_s, t.error};
       }
     // Where the maps are, for the report's pictures (not part of the identity: the folder may move).
     db_->set_meta("experiment_file", std::filesystem::absolute(e.file).lexically_normal().string());
@@ -114,7 +118,7 @@ class Runner {
       });
     summary.ablation_left = e_.ablation_target && options_.shard;
     const std::size_t n = components.size();
-    total_ = (fixed.size() + n * (n + 1) / 2) * e_.problems.size() * e_.repetitions;
+    total_ = count_trials(fixed.size() + n * (n + 1) / 2);
     if (options_.shard) total_ = shard_size(*options_.shard, total_);
     summary.trials = total_;
     if (options_.starting)
@@ -174,6 +178,7 @@ class Runner {
     const int id = db_->add_config(
         {c.name, settings_json(c, *resolved.run, registry_), aco::plugins_json(*resolved.run, registry_)});
     trials_.add_config(id, resolved);
+    positions_.emplace(id, order_.size());
     order_.push_back(id);
     ids_[c.name] = id;
     return id;
@@ -202,47 +207,84 @@ class Runner {
     return {failures, relative};
   }
 
-  // Calls visit(problem, config, repetition) for each trial of `configs` this run owns (a shard's
-  // only).
+  // The experiment's trials of `configurations`, refused where they cannot be numbered.
+  std::size_t count_trials(std::size_t configurations) const {
+    std::size_t count = 0;
+    if (__builtin_mul_overflow(configurations, e_.problems.size(), &count) ||
+        __builtin_mul_overflow(count, static_cast<std::size_t>(e_.repetitions), &count))
+      throw aco::Error(e_.name + ": " + std::to_string(configurations) + " configurations x " +
+                       std::to_string(e_.problems.size()) + " problems x " + std::to_string(e_.repetitions) +
+                       " repetitions are more trials than a 64-bit number counts: make the experiment smaller");
+    return count;
+  }
+
+  // A shard runs only the trials whose number it owns.
+  bool owns(int config, int problem, int repetition) const {
+    return !options_.shard || options_.shard->owns(trial_index(positions_.at(config), problem, repetition));
+  }
+
+  bool is_stored(int problem, int config, int repetition) const {
+    return std::binary_search(finished_.begin(), finished_.end(), std::tuple{problem, config, repetition});
+  }
+
+  // Calls visit(problem, config, repetition) for each trial of `configs` the database holds and
+  // this run owns.
   template <class Visit>
-  void for_each_trial(const std::vector<int>& configs, Visit visit) const {
-    for (const int c : configs) {
-      // The configuration's place in the experiment, not its id: a shard's trials are the same
-      // whatever its database held before.
-      const auto position = static_cast<std::size_t>(std::find(order_.begin(), order_.end(), c) - order_.begin());
-      for (int p = 0; p < static_cast<int>(e_.problems.size()); ++p)
-        for (int r = 0; r < e_.repetitions; ++r)
-          if (!options_.shard || options_.shard->owns(trial_index(position, p, r))) visit(p, c, r);
-    }
+  void for_each_stored(const std::vector<int>& configs, Visit visit) const {
+    for (const auto& [p, c, r] : finished_)
+      if (r < e_.repetitions && std::find(configs.begin(), configs.end(), c) != configs.end() && owns(c, p, r))
+        visit(p, c, r);
   }
 
   std::size_t stored(const std::vector<int>& configs) const {
     std::size_t count = 0;
-    for_each_trial(configs, [&](int p, int c, int r) { count += finished_.count({p, c, r}); });
+    for_each_stored(configs, [&](int, int, int) { ++count; });
     return count;
+  }
+
+  // Trial number `i` of `configs`: configuration by configuration, problem by problem,
+  // repetition by repetition.
+  TrialOrder numbered(const std::vector<int>& configs, std::size_t i) const {
+    const auto repetitions = static_cast<std::size_t>(e_.repetitions);
+    const std::size_t per_config = e_.problems.size() * repetitions;
+    return {static_cast<int>(i % per_config / repetitions), configs[i / per_config], static_cast<int>(i % repetitions)};
   }
 
   void run_trials(const std::vector<int>& configs, RunSummary& summary) {
     const auto finished = [&](const TrialRecord& record) {
       db_->store(record);
       if (e_.ablation_target) add_score(record);
-      measured_[{record.problem, record.config, record.repetition}] = {record.time_s, record.error};
+      if (tied_) measured_[{record.problem, record.config, record.repetition}] = {record.time_s, record.error};
       ++done_;
       ++summary.ran;
       if (!record.error.empty())
         summary.failures.push_back({trials_.config(record.config).name, record.failure, record.error, false});
       if (options_.progress) options_.progress(done_, total_);
     };
-    std::vector<TrialOrder> trials, untimed;
-    for_each_trial(configs, [&](int p, int c, int r) {
-      if (finished_.count({p, c, r})) {
-        ++summary.skipped;
-        ++done_;
-        if (const auto failed = failed_before_.find({p, c, r}); failed != failed_before_.end())
-          summary.failures.push_back({trials_.config(c).name, failed->second.first, failed->second.second, true});
-        return;
-      }
-      TrialOrder trial{p, c, r};
+    for_each_stored(configs, [&](int p, int c, int r) {
+      ++summary.skipped;
+      ++done_;
+      if (const auto failed = failed_before_.find({p, c, r}); failed != failed_before_.end())
+        summary.failures.push_back({trials_.config(c).name, failed->second.first, failed->second.second, true});
+    });
+    const std::size_t count = count_trials(configs.size());
+    TrialSequence sequence{
+        count, [&](std::size_t i) -> std::optional<TrialOrder> {
+          const TrialOrder t = numbered(configs, i);
+          if (!owns(t.config, t.problem, t.repetition) || is_stored(t.problem, t.config, t.repetition))
+            return std::nullopt;
+          return t;
+        }};
+    // A configuration whose time limit is another's measured time: its trials are listed, each
+    // with its limit (such studies are OMPL comparisons, and keep every time in memory anyway).
+    std::vector<TrialOrder> listed, untimed;
+    const bool tied = std::any_of(configs.begin(), configs.end(),
+                                  [&](int c) { return !trials_.config(c).time_limit_from().empty(); });
+    for (std::size_t i = 0; tied && i < count; ++i) {
+      const auto numbered_trial = sequence.at(i);
+      if (!numbered_trial) continue;
+      TrialOrder trial = *numbered_trial;
+      const auto [p, c, r] = std::tuple{trial.problem, trial.config, trial.repetition};
       if (const std::string from = trials_.config(c).time_limit_from(); !from.empty()) {
         const auto it = measured_.find({p, ids_.at(from), r});
         if (it == measured_.end())
@@ -254,11 +296,12 @@ class Runner {
         // the colony trial it depends on is not retried either.
         if (!it->second.second.empty() || !(trial.time_limit_s > 0.0)) {
           untimed.push_back(trial);
-          return;
+          continue;
         }
       }
-      trials.push_back(trial);
-    });
+      listed.push_back(trial);
+    }
+    if (tied) sequence = {listed.size(), [&](std::size_t i) { return std::optional<TrialOrder>(listed[i]); }};
     if (options_.progress) options_.progress(done_, total_);
     for (const TrialOrder& trial : untimed) {
       const std::string& from = trials_.config(trial.config).time_limit_from();
@@ -268,7 +311,7 @@ class Runner {
                                   "' on the same problem and repetition, and that trial " +
                                   (error.empty() ? "measured no time" : "failed: " + error)));
     }
-    executor_->run(trials_, trials, finished);
+    executor_->run(trials_, sequence, finished);
   }
 
   // A trial's place in the order shards split the configurations' trials.
@@ -292,10 +335,13 @@ class Runner {
   TrialExecutor* executor_ = nullptr;
   std::unique_ptr<ResultsDb> db_;
   std::vector<int> order_;  // configuration ids in the order they were added
+  std::map<int, std::size_t> positions_;  // by id: the place in order_
   std::map<std::string, int> ids_;  // by name
-  // (time, error) of every trial stored, by (problem, config id, repetition): a time-limit-from's times.
+  bool tied_ = false;  // a configuration's time limit is another's time (time-limit-from)
+  // (time, error) of every trial stored, by (problem, config id, repetition), when tied_: a
+  // time-limit-from's times.
   std::map<std::tuple<int, int, int>, std::pair<double, std::string>> measured_;
-  std::set<std::tuple<int, int, int>> finished_;
+  std::vector<std::tuple<int, int, int>> finished_;  // sorted (ResultsDb::finished())
   std::map<std::tuple<int, int, int>, std::pair<FailureKind, std::string>> failed_before_;
   std::vector<double> optimal_;  // per problem; < 0 unknown
   // Per configuration id: (solved, length / optimum) of each (problem, repetition).

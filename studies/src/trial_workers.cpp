@@ -59,11 +59,13 @@ TrialRecord TrialWorkers::run(int lane_index, const TrialRunner& runner, const T
   return runner.failed(t, reply.failure_kind, reply.failure);
 }
 
-void WorkerExecutor::run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+void WorkerExecutor::run(TrialRunner& runner, const TrialSequence& trials,
                          const std::function<void(const TrialRecord&)>& finished) {
   std::mutex mutex;
-  aco::run_on_lanes(workers_.lanes(), trials.size(), [&](int lane, std::size_t i) {
-    const TrialRecord record = workers_.run(lane, runner, trials[i]);
+  aco::run_on_lanes(workers_.lanes(), trials.count, [&](int lane, std::size_t i) {
+    const auto trial = trials.at(i);
+    if (!trial) return;
+    const TrialRecord record = workers_.run(lane, runner, *trial);
     const std::lock_guard lock(mutex);
     finished(record);
   });

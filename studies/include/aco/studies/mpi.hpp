@@ -58,7 +58,7 @@ class Coordinator : public TrialExecutor {
   // binaries on its node) ends the job with a message naming its host.
   Coordinator(const Session& session, std::string fingerprint);
   ~Coordinator() override;
-  void run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+  void run(TrialRunner& runner, const TrialSequence& trials,
            const std::function<void(const TrialRecord&)>& finished) override;
   // Tells every worker there is no more work (once each has asked for more), so they exit.
   void finish();

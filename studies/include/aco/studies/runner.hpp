@@ -16,13 +16,23 @@
 
 namespace aco::studies {
 
+// A batch of trials, numbered 0 to count - 1 and made from their number when a lane asks for
+// one: a study of any size starts at once and holds no list of its trials.
+struct TrialSequence {
+  std::size_t count = 0;
+  // Trial number `i`, or nothing where there is none to run (the database holds it, or another
+  // shard owns it). Called from several threads at once.
+  std::function<std::optional<TrialOrder>(std::size_t i)> at;
+};
+
 // Runs batches of trials and hands back each record.
 class TrialExecutor {
  public:
   virtual ~TrialExecutor() = default;
-  // Runs every trial (their configurations are prepared in `runner`) and calls `finished` with
-  // each record, from one thread at a time, in any order.
-  virtual void run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+  // Runs every trial (their configurations are prepared in `runner`), asking for them roughly in
+  // their numbers' order, and calls `finished` with each record, from one thread at a time, in any
+  // order.
+  virtual void run(TrialRunner& runner, const TrialSequence& trials,
                    const std::function<void(const TrialRecord&)>& finished) = 0;
 };
 
@@ -30,7 +40,7 @@ class TrialExecutor {
 class ThreadExecutor : public TrialExecutor {
  public:
   explicit ThreadExecutor(int threads) : threads_(threads) {}
-  void run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+  void run(TrialRunner& runner, const TrialSequence& trials,
            const std::function<void(const TrialRecord&)>& finished) override;
 
  private:

@@ -43,7 +43,7 @@ class TrialWorkers {
 class WorkerExecutor : public TrialExecutor {
  public:
   explicit WorkerExecutor(TrialWorkers& workers) : workers_(workers) {}
-  void run(TrialRunner& runner, const std::vector<TrialOrder>& trials,
+  void run(TrialRunner& runner, const TrialSequence& trials,
            const std::function<void(const TrialRecord&)>& finished) override;
 
  private:

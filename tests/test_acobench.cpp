@@ -282,6 +282,87 @@ TEST_CASE("a study of four billion trials stores its first ones at once in littl
   CHECK(sql_value(db, "SELECT count(*) - count(DISTINCT plannerid || ':' || repetition) FROM runs") == "0");
 }
 
+// Runs statements on the file directly with SQLite.
+void sql_exec(const std::filesystem::path& db, const std::string& sql) {
+  sqlite3* handle = nullptr;
+  REQUIRE(sqlite3_open(db.c_str(), &handle) == SQLITE_OK);
+  INFO(sql);
+  CHECK(sqlite3_exec(handle, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
+  sqlite3_close(handle);
+}
+
+TEST_CASE("a report counts the runs it cannot read, and a rerun stops at a row whose trial it cannot tell",
+          "[acobench][bad-input]") {
+  const auto file = experiment(kSmall);
+  const auto db = file.parent_path() / "small.db", out = file.parent_path() / "report";
+  REQUIRE(run_acobench({"run", file.string(), "--db", db.string()}).exit_code == 0);
+  const std::string row = "(SELECT min(id) FROM runs WHERE solved = 1)";
+  const std::string id = sql_value(db, "SELECT " + row);
+  sql_exec(db, "UPDATE runs SET solution_length = 'abc' WHERE id = " + row);
+  const auto report = run_acobench({"report", db.string(), "--out", out.string()});
+  REQUIRE(report.exit_code == 0);
+  const std::string left_out =
+      "1 run is left out of every table and figure: its rows do not hold what the database's "
+      "tables declare (runs row " +
+      id + ", column solution_length: the text 'abc', not a number)";
+  CHECK_THAT(report.err, Contains(left_out));
+  const std::string md = file_bytes(out / "report.md");
+  CHECK_THAT(md, Contains("`: 15 runs (1 left out), 4 configurations") && Contains(left_out));
+  const std::string csv = file_bytes(out / "runs.csv");
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 15);
+  // Stored is stored: the rerun runs nothing.
+  const auto again = run_acobench({"run", file.string(), "--db", db.string()});
+  CHECK(again.exit_code == 0);
+  CHECK_THAT(again.out, Contains("16 already in"));
+  CHECK(count_runs(db) == 16);
+
+  sql_exec(db, "UPDATE runs SET plannerid = NULL WHERE id = " + id);
+  const std::string before = file_bytes(db);
+  const auto refused = run_acobench({"run", file.string(), "--db", db.string()});
+  CHECK(refused.exit_code == 1);
+  CHECK_THAT(refused.err, Contains("runs row " + id + ", column plannerid: NULL, which names no plannerConfigs row") &&
+                              Contains("DELETE FROM runs WHERE id = " + id));
+  CHECK(count_runs(db) == 16);
+  CHECK(run_acobench({"report", db.string(), "--out", out.string()}).exit_code == 0);
+}
+
+TEST_CASE("a results database that cannot be written is reported as it is, and named so by a run",
+          "[acobench][bad-input]") {
+  const auto file = experiment(kSmall);
+  const auto folder = file.parent_path() / "locked";
+  std::filesystem::create_directories(folder);
+  const auto db = folder / "small.db";
+  REQUIRE(run_acobench({"run", file.string(), "--db", db.string()}).exit_code == 0);
+  const auto out = file.parent_path() / "report";
+  std::filesystem::create_directories(out);
+  using std::filesystem::perms;
+  std::filesystem::permissions(db, perms::owner_read | perms::group_read | perms::others_read);
+  std::filesystem::permissions(folder, perms::owner_read | perms::owner_exec | perms::group_read | perms::group_exec |
+                                           perms::others_read | perms::others_exec);
+  std::filesystem::permissions(out, perms::all);
+  std::filesystem::permissions(file.parent_path(), perms::all);
+  // Root writes whatever the permissions say: run as nobody there.
+  std::vector<std::string> as_reader;
+  if (::geteuid() == 0) as_reader = {"/usr/bin/setpriv", "--reuid=65534", "--regid=65534", "--clear-groups"};
+  const auto acobench = [&](std::vector<std::string> args) {
+    args.insert(args.begin(), ACO_TEST_ACOBENCH);
+    args.insert(args.begin(), as_reader.begin(), as_reader.end());
+    return test::run(args);
+  };
+  const std::string before = file_bytes(db);
+  const auto report = acobench({"report", db.string(), "--out", (out / "read-only").string()});
+  INFO(report.err);
+  REQUIRE(report.exit_code == 0);
+  CHECK_THAT(file_bytes(out / "read-only" / "report.md"), Contains("`small.db`: 16 runs, 4 configurations"));
+  const auto refused = acobench({"run", file.string(), "--db", db.string()});
+  CHECK(refused.exit_code == 1);
+  CHECK_THAT(refused.err, Contains("results database " + db.string() + " cannot be written (its folder " +
+                                   folder.string() + ": Permission denied), and a run stores its trials there"));
+  CHECK(file_bytes(db) == before);
+  CHECK_FALSE(std::filesystem::exists(db.string() + "-wal"));
+  std::filesystem::permissions(folder, perms::owner_all);
+}
+
 TEST_CASE("acobench refuses a blocked start, a missing database and an unknown command", "[acobench][errors]") {
   std::string blocked = kSmall;
   blocked.replace(blocked.find("start: [0, 0]"), 13, "start: [6, 0]");  // an obstacle of map1

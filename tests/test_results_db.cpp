@@ -449,6 +449,72 @@ TEST_CASE("a file that is not an acobench database is refused and left as it was
   }
 }
 
+TEST_CASE("every value read back is checked: a bad row is named, left out when asked, never run twice",
+          "[resultsdb][bad-input]") {
+  struct Case {
+    std::string sql, message;
+    bool trial_unknown;  // the row's trial cannot be told: a rerun must stop
+  };
+  const std::vector<Case> cases = {
+      {"UPDATE runs SET solution_length = NULL WHERE id = 2",
+       "runs row 2, column solution_length: NULL in a solved run", false},
+      {"UPDATE runs SET solution_length = 'abc' WHERE id = 2",
+       "runs row 2, column solution_length: the text 'abc', not a number", false},
+      {"UPDATE runs SET solution_length = X'0102' WHERE id = 2",
+       "runs row 2, column solution_length: a blob of 2 bytes, not a number", false},
+      {"UPDATE runs SET solution_length = -5 WHERE id = 2",
+       "runs row 2, column solution_length: -5, below its least value 0", false},
+      {"UPDATE runs SET time = 9e999 WHERE id = 2", "runs row 2, column time: inf, not a finite number", false},
+      {"UPDATE runs SET solved = 7 WHERE id = 2", "runs row 2, column solved: 7, not 0 or 1", false},
+      {"UPDATE runs SET iterations = 5000000000 WHERE id = 2",
+       "runs row 2, column iterations: 5000000000, not a whole number of 32 bits", false},
+      {"UPDATE runs SET trial_seed = NULL WHERE id = 2", "runs row 2, column trial_seed: NULL, which it never is",
+       false},
+      {"UPDATE progress SET best_cost = 'x' WHERE runid = 2 AND iteration = 3",
+       "progress row of run 2, column best_cost: the text 'x', not a finite number >= 0", false},
+      {"UPDATE run_texts SET path = X'00' WHERE runid = 2",
+       "run_texts row of run 2, column path: a blob of 1 bytes, not text", false},
+      {"UPDATE runs SET plannerid = NULL WHERE id = 2",
+       "runs row 2, column plannerid: NULL, which names no plannerConfigs row", true},
+      {"UPDATE runs SET plannerid = 999 WHERE id = 2",
+       "runs row 2, column plannerid: 999, which names no plannerConfigs row", true},
+      {"UPDATE runs SET experimentid = 999 WHERE id = 2",
+       "runs row 2, column experimentid: 999, which names no experiments row", true},
+      {"UPDATE runs SET repetition = NULL WHERE id = 2",
+       "runs row 2, column repetition: NULL, not a repetition from 0 to 4", true},
+      {"UPDATE runs SET repetition = 'x' WHERE id = 2",
+       "runs row 2, column repetition: the text 'x', not a repetition from 0 to 4", true},
+      {"UPDATE runs SET repetition = 5 WHERE id = 2", "runs row 2, column repetition: 5, not a repetition from 0 to 4",
+       true},
+      {"UPDATE plannerConfigs SET settings = 'garbage'",
+       "runs row 1, column plannerid: 1, a plannerConfigs row whose settings are not JSON", true},
+  };
+  for (const auto& c : cases) {
+    INFO(c.sql);
+    const fs::path file = fresh_db();
+    {
+      auto db = open(file);
+      db.record_limits({0.0, 0.0, 5, 1});
+      const int id = db.add_config(config("ant_system", 0.1));
+      for (int r = 0; r < 3; ++r) db.store(trial(0, id, r));
+    }
+    sql_exec(file, "PRAGMA foreign_keys = OFF; " + c.sql);
+    const aco::studies::ResultsDb db(file);
+    CHECK_THROWS_WITH(db.trials(), Contains("results database " + file.string() + ": " + c.message));
+    std::vector<aco::studies::BadRow> left_out;
+    const auto read = db.trials(&left_out);
+    const std::size_t bad = c.sql.find("plannerConfigs") != std::string::npos ? 3 : 1;
+    CHECK(read.size() == 3 - bad);
+    REQUIRE(left_out.size() == bad);
+    CHECK_THAT(describe(left_out.front()), Contains(c.message));
+    if (c.trial_unknown)
+      CHECK_THROWS_WITH(open(file).finished(),
+                        Contains(c.message) && Contains("running the experiment again would run that trial twice"));
+    else
+      CHECK(open(file).finished().size() == 3);  // stored: not run again
+  }
+}
+
 TEST_CASE("a results database uses write-ahead logging", "[resultsdb]") {
   const fs::path file = fresh_db();
   auto db = open(file);

@@ -3,6 +3,7 @@
 // Markdown, HTML, the runs' CSV and the figures' SVG files.
 #include "aco/studies/report.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <variant>
 
@@ -16,13 +17,31 @@
 namespace aco::studies {
 namespace {
 
+// The warnings of the report's head: runs left out, builds whose times mean little.
+std::vector<std::string> warnings_of(const Analysis& a) {
+  std::vector<std::string> warnings;
+  if (!a.left_out.empty()) {
+    std::string rows;
+    for (std::size_t i = 0; i < std::min<std::size_t>(a.left_out.size(), 5); ++i)
+      rows += (i ? "; " : "") + describe(a.left_out[i]);
+    if (a.left_out.size() > 5) rows += "; ...";
+    const bool one = a.left_out.size() == 1;
+    warnings.push_back(std::to_string(a.left_out.size()) + (one ? " run is" : " runs are") +
+                       " left out of every table and figure: " + (one ? "its rows do" : "their rows do") +
+                       " not hold what the database's tables declare (" + rows + ")");
+  }
+  for (std::string& warning : build_warnings(a)) warnings.push_back(std::move(warning));
+  return warnings;
+}
+
 // The whole report: what the analysis found, in the order a reader wants it.
 ReportDocument report_document(const Analysis& a, const std::filesystem::path& database) {
   ReportDocument d{"acobench report: " + a.name, "acobench: " + a.name, {}};
   std::vector<Block>& blocks = d.blocks;
+  const std::string left_out = a.left_out.empty() ? "" : " (" + std::to_string(a.left_out.size()) + " left out)";
   blocks.emplace_back(Paragraph{
-      "Database `" + database.filename().string() + "`: " + std::to_string(a.trials.size()) + " runs, " +
-      std::to_string(a.configs.size()) + " configurations, " + std::to_string(a.problems.size()) +
+      "Database `" + database.filename().string() + "`: " + std::to_string(a.trials.size()) + " runs" + left_out +
+      ", " + std::to_string(a.configs.size()) + " configurations, " + std::to_string(a.problems.size()) +
       " problems. Lengths are final path lengths of solved runs (after the smoother: any-angle when it "
       "shortcuts); gap is "
       "the mean excess of the grid path (before smoothing) over the exact A* optimum on the baseline's "
@@ -32,7 +51,7 @@ ReportDocument report_document(const Analysis& a, const std::filesystem::path& d
       "yardstick of smoothed and continuous paths; p is the two-sided Mann-Whitney U test against the baseline (`" +
       (a.configs.empty() ? "" : a.configs[0].second.name) +
       "`), Holm-corrected across all comparisons; A12 < 0.5 means shorter paths than the baseline."});
-  for (std::string& warning : build_warnings(a)) blocks.emplace_back(Warning{std::move(warning)});
+  for (std::string& warning : warnings_of(a)) blocks.emplace_back(Warning{std::move(warning)});
   FigureFiles files;
   for (Table& t : summary_tables(a)) blocks.emplace_back(std::move(t));
   for (Table& t : anytime_tables(a)) {
@@ -87,7 +106,7 @@ std::vector<std::filesystem::path> write_report(const std::filesystem::path& dat
       write(files.back(), figure->svg);
     }
   if (warnings)
-    for (std::string& warning : build_warnings(a)) warnings->push_back(std::move(warning));
+    for (std::string& warning : warnings_of(a)) warnings->push_back(std::move(warning));
   return files;
 }
 

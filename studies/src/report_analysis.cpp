@@ -47,7 +47,7 @@ Analysis analyse(const ResultsDb& db) {
   a.name = db.meta("experiment_name");
   a.problems = db.problems();
   a.configs = db.configs();
-  a.trials = db.trials();
+  a.trials = db.trials(&a.left_out);
   a.appended = db.appended_runs();
   a.experiment_dir = std::filesystem::path(db.meta("experiment_file")).parent_path();
   a.host_version = db.find_meta("host_version").value_or("");

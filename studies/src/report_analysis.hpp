@@ -55,6 +55,7 @@ struct Analysis {
   std::size_t unmeasured = 0;  // runs stored without anytime curves (by an older acobench)
   std::string host_version, host_build;  // of the acobench that ran the trials ("" if not recorded)
   std::vector<AppendedRun> appended;  // runs of OMPL logs appended to the database
+  std::vector<BadRow> left_out;  // runs whose rows cannot be read, left out of every table
 };
 
 // The excess of a solved trial over the problem's optimum, %. The optimum is exact A* on the

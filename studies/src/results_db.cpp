@@ -2,6 +2,12 @@
 // experiment's, bringing it to this format and growing it by the experiment's new problems.
 #include "aco/studies/results_db.hpp"
 
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+
 #include "aco/error.hpp"
 #include "aco/machine.hpp"
 #include "results_db_impl.hpp"
@@ -19,14 +25,35 @@ const std::filesystem::path& existing(const std::filesystem::path& file) {
   return file;
 }
 
-// Bad problems are refused before opening, which would create the file.
+// Bad problems and a file that cannot be written are refused before opening, which would create the file.
 const std::filesystem::path& checked_before_opening(const std::filesystem::path& file,
                                                     const std::vector<ProblemRecord>& problems) {
   for (const auto& p : problems) parse_json(p.setup_json, "the setup of problem " + in_quotes(p.name));
+  if (const auto why = not_writable(file))
+    throw Error(std::filesystem::exists(file)
+                    ? "results database " + file.string() + " cannot be written (" + *why +
+                          "), and a run stores its trials there: give another file (a report reads this one as it is)"
+                    : "results database " + file.string() + " cannot be created (" + *why +
+                          "): give a file in a folder that can be written");
   return file;
 }
 
+// How a report opens a file: to be written where it can (an older format is migrated), else read only.
+sqlite::Access access_to_read(const std::filesystem::path& file) {
+  if (!not_writable(file)) return sqlite::Access::write;
+  // A WAL database without its -shm file: SQLite cannot make one here, and nothing is writing it.
+  return std::filesystem::exists(file.string() + "-shm") ? sqlite::Access::read : sqlite::Access::read_unchanging;
+}
+
 }  // namespace
+
+std::optional<std::string> not_writable(const std::filesystem::path& file) {
+  const std::filesystem::path folder = file.parent_path().empty() ? "." : file.parent_path();
+  // SQLite writes the -wal and -shm files beside the database.
+  if (::access(folder.c_str(), W_OK) != 0) return "its folder " + folder.string() + ": " + std::strerror(errno);
+  if (std::filesystem::exists(file) && ::access(file.c_str(), W_OK) != 0) return std::strerror(errno);
+  return std::nullopt;
+}
 
 nlohmann::json parse_json(const std::string& text, const std::string& what) {
   auto value = nlohmann::json::parse(text, nullptr, false);
@@ -54,12 +81,25 @@ std::vector<ProblemRecord> ResultsDb::Impl::stored_problems() {
   std::vector<ProblemRecord> stored;
   // Read before an older format is upgraded (to check the file is the experiment's).
   const std::string any_angle = columns_of("experiments").contains("anyangle_length") ? "anyangle_length" : "NULL";
-  Statement read(db, "SELECT name, setup, optimal_length, " + any_angle + " FROM experiments WHERE " +
-                         std::string(kOurs) + " ORDER BY id");
+  Statement read(db, "SELECT name, setup, optimal_length, " + any_angle +
+                         ", id, json_valid(setup) FROM experiments WHERE " + std::string(kOurs) + " ORDER BY id");
   read.run();
-  while (read.next())
+  while (read.next()) {
+    const auto refuse = [&](const char* column, const std::string& problem) {
+      throw Error("results database " + file() + ": " + describe({"experiments", read.integer(4), column, problem}) +
+                  "; correct the row");
+    };
+    if (read.type(0) != SQLITE_TEXT) refuse("name", read.shown(0) + ", not a problem's name");
+    if (read.integer(5) == 0) refuse("setup", read.shown(1) + ", not the problem's JSON");
+    // A length: NULL (unknown) or a finite number > 0.
+    for (const int column : {2, 3})
+      if (!read.null(column) && (read.type(column) == SQLITE_TEXT || read.type(column) == SQLITE_BLOB ||
+                                 !std::isfinite(read.real(column)) || !(read.real(column) > 0)))
+        refuse(column == 2 ? "optimal_length" : "anyangle_length",
+               read.shown(column) + ", not a length (a finite number > 0, or NULL: unknown)");
     stored.push_back(
         {read.text(0), read.text(1), read.null(2) ? -1.0 : read.real(2), read.null(3) ? -1.0 : read.real(3)});
+  }
   return stored;
 }
 
@@ -202,14 +242,19 @@ ResultsDb::ResultsDb(const std::filesystem::path& file, const std::string& exper
   d.load(&problems);
 }
 
-ResultsDb::ResultsDb(const std::filesystem::path& file) : impl_(std::make_unique<Impl>(existing(file))) {
+ResultsDb::ResultsDb(const std::filesystem::path& file)
+    : impl_(std::make_unique<Impl>(existing(file), access_to_read(file))) {
   auto& d = *impl_;
   d.db.check(sqlite3_busy_timeout(d.db.handle(), 10000), "setting the busy timeout");
   bool ours = false;
   try {
     ours = d.tables().contains("acobench_meta");
   } catch (const Error&) {}
-  if (!ours) throw Error(file.string() + " is not an acobench results database");
+  if (!ours)
+    throw Error(file.string() + " is not an acobench results database" +
+                (d.read_only
+                     ? std::string(" (read only, as it cannot be written: ") + sqlite3_errmsg(d.db.handle()) + ")"
+                     : std::string()));
   const auto stored = d.meta();
   if (!stored.contains("format_version") || !upgradable(stored.at("format_version")))
     throw Error(file.string() + " is an acobench results database of another format version");

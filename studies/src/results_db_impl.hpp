@@ -25,11 +25,16 @@ bool upgradable(const std::string& version);
 // `text` parsed; an Error naming `what` if it is not JSON.
 nlohmann::json parse_json(const std::string& text, const std::string& what);
 inline std::string in_quotes(const std::string& s) { return "'" + s + "'"; }
+// Why `file` (or its folder, where SQLite writes the -wal and -shm files) cannot be written, if it
+// cannot: "Read-only file system", "Permission denied".
+std::optional<std::string> not_writable(const std::filesystem::path& file);
 
 struct ResultsDb::Impl {
-  explicit Impl(const std::filesystem::path& file) : db(file) {}
+  explicit Impl(const std::filesystem::path& file, sqlite::Access access = sqlite::Access::write)
+      : db(file, access), read_only(access != sqlite::Access::write) {}
 
   sqlite::Connection db;
+  bool read_only;  // opened for reports where the file cannot be written
   mutable std::mutex mutex;
   std::vector<std::int64_t> experiment_ids;  // by problem index
   std::map<std::int64_t, int> problem_of;  // by experiment id
@@ -66,7 +71,18 @@ struct ResultsDb::Impl {
   // an opened database.
   void load(const std::vector<ProblemRecord>* given);
 
-  // Older formats (results_db_migrations.cpp).
+  // Reading (results_db_reads.cpp).
+  struct RunRow {
+    std::int64_t id = 0;
+    int problem = 0, config = 0, repetition = 0;
+  };
+  // The runs rows of the experiment's problems (not those of appended OMPL logs, nor of problems
+  // the experiment no longer names) whose trial can be told, ordered by id; the others in `bad`.
+  std::vector<RunRow> run_rows(std::vector<BadRow>& bad);
+  // An Error naming the first of `bad` (and how many more), saying what `consequence` is.
+  [[noreturn]] void refuse(const std::vector<BadRow>& bad, const std::string& consequence) const;
+
+  // Older formats (results_db_migrations.cpp). A read-only file of an older format is an Error.
   void upgrade();
   void to_format_6(const std::string& version);
   void to_format_7();

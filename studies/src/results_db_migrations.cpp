@@ -31,6 +31,11 @@ bool upgradable(const std::string& version) {
 // database (leaving the column NULL), so the format version stays.
 void ResultsDb::Impl::upgrade() {
   const std::string version = meta().at("format_version");
+  if (read_only && version != kFormatVersion)
+    throw Error(file() + " is an acobench results database of format " + version + ", which is read as format " +
+                kFormatVersion + " after it is migrated, and it cannot be written (" + *not_writable(file()) +
+                "): copy it to a folder that can be written");
+  if (read_only) return;  // columns it lacks are read as NULL
   if (version != kFormatVersion) {
     Transaction transaction(db);
     to_format_6(version);

@@ -1,6 +1,8 @@
 #include "results_db_schema.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <utility>
 
 #include "aco/error.hpp"
@@ -124,13 +126,56 @@ TrialCell to_column(const TrialField& f, TrialCell value) {
   return static_cast<std::int64_t>(at - f.values.begin());
 }
 
+std::optional<std::string> stored_value_problem(const sqlite::Statement& row, int column, const TrialField& field,
+                                                bool solved) {
+  using Null = TrialField::Null;
+  const int type = row.type(column);
+  if (type == SQLITE_NULL) {
+    if (field.null == Null::never) return "NULL, which it never is";
+    if (field.null == Null::unless_solved && solved) return "NULL in a solved run";
+    return std::nullopt;
+  }
+  if ((field.null == Null::unless_solved || field.null == Null::solved_only) && !solved)
+    return row.shown(column) + " in an unsolved run (NULL there)";
+  const auto wrong = [&](const std::string& wanted) { return row.shown(column) + ", not " + wanted; };
+  if (is_enum(field)) {
+    if (type != SQLITE_INTEGER) return wrong("the index of an ENUM value");
+    const std::int64_t index = row.integer(column);
+    if (index < 0 || index >= static_cast<std::int64_t>(field.values.size()))
+      return row.shown(column) + ", which is not one of its " + std::to_string(field.values.size()) + " ENUM values";
+    return std::nullopt;
+  }
+  double value = 0;
+  switch (field.type) {
+    case TrialCellType::text:
+      return type == SQLITE_TEXT ? std::nullopt : std::optional(wrong("text"));
+    case TrialCellType::boolean:
+      return type == SQLITE_INTEGER && (row.integer(column) == 0 || row.integer(column) == 1)
+                 ? std::nullopt
+                 : std::optional(wrong("0 or 1"));
+    case TrialCellType::count:
+      return type == SQLITE_INTEGER ? std::nullopt : std::optional(wrong("a whole number"));
+    case TrialCellType::integer:
+      if (type != SQLITE_INTEGER || row.integer(column) < std::numeric_limits<int>::min() ||
+          row.integer(column) > std::numeric_limits<int>::max())
+        return wrong("a whole number of 32 bits");
+      value = static_cast<double>(row.integer(column));
+      break;
+    case TrialCellType::real:
+      if (type != SQLITE_FLOAT && type != SQLITE_INTEGER) return wrong("a number");
+      value = row.real(column);
+      if (!std::isfinite(value)) return wrong("a finite number");
+      break;
+  }
+  if (value < field.low) return row.shown(column) + ", below its least value " + aco::to_string(ParamValue(field.low));
+  if (value > field.high)
+    return row.shown(column) + ", above its greatest value " + aco::to_string(ParamValue(field.high));
+  return std::nullopt;
+}
+
 TrialCell from_column(const sqlite::Statement& row, int column, const TrialField& field) {
   if (!is_enum(field) || row.null(column)) return row.cell(column, field.type);
-  const std::int64_t index = row.integer(column);
-  if (index < 0 || index >= static_cast<std::int64_t>(field.values.size()))
-    throw Error("results database " + row.file() + ": runs." + field.stored_as + " holds " + std::to_string(index) +
-                ", which is not one of its " + std::to_string(field.values.size()) + " ENUM values");
-  return field.values[static_cast<std::size_t>(index)];
+  return field.values[static_cast<std::size_t>(row.integer(column))];
 }
 
 }  // namespace aco::studies

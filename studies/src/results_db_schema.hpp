@@ -2,6 +2,7 @@
 // The results database's layout (results_db.hpp says what each table holds): its format version,
 // the tables' definitions, the runs columns made from the trial fields (trial_record.hpp), and how
 // a field's value is stored in its column.
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -45,8 +46,14 @@ std::vector<const TrialField*> used_columns(const TrialRecord& t);
 
 // A field's value as its column holds it: an ENUM's index (an Error for a value the ENUM lacks).
 TrialCell to_column(const TrialField& f, TrialCell value);
-// The value of `field` in a column of `row`: an ENUM's index is its value's text (an Error for an
-// index out of its values).
+// What is wrong with the value of `field` in a column of `row`, or nothing when it is what the
+// field declares (trial_record.hpp): of its type (a real: a finite number; an integer: within
+// its member's type; an ENUM: one of its indices), within its range, NULL only where allowed
+// (unless_solved: pass whether the row is solved).
+std::optional<std::string> stored_value_problem(const sqlite::Statement& row, int column, const TrialField& field,
+                                                bool solved);
+// The value of `field` in a column of `row` that stored_value_problem() found right: an ENUM's
+// index is its value's text.
 TrialCell from_column(const sqlite::Statement& row, int column, const TrialField& field);
 
 }  // namespace aco::studies

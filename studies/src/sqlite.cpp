@@ -1,13 +1,36 @@
 #include "sqlite.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "aco/error.hpp"
 
 namespace aco::studies::sqlite {
 
-Connection::Connection(const std::filesystem::path& file) : file_(file.string()) {
-  const int rc = sqlite3_open_v2(file_.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr);
+namespace {
+
+// The file as an SQLite URI with its read-only parameters.
+std::string read_only_uri(const std::string& file, Access access) {
+  std::string uri = "file:";
+  for (const char c : file) {
+    if (c == '%' || c == '?' || c == '#') {
+      char escaped[4];
+      std::snprintf(escaped, sizeof escaped, "%%%02X", static_cast<unsigned char>(c));
+      uri += escaped;
+    } else {
+      uri += c;
+    }
+  }
+  return uri + (access == Access::read_unchanging ? "?mode=ro&immutable=1" : "?mode=ro");
+}
+
+}  // namespace
+
+Connection::Connection(const std::filesystem::path& file, Access access) : file_(file.string()) {
+  const int rc = access == Access::write
+                     ? sqlite3_open_v2(file_.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr)
+                     : sqlite3_open_v2(read_only_uri(file_, access).c_str(), &db_,
+                                       SQLITE_OPEN_READONLY | SQLITE_OPEN_URI, nullptr);
   if (rc != SQLITE_OK) {
     const std::string reason = db_ ? sqlite3_errmsg(db_) : sqlite3_errstr(rc);
     sqlite3_close(db_);
@@ -51,6 +74,23 @@ TrialCell Statement::cell(int column, TrialCellType type) const {
       break;
   }
   return text(column);
+}
+
+std::string Statement::shown(int column) const {
+  switch (type(column)) {
+    case SQLITE_NULL:
+      return "NULL";
+    case SQLITE_BLOB:
+      return "a blob of " + std::to_string(sqlite3_column_bytes(stmt_, column)) + " bytes";
+    case SQLITE_TEXT: {
+      const std::string value = text(column);
+      return "the text '" + (value.size() > 40 ? value.substr(0, 37) + "..." : value) + "'";
+    }
+    case SQLITE_FLOAT:
+      return aco::to_string(aco::ParamValue(real(column)));
+    default:
+      return std::to_string(integer(column));
+  }
 }
 
 std::string Statement::text(int column) const {

@@ -26,10 +26,19 @@ inline std::uint64_t from_sql(std::int64_t v) { return std::bit_cast<std::uint64
 // A real that binds as SQL NULL.
 inline constexpr double kNull = std::numeric_limits<double>::quiet_NaN();
 
-// One connection, opened for reading and writing (a missing file is created).
+// How a connection opens its file.
+enum class Access {
+  write,  // reading and writing; a missing file is created
+  read,  // reading only: the file may be on a read-only file system or not ours to write
+  // reading only a file nothing writes (no -shm file beside a WAL database, on a read-only file
+  // system: SQLite cannot make one, and no writer could be using it)
+  read_unchanging,
+};
+
+// One connection.
 class Connection {
  public:
-  explicit Connection(const std::filesystem::path& file);
+  explicit Connection(const std::filesystem::path& file, Access access = Access::write);
   ~Connection() { sqlite3_close(db_); }
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;
@@ -85,6 +94,9 @@ class Statement {
   }
 
   bool null(int column) const { return sqlite3_column_type(stmt_, column) == SQLITE_NULL; }
+  int type(int column) const { return sqlite3_column_type(stmt_, column); }  // SQLITE_INTEGER...
+  // The stored value as a message shows it: "NULL", "the text 'abc'", "a blob of 2 bytes", "-5".
+  std::string shown(int column) const;
   // A value of a column without a declared type, as SQLite stored it.
   aco::ParamValue value(int column) const;
   // A column holding a trial field of `type`.

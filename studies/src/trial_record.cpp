@@ -116,10 +116,22 @@ TrialField one_of(TrialField f, std::vector<std::string> values) {
   return f;
 }
 
+TrialField at_least(TrialField f, double low) {
+  f.low = low;
+  return f;
+}
+
+// Never NULL in a stored row.
+TrialField never_null(TrialField f) {
+  f.null = TrialField::Null::never;
+  return f;
+}
+
 // A length: NULL unless solved.
-TrialField solved_only(const char* name, double TrialRecord::*member) {
-  TrialField f = field(name, member, kEverywhere);
+TrialField solved_only(const char* name, double TrialRecord::*member, TrialField::Null null) {
+  TrialField f = at_least(field(name, member, kEverywhere), 0.0);
   f.get = [member](const TrialRecord& t, double) { return t.solved ? TrialCell(t.*member) : TrialCell(); };
+  f.null = null;
   return f;
 }
 
@@ -205,11 +217,11 @@ std::string csv_cell(const aco::ParamValue& value) {
 const std::vector<TrialField>& trial_fields() {
   constexpr unsigned kStored = kInMessage | kInRunTexts;
   static const std::vector<TrialField> fields = {
-      label(field("repetition", &TrialRecord::repetition, kEverywhere)),
-      label(stored_as(field("seed", &TrialRecord::seed, kEverywhere), "trial_seed")),
-      field("solved", &TrialRecord::solved, kEverywhere),
-      stored_as(solved_only("length", &TrialRecord::length), "solution_length"),
-      solved_only("grid_length", &TrialRecord::grid_length),
+      never_null(label(at_least(field("repetition", &TrialRecord::repetition, kEverywhere), 0))),
+      never_null(label(stored_as(field("seed", &TrialRecord::seed, kEverywhere), "trial_seed"))),
+      never_null(field("solved", &TrialRecord::solved, kEverywhere)),
+      stored_as(solved_only("length", &TrialRecord::length, TrialField::Null::unless_solved), "solution_length"),
+      solved_only("grid_length", &TrialRecord::grid_length, TrialField::Null::solved_only),
       gap("gap", kInRunsTable, 1.0, 10),
       gap("gap_percent", kInRunsCsv | kInPython, 100.0, 6),
       {"optimal_corridor",
@@ -222,20 +234,20 @@ const std::vector<TrialField>& trial_fields() {
          if (const auto* b = std::get_if<bool>(&value)) t.optimal_corridor = *b;
        },
        {}},
-      field("turns", &TrialRecord::turns, kEverywhere),
-      field("iterations", &TrialRecord::iterations, kEverywhere),
-      field("best_iteration", &TrialRecord::best_iteration, kEverywhere),
-      field("time", &TrialRecord::time_s, kEverywhere, "time_s", 6),
+      at_least(field("turns", &TrialRecord::turns, kEverywhere), 0),
+      at_least(field("iterations", &TrialRecord::iterations, kEverywhere), 0),
+      at_least(field("best_iteration", &TrialRecord::best_iteration, kEverywhere), 0),
+      at_least(field("time", &TrialRecord::time_s, kEverywhere, "time_s", 6), 0),
       field("ant_steps", &TrialRecord::ant_steps, kEverywhere),
       one_of(text_or_null("stopped_by", &TrialRecord::stopped_by, kEverywhere), stop_texts()),
       field("path", &TrialRecord::path_json, kStored),
       one_of(simulation_field("outcome", &SimulationRecord::outcome),
              {std::begin(aco::simulation::kOutcomes), std::end(aco::simulation::kOutcomes)}),
-      simulation_field("time_to_goal", &SimulationRecord::time_to_goal),
-      simulation_field("collisions", &SimulationRecord::collisions),
-      simulation_field("replans", &SimulationRecord::replans),
+      at_least(simulation_field("time_to_goal", &SimulationRecord::time_to_goal), 0),
+      at_least(simulation_field("collisions", &SimulationRecord::collisions), 0),
+      at_least(simulation_field("replans", &SimulationRecord::replans), 0),
       simulation_field("clearance", &SimulationRecord::clearance),
-      simulation_field("control_steps", &SimulationRecord::control_steps),
+      at_least(simulation_field("control_steps", &SimulationRecord::control_steps), 0),
       text_or_null("error", &TrialRecord::error, kStored | kInPython),
       {"failure", "failure", TrialCellType::text, kInMessage | kInRunsTable | kWhenUsed, 10,
        [](const TrialRecord& t, double) {
@@ -245,7 +257,7 @@ const std::vector<TrialField>& trial_fields() {
          if (const auto* text = std::get_if<std::string>(&value)) t.failure = failure_kind(*text);
        },
        failure_texts()},
-      stored_as(field("peak_memory_mib", &TrialRecord::peak_memory_mib, kEverywhere), "memory"),
+      at_least(stored_as(field("peak_memory_mib", &TrialRecord::peak_memory_mib, kEverywhere), "memory"), 0),
       {"status",
        "status",
        TrialCellType::text,

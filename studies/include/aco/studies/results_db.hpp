@@ -110,6 +110,17 @@ struct AppendedRun {
   double length = std::nan("");  // solution_length; NaN if none
 };
 
+// A stored row that does not hold what its table declares (the trial fields' types and ranges,
+// trial_record.hpp; ids that name rows): a file edited by hand or by another tool.
+struct BadRow {
+  std::string table;
+  std::int64_t id = 0;  // the row's id (a progress or run_texts row: its run's)
+  std::string column;
+  std::string problem;  // what the column holds and why it cannot be read
+};
+// "runs row 17, column solution_length: the text 'abc', not a number"
+std::string describe(const BadRow& row);
+
 class ResultsDb {
  public:
   // Creates the database, or reopens one of the same experiment. The experiment may have grown
@@ -134,9 +145,13 @@ class ResultsDb {
   int add_config(const ConfigRecord& config);
 
   // (problem, config id, repetition) of every stored trial, sorted: 12 bytes a trial, so that a
-  // resumed study of millions of trials holds little more than its database's index.
+  // resumed study of millions of trials holds little more than its database's index. A runs row
+  // whose trial cannot be told (a NULL or dangling experiment or planner id, a configuration whose
+  // settings are not JSON, a repetition out of range) is an Error naming it: a rerun would run that
+  // trial a second time.
   std::vector<std::tuple<int, int, int>> finished() const;
-  // (problem, config id, repetition) -> (failure, error) of every stored trial that failed.
+  // (problem, config id, repetition) -> (failure, error) of every stored trial that failed (rows
+  // finished() refuses are left out).
   std::map<std::tuple<int, int, int>, std::pair<FailureKind, std::string>> failed() const;
   // What the experiment given to the constructor added to the database (empty if it made it).
   Growth growth() const;
@@ -154,7 +169,10 @@ class ResultsDb {
   // For reports.
   std::vector<ProblemRecord> problems() const;
   std::vector<std::pair<int, ConfigRecord>> configs() const;  // (id, record) in insertion order
-  std::vector<TrialRecord> trials() const;  // ordered by (problem, config, repetition)
+  // Every trial, ordered by (problem, config, repetition), each row checked against its fields'
+  // types and ranges. A row that cannot be read is an Error naming it, or, given `left_out`, is
+  // left out and added there.
+  std::vector<TrialRecord> trials(std::vector<BadRow>* left_out = nullptr) const;
   // The runs of appended OMPL logs, ordered by experiment and planner.
   std::vector<AppendedRun> appended_runs() const;
   std::string meta(const std::string& key) const;  // Error if the key is not stored

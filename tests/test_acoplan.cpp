@@ -463,6 +463,36 @@ TEST_CASE("an unreachable goal is reported as unsolved with its own exit status"
   CHECK_THAT(text.out, Contains("NOT SOLVED"));
 }
 
+TEST_CASE("parameter ranges keep the plugins' arithmetic finite: no plugin is blamed for a value they allow",
+          "[acoplan][bad-input]") {
+  // Each was "plugin ... wrote inf (or nan)" before its range was closed at a finite end.
+  expect_error({"--update.q", "1e12", "--update.rho", "1e-300"},
+               "--update.rho: 1e-300 is outside the range [1e-06, 1]");
+  expect_error({"--heuristic", "distance", "--heuristic.min_distance", "1e-300"},
+               "--heuristic.min_distance: 1e-300 is outside the range [1e-06, 1]");
+  expect_error({"--update", "gaussian", "--update.sigma", "1e-300"},
+               "--update.sigma: 1e-300 is outside the range [0.01, 100]");
+  // The ends themselves, together with the largest Q, alpha and beta, stay finite.
+  for (const std::vector<std::string>& extreme :
+       {std::vector<std::string>{"--update.q", "1e12", "--update.rho", "1e-6"},
+        {"--heuristic", "distance", "--heuristic.min_distance", "1e-6", "--beta", "50"},
+        {"--update", "gaussian", "--update.sigma", "0.01", "--update.q", "1e12", "--update.psi", "1e12"}}) {
+    std::vector<std::string> args = {"--map", map1,     "--start", "0,0",          "--goal",
+                                     "19,19", "--ants", "5",       "--iterations", "5"};
+    args.insert(args.end(), extreme.begin(), extreme.end());
+    const auto r = test::acoplan(args);
+    INFO(r.err);
+    CHECK(r.exit_code == 0);
+  }
+  // A finite eta raised to beta may still overflow: said as the power's, with the bound.
+  const auto power =
+      test::acoplan({"--map", map1, "--start", "0,0", "--goal", "19,19", "--heuristic", "potential_field",
+                     "--heuristic.a", "1e6", "--heuristic.min_distance", "1e-6", "--beta", "50"});
+  CHECK(power.exit_code == 1);
+  CHECK_THAT(power.err, Contains("eta^beta overflows on some edge") &&
+                            Contains("at beta 50 eta must stay below 1462494") && !Contains("wrote inf"));
+}
+
 TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range values", "[acoplan][bad-input]") {
   expect_error({"--update", "nope"}, "unknown update plugin 'nope'");
   expect_error({"--update.rhoo", "0.5"}, "unknown option '--update.rhoo'; did you mean '--update.rho'?");
@@ -473,8 +503,8 @@ TEST_CASE("acoplan rejects unknown plugins, unknown options and out-of-range val
   expect_error({"--ants", "0"}, "--ants: 0 is outside the range [1, 1000000]");
   expect_error({"--ants", "-3"}, "--ants: -3 is outside the range");
   expect_error({"--ants", "many"}, "--ants: 'many' is not a whole number");
-  expect_error({"--update.rho", "1.5"}, "--update.rho: 1.5 is outside the range (0, 1]");
-  expect_error({"--update.rho", "-0.1"}, "--update.rho: -0.1 is outside the range (0, 1]");
+  expect_error({"--update.rho", "1.5"}, "--update.rho: 1.5 is outside the range [1e-06, 1]");
+  expect_error({"--update.rho", "-0.1"}, "--update.rho: -0.1 is outside the range [1e-06, 1]");
   expect_error({"--neighbourhood", "12"}, "--neighbourhood: '12' is not one of 4,8,16,6,18,26");
   // acoplan's own settings are checked by their tables.
   expect_error({"--repeat", "0"}, "--repeat: 0 is outside the range [1, 1000000]");

@@ -119,6 +119,11 @@ TEST_CASE("ESRI ASCII grid: malformed files name the line and the problem", "[te
   CHECK_THAT(error_of("ncols 2 3\n"), Contains("inline.asc:1: header line 'ncols 2 3' should be 'ncols VALUE'"));
   CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\n"),
              Contains("no heights after the header"));
+  // Heights and cell sizes whose 3D step lengths would overflow.
+  CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1\n0 1e308\n"),
+             Contains("the height 1e+308 of cell (1,0) is beyond +-1e+12"));
+  CHECK_THAT(error_of("ncols 2\nnrows 1\nxllcorner 0\nyllcorner 0\ncellsize 1e300\n0 1\n"),
+             Contains("cell size 1e+300 is not a positive number up to 1e+12"));
 }
 
 TEST_CASE("PGM height images: height = grey * scale, cell size from the options", "[terrain]") {

@@ -4,10 +4,13 @@
 
 #include <tbb/blocked_range.h>
 
+#include <atomic>
 #include <cmath>
+#include <limits>
 
 #include "aco/error.hpp"
 #include "aco/parallel.hpp"
+#include "aco/parameters.hpp"
 
 namespace aco {
 
@@ -30,9 +33,23 @@ void Heuristic::compute_powered(const Context& context, std::span<double> eta_be
   if (context.beta == 1.0) return;
   // Element-wise, so the thread count cannot change a value; on a 512x512 map these are two
   // million pow() calls per run.
+  std::atomic<bool> overflowed = false;
   aco::parallel_for(tbb::blocked_range<std::size_t>(0, eta_beta.size(), 16384), [&](const auto& range) {
-    for (std::size_t e = range.begin(); e != range.end(); ++e) eta_beta[e] = std::pow(eta_beta[e], context.beta);
+    for (std::size_t e = range.begin(); e != range.end(); ++e) {
+      const double eta = eta_beta[e];
+      eta_beta[e] = std::pow(eta, context.beta);
+      if (std::isinf(eta_beta[e]) && std::isfinite(eta)) overflowed.store(true, std::memory_order_relaxed);
+    }
   });
+  if (overflowed) throw_power_overflow(context.beta);
+}
+
+void throw_power_overflow(double beta) {
+  throw Error("eta^beta overflows on some edge (beyond the largest number, " +
+              to_string(ParamValue(std::numeric_limits<double>::max())) + "): at beta " + to_string(ParamValue(beta)) +
+              " eta must stay below " +
+              to_string(ParamValue(std::pow(std::numeric_limits<double>::max(), 1.0 / beta))) +
+              "; lower --beta, or the heuristic's parameters that make eta large");
 }
 
 void Heuristic::update_node(const Context&, NodeId, int, std::span<double>) const {

@@ -35,12 +35,16 @@ TerrainMap::TerrainMap(int width, int height, double cell_size, std::vector<doub
   if (heights_.size() != cells)
     throw Error(name_ + ": " + std::to_string(heights_.size()) + " heights for a " + std::to_string(width) + "x" +
                 std::to_string(height) + " map (expected " + std::to_string(cells) + ")");
-  if (!(cell_size > 0) || !std::isfinite(cell_size))
-    throw Error(name_ + ": cell size " + number(cell_size) + " is not a positive number");
+  if (!(cell_size > 0) || !(cell_size <= kMaxTerrainMagnitude))
+    throw Error(name_ + ": cell size " + number(cell_size) + " is not a positive number up to " +
+                number(kMaxTerrainMagnitude) + " (a larger one would overflow the path costs)");
   if (!(max_slope_deg >= 0 && max_slope_deg <= 90))
     throw Error(name_ + ": maximum slope " + number(max_slope_deg) + " deg is outside [0, 90]");
-  for (double h : heights_)
-    if (std::isinf(h)) throw Error(name_ + ": infinite height");
+  for (std::size_t i = 0; i < heights_.size(); ++i)
+    if (std::abs(heights_[i]) > kMaxTerrainMagnitude)
+      throw Error(name_ + ": the height " + number(heights_[i]) + " of cell (" + std::to_string(i % width) + "," +
+                  std::to_string(i / width) + ") is beyond +-" + number(kMaxTerrainMagnitude) +
+                  " (larger heights would overflow the path costs)");
   slopes_.resize(cells);
   reason_.resize(cells);
   for (int y = 0; y < height; ++y)

@@ -111,7 +111,7 @@ def test_results_do_not_depend_on_the_thread_count():
 
 
 @pytest.mark.parametrize("call, message", [
-    (lambda: aco.plan(MAP1, (0, 0), (19, 19), update_rho=3), "update_rho: 3 is outside the range (0, 1]"),
+    (lambda: aco.plan(MAP1, (0, 0), (19, 19), update_rho=3), "update_rho: 3 is outside the range [1e-06, 1]"),
     (lambda: aco.plan(MAP1, (0, 0), (19, 19), update="nope"), "unknown update plugin 'nope'"),
     (lambda: aco.plan(MAP1, (0, 0), (19, 19), preset="robst"), "unknown preset 'robst'; did you mean 'robust'?"),
     (lambda: aco.plan(MAP1, (0, 0), (40, 40)), "goal (40,40) is outside the 20x20 map"),

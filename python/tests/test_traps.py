@@ -81,7 +81,7 @@ def test_a_terrain_files_cell_size_comes_with_the_result():
 @pytest.mark.parametrize("keys, message", [
     (dict(ant=10), "unknown key 'ant'; did you mean 'ants'?"),
     (dict(update_rh=0.1), "did you mean 'update_rho'?"),
-    (dict(update_rho=3), "update_rho: 3 is outside the range (0, 1]"),
+    (dict(update_rho=3), "update_rho: 3 is outside the range [1e-06, 1]"),
     (dict(max_slop=3), "did you mean 'max_slope'?"),
     (dict(threads=-1), "threads: -1 is outside the range [0, 1024]"),
     (dict(threads=2000), "threads: 2000 is outside the range [0, 1024]"),

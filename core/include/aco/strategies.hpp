@@ -153,6 +153,11 @@ class BOOST_SYMBOL_VISIBLE Heuristic : public Strategy {
                             std::span<double> factors) const;
 };
 
+// What a heuristic throws when a finite eta raised to beta overflows: the power's doing, said with
+// the bound eta must keep at this beta, rather than the engine's check blaming the plugin for an
+// infinite eta^beta. The default compute_powered() throws it; a plugin with its own power does too.
+[[noreturn]] void throw_power_overflow(double beta);
+
 // The pheromone of a running colony, per edge: tau(e) = clamp(stored(e) x scale, low, high). An
 // update rule that evaporates every edge alike and keeps the trail within bounds (MAX-MIN) calls
 // evaporate() and bound(), which cost nothing per edge: on a 2048x2048 map a pass over every edge

@@ -21,11 +21,15 @@ struct TerrainOptions {
   double cell_size = 1;  // PGM height images: horizontal size of a cell (.asc files carry their own)
 };
 
+// The largest height (in magnitude) and cell size a terrain map takes: a step's 3D length, the sum
+// of a path's and every plugin's arithmetic on them stay finite far beyond any real terrain's.
+inline constexpr double kMaxTerrainMagnitude = 1e12;
+
 class BOOST_SYMBOL_VISIBLE TerrainMap final : public Map {
  public:
   // `heights` row-major, row 0 at the top, NaN where there is no data. Throws an Error naming
-  // `name` for a size mismatch, a non-positive cell size, infinite heights or a slope limit
-  // outside [0, 90].
+  // `name` for a size mismatch, a cell size not in (0, kMaxTerrainMagnitude], a height beyond
+  // +-kMaxTerrainMagnitude (the cell named) or a slope limit outside [0, 90].
   TerrainMap(int width, int height, double cell_size, std::vector<double> heights, double max_slope_deg,
              std::string name);
 

@@ -21,7 +21,7 @@ const aco::SettingsTable<Parameters> kParams({
     aco::choice(
         "distance", &Parameters::to_goal, {"goal", "step"}, {true, false},
         "d: distance from the next node to the goal (goal), or the step length d_ab (step, eq. 6 read literally)"),
-    aco::field("min_distance", &Parameters::min_distance, "(0:1]",
+    aco::field("min_distance", &Parameters::min_distance, "1e-6:1",
                "floor of d, so stepping onto the goal stays finite"),
 });
 

@@ -11,7 +11,7 @@ struct Parameters {
 
 const aco::SettingsTable<Parameters> kParams({
     aco::field(
-        "min_distance", &Parameters::min_distance, "(0:1]",
+        "min_distance", &Parameters::min_distance, "1e-6:1",
         "d(j, goal) is floored at this value, so stepping onto the goal gets eta = 1/min_distance (100, as in the "
         "MATLAB code)"),
 });

@@ -21,7 +21,7 @@ const aco::SettingsTable<Parameters> kParams(
     {
         aco::field("a", &Parameters::a, "0:1e6",
                    "weight of the force term: a move along the force gets eta x (1 + a) in the first iteration"),
-        aco::field("min_distance", &Parameters::min_distance, "(0:1]",
+        aco::field("min_distance", &Parameters::min_distance, "1e-6:1",
                    "d(j, goal) is floored at this value, so stepping onto the goal gets 1/min_distance (as in "
                    "heuristic/distance)"),
     },
@@ -47,6 +47,7 @@ class PotentialFieldHeuristic final : public aco::Heuristic {
       const double strength = field.strength(e);
       boost_[e] = strength > 0.0 ? p_.a * std::max(0.0, field.along(e) / strength) : 0.0;
       base_beta_[e] = std::pow(base_[e], c.beta);
+      if (std::isinf(base_beta_[e])) aco::throw_power_overflow(c.beta);
     }
     beta_ = c.beta;
   }
@@ -75,6 +76,7 @@ class PotentialFieldHeuristic final : public aco::Heuristic {
       } else {
         const double factor = 1.0 + w * boost_[e];
         eta_beta[i] = base_beta_[e] * (whole ? whole_power(factor, static_cast<int>(beta_)) : std::pow(factor, beta_));
+        if (std::isinf(eta_beta[i])) aco::throw_power_overflow(beta_);  // eta is finite: a and beta too large
       }
     }
   }

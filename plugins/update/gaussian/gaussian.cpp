@@ -27,7 +27,7 @@ const aco::SettingsTable<Parameters> kParams({
                "deposit constant Q: ant k's spread is scaled by Q / L_k (paper 002: 1)"),
     aco::field("psi", &Parameters::psi, "0:1e12", "balance factor psi (paper 002: 300)"),
     aco::field("mu", &Parameters::mu, "-100:100", "mean mu of the Gaussian (paper 002: 0)"),
-    aco::field("sigma", &Parameters::sigma, "(0:100]", "spread sigma of the Gaussian (paper 002: 1)"),
+    aco::field("sigma", &Parameters::sigma, "0.01:100", "spread sigma of the Gaussian (paper 002: 1)"),
     aco::field("cutoff", &Parameters::cutoff, "0:20", "radius in cells of the neighbourhood that receives pheromone"),
     aco::choice("onto", &Parameters::onto_edges, {"edges", "cells"}, {true, false},
                 "edges: each path step, shifted by the offset, gets y (the move keeps its direction); "

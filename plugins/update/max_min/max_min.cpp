@@ -19,7 +19,7 @@ struct Parameters {
 };
 
 const aco::SettingsTable<Parameters> kParams({
-    aco::field("rho", &Parameters::rho, "(0:1]", "evaporation rate"),
+    aco::field("rho", &Parameters::rho, "1e-6:1", "evaporation rate"),
     aco::field("q", &Parameters::q, "(0:1e12]", "deposit constant Q: the depositing ant adds Q / L"),
     aco::field("p_best", &Parameters::p_best, "(0:1)",
                "probability that a converged colony rebuilds the best path; sets tau_min relative to tau_max"),

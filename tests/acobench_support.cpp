@@ -1,6 +1,9 @@
 // Helpers of the acobench tests (acobench_support.hpp).
 #include "acobench_support.hpp"
 
+#include <catch2/catch.hpp>
+#include <memory>
+
 #include <sqlite3.h>
 
 #include <algorithm>
@@ -228,6 +231,15 @@ std::string sql_value(const std::filesystem::path& db, const std::string& sql) {
   }
   sqlite3_close(handle);
   return value;
+}
+
+void sql_exec(const std::filesystem::path& db, const std::string& sql) {
+  sqlite3* raw = nullptr;
+  const int rc = sqlite3_open_v2(db.c_str(), &raw, SQLITE_OPEN_READWRITE, nullptr);
+  std::unique_ptr<sqlite3, decltype(&sqlite3_close)> handle(raw, sqlite3_close);
+  REQUIRE(rc == SQLITE_OK);
+  INFO(sql << ": " << sqlite3_errmsg(raw));
+  REQUIRE(sqlite3_exec(raw, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
 }
 
 int count_runs(const std::filesystem::path& db) {

@@ -43,6 +43,9 @@ std::vector<std::string> database_rows(const std::filesystem::path& db);
 // file or the query gives none), read with SQLite alone.
 std::string sql_value(const std::filesystem::path& db, const std::string& sql);
 
+// Runs statements that return no rows on the file directly with SQLite (a test failure if one fails).
+void sql_exec(const std::filesystem::path& db, const std::string& sql);
+
 int count_runs(const std::filesystem::path& db);  // -1 where the file holds no runs table
 
 // Rewrites a database this acobench made into the layout of format 6 (before OMPL's layout: the

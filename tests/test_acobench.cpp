@@ -282,15 +282,6 @@ TEST_CASE("a study of four billion trials stores its first ones at once in littl
   CHECK(sql_value(db, "SELECT count(*) - count(DISTINCT plannerid || ':' || repetition) FROM runs") == "0");
 }
 
-// Runs statements on the file directly with SQLite.
-void sql_exec(const std::filesystem::path& db, const std::string& sql) {
-  sqlite3* handle = nullptr;
-  REQUIRE(sqlite3_open(db.c_str(), &handle) == SQLITE_OK);
-  INFO(sql);
-  CHECK(sqlite3_exec(handle, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
-  sqlite3_close(handle);
-}
-
 TEST_CASE("a report counts the runs it cannot read, and a rerun stops at a row whose trial it cannot tell",
           "[acobench][bad-input]") {
   const auto file = experiment(kSmall);

@@ -27,6 +27,7 @@
 #include "support.hpp"
 
 using Catch::Contains;
+using test::acobench_helpers::sql_exec;
 namespace fs = std::filesystem;
 
 namespace {
@@ -126,16 +127,6 @@ std::string sql_value(const fs::path& file, const std::string& sql) {
   REQUIRE(sqlite3_step(raw_statement) == SQLITE_ROW);
   const auto* text = reinterpret_cast<const char*>(sqlite3_column_text(raw_statement, 0));
   return text ? text : "NULL";
-}
-
-// Runs statements that return no rows on the file directly with SQLite.
-void sql_exec(const fs::path& file, const std::string& sql) {
-  sqlite3* raw = nullptr;
-  const int rc = sqlite3_open_v2(file.c_str(), &raw, SQLITE_OPEN_READWRITE, nullptr);
-  std::unique_ptr<sqlite3, decltype(&sqlite3_close)> db(raw, sqlite3_close);
-  REQUIRE(rc == SQLITE_OK);
-  INFO(sql);
-  REQUIRE(sqlite3_exec(raw, sql.c_str(), nullptr, nullptr, nullptr) == SQLITE_OK);
 }
 
 }  // namespace

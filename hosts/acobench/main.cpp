@@ -196,6 +196,9 @@ int print_summary(const aco::studies::RunSummary& s, const aco::studies::Experim
   std::cout << "acobench: " << experiment.name << (run.shard ? " shard " + aco::studies::to_string(*run.shard) : "")
             << ": " << s.trials << " trials, " << s.skipped << " already in " << run.database.string() << ", " << s.ran
             << " run in " << s.seconds << " s (" << (s.seconds > 0 ? s.ran / s.seconds : 0.0) << " trials/s)\n";
+  if (s.stored_by_another > 0)
+    std::cout << "acobench: " << s.stored_by_another << " of the trials run here were stored first by another process "
+              << "writing " << run.database.string() << " (counted as already in it)\n";
   if (s.ablation_left)
     std::cout << "acobench: the experiment's ablation path is not run by shards: merge the shards (acobench merge), "
                  "then `acobench run` of the merged database runs it\n";

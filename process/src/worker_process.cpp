@@ -191,6 +191,14 @@ WorkerProcess::~WorkerProcess() {
 }
 
 bool WorkerProcess::start() {
+  // A worker that ended between requests (killed while it waited) served none: a new one serves
+  // the next, rather than that request failing as a crash it had no part in.
+  int status = 0;
+  if (pid_ >= 0 && ::waitpid(pid_, &status, WNOHANG) == pid_) {
+    ::close(socket_);
+    pid_ = -1;
+    socket_ = -1;
+  }
   if (pid_ >= 0) return false;
   int ends[2];
   if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, ends) != 0)
@@ -237,8 +245,11 @@ WorkerReply WorkerProcess::request(const std::string& bytes, const WorkerLimits&
   }
   const std::uint64_t baseline = limits.memory_bytes ? resident_memory(pid_) : 0;
   const std::string frame = length_prefix(bytes.size()) + bytes;
-  // A worker that died before reading is seen below as the end of its socket.
-  write_all(socket_, frame.data(), frame.size());
+  if (!write_all(socket_, frame.data(), frame.size())) {
+    WorkerReply reply = end_worker(FailureKind::crashed, "");
+    reply.delivered = false;
+    return reply;
+  }
   return await(kReply, limits, baseline);
 }
 

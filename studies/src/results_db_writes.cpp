@@ -126,14 +126,16 @@ int ResultsDb::add_config(const ConfigRecord& config) {
   return id;
 }
 
-void ResultsDb::store(const TrialRecord& t) {
+bool ResultsDb::store(const TrialRecord& t, IfStored if_stored) {
   auto& d = *impl_;
   std::lock_guard lock(d.mutex);
   d.check_trial(t);
   const std::int64_t experiment = d.experiment_ids[static_cast<std::size_t>(t.problem)];
   Transaction transaction(d.db);
-  if (d.find_run->run(experiment, t.config, t.repetition).any())
+  if (d.find_run->run(experiment, t.config, t.repetition).any()) {
+    if (if_stored == IfStored::skip) return false;
     throw Error(d.file() + ": " + d.trial_label(t) + " is already stored");
+  }
 
   d.add_used_columns(t);
   const std::int64_t run = d.insert_trial(std::nullopt, experiment, t.config, t,
@@ -152,6 +154,7 @@ void ResultsDb::store(const TrialRecord& t) {
     std::visit([&](const auto& v) { d.insert_property->run(run, property.first, v).finish(); }, property.second);
   d.add_time->run(experiment, t.time_s).finish();
   transaction.commit();
+  return true;
 }
 
 void ResultsDb::record_limits(const ExperimentLimits& limits) {

@@ -252,7 +252,14 @@ class Runner {
 
   void run_trials(const std::vector<int>& configs, RunSummary& summary) {
     const auto finished = [&](const TrialRecord& record) {
-      db_->store(record);
+      // Another acobench running the experiment into the same file may have stored it first.
+      if (!db_->store(record, ResultsDb::IfStored::skip)) {
+        ++done_;
+        ++summary.skipped;
+        ++summary.stored_by_another;
+        if (options_.progress) options_.progress(done_, total_);
+        return;
+      }
       if (e_.ablation_target) add_score(record);
       if (tied_) measured_[{record.problem, record.config, record.repetition}] = {record.time_s, record.error};
       ++done_;

@@ -46,17 +46,22 @@ TrialWorkers::~TrialWorkers() = default;
 
 TrialRecord TrialWorkers::run(int lane_index, const TrialRunner& runner, const TrialOrder& t) {
   Lane& lane = *lanes_.at(static_cast<std::size_t>(lane_index));
-  json request = {{"configs", json::array()}, {"trial", order_json(t)}};
-  if (lane.process.start()) {
-    lane.known.clear();
-    request["fingerprint"] = fingerprint_;
+  for (int attempt = 0;; ++attempt) {
+    json request = {{"configs", json::array()}, {"trial", order_json(t)}};
+    if (lane.process.start()) {
+      lane.known.clear();
+      request["fingerprint"] = fingerprint_;
+    }
+    if (lane.known.insert(t.config).second)
+      request["configs"].push_back(config_json(t.config, runner.config(t.config)));
+    const std::vector<std::uint8_t> cbor = json::to_cbor(request);
+    const aco::WorkerReply reply =
+        lane.process.request(std::string(cbor.begin(), cbor.end()), {limits_.timeout_s, limits_.memory_bytes});
+    // A worker killed while it waited ran nothing of the trial: a fresh one runs it, once.
+    if (!reply.delivered && attempt == 0) continue;
+    if (reply.failure_kind == FailureKind::none) return record_from(json::from_cbor(reply.bytes));
+    return runner.failed(t, reply.failure_kind, reply.failure);
   }
-  if (lane.known.insert(t.config).second) request["configs"].push_back(config_json(t.config, runner.config(t.config)));
-  const std::vector<std::uint8_t> cbor = json::to_cbor(request);
-  const aco::WorkerReply reply =
-      lane.process.request(std::string(cbor.begin(), cbor.end()), {limits_.timeout_s, limits_.memory_bytes});
-  if (reply.failure_kind == FailureKind::none) return record_from(json::from_cbor(reply.bytes));
-  return runner.failed(t, reply.failure_kind, reply.failure);
 }
 
 void WorkerExecutor::run(TrialRunner& runner, const TrialSequence& trials,

@@ -36,6 +36,9 @@ struct WorkerReply {
   // (FILE) in update() in iteration 3", "timed out after 5 s in plugin ...", "out of memory (over
   // 512 MiB) in plugin ...".
   std::string failure;
+  // false: the worker had ended before the request reached it (killed while it waited), so it
+  // ran nothing of it; a caller may send it again (start() gives a fresh worker).
+  bool delivered = true;
 };
 
 class WorkerProcess {
@@ -47,8 +50,9 @@ class WorkerProcess {
   WorkerProcess(const WorkerProcess&) = delete;
   WorkerProcess& operator=(const WorkerProcess&) = delete;
 
-  // Starts the worker if none is running; true if it started one now (a fresh worker knows
-  // nothing of what earlier requests told the one before).
+  // Starts the worker if none is running (one that ended since its last reply, killed while it
+  // waited, is started again); true if it started one now (a fresh worker knows nothing of what
+  // earlier requests told the one before).
   bool start();
   // Sends a request and waits for its reply within the limits. A worker that fails to start,
   // or answers with an error of its own (serve_worker_requests' `fail`), is an aco::Error.

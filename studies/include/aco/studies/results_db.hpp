@@ -156,11 +156,14 @@ class ResultsDb {
   // What the experiment given to the constructor added to the database (empty if it made it).
   Growth growth() const;
 
-  // Stores one trial and its progress rows in one transaction. Thread-safe. A trial already
-  // stored, an unknown problem or config, or a curve whose length is not `iterations` is an
-  // Error, and nothing is written. A trial without anytime curves (copied from an older
-  // database) gets the older rows: the estimated time, walks NULL.
-  void store(const TrialRecord& trial);
+  // Stores one trial and its progress rows in one transaction. Thread-safe. An unknown problem or
+  // config, or a curve whose length is not `iterations`, is an Error, and nothing is written; so
+  // is a trial already stored, unless `if_stored` is skip: then nothing is written and the result
+  // is false (another process running the same experiment into the file stored it first, with the
+  // same seed). A trial without anytime curves (copied from an older database) gets the older
+  // rows: the estimated time, walks NULL.
+  enum class IfStored { error, skip };
+  bool store(const TrialRecord& trial, IfStored if_stored = IfStored::error);
 
   // The experiment's limits, as OMPL records them in each of its rows of the experiments table.
   void record_limits(const ExperimentLimits& limits);

@@ -92,7 +92,8 @@ struct TrialFailure {
 
 struct RunSummary {
   std::size_t trials = 0;  // trials of the experiment (of the shard)
-  std::size_t skipped = 0;  // already in the database
+  std::size_t skipped = 0;  // already in the database (stored_by_another included)
+  std::size_t stored_by_another = 0;  // run here too, but another process stored it first
   std::size_t ran = 0;
   // Every failed trial of the experiment (of the shard): those run now and those stored as failed
   // before, so that running the same command again gives the same verdict.

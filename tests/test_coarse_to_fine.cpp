@@ -33,7 +33,7 @@ aco::OccupancyGrid rooms(int side, std::uint32_t seed) {
   for (int wall = 32; wall < side; wall += 32)
     for (int from = 0; from < side; from += 32) {
       const int door = from + 4 + static_cast<int>(rng() % 20);
-      for (int y = door; y < door + 8; ++y)
+      for (int y = door; y < std::min(side, door + 8); ++y)
         for (int x = wall; x < wall + 4; ++x) map.set_blocked({x, y}, false), map.set_blocked({y, x}, false);
     }
   for (int pillar = 0; pillar < side * side / 400; ++pillar)

@@ -1,10 +1,16 @@
 """tools/env.sh names the interpreter the package was built for, and warns when python3 on the
 PATH is another (a pyenv shim, say), whose import of aco or numpy would fail."""
+import os
 import subprocess
 
 import pytest
 
 from conftest import SOURCE
+
+# What a sanitizer build's module needs in the interpreter (the preset sanitize's ctest sets it:
+# tests/CMakeLists.txt), kept in the otherwise bare environment below.
+SANITIZER_ENV = {k: v for k, v in os.environ.items()
+                 if k in ("LD_PRELOAD", "ASAN_OPTIONS", "UBSAN_OPTIONS", "LSAN_OPTIONS", "PYTHONMALLOC")}
 
 
 @pytest.fixture
@@ -17,7 +23,7 @@ def preset(build):
 def source_env_sh(preset, first_on_path, then):
     """Sources tools/env.sh with first_on_path before Debian's folders on the PATH, then runs `then`."""
     return subprocess.run(["bash", "-c", f'. "{SOURCE}/tools/env.sh" && {then}'], capture_output=True, text=True,
-                          env={"PATH": f"{first_on_path}:/usr/bin:/bin", "ACO_PRESET": preset})
+                          env={"PATH": f"{first_on_path}:/usr/bin:/bin", "ACO_PRESET": preset, **SANITIZER_ENV})
 
 
 def test_another_python3_first_on_the_path_is_named_and_the_right_one_given(tmp_path, preset, build):

@@ -202,7 +202,6 @@ std::vector<TrialRecord> ResultsDb::trials(std::vector<BadRow>* left_out) const 
     }
     properties.run(id);
     while (properties.next()) t.properties[properties.text(0)] = properties.value(1);
-    t.repetition = row->second.repetition;
     all.push_back(std::move(t));
   }
   if (!bad.empty() && !left_out)

@@ -168,8 +168,6 @@ std::optional<std::string> stored_value_problem(const sqlite::Statement& row, in
       break;
   }
   if (value < field.low) return row.shown(column) + ", below its least value " + aco::to_string(ParamValue(field.low));
-  if (value > field.high)
-    return row.shown(column) + ", above its greatest value " + aco::to_string(ParamValue(field.high));
   return std::nullopt;
 }
 

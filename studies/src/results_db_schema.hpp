@@ -48,7 +48,7 @@ std::vector<const TrialField*> used_columns(const TrialRecord& t);
 TrialCell to_column(const TrialField& f, TrialCell value);
 // What is wrong with the value of `field` in a column of `row`, or nothing when it is what the
 // field declares (trial_record.hpp): of its type (a real: a finite number; an integer: within
-// its member's type; an ENUM: one of its indices), within its range, NULL only where allowed
+// its member's type; an ENUM: one of its indices), not below its least value, NULL only where allowed
 // (unless_solved: pass whether the row is solved).
 std::optional<std::string> stored_value_problem(const sqlite::Statement& row, int column, const TrialField& field,
                                                 bool solved);

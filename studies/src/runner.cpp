@@ -178,7 +178,6 @@ class Runner {
     const int id = db_->add_config(
         {c.name, settings_json(c, *resolved.run, registry_), aco::plugins_json(*resolved.run, registry_)});
     trials_.add_config(id, resolved);
-    positions_.emplace(id, order_.size());
     order_.push_back(id);
     ids_[c.name] = id;
     return id;
@@ -218,9 +217,12 @@ class Runner {
     return count;
   }
 
-  // A shard runs only the trials whose number it owns.
+  // A shard runs only the trials whose number it owns. The number counts the configuration's
+  // place in the experiment, not its id: a shard's trials are the same whatever its database held.
   bool owns(int config, int problem, int repetition) const {
-    return !options_.shard || options_.shard->owns(trial_index(positions_.at(config), problem, repetition));
+    if (!options_.shard) return true;
+    const auto position = static_cast<std::size_t>(std::find(order_.begin(), order_.end(), config) - order_.begin());
+    return options_.shard->owns(trial_index(position, problem, repetition));
   }
 
   bool is_stored(int problem, int config, int repetition) const {
@@ -252,20 +254,18 @@ class Runner {
 
   void run_trials(const std::vector<int>& configs, RunSummary& summary) {
     const auto finished = [&](const TrialRecord& record) {
+      ++done_;
       // Another acobench running the experiment into the same file may have stored it first.
-      if (!db_->store(record, ResultsDb::IfStored::skip)) {
-        ++done_;
+      if (db_->store(record, ResultsDb::IfStored::skip)) {
+        if (e_.ablation_target) add_score(record);
+        if (tied_) measured_[{record.problem, record.config, record.repetition}] = {record.time_s, record.error};
+        ++summary.ran;
+        if (!record.error.empty())
+          summary.failures.push_back({trials_.config(record.config).name, record.failure, record.error, false});
+      } else {
         ++summary.skipped;
         ++summary.stored_by_another;
-        if (options_.progress) options_.progress(done_, total_);
-        return;
       }
-      if (e_.ablation_target) add_score(record);
-      if (tied_) measured_[{record.problem, record.config, record.repetition}] = {record.time_s, record.error};
-      ++done_;
-      ++summary.ran;
-      if (!record.error.empty())
-        summary.failures.push_back({trials_.config(record.config).name, record.failure, record.error, false});
       if (options_.progress) options_.progress(done_, total_);
     };
     for_each_stored(configs, [&](int p, int c, int r) {
@@ -342,7 +342,6 @@ class Runner {
   TrialExecutor* executor_ = nullptr;
   std::unique_ptr<ResultsDb> db_;
   std::vector<int> order_;  // configuration ids in the order they were added
-  std::map<int, std::size_t> positions_;  // by id: the place in order_
   std::map<std::string, int> ids_;  // by name
   bool tied_ = false;  // a configuration's time limit is another's time (time-limit-from)
   // (time, error) of every trial stored, by (problem, config id, repetition), when tied_: a

@@ -139,8 +139,8 @@ struct TrialField {
   // only BOOLEAN, ENUM, INTEGER and REAL columns, leaves out; SQLite stores it as an integer.
   bool measure = true;
   // What a stored value may be, checked where a row is read back (a number also within its
-  // member's type, a real also finite): its range, and when it may be NULL.
-  double low = -std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
+  // member's type, a real also finite): its least value, and when it may be NULL.
+  double low = -std::numeric_limits<double>::infinity();
   // unless_solved: NULL exactly when unsolved; solved_only: NULL when unsolved, and when solved
   // where unknown (an OMPL planner's path has no grid length).
   enum class Null { allowed, never, unless_solved, solved_only } null = Null::allowed;

@@ -245,8 +245,15 @@ grep -q '"outcome":"reached"' "$work/library_user.log"
 # installed plugins: a run on a numpy grid, and the same run as the installed acoplan's.
 site=$(find "$prefix" -type d -path "*/site-packages/aco" | head -1)
 python=$(sed -n 's/^ACO_PYTHON_EXECUTABLE:INTERNAL=//p' "$build/CMakeCache.txt")
+# A sanitizer build's module needs the ASan and UBSan runtimes preloaded into Debian's python3,
+# which has neither: ctest names them in ACO_PYTHON_PRELOAD (tests/CMakeLists.txt, its sanitizer
+# section), and the interpreter runs without leak checks, as the test python_package does.
+python_env=()
+if [ -n "${ACO_PYTHON_PRELOAD:-}" ]; then
+  python_env=("LD_PRELOAD=$ACO_PYTHON_PRELOAD" "ASAN_OPTIONS=detect_leaks=0:abort_on_error=0")
+fi
 if [ -n "$site" ]; then
-  (cd "$work" && PYTHONPATH="$(dirname "$site")" "$python" - "$prefix" <<'PY'
+  (cd "$work" && env "${python_env[@]}" PYTHONPATH="$(dirname "$site")" "$python" - "$prefix" <<'PY'
 import json, subprocess, sys
 import numpy as np
 import aco
